@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Each subcommand of `tetskin` registers itself on the app; its callback wires
+// module calls together and throws tetskin::Error on bad input.
+
+namespace CLI {
+class App;
+}
+
+namespace tetskin::cli {
+
+void addInfoCommand(CLI::App& app);
+void addConvertCommand(CLI::App& app);
+// Subcommands of the product contract whose module has not landed yet.
+void addPendingCommands(CLI::App& app);
+
+}  // namespace tetskin::cli

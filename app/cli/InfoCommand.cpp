@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+
+#include "Commands.h"
+#include "tetskin/core/Geometry.h"
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+
+namespace tetskin::cli {
+namespace {
+
+void printBox(const BoundingBox& box) {
+  std::printf("  bounds     [%g, %g, %g] .. [%g, %g, %g], diagonal %g\n", box.min.x(), box.min.y(),
+              box.min.z(), box.max.x(), box.max.y(), box.max.z(), box.diagonal());
+}
+
+void printSurface(const std::filesystem::path& path) {
+  const SurfaceMesh mesh = readSurface(path);
+  std::printf("%s: surface\n", path.c_str());
+  std::printf("  vertices   %lld\n  triangles  %lld\n", static_cast<long long>(mesh.vertexCount()),
+              static_cast<long long>(mesh.triangleCount()));
+  std::printf("  normals    %s\n  texcoords  %s\n", mesh.hasNormals() ? "yes" : "no",
+              mesh.hasTexcoords() ? "yes" : "no");
+  std::printf("  area       %g\n", surfaceArea(mesh));
+  printBox(boundingBox(mesh));
+}
+
+void printDataset(const std::filesystem::path& path) {
+  const Dataset dataset = loadDataset(path);
+  std::printf("%s: dataset, %d level(s), %lld nodes, %lld elements\n", path.c_str(),
+              dataset.mesh.levelCount(), static_cast<long long>(dataset.mesh.nodes.rows()),
+              static_cast<long long>(dataset.mesh.elements.rows()));
+  printBox(boundingBox(dataset.mesh.nodes));
+  std::printf("  %-5s %8s %9s %12s %12s  %s\n", "level", "nodes", "elements", "volume",
+              "min volume", "source");
+  for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
+    const TetMesh level = extractLevel(dataset.mesh, k);
+    double total = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (Index e = 0; e < level.elementCount(); ++e) {
+      const double v = elementVolume(level, e);
+      total += v;
+      smallest = std::min(smallest, v);
+    }
+    const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
+    std::printf("  %-5d %8lld %9lld %12g %12g  %s %s %g\n", k,
+                static_cast<long long>(level.nodeCount()),
+                static_cast<long long>(level.elementCount()), total, smallest, src.input.c_str(),
+                src.mesher.c_str(), src.quality);
+  }
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app) {
+  auto files = std::make_shared<std::vector<std::filesystem::path>>();
+  CLI::App* cmd = app.add_subcommand(
+      "info", "Print a summary of surfaces (.obj/.ply/.stl/.vtp) and datasets (.json/.node/.ele)");
+  cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
+  cmd->callback([files] {
+    for (const auto& path : *files) {
+      if (isSurfaceFile(path))
+        printSurface(path);
+      else
+        printDataset(path);
+    }
+  });
+}
+
+}  // namespace tetskin::cli

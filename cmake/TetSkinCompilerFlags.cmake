@@ -1,0 +1,14 @@
+# Compiler warnings and sanitizers shared by every TetSkin target, through one
+# interface library so a target opts in by linking TetSkin::flags.
+add_library(tetskin_flags INTERFACE)
+add_library(TetSkin::flags ALIAS tetskin_flags)
+target_compile_options(tetskin_flags INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+  -Wno-sign-conversion)
+if(TETSKIN_WERROR)
+  target_compile_options(tetskin_flags INTERFACE -Werror)
+endif()
+if(TETSKIN_SANITIZE)
+  target_compile_options(tetskin_flags INTERFACE -fsanitize=address,undefined
+    -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(tetskin_flags INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,24 @@
+# tetskin_add_module(NAME SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+# One static library per concern under modules/NAME, public headers under
+# modules/NAME/include/tetskin/NAME, exported as TetSkin::NAME.
+function(tetskin_add_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(tetskin_${name} STATIC ${ARG_SOURCES})
+  add_library(TetSkin::${name} ALIAS tetskin_${name})
+  target_include_directories(tetskin_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_link_libraries(tetskin_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS}
+    TetSkin::flags)
+  set_target_properties(tetskin_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
+
+# tetskin_add_test(NAME SOURCES ... DEPS ...): one GoogleTest executable, its
+# tests registered one by one with CTest.
+function(tetskin_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main TetSkin::flags)
+  target_compile_definitions(${name} PRIVATE
+    TETSKIN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    TETSKIN_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "${ARG_LABELS}")
+endfunction()

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The one exception type of TetSkin. It names where the problem is (a file and
+// line, or a file and an element) so the CLI can print `error: FILE:LINE: what`.
+
+#include <stdexcept>
+#include <string>
+
+namespace tetskin {
+
+class Error : public std::runtime_error {
+ public:
+  explicit Error(const std::string& message);
+  // line <= 0 means "no line": the message then reads `FILE: what`.
+  Error(const std::string& file, long line, const std::string& message);
+
+  const std::string& file() const { return file_; }
+  long line() const { return line_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_;
+  long line_ = 0;
+  std::string message_;
+};
+
+}  // namespace tetskin

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Basic geometry on points, triangles and tetrahedra.
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "tetskin/core/Types.h"
+
+namespace tetskin {
+
+struct BoundingBox {
+  Eigen::Vector3d min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d max = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+
+  bool empty() const { return (min.array() > max.array()).any(); }
+  Eigen::Vector3d center() const { return 0.5 * (min + max); }
+  Eigen::Vector3d extent() const { return max - min; }
+  // Length of the diagonal; 0 for an empty box.
+  double diagonal() const { return empty() ? 0.0 : extent().norm(); }
+  void extend(const Eigen::Vector3d& p);
+};
+
+// Axis-aligned bounding box of the given rows; empty for no rows.
+BoundingBox boundingBox(const Points3& points);
+
+// Signed volume of the tetrahedron (a, b, c, d): positive when d lies on the
+// side of triangle (a, b, c) that its counter-clockwise normal points away
+// from, i.e. (b-a) x (c-a) . (d-a) > 0 (TetGen's orientation).
+double signedTetVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                       const Eigen::Vector3d& d);
+
+// (b-a) x (c-a) / 2: normal direction times area.
+Eigen::Vector3d triangleAreaVector(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                   const Eigen::Vector3d& c);
+double triangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+// Unit normal (counter-clockwise winding); the zero vector for a degenerate triangle.
+Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c);
+
+}  // namespace tetskin

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/core/Error.h"
+
+namespace tetskin {
+namespace {
+
+std::string describe(const std::string& file, long line, const std::string& message) {
+  if (file.empty()) return message;
+  if (line <= 0) return file + ": " + message;
+  return file + ":" + std::to_string(line) + ": " + message;
+}
+
+}  // namespace
+
+Error::Error(const std::string& message) : std::runtime_error(message), message_(message) {}
+
+Error::Error(const std::string& file, long line, const std::string& message)
+    : std::runtime_error(describe(file, line, message)),
+      file_(file),
+      line_(line),
+      message_(message) {}
+
+}  // namespace tetskin

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/core/Geometry.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace tetskin {
+
+void BoundingBox::extend(const Eigen::Vector3d& p) {
+  min = min.cwiseMin(p);
+  max = max.cwiseMax(p);
+}
+
+BoundingBox boundingBox(const Points3& points) {
+  BoundingBox box;
+  if (points.rows() == 0) return box;
+  box.min = points.colwise().minCoeff().transpose();
+  box.max = points.colwise().maxCoeff().transpose();
+  return box;
+}
+
+double signedTetVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                       const Eigen::Vector3d& d) {
+  return (b - a).cross(c - a).dot(d - a) / 6.0;
+}
+
+Eigen::Vector3d triangleAreaVector(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                   const Eigen::Vector3d& c) {
+  return 0.5 * (b - a).cross(c - a);
+}
+
+double triangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return triangleAreaVector(a, b, c).norm();
+}
+
+Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c) {
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double length = n.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) return Eigen::Vector3d::Zero();
+  return n / length;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// All-or-nothing file output: data goes to a temporary file beside the target,
+// which replaces the target only once everything was written. A failed or
+// interrupted run therefore never leaves a half-written output.
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+namespace tetskin {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path target);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  // Removes the temporary file unless commit() succeeded.
+  ~AtomicFile();
+
+  std::ostream& stream() { return stream_; }
+  const std::filesystem::path& temporaryPath() const { return temporary_; }
+  const std::filesystem::path& target() const { return target_; }
+
+  // Flushes, checks for write errors and renames onto the target. Throws Error.
+  void commit();
+
+ private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  std::ofstream stream_;
+  bool committed_ = false;
+};
+
+// Writes through `write(stream)` atomically.
+void writeTextAtomically(const std::filesystem::path& target,
+                         const std::function<void(std::ostream&)>& write);
+
+// For writers that insist on a file name of their own (VTK's): `write(tmp)`
+// must create the file `tmp`, which then replaces the target.
+void writeFileAtomically(const std::filesystem::path& target,
+                         const std::function<void(const std::filesystem::path&)>& write);
+
+}  // namespace tetskin

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A dataset on disk: OUT.json + OUT.node + OUT.ele, all levels in one node and
+// one element file, coarsest first.
+
+#include <filesystem>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/io/DatasetConfig.h"
+
+namespace tetskin {
+
+struct Dataset {
+  DatasetConfig config;
+  MultiLevelTetMesh mesh;
+};
+
+// Loads a dataset from its `.json` config; a `.node` or `.ele` path loads the
+// pair as a one-level dataset with default settings. Validates the level
+// ranges against the files, every node index, and (for the config) that the
+// config's ranges match the files exactly.
+Dataset loadDataset(const std::filesystem::path& path);
+
+// Writes `<stem>.node`, `<stem>.ele` beside `jsonPath` (or the names already
+// in the config), then the config, each atomically; the config comes last so
+// it never names files that are not complete. Updates config.levels' ranges
+// and file names from the mesh.
+void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset);
+
+// Resolves a level argument: -1 means the finest.
+int resolveLevel(const MultiLevelTetMesh& mesh, int level);
+
+}  // namespace tetskin

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The dataset config (`OUT.json`): which .node/.ele files hold the levels,
+// where each level lies in them and where it came from, and the defaults a
+// viewer needs to show the object at once (scale, material, texture, surface,
+// fur). Reading validates every field; unknown fields are errors, so a typo
+// never passes silently. Relative paths are relative to the config file.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tetskin/core/TetMesh.h"
+
+namespace tetskin {
+
+inline constexpr int kDatasetFormatVersion = 1;
+
+struct Material {
+  std::array<double, 3> color{0.85, 0.72, 0.62};  // linear RGB in [0, 1]
+  double specular = 0.3;                          // [0, 1]
+  double shininess = 30.0;                        // Phong exponent, (0, 1000]
+};
+
+struct FurParameters {
+  bool enabled = false;
+  int shells = 16;         // [1, 256]
+  double length = 0.03;    // relative to the bounding-box diagonal, (0, 1]
+  double density = 0.6;    // share of texels that carry a hair, [0, 1]
+  int textureSize = 128;   // fur texture edge in texels, [8, 4096]
+  std::uint32_t seed = 1;  // random seed of the fur texture
+};
+
+struct LevelSource {
+  std::string input;   // surface file the level was meshed from
+  std::string mesher;  // "tetgen", "netgen", or what else produced it
+  double quality = 0;  // TetGen radius-edge bound, or Netgen fineness preset index
+};
+
+struct LevelConfig {
+  LevelRange range;
+  LevelSource source;
+  std::map<std::string, double> statistics;  // e.g. min_dihedral_deg
+};
+
+struct DatasetConfig {
+  int version = kDatasetFormatVersion;
+  std::filesystem::path nodeFile;  // as written in the config
+  std::filesystem::path eleFile;
+  std::vector<LevelConfig> levels;  // 0 = coarsest
+  double scale = 1.0;
+  Material material;
+  std::optional<std::filesystem::path> texture;
+  std::optional<std::filesystem::path> surface;
+  FurParameters fur;
+  nlohmann::json provenance = nlohmann::json::object();
+
+  // The directory of the config file; relative paths are resolved against it.
+  std::filesystem::path directory;
+  std::filesystem::path resolve(const std::filesystem::path& p) const;
+};
+
+// `sourceName` names the file in errors, `directory` is where it lives.
+DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
+                                 const std::filesystem::path& directory);
+DatasetConfig readDatasetConfig(const std::filesystem::path& path);
+void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& config);
+
+}  // namespace tetskin

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/io/AtomicFile.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <system_error>
+
+#include "tetskin/core/Error.h"
+
+namespace tetskin {
+namespace {
+
+// A name beside the target (same file system, so rename is atomic) that no
+// other writer of this or another process picks. The extension stays last:
+// some writers (VTK's PLY writer) append theirs otherwise.
+std::filesystem::path temporaryNameFor(const std::filesystem::path& target) {
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path tmp = target;
+  tmp.replace_filename(target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                       std::to_string(counter++) + target.extension().string());
+  return tmp;
+}
+
+void removeQuietly(const std::filesystem::path& path) {
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+void renameOnto(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::error_code ec;
+  std::filesystem::rename(from, to, ec);
+  if (ec) {
+    removeQuietly(from);
+    throw Error(to.string(), 0, "cannot replace the file: " + ec.message());
+  }
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target)
+    : target_(std::move(target)), temporary_(temporaryNameFor(target_)) {
+  stream_.open(temporary_, std::ios::binary | std::ios::trunc);
+  if (!stream_) throw Error(target_.string(), 0, "cannot open for writing");
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    stream_.close();
+    removeQuietly(temporary_);
+  }
+}
+
+void AtomicFile::commit() {
+  stream_.flush();
+  const bool ok = static_cast<bool>(stream_);
+  stream_.close();
+  if (!ok || stream_.fail()) {
+    removeQuietly(temporary_);
+    committed_ = true;  // nothing left to clean up
+    throw Error(target_.string(), 0, "write failed (disk full?)");
+  }
+  committed_ = true;
+  renameOnto(temporary_, target_);
+}
+
+void writeTextAtomically(const std::filesystem::path& target,
+                         const std::function<void(std::ostream&)>& write) {
+  AtomicFile file(target);
+  write(file.stream());
+  file.commit();
+}
+
+void writeFileAtomically(const std::filesystem::path& target,
+                         const std::function<void(const std::filesystem::path&)>& write) {
+  const std::filesystem::path tmp = temporaryNameFor(target);
+  try {
+    write(tmp);
+  } catch (...) {
+    removeQuietly(tmp);
+    throw;
+  }
+  if (!std::filesystem::exists(tmp)) throw Error(target.string(), 0, "the writer produced no file");
+  renameOnto(tmp, target);
+}
+
+}  // namespace tetskin

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/io/Dataset.h"
+
+#include <cctype>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/io/TetGenFormat.h"
+
+namespace tetskin {
+namespace {
+
+bool hasExtension(const std::filesystem::path& path, const char* ext) {
+  std::string e = path.extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ext;
+}
+
+Dataset loadNodeElePair(const std::filesystem::path& path) {
+  std::filesystem::path nodePath = path, elePath = path;
+  nodePath.replace_extension(".node");
+  elePath.replace_extension(".ele");
+  Dataset dataset;
+  const TetMesh mesh = readTetMesh(nodePath, elePath);
+  appendLevel(dataset.mesh, mesh);
+  dataset.config.directory = path.parent_path();
+  dataset.config.nodeFile = nodePath.filename();
+  dataset.config.eleFile = elePath.filename();
+  LevelConfig level;
+  level.range = dataset.mesh.levels.front();
+  level.source.input = path.filename().string();
+  dataset.config.levels.push_back(level);
+  return dataset;
+}
+
+}  // namespace
+
+Dataset loadDataset(const std::filesystem::path& path) {
+  if (hasExtension(path, ".node") || hasExtension(path, ".ele")) return loadNodeElePair(path);
+  Dataset dataset;
+  dataset.config = readDatasetConfig(path);
+  const std::filesystem::path nodePath = dataset.config.resolve(dataset.config.nodeFile);
+  const std::filesystem::path elePath = dataset.config.resolve(dataset.config.eleFile);
+  const NodeFile nodes = readNode(nodePath);
+  const EleFile ele = readEle(elePath);
+  dataset.mesh.nodes = nodes.points;
+  dataset.mesh.elements = ele.corners().array() + (ele.firstIndex - nodes.firstIndex);
+  for (const LevelConfig& level : dataset.config.levels) dataset.mesh.levels.push_back(level.range);
+  // Range errors are the config's fault, index errors the .ele file's.
+  validateLevels(dataset.mesh, path.string());
+  TetMesh all{dataset.mesh.nodes, dataset.mesh.elements};
+  validateTetMesh(all, elePath.string(), /*requirePositiveVolume=*/false);
+  return dataset;
+}
+
+void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset) {
+  validateLevels(dataset.mesh, jsonPath.string());
+  DatasetConfig& config = dataset.config;
+  const std::string stem = jsonPath.stem().string();
+  if (config.nodeFile.empty()) config.nodeFile = stem + ".node";
+  if (config.eleFile.empty()) config.eleFile = stem + ".ele";
+  config.directory = jsonPath.parent_path();
+  config.levels.resize(dataset.mesh.levels.size());
+  for (std::size_t k = 0; k < config.levels.size(); ++k)
+    config.levels[k].range = dataset.mesh.levels[k];
+
+  NodeFile nodes;
+  nodes.points = dataset.mesh.nodes;
+  EleFile ele;
+  ele.elements = dataset.mesh.elements;
+  writeNode(config.resolve(config.nodeFile), nodes);
+  writeEle(config.resolve(config.eleFile), ele);
+  writeDatasetConfig(jsonPath, config);
+}
+
+int resolveLevel(const MultiLevelTetMesh& mesh, int level) {
+  const int resolved = level < 0 ? mesh.finestLevel() : level;
+  if (resolved < 0 || resolved >= mesh.levelCount())
+    throw Error("level " + std::to_string(level) + " does not exist: the dataset has levels 0.." +
+                std::to_string(mesh.levelCount() - 1));
+  return resolved;
+}
+
+}  // namespace tetskin

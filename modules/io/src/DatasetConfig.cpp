@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/io/DatasetConfig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "TextLines.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
+
+namespace tetskin {
+namespace {
+
+using nlohmann::json;
+
+// Validates one JSON object and reads typed fields out of it; errors name the
+// file and the JSON pointer of the field.
+class Fields {
+ public:
+  Fields(const json& object, std::string pointer, const std::string& file)
+      : object_(object), pointer_(std::move(pointer)), file_(file) {
+    if (!object_.is_object()) fail(pointer_.empty() ? "/" : pointer_, "must be an object");
+  }
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw Error(file_, 0, (where.empty() ? "/" : where) + ": " + what);
+  }
+
+  bool has(const char* key) const { return object_.contains(key) && !object_[key].is_null(); }
+  const json& get(const char* key) const {
+    seen_.insert(key);
+    if (!object_.contains(key)) fail(pointer_ + "/" + key, "is missing");
+    return object_[key];
+  }
+  std::string where(const char* key) const { return pointer_ + "/" + key; }
+
+  double number(const char* key, double min, double max, bool minExclusive = false) const {
+    const json& v = get(key);
+    if (!v.is_number()) fail(where(key), "must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < min || x > max || (minExclusive && x == min))
+      fail(where(key), "must lie in " + std::string(minExclusive ? "(" : "[") + fmt(min) + ", " +
+                           fmt(max) + "], found " + v.dump());
+    return x;
+  }
+  long long integer(const char* key, long long min, long long max) const {
+    const json& v = get(key);
+    if (!v.is_number_integer()) fail(where(key), "must be an integer");
+    const long long x = v.get<long long>();
+    if (x < min || x > max)
+      fail(where(key), "must lie in [" + std::to_string(min) + ", " + std::to_string(max) +
+                           "], found " + std::to_string(x));
+    return x;
+  }
+  std::string string(const char* key) const {
+    const json& v = get(key);
+    if (!v.is_string() || v.get<std::string>().empty())
+      fail(where(key), "must be a non-empty string");
+    return v.get<std::string>();
+  }
+  std::optional<std::string> optionalString(const char* key) const {
+    seen_.insert(key);
+    if (!has(key)) return std::nullopt;
+    return string(key);
+  }
+  // Fails on keys that were never asked for: typos must not pass silently.
+  void rejectUnknown() const {
+    for (const auto& [key, value] : object_.items())
+      if (!seen_.contains(key)) fail(pointer_ + "/" + key, "is not a known field");
+  }
+  void optional(const char* key) const { seen_.insert(key); }
+
+ private:
+  static std::string fmt(double x) {
+    std::string s = std::to_string(x);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+  }
+  const json& object_;
+  std::string pointer_;
+  const std::string& file_;
+  mutable std::set<std::string> seen_;
+};
+
+LevelRange readRange(const Fields& level, const char* key, const std::string& file, LevelRange r,
+                     bool nodes) {
+  const json& pair = level.get(key);
+  if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
+      !pair[1].is_number_integer() || pair[0].get<long long>() < 0 || pair[1].get<long long>() <= 0)
+    throw Error(file, 0,
+                level.where(key) + ": must be [first, count] with first >= 0 and count > 0");
+  (nodes ? r.firstNode : r.firstElement) = pair[0].get<Index>();
+  (nodes ? r.nodeCount : r.elementCount) = pair[1].get<Index>();
+  return r;
+}
+
+LevelConfig readLevel(const json& value, const std::string& pointer, const std::string& file) {
+  Fields level(value, pointer, file);
+  LevelConfig out;
+  out.range = readRange(level, "nodes", file, out.range, true);
+  out.range = readRange(level, "elements", file, out.range, false);
+  if (level.has("source")) {
+    Fields source(level.get("source"), pointer + "/source", file);
+    out.source.input = source.optionalString("input").value_or("");
+    out.source.mesher = source.optionalString("mesher").value_or("");
+    if (source.has("quality")) out.source.quality = source.number("quality", 0, 1e6);
+    source.optional("quality");
+    source.rejectUnknown();
+  }
+  level.optional("source");
+  if (level.has("statistics")) {
+    const json& stats = level.get("statistics");
+    if (!stats.is_object()) level.fail(pointer + "/statistics", "must be an object");
+    for (const auto& [key, v] : stats.items()) {
+      if (!v.is_number() || !std::isfinite(v.get<double>()))
+        level.fail(pointer + "/statistics/" + key, "must be a finite number");
+      out.statistics[key] = v.get<double>();
+    }
+  }
+  level.optional("statistics");
+  level.rejectUnknown();
+  return out;
+}
+
+}  // namespace
+
+std::filesystem::path DatasetConfig::resolve(const std::filesystem::path& p) const {
+  return p.is_absolute() ? p : directory / p;
+}
+
+DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
+                                 const std::filesystem::path& directory) {
+  json root;
+  try {
+    root = json::parse(content);
+  } catch (const json::parse_error& e) {
+    // Turn nlohmann's byte offset into the line a person looks for.
+    const std::size_t byte = std::min<std::size_t>(e.byte, content.size());
+    const long line =
+        1 + std::count(content.begin(), content.begin() + static_cast<long>(byte), '\n');
+    std::string what = e.what();
+    if (const auto pos = what.find("parse error"); pos != std::string::npos)
+      what = what.substr(pos);
+    throw Error(sourceName, line, "invalid JSON: " + what);
+  }
+  Fields top(root, "", sourceName);
+  DatasetConfig config;
+  config.directory = directory;
+  if (top.string("format") != "tetskin-dataset") top.fail("/format", "must be \"tetskin-dataset\"");
+  config.version = static_cast<int>(top.integer("version", 1, 1000));
+  if (config.version != kDatasetFormatVersion)
+    top.fail("/version", "version " + std::to_string(config.version) +
+                             " is not supported (this TetSkin reads version " +
+                             std::to_string(kDatasetFormatVersion) + ")");
+  config.nodeFile = top.string("node_file");
+  config.eleFile = top.string("ele_file");
+  const json& levels = top.get("levels");
+  if (!levels.is_array() || levels.empty()) top.fail("/levels", "must be a non-empty array");
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    config.levels.push_back(readLevel(levels[k], "/levels/" + std::to_string(k), sourceName));
+  if (top.has("scale")) config.scale = top.number("scale", 0.0, 1e12, true);
+  top.optional("scale");
+  if (top.has("material")) {
+    Fields m(top.get("material"), "/material", sourceName);
+    const json& color = m.get("color");
+    if (!color.is_array() || color.size() != 3)
+      m.fail("/material/color", "must be [r, g, b] with values in [0, 1]");
+    for (int k = 0; k < 3; ++k) {
+      if (!color[k].is_number() || color[k].get<double>() < 0 || color[k].get<double>() > 1)
+        m.fail("/material/color", "must be [r, g, b] with values in [0, 1]");
+      config.material.color[k] = color[k].get<double>();
+    }
+    config.material.specular = m.number("specular", 0, 1);
+    config.material.shininess = m.number("shininess", 0, 1000, true);
+    m.rejectUnknown();
+  }
+  top.optional("material");
+  if (auto t = top.optionalString("texture")) config.texture = *t;
+  if (auto s = top.optionalString("surface")) config.surface = *s;
+  if (top.has("fur")) {
+    Fields f(top.get("fur"), "/fur", sourceName);
+    const json& enabled = f.get("enabled");
+    if (!enabled.is_boolean()) f.fail("/fur/enabled", "must be true or false");
+    config.fur.enabled = enabled.get<bool>();
+    config.fur.shells = static_cast<int>(f.integer("shells", 1, 256));
+    config.fur.length = f.number("length", 0, 1, true);
+    config.fur.density = f.number("density", 0, 1);
+    config.fur.textureSize = static_cast<int>(f.integer("texture_size", 8, 4096));
+    config.fur.seed = static_cast<std::uint32_t>(f.integer("seed", 0, 0xffffffffLL));
+    f.rejectUnknown();
+  }
+  top.optional("fur");
+  if (top.has("provenance")) {
+    config.provenance = top.get("provenance");
+    if (!config.provenance.is_object()) top.fail("/provenance", "must be an object");
+  }
+  top.optional("provenance");
+  top.rejectUnknown();
+  return config;
+}
+
+DatasetConfig readDatasetConfig(const std::filesystem::path& path) {
+  const std::string content = detail::readWholeFile(path);
+  return parseDatasetConfig(content, path.string(), path.parent_path());
+}
+
+void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& config) {
+  json root;
+  root["format"] = "tetskin-dataset";
+  root["version"] = config.version;
+  root["node_file"] = config.nodeFile.generic_string();
+  root["ele_file"] = config.eleFile.generic_string();
+  root["levels"] = json::array();
+  for (const LevelConfig& level : config.levels) {
+    json l;
+    l["nodes"] = {level.range.firstNode, level.range.nodeCount};
+    l["elements"] = {level.range.firstElement, level.range.elementCount};
+    l["source"] = {{"input", level.source.input},
+                   {"mesher", level.source.mesher},
+                   {"quality", level.source.quality}};
+    if (level.source.input.empty()) l["source"].erase("input");
+    if (level.source.mesher.empty()) l["source"].erase("mesher");
+    if (!level.statistics.empty()) l["statistics"] = level.statistics;
+    root["levels"].push_back(l);
+  }
+  root["scale"] = config.scale;
+  root["material"] = {{"color", config.material.color},
+                      {"specular", config.material.specular},
+                      {"shininess", config.material.shininess}};
+  root["texture"] = config.texture ? json(config.texture->generic_string()) : json(nullptr);
+  root["surface"] = config.surface ? json(config.surface->generic_string()) : json(nullptr);
+  root["fur"] = {{"enabled", config.fur.enabled},
+                 {"shells", config.fur.shells},
+                 {"length", config.fur.length},
+                 {"density", config.fur.density},
+                 {"texture_size", config.fur.textureSize},
+                 {"seed", config.fur.seed}};
+  root["provenance"] = config.provenance;
+  writeTextAtomically(path, [&](std::ostream& out) { out << root.dump(2) << '\n'; });
+}
+
+}  // namespace tetskin

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Adapters between TetSkin's plain meshes and VTK data objects, so kernels stay
+// free of VTK while pipelines, writers and renderers get VTK types.
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace tetskin {
+
+// Triangles as polys; normals become the active point normals ("Normals"),
+// texture coordinates the active TCoords ("TCoords").
+vtkSmartPointer<vtkPolyData> toVtkPolyData(const SurfaceMesh& mesh);
+
+// Polygons are triangulated; vertices, lines and strips are ignored. Active
+// point normals and 2-component TCoords are kept. Throws Error naming
+// `sourceName` when there are no triangles or a coordinate is not finite.
+SurfaceMesh fromVtkPolyData(vtkPolyData* polyData, const std::string& sourceName);
+
+// Linear tetrahedra as VTK_TETRA cells.
+vtkSmartPointer<vtkUnstructuredGrid> toVtkUnstructuredGrid(const TetMesh& mesh);
+
+// Requires every cell to be a VTK_TETRA; throws Error naming the first other cell.
+TetMesh fromVtkUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& sourceName);
+
+}  // namespace tetskin

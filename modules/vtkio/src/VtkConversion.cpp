@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/vtkio/VtkConversion.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellTypes.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "tetskin/core/Error.h"
+
+namespace tetskin {
+namespace {
+
+vtkSmartPointer<vtkPoints> toVtkPoints(const Points3& points) {
+  auto out = vtkSmartPointer<vtkPoints>::New();
+  out->SetDataTypeToDouble();
+  out->SetNumberOfPoints(points.rows());
+  for (Index i = 0; i < points.rows(); ++i)
+    out->SetPoint(i, points(i, 0), points(i, 1), points(i, 2));
+  return out;
+}
+
+Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
+  const Index n = points ? points->GetNumberOfPoints() : 0;
+  Points3 out(n, 3);
+  for (Index i = 0; i < n; ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    out.row(i) << p[0], p[1], p[2];
+    if (!out.row(i).allFinite())
+      throw Error(sourceName, 0, "point " + std::to_string(i) + " has a non-finite coordinate");
+  }
+  return out;
+}
+
+// Fixed-size connectivity: offsets 0, k, 2k, ... and the flattened ids.
+template <int K, typename Matrix>
+vtkSmartPointer<vtkCellArray> toCells(const Matrix& cells) {
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(cells.rows() + 1);
+  connectivity->SetNumberOfValues(cells.rows() * K);
+  for (Index c = 0; c <= cells.rows(); ++c) offsets->SetValue(c, c * K);
+  for (Index c = 0; c < cells.rows(); ++c)
+    for (int k = 0; k < K; ++k) connectivity->SetValue(c * K + k, cells(c, k));
+  auto out = vtkSmartPointer<vtkCellArray>::New();
+  out->SetData(offsets, connectivity);
+  return out;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> toVtkPolyData(const SurfaceMesh& mesh) {
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(toVtkPoints(mesh.positions));
+  out->SetPolys(toCells<3>(mesh.triangles));
+  if (mesh.hasNormals()) {
+    auto normals = vtkSmartPointer<vtkDoubleArray>::New();
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(mesh.normals.rows());
+    for (Index i = 0; i < mesh.normals.rows(); ++i)
+      normals->SetTuple(i, mesh.normals.row(i).data());
+    out->GetPointData()->SetNormals(normals);
+  }
+  if (mesh.hasTexcoords()) {
+    auto tcoords = vtkSmartPointer<vtkDoubleArray>::New();
+    tcoords->SetName("TCoords");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(mesh.texcoords.rows());
+    for (Index i = 0; i < mesh.texcoords.rows(); ++i)
+      tcoords->SetTuple(i, mesh.texcoords.row(i).data());
+    out->GetPointData()->SetTCoords(tcoords);
+  }
+  return out;
+}
+
+SurfaceMesh fromVtkPolyData(vtkPolyData* polyData, const std::string& sourceName) {
+  if (!polyData || polyData->GetNumberOfPolys() == 0)
+    throw Error(sourceName, 0, "contains no triangles");
+  vtkSmartPointer<vtkPolyData> triangulated = polyData;
+  if (polyData->GetPolys()->IsHomogeneous() != 3) {
+    auto filter = vtkSmartPointer<vtkTriangleFilter>::New();
+    filter->SetInputData(polyData);
+    filter->PassVertsOff();
+    filter->PassLinesOff();
+    filter->Update();
+    triangulated = filter->GetOutput();
+  }
+  SurfaceMesh mesh;
+  mesh.positions = fromVtkPoints(triangulated->GetPoints(), sourceName);
+  vtkCellArray* polys = triangulated->GetPolys();
+  mesh.triangles.resize(polys->GetNumberOfCells(), 3);
+  Index t = 0;
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids); ++t) {
+    if (size != 3)
+      throw Error(sourceName, 0, "polygon " + std::to_string(t) + " could not be triangulated");
+    for (int k = 0; k < 3; ++k) mesh.triangles(t, k) = static_cast<int>(ids[k]);
+  }
+  vtkPointData* pd = triangulated->GetPointData();
+  if (vtkDataArray* normals = pd->GetNormals(); normals && normals->GetNumberOfComponents() == 3) {
+    mesh.normals.resize(normals->GetNumberOfTuples(), 3);
+    for (Index i = 0; i < mesh.normals.rows(); ++i)
+      for (int k = 0; k < 3; ++k) mesh.normals(i, k) = normals->GetComponent(i, k);
+  }
+  if (vtkDataArray* tc = pd->GetTCoords(); tc && tc->GetNumberOfComponents() >= 2) {
+    mesh.texcoords.resize(tc->GetNumberOfTuples(), 2);
+    for (Index i = 0; i < mesh.texcoords.rows(); ++i)
+      for (int k = 0; k < 2; ++k) mesh.texcoords(i, k) = tc->GetComponent(i, k);
+  }
+  validateSurface(mesh, sourceName);
+  return mesh;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> toVtkUnstructuredGrid(const TetMesh& mesh) {
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(toVtkPoints(mesh.nodes));
+  auto types = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  types->SetNumberOfValues(mesh.elementCount());
+  types->FillValue(VTK_TETRA);
+  out->SetCells(types, toCells<4>(mesh.elements));
+  return out;
+}
+
+TetMesh fromVtkUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& sourceName) {
+  if (!grid || grid->GetNumberOfCells() == 0) throw Error(sourceName, 0, "contains no cells");
+  TetMesh mesh;
+  mesh.nodes = fromVtkPoints(grid->GetPoints(), sourceName);
+  mesh.elements.resize(grid->GetNumberOfCells(), 4);
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    if (grid->GetCellType(c) != VTK_TETRA)
+      throw Error(sourceName, 0,
+                  "cell " + std::to_string(c) + " is a " +
+                      vtkCellTypes::GetClassNameFromTypeId(grid->GetCellType(c)) +
+                      ", not a linear tetrahedron");
+    grid->GetCellPoints(c, size, ids);
+    for (int k = 0; k < 4; ++k) mesh.elements(c, k) = static_cast<int>(ids[k]);
+  }
+  validateTetMesh(mesh, sourceName, /*requirePositiveVolume=*/false);
+  return mesh;
+}
+
+}  // namespace tetskin

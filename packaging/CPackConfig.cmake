@@ -1,0 +1,24 @@
+# CPack: `cpack -G DEB` in the build folder makes a Debian package with the
+# executables, the bundled data and a desktop entry.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION share/tetskin/data
+  PATTERN "tools" EXCLUDE)
+install(FILES ${PROJECT_SOURCE_DIR}/packaging/tetskin.desktop DESTINATION share/applications)
+install(FILES ${PROJECT_SOURCE_DIR}/packaging/tetskin.svg
+  DESTINATION share/icons/hicolor/scalable/apps)
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/README.md
+  DESTINATION share/doc/tetskin)
+
+set(CPACK_PACKAGE_NAME tetskin)
+set(CPACK_PACKAGE_VENDOR "TetSkin developers")
+set(CPACK_PACKAGE_CONTACT "TetSkin developers <tetskin@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+  "Real-time deformable bodies: tetrahedral control mesh, bound high-resolution surface, fur")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
+set(CPACK_GENERATOR DEB)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+# dpkg-shlibdeps derives the runtime library dependencies (VTK, Qt, TetGen, TBB).
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+include(CPack)

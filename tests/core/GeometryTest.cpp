@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "tetskin/core/Geometry.h"
+
+namespace tetskin {
+namespace {
+
+const Eigen::Vector3d O(0, 0, 0), X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
+
+TEST(Geometry, UnitTetrahedronHasVolumeOneSixthAndSignFollowsOrientation) {
+  EXPECT_DOUBLE_EQ(signedTetVolume(O, X, Y, Z), 1.0 / 6.0);
+  EXPECT_DOUBLE_EQ(signedTetVolume(O, Y, X, Z), -1.0 / 6.0);
+  EXPECT_DOUBLE_EQ(signedTetVolume(O, X, 2 * X, Z), 0.0);
+}
+
+TEST(Geometry, VolumeScalesWithTheCubeOfTheSize) {
+  EXPECT_NEAR(signedTetVolume(3 * O, 3 * X, 3 * Y, 3 * Z), 27.0 / 6.0, 1e-12);
+}
+
+TEST(Geometry, TriangleAreaAndUnitNormal) {
+  EXPECT_DOUBLE_EQ(triangleArea(O, 2 * X, 2 * Y), 2.0);
+  EXPECT_TRUE(triangleNormal(O, X, Y).isApprox(Z));
+  EXPECT_TRUE(triangleNormal(O, Y, X).isApprox(-Z));
+  EXPECT_TRUE(triangleAreaVector(O, 2 * X, 2 * Y).isApprox(2 * Z));
+}
+
+TEST(Geometry, DegenerateTriangleHasZeroNormal) {
+  EXPECT_EQ(triangleNormal(O, X, 2 * X), Eigen::Vector3d::Zero());
+  EXPECT_EQ(triangleNormal(X, X, X), Eigen::Vector3d::Zero());
+}
+
+TEST(Geometry, BoundingBoxOfPoints) {
+  Points3 p(3, 3);
+  p << 1, 2, 3, -1, 5, 0, 4, -2, 1;
+  const BoundingBox box = boundingBox(p);
+  EXPECT_EQ(box.min, Eigen::Vector3d(-1, -2, 0));
+  EXPECT_EQ(box.max, Eigen::Vector3d(4, 5, 3));
+  EXPECT_DOUBLE_EQ(box.diagonal(), std::sqrt(25.0 + 49.0 + 9.0));
+  EXPECT_EQ(box.center(), Eigen::Vector3d(1.5, 1.5, 1.5));
+}
+
+TEST(Geometry, EmptyBoundingBox) {
+  const BoundingBox box = boundingBox(Points3(0, 3));
+  EXPECT_TRUE(box.empty());
+  EXPECT_EQ(box.diagonal(), 0.0);
+  BoundingBox grown;
+  grown.extend(X);
+  EXPECT_FALSE(grown.empty());
+  EXPECT_EQ(grown.min, X);
+}
+
+}  // namespace
+}  // namespace tetskin

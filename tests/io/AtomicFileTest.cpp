@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "TestFiles.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/ObjFormat.h"
+
+namespace tetskin {
+namespace {
+
+TEST(AtomicFile, CommitReplacesTheTarget) {
+  test::ScratchDir dir;
+  dir.write("out.txt", "old");
+  writeTextAtomically(dir / "out.txt", [](std::ostream& out) { out << "new"; });
+  EXPECT_EQ(test::readText(dir / "out.txt"), "new");
+  EXPECT_EQ(dir.listing(), "out.txt\n");
+}
+
+TEST(AtomicFile, FailureInTheMiddleKeepsTheOldFileAndLeavesNoTemporary) {
+  test::ScratchDir dir;
+  dir.write("out.txt", "old");
+  EXPECT_THROW(writeTextAtomically(dir / "out.txt",
+                                   [](std::ostream& out) {
+                                     out << "half of it";
+                                     throw Error("disk on fire");
+                                   }),
+               Error);
+  EXPECT_EQ(test::readText(dir / "out.txt"), "old");
+  EXPECT_EQ(dir.listing(), "out.txt\n");
+}
+
+TEST(AtomicFile, FailedWriteLeavesNoNewFile) {
+  test::ScratchDir dir;
+  EXPECT_THROW(writeFileAtomically(dir / "x.vtp",
+                                   [](const std::filesystem::path& tmp) {
+                                     std::ofstream(tmp) << "partial";
+                                     throw Error("writer failed");
+                                   }),
+               Error);
+  EXPECT_EQ(dir.listing(), "");
+}
+
+TEST(AtomicFile, UnwritableDirectoryIsAClearError) {
+  try {
+    writeTextAtomically("/nonexistent/dir/out.txt", [](std::ostream&) {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/dir/out.txt");
+  }
+}
+
+TEST(AtomicFile, WriterRejectingInvalidMeshWritesNothing) {
+  test::ScratchDir dir;
+  SurfaceMesh m;
+  m.positions = Points3::Zero(3, 3);
+  m.triangles.resize(1, 3);
+  m.triangles << 0, 1, 7;
+  EXPECT_THROW(writeObj(dir / "m.obj", m), Error);
+  EXPECT_EQ(dir.listing(), "");
+}
+
+}  // namespace
+}  // namespace tetskin

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "TestFiles.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/DatasetConfig.h"
+
+namespace tetskin {
+namespace {
+
+constexpr std::string_view kConfig = R"({
+  "format": "tetskin-dataset",
+  "version": 1,
+  "node_file": "bunny.node",
+  "ele_file": "bunny.ele",
+  "levels": [
+    {"nodes": [0, 4], "elements": [0, 1],
+     "source": {"input": "bunny.obj", "mesher": "tetgen", "quality": 2.0},
+     "statistics": {"min_dihedral_deg": 12.5}},
+    {"nodes": [4, 5], "elements": [1, 2]}
+  ],
+  "scale": 2.0,
+  "material": {"color": [0.5, 0.25, 1.0], "specular": 0.5, "shininess": 40},
+  "texture": "fur.png",
+  "surface": "surfaces/bunny_64k.obj",
+  "fur": {"enabled": true, "shells": 24, "length": 0.05, "density": 0.7,
+          "texture_size": 256, "seed": 42},
+  "provenance": {"tool": "test"}
+})";
+
+void expectConfigError(const std::string& content, const std::string& what, long line = 0) {
+  try {
+    parseDatasetConfig(content, "d.json", "/data");
+    FAIL() << "expected an error containing '" << what << "'";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), "d.json");
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_NE(e.message().find(what), std::string::npos) << e.what();
+  }
+}
+
+std::string replaced(std::string_view text, const std::string& from, const std::string& to) {
+  std::string s(text);
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return s.replace(pos, from.size(), to);
+}
+
+TEST(DatasetConfig, ReadsEveryField) {
+  const DatasetConfig c = parseDatasetConfig(kConfig, "d.json", "/data");
+  EXPECT_EQ(c.nodeFile, "bunny.node");
+  ASSERT_EQ(c.levels.size(), 2u);
+  EXPECT_EQ(c.levels[1].range, (LevelRange{4, 5, 1, 2}));
+  EXPECT_EQ(c.levels[0].source.mesher, "tetgen");
+  EXPECT_EQ(c.levels[0].statistics.at("min_dihedral_deg"), 12.5);
+  EXPECT_EQ(c.scale, 2.0);
+  EXPECT_EQ(c.material.color[1], 0.25);
+  EXPECT_EQ(c.material.shininess, 40.0);
+  EXPECT_EQ(c.texture, std::filesystem::path("fur.png"));
+  EXPECT_EQ(c.resolve(*c.surface), std::filesystem::path("/data/surfaces/bunny_64k.obj"));
+  EXPECT_EQ(c.resolve("/abs/x.obj"), std::filesystem::path("/abs/x.obj"));
+  EXPECT_TRUE(c.fur.enabled);
+  EXPECT_EQ(c.fur.shells, 24);
+  EXPECT_EQ(c.fur.seed, 42u);
+  EXPECT_EQ(c.provenance["tool"], "test");
+}
+
+TEST(DatasetConfig, OptionalFieldsTakeDefaults) {
+  const DatasetConfig c = parseDatasetConfig(
+      R"({"format":"tetskin-dataset","version":1,"node_file":"a.node","ele_file":"a.ele",
+          "levels":[{"nodes":[0,4],"elements":[0,1]}], "texture": null})",
+      "d.json", ".");
+  EXPECT_EQ(c.scale, 1.0);
+  EXPECT_FALSE(c.texture);
+  EXPECT_FALSE(c.surface);
+  EXPECT_FALSE(c.fur.enabled);
+  EXPECT_EQ(c.material.specular, Material{}.specular);
+}
+
+TEST(DatasetConfig, WriteThenReadIsEqual) {
+  test::ScratchDir dir;
+  const DatasetConfig c = parseDatasetConfig(kConfig, "d.json", dir.path());
+  writeDatasetConfig(dir / "d.json", c);
+  const DatasetConfig back = readDatasetConfig(dir / "d.json");
+  EXPECT_EQ(back.directory, dir.path());
+  EXPECT_EQ(back.levels[0].range, c.levels[0].range);
+  EXPECT_EQ(back.levels[1].range, c.levels[1].range);
+  EXPECT_EQ(back.levels[0].source.input, c.levels[0].source.input);
+  EXPECT_EQ(back.levels[0].statistics, c.levels[0].statistics);
+  EXPECT_EQ(back.material.color, c.material.color);
+  EXPECT_EQ(back.surface, c.surface);
+  EXPECT_EQ(back.fur.textureSize, c.fur.textureSize);
+  EXPECT_EQ(back.provenance, c.provenance);
+}
+
+TEST(DatasetConfig, InvalidFieldsNameTheirJsonPointer) {
+  expectConfigError(replaced(kConfig, R"("version": 1)", R"("version": 2)"), "/version:");
+  expectConfigError(replaced(kConfig, R"("format": "tetskin-dataset")", R"("format": "x")"),
+                    "/format:");
+  expectConfigError(replaced(kConfig, R"("node_file": "bunny.node",)", ""),
+                    "/node_file: is missing");
+  expectConfigError(replaced(kConfig, R"("nodes": [4, 5])", R"("nodes": [4, -5])"),
+                    "/levels/1/nodes: must be [first, count]");
+  expectConfigError(replaced(kConfig, R"("scale": 2.0)", R"("scale": 0)"), "/scale: must lie in");
+  expectConfigError(replaced(kConfig, R"("specular": 0.5)", R"("specular": 1.5)"),
+                    "/material/specular");
+  expectConfigError(replaced(kConfig, R"([0.5, 0.25, 1.0])", R"([0.5, 0.25])"), "/material/color");
+  expectConfigError(replaced(kConfig, R"("shells": 24)", R"("shells": 0)"), "/fur/shells");
+  expectConfigError(replaced(kConfig, R"("seed": 42)", R"("seed": 4.5)"),
+                    "/fur/seed: must be an integer");
+  expectConfigError(replaced(kConfig, R"("scale": 2.0)", R"("scael": 2.0)"),
+                    "/scael: is not a known field");
+  expectConfigError(replaced(kConfig, R"("levels": [)", R"("levels": [], "x": [)"),
+                    "/levels: must be a non-empty array");
+  expectConfigError(replaced(kConfig, R"("min_dihedral_deg": 12.5)", R"("min_dihedral_deg": "a")"),
+                    "/levels/0/statistics/min_dihedral_deg");
+}
+
+TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
+  expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
+  expectConfigError("", "invalid JSON", 1);
+  expectConfigError("[1, 2]", "/: must be an object");
+}
+
+}  // namespace
+}  // namespace tetskin

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "TestFiles.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/Dataset.h"
+
+namespace tetskin {
+namespace {
+
+TetMesh cubeCorner(double scale) {
+  TetMesh m;
+  m.nodes.resize(5, 3);
+  m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1;
+  m.nodes *= scale;
+  m.elements.resize(2, 4);
+  m.elements << 0, 1, 2, 3, 4, 1, 3, 2;
+  return m;
+}
+
+Dataset twoLevels() {
+  Dataset d;
+  appendLevel(d.mesh, cubeCorner(1.0));
+  appendLevel(d.mesh, cubeCorner(2.0));
+  d.config.levels.resize(2);
+  d.config.levels[0].source = {"in.obj", "tetgen", 2.0};
+  d.config.surface = "in.obj";
+  return d;
+}
+
+TEST(Dataset, SaveThenLoadIsExact) {
+  test::ScratchDir dir;
+  Dataset d = twoLevels();
+  saveDataset(dir / "d.json", d);
+  EXPECT_EQ(dir.listing(), "d.ele\nd.json\nd.node\n");
+  const Dataset back = loadDataset(dir / "d.json");
+  EXPECT_EQ(back.mesh.nodes, d.mesh.nodes);
+  EXPECT_EQ(back.mesh.elements, d.mesh.elements);
+  EXPECT_EQ(back.mesh.levels, d.mesh.levels);
+  EXPECT_EQ(back.config.levels[0].source.quality, 2.0);
+  EXPECT_EQ(back.config.resolve(*back.config.surface), dir / "in.obj");
+}
+
+TEST(Dataset, ConfigRangesMustMatchTheFiles) {
+  test::ScratchDir dir;
+  Dataset d = twoLevels();
+  saveDataset(dir / "d.json", d);
+  nlohmann::json json = nlohmann::json::parse(test::readText(dir / "d.json"));
+  json["levels"][1]["nodes"] = {5, 6};  // one node more than the files hold
+  dir.write("d.json", json.dump());
+  try {
+    loadDataset(dir / "d.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), (dir / "d.json").string());
+    EXPECT_NE(e.message().find("level 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Dataset, MissingNodeFileIsNamed) {
+  test::ScratchDir dir;
+  Dataset d = twoLevels();
+  saveDataset(dir / "d.json", d);
+  std::filesystem::remove(dir / "d.node");
+  try {
+    loadDataset(dir / "d.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), (dir / "d.node").string());
+  }
+}
+
+TEST(Dataset, NodeElePairLoadsAsOneLevel) {
+  test::ScratchDir dir;
+  dir.write("m.node", "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n");
+  dir.write("m.ele", "2 4 0\n1 1 2 3 4\n2 5 2 4 3\n");
+  const Dataset d = loadDataset(dir / "m.ele");
+  ASSERT_EQ(d.mesh.levelCount(), 1);
+  EXPECT_EQ(d.mesh.levels[0], (LevelRange{0, 5, 0, 2}));
+  EXPECT_EQ(d.mesh.elements.row(1), Eigen::RowVector4i(4, 1, 3, 2));
+  EXPECT_EQ(resolveLevel(d.mesh, -1), 0);
+  EXPECT_THROW(resolveLevel(d.mesh, 1), Error);
+}
+
+}  // namespace
+}  // namespace tetskin

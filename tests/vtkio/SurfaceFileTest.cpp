@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "TestFiles.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/ObjFormat.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin {
+namespace {
+
+SurfaceMesh bunny() {
+  return readObj(std::string(TETSKIN_SOURCE_DIR) + "/data/bunny.obj");
+}
+
+TEST(SurfaceFile, EveryFormatRoundTrips) {
+  test::ScratchDir dir;
+  const SurfaceMesh m = bunny();
+  for (const char* name : {"b.obj", "b.ply", "b.stl", "b.vtp"}) {
+    SCOPED_TRACE(name);
+    writeSurface(dir / name, m);
+    const SurfaceMesh back = readSurface(dir / name);
+    EXPECT_EQ(back.triangleCount(), m.triangleCount());
+    EXPECT_EQ(back.vertexCount(), m.vertexCount());
+    // PLY and STL store floats.
+    EXPECT_NEAR(surfaceArea(back), surfaceArea(m), 1e-5 * surfaceArea(m));
+  }
+  EXPECT_EQ(dir.listing(), "b.obj\nb.ply\nb.stl\nb.vtp\n");
+}
+
+TEST(SurfaceFile, BrokenFilesGiveErrorsNamingTheFile) {
+  test::ScratchDir dir;
+  std::string garbage;
+  for (int i = 0; i < 1000; ++i) garbage.push_back(static_cast<char>((i * 31) % 256));
+  for (const char* name : {"g.ply", "g.vtp", "g.obj"}) {
+    SCOPED_TRACE(name);
+    const auto path = dir.write(name, garbage);
+    try {
+      readSurface(path);
+      FAIL();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.file(), path.string()) << e.what();
+    }
+  }
+  dir.write("empty.stl", "");
+  EXPECT_THROW(readSurface(dir / "empty.stl"), Error);
+  EXPECT_THROW(readSurface(dir / "missing.ply"), Error);
+  EXPECT_THROW(readSurface(dir / "x.abc"), Error);
+}
+
+TEST(SurfaceFile, VtuRoundTrip) {
+  test::ScratchDir dir;
+  TetMesh m;
+  m.nodes.resize(4, 3);
+  m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  m.elements.resize(1, 4);
+  m.elements << 0, 1, 2, 3;
+  writeVtu(dir / "m.vtu", toVtkUnstructuredGrid(m));
+  const TetMesh back = fromVtkUnstructuredGrid(readVtu(dir / "m.vtu"), "m.vtu");
+  EXPECT_EQ(back.nodes, m.nodes);
+  EXPECT_EQ(back.elements, m.elements);
+}
+
+TEST(SurfaceFile, AssimpPlyAndStlCorpus) {
+  const std::filesystem::path corpus = "/usr/share/assimp/models";
+  if (!std::filesystem::is_directory(corpus)) GTEST_SKIP() << "assimp-testmodels not installed";
+  int read = 0, rejected = 0;
+  for (const char* sub : {"PLY", "STL"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(corpus / sub)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext != ".ply" && ext != ".stl") continue;
+      SCOPED_TRACE(entry.path().string());
+      try {
+        const SurfaceMesh m = readSurface(entry.path());
+        EXPECT_GT(m.triangleCount(), 0);
+        ++read;
+      } catch (const Error& e) {
+        EXPECT_EQ(e.file(), entry.path().string());
+        ++rejected;
+      }
+    }
+  }
+  std::printf("PLY/STL corpus: %d read, %d rejected with an error\n", read, rejected);
+  EXPECT_GT(read, 3);
+}
+
+}  // namespace
+}  // namespace tetskin

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/vtkio/VtkConversion.h"
+
+namespace tetskin {
+namespace {
+
+SurfaceMesh triangle() {
+  SurfaceMesh m;
+  m.positions.resize(3, 3);
+  m.positions << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  m.triangles.resize(1, 3);
+  m.triangles << 0, 1, 2;
+  m.normals = Points3::Zero(3, 3);
+  m.normals.col(2).setOnes();
+  m.texcoords.resize(3, 2);
+  m.texcoords << 0, 0, 1, 0, 0, 1;
+  return m;
+}
+
+TEST(VtkConversion, SurfaceRoundTripKeepsAttributes) {
+  const SurfaceMesh m = triangle();
+  vtkSmartPointer<vtkPolyData> pd = toVtkPolyData(m);
+  EXPECT_EQ(pd->GetNumberOfPoints(), 3);
+  EXPECT_EQ(pd->GetNumberOfPolys(), 1);
+  ASSERT_NE(pd->GetPointData()->GetNormals(), nullptr);
+  ASSERT_NE(pd->GetPointData()->GetTCoords(), nullptr);
+  const SurfaceMesh back = fromVtkPolyData(pd, "t");
+  EXPECT_EQ(back.positions, m.positions);
+  EXPECT_EQ(back.triangles, m.triangles);
+  EXPECT_EQ(back.normals, m.normals);
+  EXPECT_EQ(back.texcoords, m.texcoords);
+}
+
+TEST(VtkConversion, QuadsAreTriangulated) {
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  for (double p : {0.0, 1.0})
+    for (double q : {0.0, 1.0}) pts->InsertNextPoint(p, q, 0);
+  pd->SetPoints(pts);
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType quad[] = {0, 2, 3, 1};
+  polys->InsertNextCell(4, quad);
+  pd->SetPolys(polys);
+  const SurfaceMesh m = fromVtkPolyData(pd, "quad");
+  EXPECT_EQ(m.triangleCount(), 2);
+  EXPECT_NEAR(surfaceArea(m), 1.0, 1e-12);
+}
+
+TEST(VtkConversion, EmptyPolyDataIsAnError) {
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  EXPECT_THROW(fromVtkPolyData(pd, "empty"), Error);
+  EXPECT_THROW(fromVtkPolyData(nullptr, "null"), Error);
+}
+
+TEST(VtkConversion, TetMeshRoundTrip) {
+  TetMesh m;
+  m.nodes.resize(4, 3);
+  m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  m.elements.resize(1, 4);
+  m.elements << 0, 1, 2, 3;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(m);
+  EXPECT_EQ(grid->GetNumberOfCells(), 1);
+  EXPECT_EQ(grid->GetCellType(0), VTK_TETRA);
+  const TetMesh back = fromVtkUnstructuredGrid(grid, "g");
+  EXPECT_EQ(back.nodes, m.nodes);
+  EXPECT_EQ(back.elements, m.elements);
+}
+
+TEST(VtkConversion, NonTetraCellIsNamed) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  for (int i = 0; i < 4; ++i) pts->InsertNextPoint(i, i * i, 0);
+  grid->SetPoints(pts);
+  const vtkIdType tri[] = {0, 1, 2};
+  grid->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  try {
+    fromVtkUnstructuredGrid(grid, "g.vtu");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cell 0 is a vtkTriangle"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tetskin

@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# TetSkin's one entry point on a Debian bookworm machine.
+#   ./tetskin.sh demo   install what is missing, build, run the main job on the bundled bunny
+#   ./tetskin.sh test   install what is missing, build, run the whole test suite
+#   ./tetskin.sh build  install what is missing and build (Release, in build/)
+#   ./tetskin.sh deps   only install the Debian packages
+# Environment: BUILD_DIR (default build), JOBS (default: all cores).
+set -euo pipefail
+cd "$(dirname "$0")"
+ROOT=$PWD
+BUILD_DIR=${BUILD_DIR:-build}
+JOBS=${JOBS:-$(nproc)}
+
+DEPS=(
+  cmake ninja-build g++ pkg-config ccache
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
+  libvtk9-qt-dev qtbase5-dev libglew-dev
+  libtet1.5-dev libnglib-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth assimp-testmodels
+)
+
+log() { printf '\n==> %s\n' "$*" >&2; }
+
+install_deps() {
+  local missing=()
+  for p in "${DEPS[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# configure DIR [cmake args...]
+configure() {
+  local dir=$1
+  shift
+  cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTETSKIN_WERROR=ON \
+    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache "$@" >/dev/null
+}
+
+build() {
+  install_deps
+  log "building in $BUILD_DIR"
+  configure "$BUILD_DIR"
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+# Everything that needs an X display (rendering, GUI) runs under Xvfb when
+# there is no display of our own.
+with_display() {
+  if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x1024x24" "$@"; fi
+}
+
+demo() {
+  build
+  local tetskin=$BUILD_DIR/app/cli/tetskin out=out/demo
+  mkdir -p "$out"
+  log "the bundled surfaces"
+  "$tetskin" info data/bunny.obj data/bunny_8k.obj data/bunny_64k.obj
+  log "export for ParaView"
+  "$tetskin" convert data/bunny_64k.obj "$out/bunny_64k.vtp"
+  log "demo outputs are in $out/ (open them in ParaView)"
+}
+
+sanitized_io_tests() {
+  # The readers face hostile input: run their tests under ASan + UBSan.
+  log "IO tests under AddressSanitizer + UndefinedBehaviorSanitizer"
+  local dir=${BUILD_DIR}-asan
+  configure "$dir" -DCMAKE_BUILD_TYPE=Debug -DTETSKIN_SANITIZE=ON -DTETSKIN_BUILD_GUI=OFF \
+    -DTETSKIN_BUILD_BENCHMARKS=OFF
+  cmake --build "$dir" -j "$JOBS" --target core_tests io_tests vtkio_tests tetskin
+  (cd "$dir" && ASAN_OPTIONS=detect_leaks=0 ctest -j "$JOBS" -L "core|io|vtkio|cli" \
+    --output-on-failure --no-tests=error)
+}
+
+run_tests() {
+  build
+  sanitized_io_tests
+  log "the whole test suite"
+  (cd "$BUILD_DIR" && with_display ctest -j "$JOBS" --output-on-failure --no-tests=error)
+}
+
+case "${1:-}" in
+  deps) install_deps ;;
+  build) build ;;
+  demo) demo ;;
+  test) run_tests ;;
+  *)
+    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+    exit 2
+    ;;
+esac
