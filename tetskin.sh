@@ -62,8 +62,13 @@ demo() {
   mkdir -p "$out"
   log "the bundled surfaces"
   "$tetskin" info data/bunny.obj data/bunny_8k.obj data/bunny_64k.obj
+  log "model generation: bunny -> multi-level tetrahedral dataset"
+  "$tetskin" build data/bunny.obj --decimate --levels 3 --min-elements 600 \
+    --max-elements 12000 -o "$out/bunny"
+  "$tetskin" info "$out/bunny.json"
   log "export for ParaView"
   "$tetskin" convert data/bunny_64k.obj "$out/bunny_64k.vtp"
+  for level in 0 1 2; do "$tetskin" convert "$out/bunny.json" "$out/bunny_level$level.vtu" --level $level; done
   log "demo outputs are in $out/ (open them in ParaView)"
 }
 

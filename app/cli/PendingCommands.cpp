@@ -15,7 +15,6 @@ void addPendingCommands(CLI::App& app) {
     const char* description;
   };
   static const Pending pending[] = {
-      {"build", "Model generation: OBJ surfaces -> multi-level dataset (not available yet)"},
       {"bind", "Bind a surface to a dataset level (not available yet)"},
       {"simulate", "Run the FEM simulation of the control mesh (not available yet)"},
       {"deform", "Apply a control-mesh state to a bound surface (not available yet)"},

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
       "tetskin"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "tetskin 0.1.0");
+  tetskin::cli::addBuildCommand(app);
   tetskin::cli::addInfoCommand(app);
   tetskin::cli::addConvertCommand(app);
   tetskin::cli::addPendingCommands(app);

@@ -3,6 +3,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "Shapes.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/ObjFormat.h"
@@ -54,11 +55,7 @@ TEST(SurfaceFile, BrokenFilesGiveErrorsNamingTheFile) {
 
 TEST(SurfaceFile, VtuRoundTrip) {
   test::ScratchDir dir;
-  TetMesh m;
-  m.nodes.resize(4, 3);
-  m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  m.elements.resize(1, 4);
-  m.elements << 0, 1, 2, 3;
+  const TetMesh m = test::unitTetrahedron();
   writeVtu(dir / "m.vtu", toVtkUnstructuredGrid(m));
   const TetMesh back = fromVtkUnstructuredGrid(readVtu(dir / "m.vtu"), "m.vtu");
   EXPECT_EQ(back.nodes, m.nodes);

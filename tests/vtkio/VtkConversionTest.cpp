@@ -7,6 +7,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/vtkio/VtkConversion.h"
 
@@ -62,11 +63,7 @@ TEST(VtkConversion, EmptyPolyDataIsAnError) {
 }
 
 TEST(VtkConversion, TetMeshRoundTrip) {
-  TetMesh m;
-  m.nodes.resize(4, 3);
-  m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  m.elements.resize(1, 4);
-  m.elements << 0, 1, 2, 3;
+  const TetMesh m = test::unitTetrahedron();
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(m);
   EXPECT_EQ(grid->GetNumberOfCells(), 1);
   EXPECT_EQ(grid->GetCellType(0), VTK_TETRA);

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "Commands.h"
+#include "Progress.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+
+namespace tetskin::cli {
+namespace {
+
+struct BuildArgs {
+  std::vector<std::filesystem::path> inputs;
+  std::filesystem::path output;
+  std::string lodSeries;
+  int lodInputs = 0;
+  std::string mesher = "tetgen";
+  std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
+  BuildOptions options;
+  bool quiet = false;
+};
+
+std::vector<std::filesystem::path> inputPaths(const BuildArgs& a) {
+  std::vector<std::filesystem::path> paths = a.inputs;
+  if (!a.lodSeries.empty()) {
+    if (a.lodInputs < 1) throw Error("--lod-series needs --inputs K (K >= 1)");
+    for (int k = 0; k < a.lodInputs; ++k)
+      paths.emplace_back(a.lodSeries + "_" + std::to_string(k) + ".obj");
+  }
+  if (paths.empty()) throw Error("no input: give surface files or --lod-series NAME --inputs K");
+  return paths;
+}
+
+void run(BuildArgs& a) {
+  std::filesystem::path out = a.output;
+  if (out.extension() == ".json") out.replace_extension();
+  const std::filesystem::path json = std::filesystem::path(out.string() + ".json");
+  const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
+  std::filesystem::create_directories(directory);
+
+  a.options.mesher = a.mesher == "netgen" ? MesherKind::Netgen : MesherKind::TetGen;
+  a.options.qualities = a.qualities;
+  Progress progress(a.quiet);
+  std::vector<SurfaceInput> inputs;
+  for (const auto& path : inputPaths(a)) {
+    SurfaceInput input;
+    input.mesh = readSurface(path);
+    input.name = path.string();
+    input.file =
+        std::filesystem::relative(std::filesystem::absolute(path), directory).generic_string();
+    progress.log("read " + path.string() + ": " + std::to_string(input.mesh.vertexCount()) +
+                 " vertices, " + std::to_string(input.mesh.triangleCount()) + " triangles");
+    inputs.push_back(std::move(input));
+  }
+  BuildEvents events;
+  events.log = [&](const std::string& line) { progress.log(line); };
+  events.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
+    progress.update(stage, done, total);
+  };
+  BuildResult result = buildDataset(std::move(inputs), a.options, events);
+  saveDataset(json, result.dataset);
+  progress.log("");
+
+  std::printf("%-5s %9s %8s  %-8s %-10s %8s %8s  %s\n", "level", "elements", "nodes", "mesher",
+              "quality", "min dih", "max r/e", "input");
+  for (std::size_t k = 0; k < result.chosen.size(); ++k) {
+    const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
+    std::printf("%-5zu %9lld %8lld  %-8s %-10s %8.2f %8.3f  %s\n", k,
+                static_cast<long long>(c.elements), static_cast<long long>(c.nodes),
+                c.mesher.c_str(), c.label.c_str(), c.statistics.minDihedralDeg,
+                c.statistics.maxRadiusEdge, c.input.c_str());
+  }
+  std::size_t failed = 0;
+  for (const CandidateReport& c : result.candidates) failed += c.ok ? 0 : 1;
+  std::printf("%zu candidates meshed in %.2f s with %d job(s), %zu failed\n",
+              result.candidates.size(), result.meshingSeconds, a.options.jobs, failed);
+  std::printf("wrote %s (+ .node, .ele)\n", json.c_str());
+}
+
+}  // namespace
+
+void addBuildCommand(CLI::App& app) {
+  auto a = std::make_shared<BuildArgs>();
+  a->options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  CLI::App* cmd = app.add_subcommand(
+      "build",
+      "Model generation: repair OBJ/PLY/STL surfaces, tetrahedralize them at several qualities,\n"
+      "choose the levels and write one multi-level dataset OUT.node, OUT.ele, OUT.json");
+  cmd->add_option("IN", a->inputs, "input surfaces (levels of detail of one object)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", a->output, "output name OUT (writes OUT.node, OUT.ele, OUT.json)")
+      ->required();
+  cmd->add_option("--levels", a->options.levels, "number of output levels L")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--min-elements", a->options.minElements, "elements of the coarsest level")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-elements", a->options.maxElements, "elements of the finest level")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--mesher", a->mesher, "tetgen or netgen")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tetgen", "netgen"}));
+  cmd->add_option("--qualities", a->qualities,
+                  "TetGen radius-edge bounds, each in (1.0, 2.0]; closer to 1 is finer")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--lod-series", a->lodSeries, "read NAME_0.obj .. NAME_{K-1}.obj");
+  cmd->add_option("--inputs", a->lodInputs, "K, the number of files of --lod-series");
+  cmd->add_flag("--decimate", a->options.decimate,
+                "derive coarser input levels of detail from the finest surface");
+  cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace tetskin::cli

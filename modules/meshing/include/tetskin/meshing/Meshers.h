@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Tetrahedralization of a closed, repaired surface by TetGen (the library) or
+// Netgen (nglib). Both return positively oriented tetrahedra and throw
+// tetskin::Error when the mesher refuses the input. A mesher may also crash
+// or hang on hostile input: run them through runIsolated (IsolatedJobs.h).
+
+#include <string>
+
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+
+namespace tetskin {
+
+// TetGen `-pq<radiusEdgeRatio>Q`: a constrained Delaunay mesh whose elements
+// have a radius-edge ratio at most `radiusEdgeRatio` (the report's quality
+// levels 2.0, 1.8, 1.6, 1.4, 1.2; closer to 1 means finer and better shaped).
+TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio);
+
+// Netgen's five fineness presets, as in its GUI.
+enum class NetgenFineness { VeryCoarse = 0, Coarse = 1, Moderate = 2, Fine = 3, VeryFine = 4 };
+const char* netgenFinenessName(NetgenFineness fineness);
+
+// Whether this build has Netgen (CMake option TETSKIN_WITH_NETGEN).
+bool netgenAvailable();
+
+// Netgen from the surface as STL geometry (remeshes the surface, then the volume).
+TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness);
+
+// Flips elements with negative volume so all are positive; returns how many
+// were flipped.
+Index orientElementsPositively(TetMesh& mesh);
+
+}  // namespace tetskin

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Model generation (report section 2) as one call: repair every input level of
+// detail, tetrahedralize each at every quality in isolated worker processes,
+// clean and measure the candidates, choose the levels, assemble the dataset.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/meshing/MeshQuality.h"
+#include "tetskin/meshing/SurfaceRepair.h"
+
+namespace tetskin {
+
+enum class MesherKind { TetGen, Netgen };
+
+struct SurfaceInput {
+  std::string name;  // in messages: the path as the user gave it
+  SurfaceMesh mesh;
+  std::string file;  // in the dataset config: the path relative to it (default: name)
+};
+
+struct BuildOptions {
+  int levels = 3;
+  Index minElements = 600;
+  Index maxElements = 12000;
+  MesherKind mesher = MesherKind::TetGen;
+  // TetGen radius-edge ratios, any order (searched best first); for Netgen the
+  // five presets are used.
+  std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
+  bool decimate = false;  // add coarser input levels derived from the finest input
+  int jobs = 1;           // mesher processes at once
+  double timeoutSeconds = 600;
+  RepairOptions repair;
+};
+
+struct CandidateReport {
+  std::string input;
+  std::string mesher;
+  double quality = 0;  // TetGen ratio, or Netgen preset index
+  std::string label;   // e.g. "q1.4" or "moderate"
+  bool ok = false;
+  std::string error;
+  Index nodes = 0, elements = 0;
+  Index unreferencedNodesRemoved = 0;
+  TetQuality statistics;
+  double seconds = 0;
+};
+
+struct BuildEvents {
+  std::function<void(const std::string&)> log;  // one line of report
+  std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
+};
+
+struct BuildResult {
+  Dataset dataset;                          // config paths not yet set (see saveDataset)
+  std::vector<CandidateReport> candidates;  // in search order
+  std::vector<int> chosen;                  // candidate index per level, coarsest first
+  double meshingSeconds = 0;
+  // Wall time of each stage, in order: repair, meshing, cleanup (unreferenced
+  // nodes, validation, quality), selection (and assembly).
+  std::vector<std::pair<std::string, double>> stageSeconds;
+};
+
+// Throws Error when no input survives repair or no candidate can be meshed.
+BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
+                         const BuildEvents& events = {});
+
+}  // namespace tetskin

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Surface repair before tetrahedralization (report section 2.3). TetGen aborts
+// on open and self-intersecting surfaces, so inputs are cleaned step by step;
+// each step is a function of its own and says how much it changed.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tetskin/core/SurfaceMesh.h"
+
+namespace tetskin {
+
+// Merges vertices closer than `tolerance` (absolute) into the first of them.
+// Returns the number of vertices merged away (left unused; see removeUnusedVertices).
+Index weldVertices(SurfaceMesh& mesh, double tolerance);
+
+// Removes triangles with a repeated vertex or an area <= areaTolerance.
+Index removeDegenerateTriangles(SurfaceMesh& mesh, double areaTolerance);
+
+// Removes all but the first of triangles that use the same three vertices.
+Index removeDuplicateTriangles(SurfaceMesh& mesh);
+
+struct OrientationResult {
+  Index flippedTriangles = 0;    // flipped to agree with their neighbours
+  Index invertedComponents = 0;  // closed components turned outward (positive volume)
+  bool orientable = true;        // false for a Moebius-like surface
+};
+// Makes neighbouring triangles agree (each shared manifold edge used once in each
+// direction), then turns every component so its signed volume is positive.
+OrientationResult orientConsistently(SurfaceMesh& mesh);
+
+// Connected chains of open edges (edges used by exactly one triangle): the rim
+// of each hole, or of a dangling strip. Each lists its vertices in walk order.
+std::vector<std::vector<int>> boundaryLoops(const SurfaceMesh& mesh);
+// Edges used by more than two triangles.
+Index nonManifoldEdgeCount(const SurfaceMesh& mesh);
+
+// Removes triangles with an open edge, repeatedly, until none is left (the
+// report's removal of dangling triangles). Returns the number removed.
+Index removeOpenTriangles(SurfaceMesh& mesh);
+
+// Pairs of triangles that intersect other than along shared vertices and edges.
+// Stops after `limit` pairs.
+std::vector<std::pair<int, int>> findSelfIntersections(const SurfaceMesh& mesh,
+                                                       std::size_t limit = 1000000);
+
+// The report's repair: for each intersecting pair (first, second), all vertices
+// of `first` move to the vertex of `second` nearest to them (through the
+// triangles sharing them the gap closes); a triangle already changed in this
+// call is skipped. Returns the number of triangles collapsed.
+Index collapseIntersections(SurfaceMesh& mesh, const std::vector<std::pair<int, int>>& pairs);
+
+// Drops vertices no triangle uses and renumbers. Returns how many were dropped.
+Index removeUnusedVertices(SurfaceMesh& mesh);
+
+struct RepairOptions {
+  double weldTolerance = 1e-7;   // relative to the bounding-box diagonal
+  double areaTolerance = 1e-14;  // relative to the squared diagonal
+  int maxIntersectionRounds = 8;
+};
+
+struct RepairReport {
+  Index inputVertices = 0, inputTriangles = 0;
+  Index weldedVertices = 0;
+  Index degenerateTriangles = 0;
+  Index duplicateTriangles = 0;
+  Index flippedTriangles = 0;
+  Index invertedComponents = 0;
+  Index holes = 0;  // boundary loops before open triangles were removed
+  Index openTrianglesRemoved = 0;
+  Index intersectingPairs = 0;  // found in the first round
+  Index collapsedTriangles = 0;
+  int intersectionRounds = 0;
+  Index unusedVertices = 0;
+  Index outputVertices = 0, outputTriangles = 0;
+
+  // (name, count) for printing and for the dataset's provenance.
+  std::vector<std::pair<std::string, Index>> counts() const;
+};
+
+// All steps in order: weld, degenerate, duplicates, orientation, open
+// triangles, self-intersections (collapse and retry), unused vertices.
+// Normals and texture coordinates are dropped (meshing needs positions only).
+// Throws Error naming `name` when the surface cannot be repaired: nothing is
+// left after removing open triangles, or intersections remain after the last
+// round.
+RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
+                           const RepairOptions& options = {});
+
+}  // namespace tetskin

@@ -1,0 +1,268 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/meshing/ModelBuilder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/meshing/Decimation.h"
+#include "tetskin/meshing/IsolatedJobs.h"
+#include "tetskin/meshing/LevelSelection.h"
+#include "tetskin/meshing/Meshers.h"
+
+namespace tetskin {
+namespace {
+
+struct RepairedInput {
+  std::string name;
+  std::string file;
+  SurfaceMesh mesh;
+  RepairReport repair;
+  bool derived = false;  // made by decimation
+};
+
+struct CandidateSpec {
+  std::size_t input;
+  double quality;
+  std::string label;
+};
+
+std::string formatQuality(double q) {
+  char text[32];
+  std::snprintf(text, sizeof text, "q%g", q);
+  return text;
+}
+
+void say(const BuildEvents& events, const std::string& line) {
+  if (events.log) events.log(line);
+}
+
+std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
+                                         const BuildOptions& options, const BuildEvents& events) {
+  if (inputs.empty()) throw Error("no input surface given");
+  // Finest input first: the search order of the level selection starts there.
+  std::stable_sort(inputs.begin(), inputs.end(), [](const SurfaceInput& a, const SurfaceInput& b) {
+    return a.mesh.triangleCount() > b.mesh.triangleCount();
+  });
+  std::vector<RepairedInput> prepared;
+  std::string firstFailure;
+  for (SurfaceInput& input : inputs) {
+    RepairedInput r{
+        input.name, input.file.empty() ? input.name : input.file, std::move(input.mesh), {}, false};
+    try {
+      r.repair = repairSurface(r.mesh, r.name, options.repair);
+    } catch (const Error& e) {
+      say(events, std::string("skipping input: ") + e.what());
+      if (firstFailure.empty()) firstFailure = e.what();
+      continue;
+    }
+    std::string line = "repaired " + r.name + ":";
+    for (const auto& [key, count] : r.repair.counts())
+      if (count != 0) line += " " + key + "=" + std::to_string(count);
+    say(events, line);
+    prepared.push_back(std::move(r));
+  }
+  if (prepared.empty())
+    throw Error(inputs.size() == 1
+                    ? firstFailure
+                    : "no input surface could be repaired; the first: " + firstFailure);
+  if (options.decimate) {
+    const RepairedInput& finest = prepared.front();
+    std::vector<RepairedInput> derived;
+    for (SurfaceMesh& coarse : decimatedSeries(finest.mesh)) {
+      const std::string suffix =
+          " (decimated to " + std::to_string(coarse.triangleCount()) + " triangles)";
+      const std::string name = finest.name + suffix;
+      RepairedInput r{name, finest.file + suffix, std::move(coarse), {}, true};
+      try {
+        r.repair = repairSurface(r.mesh, r.name, options.repair);
+        say(events, "derived " + name);
+        derived.push_back(std::move(r));
+      } catch (const Error& e) {
+        say(events, std::string("skipping derived input: ") + e.what());
+      }
+    }
+    // Keep the finest-first order: originals are finer than their decimations.
+    for (RepairedInput& r : derived) prepared.push_back(std::move(r));
+    std::stable_sort(prepared.begin(), prepared.end(),
+                     [](const RepairedInput& a, const RepairedInput& b) {
+                       return a.mesh.triangleCount() > b.mesh.triangleCount();
+                     });
+  }
+  return prepared;
+}
+
+std::vector<CandidateSpec> candidateSpecs(const std::vector<RepairedInput>& inputs,
+                                          const BuildOptions& options) {
+  std::vector<CandidateSpec> specs;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (options.mesher == MesherKind::TetGen) {
+      std::vector<double> q = options.qualities;
+      std::sort(q.begin(), q.end());  // 1.2 (best) first
+      q.erase(std::unique(q.begin(), q.end()), q.end());
+      for (double quality : q) specs.push_back({i, quality, formatQuality(quality)});
+    } else {
+      for (int preset = 4; preset >= 0; --preset)  // very fine (best) first
+        specs.push_back({i, static_cast<double>(preset),
+                         netgenFinenessName(static_cast<NetgenFineness>(preset))});
+    }
+  }
+  return specs;
+}
+
+nlohmann::json repairJson(const RepairReport& report) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, count] : report.counts()) j[key] = count;
+  return j;
+}
+
+}  // namespace
+
+BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
+                         const BuildEvents& events) {
+  for (double q : options.qualities)
+    if (!(q > 1.0)) throw Error("quality " + std::to_string(q) + " must be greater than 1.0");
+  const std::vector<double> targets =
+      levelTargets(options.minElements, options.maxElements, options.levels);
+  if (options.mesher == MesherKind::Netgen && !netgenAvailable())
+    throw Error("this TetSkin was built without Netgen");
+
+  BuildResult result;
+  using Clock = std::chrono::steady_clock;
+  auto stageStart = Clock::now();
+  auto endStage = [&](const char* name) {
+    const auto now = Clock::now();
+    result.stageSeconds.emplace_back(name, std::chrono::duration<double>(now - stageStart).count());
+    stageStart = now;
+  };
+  if (events.progress) events.progress("repair", 0, inputs.size());
+  const std::vector<RepairedInput> prepared = prepareInputs(std::move(inputs), options, events);
+  endStage(options.decimate ? "repair + decimation" : "repair");
+  const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
+
+  std::vector<MeshJob> jobs;
+  for (const CandidateSpec& spec : specs) {
+    const SurfaceMesh* surface = &prepared[spec.input].mesh;
+    const double quality = spec.quality;
+    if (options.mesher == MesherKind::TetGen)
+      jobs.push_back([surface, quality] { return tetrahedralizeWithTetGen(*surface, quality); });
+    else
+      jobs.push_back([surface, quality] {
+        return tetrahedralizeWithNetgen(*surface, static_cast<NetgenFineness>(quality));
+      });
+  }
+
+  result.candidates.resize(specs.size());
+  std::size_t done = 0;
+  if (events.progress) events.progress("meshing", 0, specs.size());
+  const std::vector<IsolatedResult> meshed = runIsolated(
+      jobs, options.jobs, options.timeoutSeconds, [&](std::size_t i, const IsolatedResult& r) {
+        ++done;
+        if (events.progress) events.progress("meshing", done, specs.size());
+        if (!r.ok)
+          say(events, "candidate " + prepared[specs[i].input].name + " " + specs[i].label +
+                          " failed: " + r.error);
+      });
+  endStage("meshing");
+  result.meshingSeconds = result.stageSeconds.back().second;
+
+  std::vector<TetMesh> meshes(specs.size());
+  std::vector<Index> counts(specs.size(), -1);
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    CandidateReport& c = result.candidates[i];
+    c.input = prepared[specs[i].input].file;
+    c.mesher = options.mesher == MesherKind::TetGen ? "tetgen" : "netgen";
+    c.quality = specs[i].quality;
+    c.label = specs[i].label;
+    c.seconds = meshed[i].seconds;
+    c.ok = meshed[i].ok;
+    c.error = meshed[i].error;
+    if (!c.ok) continue;
+    TetMesh mesh = meshed[i].mesh;
+    // Nodes that belong to no tetrahedron crash the simulation (report 2.4).
+    c.unreferencedNodesRemoved = removeUnreferencedNodes(mesh);
+    try {
+      validateTetMesh(mesh, prepared[specs[i].input].name + " " + c.label,
+                      /*requirePositiveVolume=*/true);
+    } catch (const Error& e) {
+      c.ok = false;
+      c.error = e.what();
+      say(events, "candidate rejected: " + c.error);
+      continue;
+    }
+    c.nodes = mesh.nodeCount();
+    c.elements = mesh.elementCount();
+    c.statistics = measureQuality(mesh);
+    counts[i] = c.elements;
+    meshes[i] = std::move(mesh);
+  }
+
+  endStage("cleanup + quality");
+  if (events.progress) events.progress("selection", 0, 1);
+  result.chosen = selectLevels(counts, targets);
+  // Coarsest first, whatever order the targets' picks came in.
+  std::stable_sort(result.chosen.begin(), result.chosen.end(), [&](int a, int b) {
+    return counts[static_cast<std::size_t>(a)] < counts[static_cast<std::size_t>(b)];
+  });
+  for (std::size_t k = 1; k < result.chosen.size(); ++k)
+    if (result.chosen[k] == result.chosen[k - 1])
+      say(events, "warning: levels " + std::to_string(k - 1) + " and " + std::to_string(k) +
+                      " are the same candidate (too few candidates between min and max elements)");
+
+  Dataset& dataset = result.dataset;
+  nlohmann::json candidatesJson = nlohmann::json::array();
+  for (const CandidateReport& c : result.candidates) {
+    nlohmann::json j = {{"input", c.input},
+                        {"mesher", c.mesher},
+                        {"quality", c.label},
+                        {"ok", c.ok},
+                        {"seconds", c.seconds}};
+    if (c.ok) {
+      j["nodes"] = c.nodes;
+      j["elements"] = c.elements;
+      j["statistics"] = c.statistics.asMap();
+    } else {
+      j["error"] = c.error;
+    }
+    candidatesJson.push_back(j);
+  }
+  for (int chosen : result.chosen) {
+    const auto i = static_cast<std::size_t>(chosen);
+    appendLevel(dataset.mesh, meshes[i]);
+    LevelConfig level;
+    level.source.input = result.candidates[i].input;
+    level.source.mesher = result.candidates[i].mesher;
+    level.source.quality = result.candidates[i].quality;
+    level.statistics = result.candidates[i].statistics.asMap();
+    level.statistics["target_elements"] =
+        targets[std::min(dataset.config.levels.size(), targets.size() - 1)];
+    dataset.config.levels.push_back(level);
+  }
+  nlohmann::json inputsJson = nlohmann::json::array();
+  for (const RepairedInput& r : prepared)
+    inputsJson.push_back(
+        {{"file", r.file}, {"derived", r.derived}, {"repair", repairJson(r.repair)}});
+  // The finest original input is the surface a viewer shows by default.
+  for (const RepairedInput& r : prepared)
+    if (!r.derived) {
+      dataset.config.surface = r.file;
+      break;
+    }
+  dataset.config.provenance = {
+      {"tool", "tetskin build"},
+      {"inputs", inputsJson},
+      {"options",
+       {{"levels", options.levels},
+        {"min_elements", options.minElements},
+        {"max_elements", options.maxElements},
+        {"mesher", options.mesher == MesherKind::TetGen ? "tetgen" : "netgen"},
+        {"qualities", options.qualities},
+        {"decimate", options.decimate}}},
+      {"targets", targets},
+      {"candidates", candidatesJson}};
+  endStage("selection + assembly");
+  return result;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,416 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/meshing/SurfaceRepair.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
+#include "tetskin/spatial/AabbTree.h"
+#include "tetskin/spatial/TriangleIntersection.h"
+
+namespace tetskin {
+namespace {
+
+std::uint64_t edgeKey(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+Eigen::Vector3d position(const SurfaceMesh& m, int v) {
+  return m.positions.row(v).transpose();
+}
+
+// Keeps the triangles whose flag is true.
+void keepTriangles(SurfaceMesh& mesh, const std::vector<char>& keep) {
+  Triangles kept(std::count(keep.begin(), keep.end(), 1), 3);
+  Index next = 0;
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    if (keep[static_cast<std::size_t>(t)]) kept.row(next++) = mesh.triangles.row(t);
+  mesh.triangles = std::move(kept);
+}
+
+// For every undirected edge, the triangles using it.
+std::unordered_map<std::uint64_t, std::vector<int>> edgeTriangles(const SurfaceMesh& mesh) {
+  std::unordered_map<std::uint64_t, std::vector<int>> edges;
+  edges.reserve(static_cast<std::size_t>(mesh.triangleCount()) * 2);
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      edges[edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))].push_back(
+          static_cast<int>(t));
+  return edges;
+}
+
+// Whether triangle t traverses the edge as a -> b.
+bool hasDirectedEdge(const SurfaceMesh& mesh, int t, int a, int b) {
+  for (int k = 0; k < 3; ++k)
+    if (mesh.triangles(t, k) == a && mesh.triangles(t, (k + 1) % 3) == b) return true;
+  return false;
+}
+
+void flip(SurfaceMesh& mesh, int t) {
+  std::swap(mesh.triangles(t, 1), mesh.triangles(t, 2));
+}
+
+}  // namespace
+
+Index weldVertices(SurfaceMesh& mesh, double tolerance) {
+  const Index n = mesh.vertexCount();
+  if (n == 0 || !(tolerance > 0)) return 0;
+  // Hash grid with cells of the tolerance: a partner lies in one of 27 cells.
+  struct CellHash {
+    std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+      return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+    }
+  };
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> grid;
+  grid.reserve(static_cast<std::size_t>(n));
+  std::vector<int> representative(static_cast<std::size_t>(n));
+  const double tol2 = tolerance * tolerance;
+  Index merged = 0;
+  for (Index v = 0; v < n; ++v) {
+    const Eigen::Vector3d p = position(mesh, static_cast<int>(v));
+    std::array<std::int64_t, 3> cell;
+    for (int k = 0; k < 3; ++k) cell[k] = static_cast<std::int64_t>(std::floor(p[k] / tolerance));
+    int found = -1;
+    for (int dx = -1; dx <= 1 && found < 0; ++dx)
+      for (int dy = -1; dy <= 1 && found < 0; ++dy)
+        for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+          auto it = grid.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+          if (it == grid.end()) continue;
+          for (int u : it->second)
+            if ((position(mesh, u) - p).squaredNorm() <= tol2) {
+              found = u;
+              break;
+            }
+        }
+    if (found >= 0) {
+      representative[static_cast<std::size_t>(v)] = found;
+      ++merged;
+    } else {
+      representative[static_cast<std::size_t>(v)] = static_cast<int>(v);
+      grid[cell].push_back(static_cast<int>(v));
+    }
+  }
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      mesh.triangles(t, k) = representative[static_cast<std::size_t>(mesh.triangles(t, k))];
+  return merged;
+}
+
+Index removeDegenerateTriangles(SurfaceMesh& mesh, double areaTolerance) {
+  std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
+  Index removed = 0;
+  for (Index t = 0; t < mesh.triangleCount(); ++t) {
+    const int a = mesh.triangles(t, 0), b = mesh.triangles(t, 1), c = mesh.triangles(t, 2);
+    const bool repeated = a == b || b == c || a == c;
+    if (repeated ||
+        !(triangleArea(position(mesh, a), position(mesh, b), position(mesh, c)) > areaTolerance)) {
+      keep[static_cast<std::size_t>(t)] = 0;
+      ++removed;
+    }
+  }
+  if (removed) keepTriangles(mesh, keep);
+  return removed;
+}
+
+Index removeDuplicateTriangles(SurfaceMesh& mesh) {
+  struct KeyHash {
+    std::size_t operator()(const std::array<int, 3>& k) const {
+      return std::hash<std::uint64_t>()(edgeKey(k[0], k[1])) ^
+             (static_cast<std::size_t>(k[2]) * 2654435761u);
+    }
+  };
+  std::unordered_set<std::array<int, 3>, KeyHash> seen;
+  std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
+  Index removed = 0;
+  for (Index t = 0; t < mesh.triangleCount(); ++t) {
+    std::array<int, 3> key = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second) {
+      keep[static_cast<std::size_t>(t)] = 0;
+      ++removed;
+    }
+  }
+  if (removed) keepTriangles(mesh, keep);
+  return removed;
+}
+
+OrientationResult orientConsistently(SurfaceMesh& mesh) {
+  OrientationResult result;
+  const auto edges = edgeTriangles(mesh);
+  const Index n = mesh.triangleCount();
+  std::vector<int> component(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<int>> members;
+  for (Index seed = 0; seed < n; ++seed) {
+    if (component[static_cast<std::size_t>(seed)] >= 0) continue;
+    const int id = static_cast<int>(members.size());
+    members.emplace_back();
+    std::queue<int> queue;
+    queue.push(static_cast<int>(seed));
+    component[static_cast<std::size_t>(seed)] = id;
+    while (!queue.empty()) {
+      const int t = queue.front();
+      queue.pop();
+      members[static_cast<std::size_t>(id)].push_back(t);
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
+        const auto& users = edges.at(edgeKey(a, b));
+        if (users.size() != 2) continue;  // open or non-manifold: no orientation constraint
+        const int u = users[0] == t ? users[1] : users[0];
+        // t traverses a -> b, so a consistent neighbour traverses b -> a.
+        const bool consistent = hasDirectedEdge(mesh, u, b, a);
+        if (component[static_cast<std::size_t>(u)] < 0) {
+          component[static_cast<std::size_t>(u)] = id;
+          if (!consistent) {
+            flip(mesh, u);
+            ++result.flippedTriangles;
+          }
+          queue.push(u);
+        } else if (!consistent) {
+          result.orientable = false;
+        }
+      }
+    }
+  }
+  // Outward: a closed component with negative signed volume is inside out.
+  for (const auto& tris : members) {
+    double volume = 0;
+    for (int t : tris)
+      volume +=
+          position(mesh, mesh.triangles(t, 0))
+              .dot(
+                  position(mesh, mesh.triangles(t, 1)).cross(position(mesh, mesh.triangles(t, 2))));
+    if (volume < 0) {
+      for (int t : tris) flip(mesh, t);
+      ++result.invertedComponents;
+    }
+  }
+  return result;
+}
+
+std::vector<std::vector<int>> boundaryLoops(const SurfaceMesh& mesh) {
+  const auto edges = edgeTriangles(mesh);
+  std::unordered_map<int, std::vector<int>> neighbours;
+  for (const auto& [key, users] : edges) {
+    if (users.size() != 1) continue;
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+    neighbours[a].push_back(b);
+    neighbours[b].push_back(a);
+  }
+  // One entry per connected chain of open edges, its vertices in walk order.
+  std::vector<std::vector<int>> loops;
+  std::unordered_set<int> visited;
+  std::vector<int> starts;
+  for (const auto& [v, n] : neighbours) starts.push_back(v);
+  std::sort(starts.begin(), starts.end());  // deterministic order
+  for (int start : starts) {
+    if (visited.contains(start)) continue;
+    std::vector<int> loop, stack = {start};
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      if (!visited.insert(v).second) continue;
+      loop.push_back(v);
+      for (int u : neighbours[v])
+        if (!visited.contains(u)) stack.push_back(u);
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+Index nonManifoldEdgeCount(const SurfaceMesh& mesh) {
+  Index count = 0;
+  for (const auto& [key, users] : edgeTriangles(mesh))
+    if (users.size() > 2) ++count;
+  return count;
+}
+
+Index removeOpenTriangles(SurfaceMesh& mesh) {
+  Index removed = 0;
+  for (;;) {
+    const auto edges = edgeTriangles(mesh);
+    std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
+    Index round = 0;
+    for (Index t = 0; t < mesh.triangleCount(); ++t)
+      for (int k = 0; k < 3; ++k)
+        if (edges.at(edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))).size() == 1) {
+          keep[static_cast<std::size_t>(t)] = 0;
+          ++round;
+          break;
+        }
+    if (round == 0) return removed;
+    keepTriangles(mesh, keep);
+    removed += round;
+  }
+}
+
+std::vector<std::pair<int, int>> findSelfIntersections(const SurfaceMesh& mesh, std::size_t limit) {
+  const Index n = mesh.triangleCount();
+  std::vector<Aabb> boxes(static_cast<std::size_t>(n));
+  for (Index t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k)
+      boxes[static_cast<std::size_t>(t)].extend(position(mesh, mesh.triangles(t, k)));
+  const AabbTree tree(boxes);
+  std::vector<std::pair<int, int>> pairs;
+  for (Index t = 0; t < n && pairs.size() < limit; ++t) {
+    const Eigen::Vector3d p[3] = {position(mesh, mesh.triangles(t, 0)),
+                                  position(mesh, mesh.triangles(t, 1)),
+                                  position(mesh, mesh.triangles(t, 2))};
+    const int pid[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    tree.forEachOverlap(boxes[static_cast<std::size_t>(t)], [&](int u) {
+      if (u <= t || pairs.size() >= limit) return;
+      const Eigen::Vector3d q[3] = {position(mesh, mesh.triangles(u, 0)),
+                                    position(mesh, mesh.triangles(u, 1)),
+                                    position(mesh, mesh.triangles(u, 2))};
+      const int qid[3] = {mesh.triangles(u, 0), mesh.triangles(u, 1), mesh.triangles(u, 2)};
+      if (trianglesIntersect(p, pid, q, qid)) pairs.emplace_back(static_cast<int>(t), u);
+    });
+  }
+  return pairs;
+}
+
+Index collapseIntersections(SurfaceMesh& mesh, const std::vector<std::pair<int, int>>& pairs) {
+  const Index nv = mesh.vertexCount();
+  std::vector<int> target(static_cast<std::size_t>(nv));
+  for (Index v = 0; v < nv; ++v) target[static_cast<std::size_t>(v)] = static_cast<int>(v);
+  std::vector<char> touched(static_cast<std::size_t>(nv), 0);
+  Index collapsed = 0;
+  for (const auto& [first, second] : pairs) {
+    bool skip = false;
+    for (int k = 0; k < 3; ++k)
+      skip = skip || touched[static_cast<std::size_t>(mesh.triangles(first, k))] ||
+             touched[static_cast<std::size_t>(mesh.triangles(second, k))];
+    if (skip) continue;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) centroid += position(mesh, mesh.triangles(first, k)) / 3.0;
+    int point = mesh.triangles(second, 0);
+    for (int k = 1; k < 3; ++k) {
+      const int candidate = mesh.triangles(second, k);
+      if ((position(mesh, candidate) - centroid).squaredNorm() <
+          (position(mesh, point) - centroid).squaredNorm())
+        point = candidate;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles(first, k);
+      target[static_cast<std::size_t>(v)] = point;
+      touched[static_cast<std::size_t>(v)] = 1;
+    }
+    touched[static_cast<std::size_t>(point)] = 1;
+    ++collapsed;
+  }
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      mesh.triangles(t, k) = target[static_cast<std::size_t>(mesh.triangles(t, k))];
+  return collapsed;
+}
+
+Index removeUnusedVertices(SurfaceMesh& mesh) {
+  const Index n = mesh.vertexCount();
+  std::vector<int> newId(static_cast<std::size_t>(n), -1);
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) newId[static_cast<std::size_t>(mesh.triangles(t, k))] = 0;
+  int next = 0;
+  for (Index v = 0; v < n; ++v)
+    if (newId[static_cast<std::size_t>(v)] == 0) newId[static_cast<std::size_t>(v)] = next++;
+  if (next == n) return 0;
+  auto compact = [&](auto& rows) {
+    if (rows.rows() != n) return;
+    std::remove_reference_t<decltype(rows)> kept(next, rows.cols());
+    for (Index v = 0; v < n; ++v)
+      if (newId[static_cast<std::size_t>(v)] >= 0)
+        kept.row(newId[static_cast<std::size_t>(v)]) = rows.row(v);
+    rows = std::move(kept);
+  };
+  compact(mesh.positions);
+  compact(mesh.normals);
+  compact(mesh.texcoords);
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      mesh.triangles(t, k) = newId[static_cast<std::size_t>(mesh.triangles(t, k))];
+  return n - next;
+}
+
+std::vector<std::pair<std::string, Index>> RepairReport::counts() const {
+  return {{"input_vertices", inputVertices},
+          {"input_triangles", inputTriangles},
+          {"welded_vertices", weldedVertices},
+          {"degenerate_triangles", degenerateTriangles},
+          {"duplicate_triangles", duplicateTriangles},
+          {"flipped_triangles", flippedTriangles},
+          {"inverted_components", invertedComponents},
+          {"holes", holes},
+          {"open_triangles_removed", openTrianglesRemoved},
+          {"intersecting_pairs", intersectingPairs},
+          {"collapsed_triangles", collapsedTriangles},
+          {"intersection_rounds", intersectionRounds},
+          {"unused_vertices", unusedVertices},
+          {"output_vertices", outputVertices},
+          {"output_triangles", outputTriangles}};
+}
+
+RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
+                           const RepairOptions& options) {
+  validateSurface(mesh, name);
+  RepairReport report;
+  report.inputVertices = mesh.vertexCount();
+  report.inputTriangles = mesh.triangleCount();
+  mesh.normals.resize(0, 3);
+  mesh.texcoords.resize(0, 2);
+  if (mesh.triangleCount() == 0) throw Error(name, 0, "the surface has no triangles");
+  const double diagonal = boundingBox(mesh).diagonal();
+  if (!(diagonal > 0)) throw Error(name, 0, "the surface has zero extent");
+  const double weldTol = options.weldTolerance * diagonal;
+  const double areaTol = options.areaTolerance * diagonal * diagonal;
+
+  // Weld, then clean what welding degenerated; shared by the intersection loop.
+  auto clean = [&] {
+    report.weldedVertices += weldVertices(mesh, weldTol);
+    report.degenerateTriangles += removeDegenerateTriangles(mesh, areaTol);
+    report.duplicateTriangles += removeDuplicateTriangles(mesh);
+  };
+  clean();
+  report.holes = static_cast<Index>(boundaryLoops(mesh).size());
+  report.openTrianglesRemoved = removeOpenTriangles(mesh);
+  if (mesh.triangleCount() == 0)
+    throw Error(name, 0,
+                "cannot be repaired: the surface has " + std::to_string(report.holes) +
+                    " hole(s) and removing triangles with open edges left nothing; close the "
+                    "holes first");
+
+  for (int round = 0;; ++round) {
+    const auto pairs = findSelfIntersections(mesh);
+    if (round == 0) report.intersectingPairs = static_cast<Index>(pairs.size());
+    if (pairs.empty()) break;
+    if (round == options.maxIntersectionRounds)
+      throw Error(name, 0,
+                  "cannot be repaired: " + std::to_string(pairs.size()) +
+                      " pair(s) of triangles still intersect after " + std::to_string(round) +
+                      " collapse rounds (first: triangles " + std::to_string(pairs[0].first) +
+                      " and " + std::to_string(pairs[0].second) + ")");
+    report.collapsedTriangles += collapseIntersections(mesh, pairs);
+    report.intersectionRounds = round + 1;
+    clean();
+    report.openTrianglesRemoved += removeOpenTriangles(mesh);
+    if (mesh.triangleCount() == 0)
+      throw Error(name, 0, "cannot be repaired: collapsing intersections left nothing");
+  }
+  const OrientationResult orientation = orientConsistently(mesh);
+  report.flippedTriangles = orientation.flippedTriangles;
+  report.invertedComponents = orientation.invertedComponents;
+  if (!orientation.orientable)
+    throw Error(name, 0, "cannot be repaired: the surface is not orientable");
+  report.unusedVertices = removeUnusedVertices(mesh);
+  report.outputVertices = mesh.vertexCount();
+  report.outputTriangles = mesh.triangleCount();
+  return report;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A bounding-volume hierarchy over axis-aligned boxes of primitives (triangles,
+// tetrahedra). Built once (median split on the longest axis), queried from
+// many threads at once: queries are const and allocate nothing on the heap.
+//
+// Queries:
+//   forEachOverlap(box, f)         f(id) for every primitive whose box overlaps `box`
+//   forEachNear(p, radius2, f)     f(id, radius2) for the primitives whose box lies
+//                                  within sqrt(radius2) of p, nearest boxes first;
+//                                  f may shrink radius2 (branch and bound), so an
+//                                  exact nearest search is forEachNear + a distance.
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "tetskin/spatial/Aabb.h"
+
+namespace tetskin {
+
+class AabbTree {
+ public:
+  AabbTree() = default;
+  explicit AabbTree(std::span<const Aabb> boxes);
+
+  bool empty() const { return nodes_.empty(); }
+  std::size_t primitiveCount() const { return ids_.size(); }
+  const Aabb& bounds() const { return nodes_.front().box; }
+
+  template <typename F>
+  void forEachOverlap(const Aabb& query, F&& f) const {
+    if (nodes_.empty()) return;
+    std::array<int, kMaxDepth> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
+      if (!node.box.overlaps(query)) continue;
+      if (node.count > 0) {
+        for (int i = node.first; i < node.first + node.count; ++i)
+          if (boxes_[static_cast<std::size_t>(i)].overlaps(query))
+            f(ids_[static_cast<std::size_t>(i)]);
+      } else {
+        stack[top++] = node.first;
+        stack[top++] = node.first + 1;
+      }
+    }
+  }
+
+  template <typename F>
+  void forEachNear(const Eigen::Vector3d& p, double& radius2, F&& f) const {
+    if (nodes_.empty()) return;
+    struct Entry {
+      int node;
+      double d2;
+    };
+    std::array<Entry, kMaxDepth> stack;
+    int top = 0;
+    stack[top++] = {0, nodes_.front().box.squaredDistance(p)};
+    while (top > 0) {
+      const Entry e = stack[--top];
+      if (e.d2 > radius2) continue;
+      const Node& node = nodes_[static_cast<std::size_t>(e.node)];
+      if (node.count > 0) {
+        for (int i = node.first; i < node.first + node.count; ++i)
+          if (boxes_[static_cast<std::size_t>(i)].squaredDistance(p) <= radius2)
+            f(ids_[static_cast<std::size_t>(i)], radius2);
+        continue;
+      }
+      const double dl = nodes_[static_cast<std::size_t>(node.first)].box.squaredDistance(p);
+      const double dr = nodes_[static_cast<std::size_t>(node.first + 1)].box.squaredDistance(p);
+      // Push the farther child first so the nearer one is visited first.
+      if (dl <= dr) {
+        stack[top++] = {node.first + 1, dr};
+        stack[top++] = {node.first, dl};
+      } else {
+        stack[top++] = {node.first, dl};
+        stack[top++] = {node.first + 1, dr};
+      }
+    }
+  }
+
+ private:
+  // Leaves hold up to kLeafSize primitives; the split is a median, so the
+  // depth stays near log2(n / kLeafSize) and a fixed stack suffices.
+  static constexpr int kLeafSize = 4;
+  static constexpr int kMaxDepth = 128;
+
+  struct Node {
+    Aabb box;
+    int first = 0;  // leaf: first primitive slot; inner: index of the left child
+    int count = 0;  // > 0 for leaves
+  };
+
+  void build(int node, int first, int count, std::vector<Eigen::Vector3d>& centers);
+
+  std::vector<Node> nodes_;
+  std::vector<Aabb> boxes_;  // in leaf order
+  std::vector<int> ids_;     // primitive id per slot
+};
+
+}  // namespace tetskin

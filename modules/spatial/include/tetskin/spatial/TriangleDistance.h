@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Closest point on a triangle to a point (Ericson, Real-Time Collision
+// Detection, 5.1.5): exact region classification, so the result is the true
+// point-to-triangle distance, not a plane or vertex distance.
+
+#include <Eigen/Core>
+
+namespace tetskin {
+
+struct ClosestPointOnTriangle {
+  Eigen::Vector3d point;        // the closest point of the triangle
+  Eigen::Vector3d barycentric;  // of `point` with respect to (a, b, c); sums to 1, all >= 0
+  double squaredDistance = 0;
+};
+
+ClosestPointOnTriangle closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                              const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
+// Barycentric coordinates of the projection of p onto the plane of (a, b, c):
+// unclamped (negative outside the triangle); NaN-free only for non-degenerate
+// triangles, so callers check the area first.
+Eigen::Vector3d planeBarycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                 const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
+}  // namespace tetskin

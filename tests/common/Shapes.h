@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Small synthetic meshes shared by the test suites.
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+
+namespace tetskin::test {
+
+// The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), positively oriented.
+TetMesh unitTetrahedron();
+
+// Closed axis-aligned box, 8 vertices, 12 outward triangles.
+SurfaceMesh box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
+// Concatenates two surfaces (vertex ids of b shifted).
+SurfaceMesh merge(const SurfaceMesh& a, const SurfaceMesh& b);
+// Every triangle with vertices of its own (a "triangle soup" as STL gives).
+SurfaceMesh soup(const SurfaceMesh& mesh);
+
+}  // namespace tetskin::test

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "Shapes.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/ObjFormat.h"
+#include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+
+namespace tetskin {
+namespace {
+
+void expectValidDataset(const Dataset& d) {
+  ASSERT_NO_THROW(validateLevels(d.mesh, "built"));
+  for (int k = 0; k < d.mesh.levelCount(); ++k) {
+    const TetMesh level = extractLevel(d.mesh, k);
+    EXPECT_NO_THROW(validateTetMesh(level, "level", /*requirePositiveVolume=*/true));
+    EXPECT_TRUE(unreferencedNodes(level).empty()) << "level " << k;
+  }
+}
+
+TEST(ModelBuilder, BundledBunnyGivesTheRequestedLevels) {
+  std::vector<SurfaceInput> inputs = {
+      {"bunny.obj", readObj(std::string(TETSKIN_SOURCE_DIR) + "/data/bunny.obj"), ""}};
+  BuildOptions options;
+  options.decimate = true;
+  options.levels = 3;
+  options.minElements = 600;
+  options.maxElements = 12000;
+  options.jobs = 2;
+  std::vector<std::string> log;
+  const BuildResult r =
+      buildDataset(inputs, options, {[&](const std::string& l) { log.push_back(l); }, {}});
+  const Dataset& d = r.dataset;
+  ASSERT_EQ(d.mesh.levelCount(), 3);
+  const double targets[3] = {600, 2683.28, 12000};
+  for (int k = 0; k < 3; ++k) {
+    const double count =
+        static_cast<double>(d.mesh.levels[static_cast<std::size_t>(k)].elementCount);
+    EXPECT_NEAR(count, targets[k], 0.25 * targets[k]) << "level " << k;
+  }
+  EXPECT_LT(d.mesh.levels[0].elementCount, d.mesh.levels[1].elementCount);
+  EXPECT_LT(d.mesh.levels[1].elementCount, d.mesh.levels[2].elementCount);
+  expectValidDataset(d);
+  EXPECT_EQ(d.config.surface, std::filesystem::path("bunny.obj"));
+  EXPECT_EQ(d.config.levels[0].source.mesher, "tetgen");
+  EXPECT_GT(d.config.levels[2].statistics.at("min_dihedral_deg"), 0.0);
+  EXPECT_EQ(d.config.provenance["candidates"].size(), r.candidates.size());
+  EXPECT_GE(r.candidates.size(), 25u);  // the input and its decimations, 5 qualities each
+}
+
+TEST(ModelBuilder, SearchOrderIsFinestInputAndBestQualityFirst) {
+  const SurfaceMesh fine = test::box({0, 0, 0}, {1, 1, 1});
+  std::vector<SurfaceInput> inputs = {{"a", fine, ""}, {"b", test::box({0, 0, 0}, {2, 2, 2}), ""}};
+  BuildOptions options;
+  options.levels = 1;
+  options.minElements = options.maxElements = 1;
+  options.qualities = {2.0, 1.4};
+  const BuildResult r = buildDataset(inputs, options);
+  ASSERT_EQ(r.candidates.size(), 4u);
+  EXPECT_EQ(r.candidates[0].label, "q1.4");
+  EXPECT_EQ(r.candidates[1].label, "q2");
+  // Equal triangle counts keep the given order.
+  EXPECT_EQ(r.candidates[0].input, "a");
+  EXPECT_EQ(r.candidates[2].input, "b");
+}
+
+TEST(ModelBuilder, UnrepairableInputsAreSkippedOrReported) {
+  SurfaceMesh holey = test::box({0, 0, 0}, {1, 1, 1});
+  holey.triangles.conservativeResize(10, 3);
+  EXPECT_THROW(buildDataset({{"holey", holey, ""}}, BuildOptions{}), Error);
+  std::vector<std::string> log;
+  BuildOptions options;
+  options.levels = 1;
+  const BuildResult r =
+      buildDataset({{"holey", holey, ""}, {"box", test::box({0, 0, 0}, {1, 1, 1}), ""}}, options,
+                   {[&](const std::string& l) { log.push_back(l); }, {}});
+  EXPECT_EQ(r.dataset.mesh.levelCount(), 1);
+  EXPECT_EQ(r.dataset.config.levels[0].source.input, "box");
+  bool skipped = false;
+  for (const std::string& line : log) skipped = skipped || line.find("skipping input: holey") == 0;
+  EXPECT_TRUE(skipped);
+}
+
+TEST(ModelBuilder, NetgenBuildsLevels) {
+  BuildOptions options;
+  options.mesher = MesherKind::Netgen;
+  options.levels = 2;
+  options.minElements = 50;
+  options.maxElements = 2000;
+  options.jobs = 2;
+  try {
+    const BuildResult r = buildDataset({{"box", test::box({0, 0, 0}, {2, 1, 1}), ""}}, options);
+    EXPECT_EQ(r.candidates.size(), 5u);
+    EXPECT_EQ(r.candidates[0].label, "very fine");
+    expectValidDataset(r.dataset);
+  } catch (const Error& e) {
+    if (std::string(e.what()).find("without Netgen") == std::string::npos) throw;
+    GTEST_SKIP() << e.what();
+  }
+}
+
+// Real models written by other tools: each gives a valid dataset or a clear
+// error; never a crash, a hang or another kind of exception.
+TEST(ModelBuilder, AssimpCorpusGivesDatasetsOrClearErrors) {
+  const std::filesystem::path corpus = "/usr/share/assimp/models/OBJ";
+  if (!std::filesystem::is_directory(corpus)) GTEST_SKIP() << "assimp-testmodels not installed";
+  int built = 0, refused = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
+    if (entry.path().extension() != ".obj") continue;
+    SCOPED_TRACE(entry.path().string());
+    try {
+      SurfaceMesh mesh = readSurface(entry.path());
+      BuildOptions options;
+      options.levels = 1;
+      options.qualities = {2.0};
+      options.timeoutSeconds = 60;
+      options.jobs = 2;
+      const BuildResult r = buildDataset({{entry.path().filename().string(), mesh, ""}}, options);
+      expectValidDataset(r.dataset);
+      ++built;
+    } catch (const Error& e) {
+      EXPECT_FALSE(std::string(e.what()).empty());
+      ++refused;
+    }
+  }
+  std::printf("assimp OBJ corpus: %d built, %d refused with an error\n", built, refused);
+  EXPECT_GT(built, 0);
+}
+
+}  // namespace
+}  // namespace tetskin

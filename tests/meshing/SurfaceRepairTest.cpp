@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "Shapes.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/meshing/SurfaceRepair.h"
+
+namespace tetskin {
+namespace {
+
+const Eigen::Vector3d kZero(0, 0, 0), kOne(1, 1, 1);
+
+double signedVolume(const SurfaceMesh& m) {
+  double v = 0;
+  for (Index t = 0; t < m.triangleCount(); ++t)
+    v += m.positions.row(m.triangles(t, 0))
+             .dot(m.positions.row(m.triangles(t, 1)).cross(m.positions.row(m.triangles(t, 2)))) /
+         6.0;
+  return v;
+}
+
+TEST(SurfaceRepair, ClosedBoxNeedsNothing) {
+  SurfaceMesh m = test::box(kZero, kOne);
+  const RepairReport r = repairSurface(m, "box");
+  for (const auto& [key, count] : r.counts())
+    if (key.find("put_") == std::string::npos) {
+      EXPECT_EQ(count, 0) << key;
+    }
+  EXPECT_EQ(m.triangleCount(), 12);
+  EXPECT_NEAR(signedVolume(m), 1.0, 1e-12);
+  EXPECT_TRUE(boundaryLoops(m).empty());
+  EXPECT_EQ(nonManifoldEdgeCount(m), 0);
+}
+
+TEST(SurfaceRepair, DuplicatedVerticesAreWelded) {
+  SurfaceMesh m = test::soup(test::box(kZero, kOne));
+  ASSERT_EQ(m.vertexCount(), 36);
+  EXPECT_EQ(boundaryLoops(m).size(), 12u);  // every triangle is an island
+  const RepairReport r = repairSurface(m, "soup");
+  EXPECT_EQ(r.weldedVertices, 28);
+  EXPECT_EQ(r.unusedVertices, 28);
+  EXPECT_EQ(m.vertexCount(), 8);
+  EXPECT_EQ(m.triangleCount(), 12);
+  EXPECT_EQ(r.openTrianglesRemoved, 0);
+}
+
+TEST(SurfaceRepair, DegenerateAndDuplicateTrianglesAreDropped) {
+  SurfaceMesh m = test::box(kZero, kOne);
+  m.triangles.conservativeResize(15, 3);
+  m.triangles.row(12) << 0, 0, 1;  // repeated vertex
+  m.triangles.row(13) << 0, 1, 1;
+  m.triangles.row(14) << 3, 2, 1;  // same vertices as triangle 1, opposite winding
+  m.positions.conservativeResize(9, 3);
+  m.positions.row(8) << 0.5, 0, 0;  // on the edge 0-1: zero area
+  m.triangles.conservativeResize(16, 3);
+  m.triangles.row(15) << 0, 8, 1;
+  EXPECT_EQ(removeDegenerateTriangles(m, 1e-14), 3);
+  EXPECT_EQ(removeDuplicateTriangles(m), 1);
+  EXPECT_EQ(m.triangleCount(), 12);
+  EXPECT_EQ(removeUnusedVertices(m), 1);
+}
+
+TEST(SurfaceRepair, OrientationIsMadeConsistentAndOutward) {
+  SurfaceMesh m = test::box(kZero, kOne);
+  std::swap(m.triangles(3, 1), m.triangles(3, 2));
+  std::swap(m.triangles(7, 1), m.triangles(7, 2));
+  OrientationResult o = orientConsistently(m);
+  EXPECT_EQ(o.flippedTriangles, 2);
+  EXPECT_TRUE(o.orientable);
+  EXPECT_NEAR(signedVolume(m), 1.0, 1e-12);
+  // An inside-out box is turned outward.
+  SurfaceMesh inverted = test::box(kZero, kOne);
+  inverted.triangles.col(1).swap(inverted.triangles.col(2));
+  o = orientConsistently(inverted);
+  EXPECT_EQ(o.invertedComponents, 1);
+  EXPECT_NEAR(signedVolume(inverted), 1.0, 1e-12);
+}
+
+TEST(SurfaceRepair, DanglingTriangleIsRemoved) {
+  // The report's case: a triangle hanging off an edge of a closed surface.
+  SurfaceMesh m = test::box(kZero, kOne);
+  m.positions.conservativeResize(9, 3);
+  m.positions.row(8) << 0.5, -1, -1;
+  m.triangles.conservativeResize(13, 3);
+  m.triangles.row(12) << 0, 1, 8;
+  EXPECT_EQ(nonManifoldEdgeCount(m), 1);
+  const RepairReport r = repairSurface(m, "dangling");
+  EXPECT_EQ(r.openTrianglesRemoved, 1);
+  EXPECT_EQ(r.holes, 1);
+  EXPECT_EQ(m.triangleCount(), 12);
+  EXPECT_EQ(m.vertexCount(), 8);
+}
+
+TEST(SurfaceRepair, SurfaceWithAHoleCannotBeRepaired) {
+  SurfaceMesh m = test::box(kZero, kOne);
+  m.triangles.conservativeResize(10, 3);  // drop the x = hi face
+  ASSERT_EQ(boundaryLoops(m).size(), 1u);
+  EXPECT_EQ(boundaryLoops(m)[0].size(), 4u);
+  try {
+    repairSurface(m, "holey.obj");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), "holey.obj");
+    EXPECT_NE(e.message().find("1 hole"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SurfaceRepair, InterpenetratingBoxesAreDetectedAndCollapsed) {
+  SurfaceMesh m = test::merge(test::box(kZero, kOne), test::box(Eigen::Vector3d(0.5, 0.3, 0.2),
+                                                                Eigen::Vector3d(1.5, 1.3, 1.2)));
+  const auto pairs = findSelfIntersections(m);
+  EXPECT_GT(pairs.size(), 4u);
+  for (const auto& [a, b] : pairs) EXPECT_LT(a, b);
+  // Separate boxes do not intersect.
+  const SurfaceMesh apart = test::merge(
+      test::box(kZero, kOne), test::box(Eigen::Vector3d(2, 2, 2), Eigen::Vector3d(3, 3, 3)));
+  EXPECT_TRUE(findSelfIntersections(apart).empty());
+  // The report's collapse either removes every intersection or the surface is
+  // declared unrepairable; a repaired surface must be closed and clean.
+  try {
+    const RepairReport r = repairSurface(m, "two boxes");
+    EXPECT_GT(r.intersectingPairs, 0);
+    EXPECT_GT(r.collapsedTriangles, 0);
+    EXPECT_TRUE(findSelfIntersections(m).empty());
+    EXPECT_TRUE(boundaryLoops(m).empty());
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("cannot be repaired"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SurfaceRepair, CollapseMovesTheFirstTriangleOntoTheSecond) {
+  SurfaceMesh m = test::merge(test::box(kZero, kOne), test::box(kZero, kOne));
+  const std::vector<std::pair<int, int>> pairs = {{0, 12}};
+  EXPECT_EQ(collapseIntersections(m, pairs), 1);
+  EXPECT_EQ(m.triangles(0, 0), m.triangles(0, 1));
+  EXPECT_EQ(m.triangles(0, 1), m.triangles(0, 2));
+}
+
+TEST(SurfaceRepair, EmptyAndNonFiniteInputsAreErrors) {
+  SurfaceMesh empty;
+  EXPECT_THROW(repairSurface(empty, "empty"), Error);
+  SurfaceMesh m = test::box(kZero, kOne);
+  m.positions(3, 0) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(repairSurface(m, "nan"), Error);
+}
+
+}  // namespace
+}  // namespace tetskin
