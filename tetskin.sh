@@ -17,7 +17,7 @@ DEPS=(
   libvtk9-qt-dev qtbase5-dev libglew-dev
   libtet1.5-dev libnglib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels
+  xvfb xauth assimp-testmodels netgen-doc
 )
 
 log() { printf '\n==> %s\n' "$*" >&2; }

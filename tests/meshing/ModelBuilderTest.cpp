@@ -130,5 +130,36 @@ TEST(ModelBuilder, AssimpCorpusGivesDatasetsOrClearErrors) {
   EXPECT_GT(built, 0);
 }
 
+// Netgen's own example geometries (Debian's netgen-doc) through both meshers.
+TEST(ModelBuilder, NetgenExampleModelsGiveDatasetsOrClearErrors) {
+  const std::filesystem::path examples = "/usr/share/doc/netgen/examples";
+  if (!std::filesystem::is_directory(examples)) GTEST_SKIP() << "netgen-doc not installed";
+  int built = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples)) {
+    if (entry.path().extension() != ".stl") continue;
+    for (MesherKind mesher : {MesherKind::TetGen, MesherKind::Netgen}) {
+      SCOPED_TRACE(entry.path().string());
+      BuildOptions options;
+      options.mesher = mesher;
+      options.levels = 2;
+      options.minElements = 500;
+      options.maxElements = 5000;
+      options.qualities = {2.0, 1.6};
+      options.timeoutSeconds = 120;
+      options.jobs = 2;
+      try {
+        const BuildResult r =
+            buildDataset({{entry.path().string(), readSurface(entry.path()), ""}}, options);
+        expectValidDataset(r.dataset);
+        ++built;
+      } catch (const Error& e) {
+        if (std::string(e.what()).find("without Netgen") != std::string::npos) continue;
+        EXPECT_FALSE(std::string(e.what()).empty());
+      }
+    }
+  }
+  EXPECT_GE(built, 2);  // hinge.stl and part1.stl mesh with both meshers here
+}
+
 }  // namespace
 }  // namespace tetskin
