@@ -66,6 +66,14 @@ demo() {
   "$tetskin" build data/bunny.obj --decimate --levels 3 --min-elements 600 \
     --max-elements 12000 -o "$out/bunny"
   "$tetskin" info "$out/bunny.json"
+  log "binding the 64k-triangle bunny to the finest level"
+  "$tetskin" bind "$out/bunny.json" data/bunny_64k.obj -o "$out/bunny_64k_binding.vtp"
+  log "deforming it with a rotated control mesh (bound surfaces follow rigid motion exactly)"
+  awk 'NR <= 2 || /^#/ { print; next }
+       { c = cos(0.5); s = sin(0.5); printf "%s %.17g %.17g %.17g\n", $1, c*$2 - s*$3, s*$2 + c*$3, $4 }' \
+    "$out/bunny.node" >"$out/bunny_rotated.node"
+  "$tetskin" deform "$out/bunny.json" "$out/bunny_64k_binding.vtp" \
+    --positions "$out/bunny_rotated.node" -o "$out/bunny_64k_rotated.vtp"
   log "export for ParaView"
   "$tetskin" convert data/bunny_64k.obj "$out/bunny_64k.vtp"
   for level in 0 1 2; do "$tetskin" convert "$out/bunny.json" "$out/bunny_level$level.vtu" --level $level; done

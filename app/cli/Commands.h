@@ -12,6 +12,8 @@ namespace tetskin::cli {
 void addInfoCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
 void addBuildCommand(CLI::App& app);
+void addBindCommand(CLI::App& app);
+void addDeformCommand(CLI::App& app);
 // Subcommands of the product contract whose module has not landed yet.
 void addPendingCommands(CLI::App& app);
 

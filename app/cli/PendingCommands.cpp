@@ -15,9 +15,7 @@ void addPendingCommands(CLI::App& app) {
     const char* description;
   };
   static const Pending pending[] = {
-      {"bind", "Bind a surface to a dataset level (not available yet)"},
       {"simulate", "Run the FEM simulation of the control mesh (not available yet)"},
-      {"deform", "Apply a control-mesh state to a bound surface (not available yet)"},
       {"render", "Headless rendering of a dataset and surface (not available yet)"},
       {"bench", "Reproduce the report's Table 6.1 (not available yet)"},
   };

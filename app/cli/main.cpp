@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "tetskin 0.1.0");
   tetskin::cli::addBuildCommand(app);
+  tetskin::cli::addBindCommand(app);
+  tetskin::cli::addDeformCommand(app);
   tetskin::cli::addInfoCommand(app);
   tetskin::cli::addConvertCommand(app);
   tetskin::cli::addPendingCommands(app);

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "Commands.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/deformation/VertexNormals.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+
+namespace tetskin::cli {
+namespace {
+
+struct BindArgs {
+  std::filesystem::path dataset, surface, output;
+  int level = -1;
+  std::string method = "closest", offset = "normal";
+};
+
+void run(const BindArgs& a) {
+  const Dataset dataset = loadDataset(a.dataset);
+  const int level = resolveLevel(dataset.mesh, a.level);
+  BoundSurface bound;
+  bound.surface = readSurface(a.surface);
+  BindingOptions options;
+  options.method = *parseBindingMethod(a.method);
+  options.offset = *parseOffsetMode(a.offset);
+  const auto start = std::chrono::steady_clock::now();
+  bound.binding = bindSurface(bound.surface, dataset.mesh, level, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bound.surface.normals = vertexNormals(bound.surface.positions, bound.surface.triangles);
+  const std::filesystem::path outDir = std::filesystem::absolute(a.output).parent_path();
+  bound.dataset =
+      std::filesystem::relative(std::filesystem::absolute(a.dataset), outDir).generic_string();
+  writeBinding(a.output, bound);
+  std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),
+                           bound.binding)
+                 .c_str(),
+             stdout);
+  std::printf("  time:               %.3f s\nwrote %s\n", seconds, a.output.c_str());
+}
+
+}  // namespace
+
+void addBindCommand(CLI::App& app) {
+  auto a = std::make_shared<BindArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bind", "Bind a surface (OBJ/PLY/STL/VTP) to a dataset level's boundary; writes a .vtp");
+  cmd->add_option("DATASET", a->dataset, "dataset (.json, or a .node/.ele pair)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("SURFACE", a->surface, "surface to bind")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", a->output, "binding file (.vtp)")->required();
+  cmd->add_option("--level", a->level, "level, 0 = coarsest (default: finest)");
+  cmd->add_option("--method", a->method, "closest (exact), seed (the report's), embed (tetrahedra)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"closest", "seed", "embed"}));
+  cmd->add_option("--offset", a->offset,
+                  "normal (offset along the deformed triangle's normal) or displacement "
+                  "(the report's formula 4.1)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"normal", "displacement"}));
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace tetskin::cli

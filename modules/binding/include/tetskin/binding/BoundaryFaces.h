@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The boundary of a tetrahedral mesh: faces used by exactly one element,
+// oriented outward. Only these can carry the surface (report 3.2, step 1).
+
+#include <vector>
+
+#include "tetskin/core/TetMesh.h"
+
+namespace tetskin {
+
+struct BoundaryFaces {
+  Triangles faces;            // node ids (+ nodeOffset), counter-clockwise seen from outside
+  std::vector<int> elements;  // the element each face belongs to
+};
+
+// `nodeOffset` is added to every id (to report ids in the dataset's numbering
+// when `mesh` is one extracted level). Elements must be positively oriented.
+BoundaryFaces boundaryFaces(const TetMesh& mesh, int nodeOffset = 0);
+
+}  // namespace tetskin

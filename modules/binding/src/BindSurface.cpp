@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/binding/BindSurface.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
+#include "tetskin/deformation/VertexNormals.h"
+#include "tetskin/spatial/AabbTree.h"
+#include "tetskin/spatial/TriangleDistance.h"
+
+namespace tetskin {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One candidate face for a surface vertex, with what the choice depends on.
+struct Choice {
+  int face = -1;           // index into the usable faces
+  bool agrees = false;     // face normal points the way the surface normal does
+  double minBary = -kInf;  // smallest plane barycentric coordinate
+  double squaredDistance = kInf;
+  Eigen::Vector3d bary = Eigen::Vector3d::Zero();
+  double signedDistance = 0;
+};
+
+// The tie-break of the Closest method, a strict total order.
+bool better(const Choice& a, const Choice& b) {
+  if (a.agrees != b.agrees) return a.agrees;
+  if (a.minBary != b.minBary) return a.minBary > b.minBary;
+  if (a.squaredDistance != b.squaredDistance) return a.squaredDistance < b.squaredDistance;
+  return a.face < b.face;
+}
+
+// The boundary of the chosen level, with what every method needs.
+struct ControlSurface {
+  TetMesh level;       // level-local node numbering
+  int nodeOffset = 0;  // level-local + offset = dataset numbering
+  int elementOffset = 0;
+  Triangles faces;      // usable (non-degenerate) boundary faces, level-local ids
+  Points3 unitNormals;  // per usable face
+  double diagonal = 0;
+  Index degenerateFaces = 0;
+
+  Eigen::Vector3d corner(int face, int k) const {
+    return level.nodes.row(faces(face, k)).transpose();
+  }
+};
+
+ControlSurface controlSurface(const MultiLevelTetMesh& mesh, int level) {
+  if (level < 0) level = mesh.finestLevel();
+  ControlSurface cs;
+  cs.level = extractLevel(mesh, level);
+  const LevelRange& range = mesh.levels[static_cast<std::size_t>(level)];
+  cs.nodeOffset = static_cast<int>(range.firstNode);
+  cs.elementOffset = static_cast<int>(range.firstElement);
+  validateTetMesh(cs.level, "level " + std::to_string(level), /*requirePositiveVolume=*/false);
+  const BoundaryFaces all = boundaryFaces(cs.level);
+  cs.diagonal = boundingBox(cs.level.nodes).diagonal();
+  std::vector<Index> usable;
+  for (Index f = 0; f < all.faces.rows(); ++f) {
+    const Eigen::Vector3d a = cs.level.nodes.row(all.faces(f, 0)),
+                          b = cs.level.nodes.row(all.faces(f, 1)),
+                          c = cs.level.nodes.row(all.faces(f, 2));
+    // Zero-area faces have no plane: skip them (their neighbours cover the spot).
+    if (triangleArea(a, b, c) > 1e-14 * cs.diagonal * cs.diagonal)
+      usable.push_back(f);
+    else
+      ++cs.degenerateFaces;
+  }
+  if (usable.empty())
+    throw Error("level " + std::to_string(level) + " has no usable boundary faces");
+  cs.faces.resize(static_cast<Index>(usable.size()), 3);
+  cs.unitNormals.resize(static_cast<Index>(usable.size()), 3);
+  for (std::size_t i = 0; i < usable.size(); ++i) {
+    cs.faces.row(static_cast<Index>(i)) = all.faces.row(usable[i]);
+    const Eigen::Vector3d a = cs.corner(static_cast<int>(i), 0),
+                          b = cs.corner(static_cast<int>(i), 1),
+                          c = cs.corner(static_cast<int>(i), 2);
+    cs.unitNormals.row(static_cast<Index>(i)) = triangleNormal(a, b, c).transpose();
+  }
+  return cs;
+}
+
+Choice evaluate(const ControlSurface& cs, int face, const Eigen::Vector3d& p,
+                const Eigen::Vector3d& surfaceNormal) {
+  const Eigen::Vector3d a = cs.corner(face, 0), b = cs.corner(face, 1), c = cs.corner(face, 2);
+  const Eigen::Vector3d n = cs.unitNormals.row(face).transpose();
+  Choice choice;
+  choice.face = face;
+  choice.squaredDistance = closestPointOnTriangle(p, a, b, c).squaredDistance;
+  choice.bary = planeBarycentric(p, a, b, c);
+  choice.minBary = choice.bary.minCoeff();
+  choice.signedDistance = n.dot(p - a);
+  choice.agrees = n.dot(surfaceNormal) > 0;
+  return choice;
+}
+
+void store(const ControlSurface& cs, const Choice& choice, Index v, SurfaceBinding& out) {
+  for (int k = 0; k < 3; ++k) {
+    out.controlIds(v, k) = cs.faces(choice.face, k) + cs.nodeOffset;
+    out.weights(v, k) = choice.bary[k];
+  }
+  out.distance[v] = choice.signedDistance;
+  out.faceId[v] = choice.face;
+  out.minBarycentric[v] = choice.minBary;
+}
+
+void checkSurface(const SurfaceMesh& surface) {
+  if (surface.vertexCount() == 0) throw Error("the surface to bind has no vertices");
+  validateSurface(surface, "surface");
+}
+
+template <typename PerVertex>
+void forEachVertex(Index n, PerVertex&& f) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v != r.end(); ++v) f(v);
+  });
+}
+
+SurfaceBinding emptyBinding(const SurfaceMesh& surface, const BindingOptions& options, int level) {
+  SurfaceBinding b;
+  b.method = options.method;
+  b.offset = options.offset;
+  b.level = level;
+  b.resize(surface.vertexCount());
+  return b;
+}
+
+SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
+                           const BindingOptions& options, int level, bool bruteForce) {
+  SurfaceBinding out = emptyBinding(surface, options, level);
+  const Points3 normals = vertexNormals(surface.positions, surface.triangles);
+  const double tolerance = options.tieTolerance * cs.diagonal;
+  std::vector<Aabb> boxes(static_cast<std::size_t>(cs.faces.rows()));
+  for (Index f = 0; f < cs.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      boxes[static_cast<std::size_t>(f)].extend(cs.corner(static_cast<int>(f), k));
+  const AabbTree tree = bruteForce ? AabbTree() : AabbTree(boxes);
+  forEachVertex(surface.vertexCount(), [&](Index v) {
+    const Eigen::Vector3d p = surface.positions.row(v).transpose();
+    const Eigen::Vector3d np = normals.row(v).transpose();
+    // 1. The smallest true distance.
+    double best2 = kInf;
+    auto nearest = [&](int f, double& radius2) {
+      const double d2 = closestPointOnTriangle(p, cs.corner(f, 0), cs.corner(f, 1), cs.corner(f, 2))
+                            .squaredDistance;
+      if (d2 < radius2) radius2 = d2;
+    };
+    if (bruteForce) {
+      for (int f = 0; f < cs.faces.rows(); ++f) nearest(f, best2);
+    } else {
+      tree.forEachNear(p, best2, nearest);
+    }
+    // 2. Every face within the tolerance of it; the tie-break decides.
+    const double limit = std::sqrt(best2) + tolerance;
+    const double limit2 = limit * limit;
+    Choice chosen;
+    auto consider = [&](int f, double&) {
+      const Choice c = evaluate(cs, f, p, np);
+      if (c.squaredDistance <= limit2 && (chosen.face < 0 || better(c, chosen))) chosen = c;
+    };
+    double radius2 = limit2;
+    if (bruteForce) {
+      for (int f = 0; f < cs.faces.rows(); ++f) consider(f, radius2);
+    } else {
+      tree.forEachNear(p, radius2, consider);
+    }
+    store(cs, chosen, v, out);
+  });
+  return out;
+}
+
+// The report's method as written: score = smallest plane barycentric minus
+// the plane distance over the mean boundary edge length, searched among the
+// faces of the vertex's octant around the centroid.
+SurfaceBinding bindSeed(const SurfaceMesh& surface, const ControlSurface& cs,
+                        const BindingOptions& options, int level) {
+  SurfaceBinding out = emptyBinding(surface, options, level);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double edgeSum = 0;
+  for (Index f = 0; f < cs.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      centroid += cs.corner(static_cast<int>(f), k);
+      edgeSum +=
+          (cs.corner(static_cast<int>(f), k) - cs.corner(static_cast<int>(f), (k + 1) % 3)).norm();
+    }
+  centroid /= 3.0 * static_cast<double>(cs.faces.rows());
+  const double meanEdge = edgeSum / (3.0 * static_cast<double>(cs.faces.rows()));
+  std::array<std::vector<int>, 8> octants;
+  for (Index f = 0; f < cs.faces.rows(); ++f) {
+    Aabb box;
+    for (int k = 0; k < 3; ++k) box.extend(cs.corner(static_cast<int>(f), k));
+    for (int o = 0; o < 8; ++o) {
+      bool touches = true;
+      for (int axis = 0; axis < 3; ++axis) {
+        const bool upper = (o >> axis) & 1;
+        touches =
+            touches && (upper ? box.max[axis] >= centroid[axis] : box.min[axis] <= centroid[axis]);
+      }
+      if (touches) octants[static_cast<std::size_t>(o)].push_back(static_cast<int>(f));
+    }
+  }
+  const Points3 normals = vertexNormals(surface.positions, surface.triangles);
+  forEachVertex(surface.vertexCount(), [&](Index v) {
+    const Eigen::Vector3d p = surface.positions.row(v).transpose();
+    int o = 0;
+    for (int axis = 0; axis < 3; ++axis) o |= (p[axis] >= centroid[axis] ? 1 : 0) << axis;
+    const std::vector<int>& faces = octants[static_cast<std::size_t>(o)];
+    Choice chosen;
+    double bestScore = -kInf;
+    for (int f : faces) {
+      const Choice c = evaluate(cs, f, p, normals.row(v).transpose());
+      const double score = c.minBary - std::abs(c.signedDistance) / meanEdge;
+      if (score > bestScore) {
+        bestScore = score;
+        chosen = c;
+      }
+    }
+    if (chosen.face < 0) chosen = evaluate(cs, 0, p, normals.row(v).transpose());
+    store(cs, chosen, v, out);
+  });
+  return out;
+}
+
+// Barycentric coordinates of p in element e (unclamped: negative outside).
+Eigen::Vector4d tetBarycentric(const TetMesh& m, Index e, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d a = m.nodes.row(m.elements(e, 0)), b = m.nodes.row(m.elements(e, 1)),
+                        c = m.nodes.row(m.elements(e, 2)), d = m.nodes.row(m.elements(e, 3));
+  Eigen::Matrix3d t;
+  t << b - a, c - a, d - a;
+  const Eigen::Vector3d l = t.partialPivLu().solve(p - a);
+  return {1 - l.sum(), l[0], l[1], l[2]};
+}
+
+double squaredDistanceToTet(const TetMesh& m, Index e, const Eigen::Vector3d& p) {
+  if (tetBarycentric(m, e, p).minCoeff() >= 0) return 0;
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  double best = kInf;
+  for (const auto& f : kFaces)
+    best = std::min(best, closestPointOnTriangle(p, m.nodes.row(m.elements(e, f[0])).transpose(),
+                                                 m.nodes.row(m.elements(e, f[1])).transpose(),
+                                                 m.nodes.row(m.elements(e, f[2])).transpose())
+                              .squaredDistance);
+  return best;
+}
+
+// SOFA/VegaFEM-style embedding: the containing element's 4 barycentric
+// weights; outside the volume the nearest element, extrapolated.
+SurfaceBinding bindEmbed(const SurfaceMesh& surface, const ControlSurface& cs,
+                         const BindingOptions& options, int level) {
+  SurfaceBinding out = emptyBinding(surface, options, level);
+  const TetMesh& m = cs.level;
+  std::vector<Aabb> boxes(static_cast<std::size_t>(m.elementCount()));
+  for (Index e = 0; e < m.elementCount(); ++e)
+    for (int k = 0; k < 4; ++k)
+      boxes[static_cast<std::size_t>(e)].extend(m.nodes.row(m.elements(e, k)).transpose());
+  const AabbTree tree(boxes);
+  forEachVertex(surface.vertexCount(), [&](Index v) {
+    const Eigen::Vector3d p = surface.positions.row(v).transpose();
+    int chosen = -1;
+    double best2 = kInf;
+    tree.forEachNear(p, best2, [&](int e, double& radius2) {
+      const double d2 = squaredDistanceToTet(m, e, p);
+      if (d2 < radius2 || (d2 == radius2 && e < chosen)) {
+        radius2 = d2;
+        chosen = e;
+      }
+    });
+    const Eigen::Vector4d w = tetBarycentric(m, chosen, p);
+    for (int k = 0; k < 4; ++k) {
+      out.controlIds(v, k) = m.elements(chosen, k) + cs.nodeOffset;
+      out.weights(v, k) = w[k];
+    }
+    out.distance[v] = std::sqrt(best2);
+    out.faceId[v] = chosen + cs.elementOffset;
+    out.minBarycentric[v] = w.minCoeff();
+  });
+  return out;
+}
+
+}  // namespace
+
+SurfaceBinding bindSurface(const SurfaceMesh& surface, const MultiLevelTetMesh& mesh, int level,
+                           const BindingOptions& options) {
+  checkSurface(surface);
+  if (level < 0) level = mesh.finestLevel();
+  const ControlSurface cs = controlSurface(mesh, level);
+  switch (options.method) {
+    case BindingMethod::Closest:
+      return bindClosest(surface, cs, options, level, false);
+    case BindingMethod::Seed:
+      return bindSeed(surface, cs, options, level);
+    case BindingMethod::Embed:
+      return bindEmbed(surface, cs, options, level);
+  }
+  throw Error("unknown binding method");
+}
+
+SurfaceBinding bindClosestBruteForce(const SurfaceMesh& surface, const MultiLevelTetMesh& mesh,
+                                     int level, const BindingOptions& options) {
+  checkSurface(surface);
+  if (level < 0) level = mesh.finestLevel();
+  BindingOptions closest = options;
+  closest.method = BindingMethod::Closest;
+  return bindClosest(surface, controlSurface(mesh, level), closest, level, true);
+}
+
+}  // namespace tetskin

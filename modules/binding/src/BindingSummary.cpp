@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/binding/BindingSummary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+namespace tetskin {
+
+BindingSummary summarizeBinding(const SurfaceBinding& b, double diagonal) {
+  BindingSummary s;
+  s.vertices = b.vertexCount();
+  s.diagonal = diagonal;
+  if (s.vertices == 0) return s;
+  Index inside = 0;
+  std::vector<double> distances(static_cast<std::size_t>(s.vertices));
+  for (Index v = 0; v < s.vertices; ++v) {
+    inside += b.minBarycentric[v] >= 0 ? 1 : 0;
+    distances[static_cast<std::size_t>(v)] =
+        std::abs(b.distance[v]) / (diagonal > 0 ? diagonal : 1);
+  }
+  s.shareInside = static_cast<double>(inside) / static_cast<double>(s.vertices);
+  std::vector<double> sorted = distances;
+  std::sort(sorted.begin(), sorted.end());
+  auto percentile = [&](double p) {
+    const auto i = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())) - 1);
+    return sorted[std::min(i, sorted.size() - 1)];
+  };
+  s.distanceP50 = percentile(0.50);
+  s.distanceP90 = percentile(0.90);
+  s.distanceP99 = percentile(0.99);
+  s.distanceMax = sorted.back();
+  std::vector<Index> order(static_cast<std::size_t>(s.vertices));
+  std::iota(order.begin(), order.end(), 0);
+  const std::size_t k = std::min<std::size_t>(5, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+                    [&](Index a, Index c) { return b.minBarycentric[a] < b.minBarycentric[c]; });
+  s.worstBarycentric.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+                    [&](Index a, Index c) {
+                      return distances[static_cast<std::size_t>(a)] >
+                             distances[static_cast<std::size_t>(c)];
+                    });
+  s.worstDistance.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+  return s;
+}
+
+std::string formatSummary(const BindingSummary& s, const SurfaceBinding& b) {
+  char line[256];
+  std::string out;
+  std::snprintf(line, sizeof line, "bound %lld vertices to level %d (method %s, offset %s)\n",
+                static_cast<long long>(s.vertices), b.level, toString(b.method),
+                toString(b.offset));
+  out += line;
+  std::snprintf(line, sizeof line, "  all weights >= 0:   %.2f%% of vertices\n",
+                100.0 * s.shareInside);
+  out += line;
+  std::snprintf(line, sizeof line, "  |distance| / diag:  p50 %.2e  p90 %.2e  p99 %.2e  max %.2e\n",
+                s.distanceP50, s.distanceP90, s.distanceP99, s.distanceMax);
+  out += line;
+  out += "  most negative weight:";
+  for (Index v : s.worstBarycentric) {
+    std::snprintf(line, sizeof line, " v%lld (%.3f)", static_cast<long long>(v),
+                  b.minBarycentric[v]);
+    out += line;
+  }
+  out += "\n  farthest:";
+  for (Index v : s.worstDistance) {
+    std::snprintf(line, sizeof line, " v%lld (%.2e)", static_cast<long long>(v),
+                  std::abs(b.distance[v]) / (s.diagonal > 0 ? s.diagonal : 1));
+    out += line;
+  }
+  out += "\n";
+  return out;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The per-frame kernel (report 4.1-4.2): deformed surface positions from the
+// control-mesh state through the binding, then smooth normals. Threaded (TBB),
+// allocation-free after construction, with the per-vertex binding packed into
+// one contiguous record so a frame streams through memory once.
+
+#include <string>
+#include <vector>
+
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/deformation/VertexNormals.h"
+
+namespace tetskin {
+
+class SurfaceDeformer {
+ public:
+  // `restSurface`: the bound surface at rest; `controlRest`: the dataset's
+  // nodes at rest (dataset numbering, needed by the Displacement offset).
+  SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBinding& binding,
+                  const Points3& controlRest);
+
+  // `control`: deformed node positions in dataset numbering. Writes the
+  // deformed positions and unit normals (resized only if their size differs).
+  void deform(const Points3& control, Points3& positions, Points3& normals);
+
+  // Positions only (for callers that need no normals).
+  void deformPositions(const Points3& control, Points3& positions) const;
+
+  Index vertexCount() const { return static_cast<Index>(records_.size()); }
+  const Triangles& triangles() const { return triangles_; }
+  // Bytes one deform() reads and writes at least (for bandwidth comparisons).
+  std::size_t bytesPerFrame() const;
+
+ private:
+  struct Record {
+    int ids[4];
+    double w[4];
+    double d;
+  };
+  OffsetMode offset_;
+  int controls_;
+  std::vector<Record> records_;
+  Points3 rest_;  // surface rest positions (Displacement offset only)
+  Points3 controlRest_;
+  Triangles triangles_;
+  VertexTriangleAdjacency adjacency_;
+  Points3 faceScratch_;
+  Index maxControlId_ = -1;
+};
+
+// A control-mesh state in the dataset's numbering from `given` positions: all
+// dataset nodes, or only those of `level` (the other nodes stay at rest).
+// Throws Error naming `sourceName` when the count fits neither.
+Points3 datasetPositions(const MultiLevelTetMesh& mesh, int level, const Points3& given,
+                         const std::string& sourceName);
+
+}  // namespace tetskin

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Smooth vertex normals (report 4.2): every face normal, weighted by the face's
+// area, is added onto its vertices, then each vertex normal is normalized.
+// Computed as two parallel passes without atomics: face normals, then a gather
+// over each vertex's incident faces (its one-ring).
+
+#include <vector>
+
+#include "tetskin/core/SurfaceMesh.h"
+
+namespace tetskin {
+
+// For each vertex, the triangles that use it (compressed rows).
+struct VertexTriangleAdjacency {
+  std::vector<int> offsets;    // vertexCount + 1 entries
+  std::vector<int> triangles;  // triangles of vertex v: [offsets[v], offsets[v+1])
+};
+
+VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Index vertexCount);
+
+// `faceScratch` must have triangles.rows() rows and `normals` positions.rows();
+// nothing is allocated. A vertex with no area around it gets the zero vector.
+void computeVertexNormals(const Points3& positions, const Triangles& triangles,
+                          const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
+                          Points3& normals);
+
+// Convenience for one-off use (allocates).
+Points3 vertexNormals(const Points3& positions, const Triangles& triangles);
+
+}  // namespace tetskin

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/deformation/VertexNormals.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+
+namespace tetskin {
+
+VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Index vertexCount) {
+  VertexTriangleAdjacency a;
+  a.offsets.assign(static_cast<std::size_t>(vertexCount) + 1, 0);
+  for (Index t = 0; t < triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++a.offsets[static_cast<std::size_t>(triangles(t, k)) + 1];
+  for (std::size_t v = 1; v < a.offsets.size(); ++v) a.offsets[v] += a.offsets[v - 1];
+  a.triangles.resize(static_cast<std::size_t>(a.offsets.back()));
+  std::vector<int> fill(a.offsets.begin(), a.offsets.end() - 1);
+  for (Index t = 0; t < triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k)
+      a.triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles(t, k))]++)] =
+          static_cast<int>(t);
+  return a;
+}
+
+void computeVertexNormals(const Points3& positions, const Triangles& triangles,
+                          const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
+                          Points3& normals) {
+  constexpr Index kGrain = 4096;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, triangles.rows(), kGrain), [&](const auto& r) {
+    for (Index t = r.begin(); t != r.end(); ++t) {
+      const Eigen::Vector3d a = positions.row(triangles(t, 0));
+      const Eigen::Vector3d b = positions.row(triangles(t, 1));
+      const Eigen::Vector3d c = positions.row(triangles(t, 2));
+      // Twice the area times the unit normal: area weighting for free.
+      faceScratch.row(t) = (b - a).cross(c - a).transpose();
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, positions.rows(), kGrain), [&](const auto& r) {
+    for (Index v = r.begin(); v != r.end(); ++v) {
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      for (int i = adjacency.offsets[static_cast<std::size_t>(v)];
+           i < adjacency.offsets[static_cast<std::size_t>(v) + 1]; ++i)
+        n += faceScratch.row(adjacency.triangles[static_cast<std::size_t>(i)]).transpose();
+      const double length = n.norm();
+      if (length > 0) n /= length;
+      normals.row(v) = n.transpose();
+    }
+  });
+}
+
+Points3 vertexNormals(const Points3& positions, const Triangles& triangles) {
+  const VertexTriangleAdjacency adjacency = vertexTriangleAdjacency(triangles, positions.rows());
+  Points3 faces(triangles.rows(), 3), normals(positions.rows(), 3);
+  computeVertexNormals(positions, triangles, adjacency, faces, normals);
+  return normals;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A bound surface as one .vtp file that ParaView opens: the surface at rest
+// with point arrays ControlIds (3 ints, 4 for embed), Weights (3 or 4),
+// Distance, MinBarycentric, FaceId and Normals, and field data naming the
+// dataset, level, method and offset mode.
+
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
+
+class vtkPolyData;
+
+namespace tetskin {
+
+struct BoundSurface {
+  SurfaceMesh surface;  // rest positions, triangles (normals if stored)
+  SurfaceBinding binding;
+  std::string dataset;  // the dataset config the ids refer to, as written
+};
+
+// The surface (with `surface.normals` if present) plus the binding arrays.
+vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
+BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
+
+void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
+BoundSurface readBinding(const std::filesystem::path& path);
+
+}  // namespace tetskin

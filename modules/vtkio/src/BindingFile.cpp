@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/vtkio/BindingFile.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/vtkio/VtkConversion.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin {
+namespace {
+
+template <typename Array, typename Matrix>
+vtkSmartPointer<Array> columns(const char* name, const Matrix& m, int count) {
+  auto a = vtkSmartPointer<Array>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(count);
+  a->SetNumberOfTuples(m.rows());
+  for (Index r = 0; r < m.rows(); ++r)
+    for (int c = 0; c < count; ++c) a->SetTypedComponent(r, c, m(r, c));
+  return a;
+}
+
+void addString(vtkFieldData* fd, const char* name, const std::string& value) {
+  auto a = vtkSmartPointer<vtkStringArray>::New();
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+
+std::string getString(vtkFieldData* fd, const char* name, const std::string& source) {
+  auto* a = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray(name) : nullptr);
+  if (!a || a->GetNumberOfValues() < 1)
+    throw Error(source, 0,
+                std::string("is not a TetSkin binding: field data '") + name + "' is missing");
+  return a->GetValue(0);
+}
+
+vtkDataArray* pointArray(vtkPolyData* data, const char* name, int components,
+                         const std::string& source) {
+  vtkDataArray* a = data->GetPointData()->GetArray(name);
+  if (!a || a->GetNumberOfTuples() != data->GetNumberOfPoints() ||
+      (components > 0 && a->GetNumberOfComponents() != components))
+    throw Error(source, 0,
+                std::string("is not a TetSkin binding: point array '") + name +
+                    "' is missing or has the wrong size");
+  return a;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
+  const SurfaceBinding& b = bound.binding;
+  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
+  const int k = b.controlsPerVertex();
+  vtkPointData* pd = data->GetPointData();
+  pd->AddArray(columns<vtkIntArray>("ControlIds", b.controlIds, k));
+  pd->AddArray(columns<vtkDoubleArray>("Weights", b.weights, k));
+  pd->AddArray(columns<vtkDoubleArray>("Distance", b.distance, 1));
+  pd->AddArray(columns<vtkDoubleArray>("MinBarycentric", b.minBarycentric, 1));
+  pd->AddArray(columns<vtkIntArray>("FaceId", b.faceId, 1));
+  vtkFieldData* fd = data->GetFieldData();
+  addString(fd, "Dataset", bound.dataset);
+  addString(fd, "Method", toString(b.method));
+  addString(fd, "Offset", toString(b.offset));
+  auto level = vtkSmartPointer<vtkIntArray>::New();
+  level->SetName("Level");
+  level->InsertNextValue(b.level);
+  fd->AddArray(level);
+  return data;
+}
+
+BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
+  BoundSurface bound;
+  bound.surface = fromVtkPolyData(data, source);
+  vtkFieldData* fd = data->GetFieldData();
+  bound.dataset = getString(fd, "Dataset", source);
+  SurfaceBinding& b = bound.binding;
+  const auto method = parseBindingMethod(getString(fd, "Method", source));
+  const auto offset = parseOffsetMode(getString(fd, "Offset", source));
+  if (!method || !offset) throw Error(source, 0, "unknown binding method or offset mode");
+  b.method = *method;
+  b.offset = *offset;
+  auto* level = vtkIntArray::SafeDownCast(fd->GetArray("Level"));
+  if (!level || level->GetNumberOfValues() < 1)
+    throw Error(source, 0, "field data 'Level' is missing");
+  b.level = level->GetValue(0);
+  const Index n = data->GetNumberOfPoints();
+  if (n != bound.surface.vertexCount())
+    throw Error(source, 0, "the binding's points were merged or dropped on reading");
+  b.resize(n);
+  const int k = b.controlsPerVertex();
+  vtkDataArray* ids = pointArray(data, "ControlIds", k, source);
+  vtkDataArray* weights = pointArray(data, "Weights", k, source);
+  vtkDataArray* distance = pointArray(data, "Distance", 1, source);
+  vtkDataArray* minBary = pointArray(data, "MinBarycentric", 1, source);
+  vtkDataArray* face = pointArray(data, "FaceId", 1, source);
+  for (Index v = 0; v < n; ++v) {
+    for (int c = 0; c < k; ++c) {
+      b.controlIds(v, c) = static_cast<int>(ids->GetComponent(v, c));
+      b.weights(v, c) = weights->GetComponent(v, c);
+    }
+    b.distance[v] = distance->GetComponent(v, 0);
+    b.minBarycentric[v] = minBary->GetComponent(v, 0);
+    b.faceId[v] = static_cast<int>(face->GetComponent(v, 0));
+  }
+  return bound;
+}
+
+void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
+  writeVtp(path, bindingToPolyData(bound));
+}
+
+BoundSurface readBinding(const std::filesystem::path& path) {
+  return bindingFromPolyData(readVtp(path), path.string());
+}
+
+}  // namespace tetskin

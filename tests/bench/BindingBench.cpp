@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Binding and deformation speed, each next to its baseline from the same run.
+// Prints tables; asserts nothing.
+#include <tbb/global_control.h>
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkLoopSubdivisionFilter.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/io/ObjFormat.h"
+#include "tetskin/spatial/TriangleDistance.h"
+#include "tetskin/vtkio/VtkConversion.h"
+
+using namespace tetskin;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+template <typename F>
+double seconds(F&& f, int repeat = 1) {
+  const auto t = Clock::now();
+  for (int i = 0; i < repeat; ++i) f();
+  return std::chrono::duration<double>(Clock::now() - t).count() / repeat;
+}
+
+// What a VTK user would write: the boundary as vtkPolyData, a
+// vtkStaticCellLocator, FindClosestPoint per vertex, then barycentric weights.
+SurfaceBinding bindWithVtkLocator(const SurfaceMesh& surface, const MultiLevelTetMesh& mesh,
+                                  int level) {
+  const LevelRange& r = mesh.levels[static_cast<std::size_t>(level)];
+  const BoundaryFaces boundary = boundaryFaces(extractLevel(mesh, level));
+  SurfaceMesh faces;
+  faces.positions = mesh.nodes.middleRows(r.firstNode, r.nodeCount);
+  faces.triangles = boundary.faces;
+  vtkSmartPointer<vtkPolyData> pd = toVtkPolyData(faces);
+  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  locator->SetDataSet(pd);
+  locator->BuildLocator();
+  auto cell = vtkSmartPointer<vtkGenericCell>::New();
+  SurfaceBinding b;
+  b.resize(surface.vertexCount());
+  for (Index v = 0; v < surface.vertexCount(); ++v) {
+    double p[3] = {surface.positions(v, 0), surface.positions(v, 1), surface.positions(v, 2)};
+    double closest[3], d2;
+    vtkIdType cellId;
+    int subId;
+    locator->FindClosestPoint(p, closest, cell, cellId, subId, d2);
+    const Eigen::Vector3d a = faces.positions.row(faces.triangles(cellId, 0)),
+                          bb = faces.positions.row(faces.triangles(cellId, 1)),
+                          c = faces.positions.row(faces.triangles(cellId, 2));
+    const Eigen::Vector3d w = planeBarycentric(Eigen::Vector3d(p[0], p[1], p[2]), a, bb, c);
+    for (int k = 0; k < 3; ++k) {
+      b.controlIds(v, k) = faces.triangles(cellId, k) + static_cast<int>(r.firstNode);
+      b.weights(v, k) = w[k];
+    }
+    b.faceId[v] = static_cast<int>(cellId);
+  }
+  return b;
+}
+
+SurfaceMesh subdivided(const SurfaceMesh& m, int steps) {
+  auto loop = vtkSmartPointer<vtkLoopSubdivisionFilter>::New();
+  loop->SetInputData(toVtkPolyData(m));
+  loop->SetNumberOfSubdivisions(steps);
+  loop->Update();
+  return fromVtkPolyData(loop->GetOutput(), "subdivided");
+}
+
+void deformationRow(const char* name, const SurfaceMesh& surface, const SurfaceBinding& binding,
+                    const Dataset& d) {
+  SurfaceDeformer deformer(surface, binding, d.mesh.nodes);
+  Points3 control = d.mesh.nodes * 1.01;
+  Points3 positions, normals;
+  deformer.deform(control, positions, normals);  // warm up, allocate once
+  const int repeat = surface.vertexCount() > 200000 ? 10 : 100;
+  const double frame = seconds([&] { deformer.deform(control, positions, normals); }, repeat);
+  const double positionsOnly =
+      seconds([&] { deformer.deformPositions(control, positions); }, repeat);
+  const std::size_t bytes = deformer.bytesPerFrame();
+  std::vector<char> from(bytes, 1), to(bytes);
+  const double copy = seconds([&] { std::memcpy(to.data(), from.data(), bytes); }, repeat);
+  std::printf("%-22s %9lld %10.2f %10.2f %10.2f %8.2fx %9.1f\n", name,
+              static_cast<long long>(surface.vertexCount()), 1e3 * frame, 1e3 * positionsOnly,
+              1e3 * copy, frame / copy, static_cast<double>(bytes) / 1e6);
+}
+
+}  // namespace
+
+int main() {
+  const std::string data = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+  const Dataset d = loadDataset(data + "bunny.json");
+  const int level = d.mesh.finestLevel();
+  const SurfaceMesh fine = readObj(data + "bunny_64k.obj");
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::printf("binding %lld vertices (bunny_64k) to level %d (%lld tetrahedra), %d cores\n",
+              static_cast<long long>(fine.vertexCount()), level,
+              static_cast<long long>(d.mesh.levels[static_cast<std::size_t>(level)].elementCount),
+              cores);
+  std::printf("%-36s %10s %10s\n", "method", "seconds", "vs closest");
+  SurfaceBinding closest;
+  const double tClosest = seconds([&] { closest = bindSurface(fine, d.mesh, level); });
+  double tClosest1 = 0;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    tClosest1 = seconds([&] { bindSurface(fine, d.mesh, level); });
+  }
+  SurfaceBinding brute;
+  const double tBrute = seconds([&] { brute = bindClosestBruteForce(fine, d.mesh, level); });
+  BindingOptions seed;
+  seed.method = BindingMethod::Seed;
+  const double tSeed = seconds([&] { bindSurface(fine, d.mesh, level, seed); });
+  SurfaceBinding locator;
+  const double tLocator = seconds([&] { locator = bindWithVtkLocator(fine, d.mesh, level); });
+  Index sameAsLocator = 0;
+  for (Index v = 0; v < fine.vertexCount(); ++v)
+    sameAsLocator +=
+        (closest.controlIds.row(v).head<3>() == locator.controlIds.row(v).head<3>()) ? 1 : 0;
+  auto row = [&](const char* name, double t) {
+    std::printf("%-36s %10.4f %9.1fx\n", name, t, t / tClosest);
+  };
+  row("closest (BVH, all cores)", tClosest);
+  row("closest (BVH, 1 thread)", tClosest1);
+  row("brute force over all faces", tBrute);
+  row("seed (report's octants)", tSeed);
+  row("vtkStaticCellLocator (1 thread)", tLocator);
+  std::printf(
+      "closest == brute force: %s; same triangle as the VTK locator: %.2f%%\n",
+      closest.controlIds == brute.controlIds && closest.weights == brute.weights ? "yes" : "NO",
+      100.0 * static_cast<double>(sameAsLocator) / static_cast<double>(fine.vertexCount()));
+
+  const SurfaceMesh million = subdivided(readObj(data + "bunny_8k.obj"), 4);
+  SurfaceBinding millionBinding;
+  const double tMillion = seconds([&] { millionBinding = bindSurface(million, d.mesh, level); });
+  std::printf("closest, %lld-vertex surface: %.3f s\n\n",
+              static_cast<long long>(million.vertexCount()), tMillion);
+
+  std::printf("per-frame deformation (positions + normals) vs memcpy of the bytes it touches\n");
+  std::printf("%-22s %9s %10s %10s %10s %9s %9s\n", "surface", "vertices", "frame ms", "pos ms",
+              "copy ms", "vs copy", "MB");
+  deformationRow("bunny_64k", fine, closest, d);
+  deformationRow("1M (bunny_8k, Loop x4)", million, millionBinding, d);
+  return 0;
+}
