@@ -14,6 +14,7 @@ void addConvertCommand(CLI::App& app);
 void addBuildCommand(CLI::App& app);
 void addBindCommand(CLI::App& app);
 void addDeformCommand(CLI::App& app);
+void addSimulateCommand(CLI::App& app);
 // Subcommands of the product contract whose module has not landed yet.
 void addPendingCommands(CLI::App& app);
 

@@ -15,7 +15,6 @@ void addPendingCommands(CLI::App& app) {
     const char* description;
   };
   static const Pending pending[] = {
-      {"simulate", "Run the FEM simulation of the control mesh (not available yet)"},
       {"render", "Headless rendering of a dataset and surface (not available yet)"},
       {"bench", "Reproduce the report's Table 6.1 (not available yet)"},
   };

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   tetskin::cli::addBuildCommand(app);
   tetskin::cli::addBindCommand(app);
   tetskin::cli::addDeformCommand(app);
+  tetskin::cli::addSimulateCommand(app);
   tetskin::cli::addInfoCommand(app);
   tetskin::cli::addConvertCommand(app);
   tetskin::cli::addPendingCommands(app);

@@ -12,6 +12,37 @@ TetMesh unitTetrahedron() {
   return m;
 }
 
+TetMesh tetGrid(int nx, int ny, int nz, const Eigen::Vector3d& size) {
+  TetMesh m;
+  auto id = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
+  m.nodes.resize((nx + 1) * (ny + 1) * (nz + 1), 3);
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        m.nodes.row(id(i, j, k)) << size.x() * i / nx, size.y() * j / ny, size.z() * k / nz;
+  // Kuhn split: the 6 paths from corner 000 to 111 along the axes.
+  static constexpr int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                       {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  m.elements.resize(6 * nx * ny * nz, 4);
+  Index e = 0;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& path : kPaths) {
+          int c[3] = {i, j, k};
+          int ids[4];
+          ids[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[path[s]];
+            ids[s + 1] = id(c[0], c[1], c[2]);
+          }
+          m.elements.row(e) << ids[0], ids[1], ids[2], ids[3];
+          if (elementVolume(m, e) < 0) std::swap(m.elements(e, 2), m.elements(e, 3));
+          ++e;
+        }
+  return m;
+}
+
 SurfaceMesh box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
   SurfaceMesh m;
   m.positions.resize(8, 3);

@@ -9,6 +9,9 @@ namespace tetskin::test {
 // The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), positively oriented.
 TetMesh unitTetrahedron();
 
+// A box [0,size] split into nx*ny*nz cubes of 6 positive tetrahedra each.
+TetMesh tetGrid(int nx, int ny, int nz, const Eigen::Vector3d& size);
+
 // Closed axis-aligned box, 8 vertices, 12 outward triangles.
 SurfaceMesh box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
 // Concatenates two surfaces (vertex ids of b shifted).

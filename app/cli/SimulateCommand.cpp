@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <vtkUnstructuredGrid.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "Commands.h"
+#include "Progress.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/simulation/Scenario.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin::cli {
+namespace {
+
+struct SimulateArgs {
+  std::filesystem::path dataset, output, surface;
+  int steps = 120, level = -1, every = 1;
+  std::string scenario = "wobble", solver = "multigrid";
+  SimulationOptions options;
+  bool quiet = false;
+};
+
+void run(SimulateArgs& a) {
+  const Dataset dataset = loadDataset(a.dataset);
+  const int level = resolveLevel(dataset.mesh, a.level);
+  a.options.solver = a.solver == "cg" ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+  const SimulationOptions options =
+      scenarioOptions(a.scenario, a.options, extractLevel(dataset.mesh, level));
+  std::unique_ptr<Scenario> scenario = makeScenario(a.scenario);
+  Simulation sim(dataset.mesh, level, options);
+  scenario->setUp(sim);
+
+  // The bound surface, if any, follows every frame.
+  std::unique_ptr<BoundSurface> bound;
+  std::unique_ptr<SurfaceDeformer> deformer;
+  if (!a.surface.empty()) {
+    bound = std::make_unique<BoundSurface>();
+    bound->surface = readSurface(a.surface);
+    bound->binding = bindSurface(bound->surface, dataset.mesh, level);
+    bound->dataset = a.dataset.generic_string();
+    deformer =
+        std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
+  }
+
+  std::filesystem::path pvd = a.output;
+  if (pvd.extension() != ".pvd") pvd += ".pvd";
+  const std::filesystem::path directory = std::filesystem::absolute(pvd).parent_path();
+  const std::string framesName = pvd.stem().string() + "_frames";
+  std::filesystem::create_directories(directory / framesName);
+  PvdSeries series(pvd);
+  const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
+  Points3 controlAll = dataset.mesh.nodes, surfacePositions, surfaceNormals;
+
+  auto writeFrame = [&](Index frame) {
+    const SimulationState s = sim.state();
+    char name[64];
+    std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frame));
+    writeVtu(
+        directory / framesName / name,
+        simulationFrame(sim.restMesh(), s.positions, s.velocities, sim.vonMisesStress(), level));
+    series.add(s.time, 0, framesName + "/" + name);
+    if (deformer) {
+      controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
+      deformer->deform(controlAll, surfacePositions, surfaceNormals);
+      BoundSurface frameSurface = *bound;
+      frameSurface.surface.positions = surfacePositions;
+      frameSurface.surface.normals = surfaceNormals;
+      std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frame));
+      writeBinding(directory / framesName / name, frameSurface);
+      series.add(s.time, 1, framesName + "/" + name);
+    }
+    series.write();  // after every frame: a stopped run leaves a valid series
+  };
+
+  Progress progress(a.quiet);
+  Index frame = 0;
+  writeFrame(frame++);
+  double stepSeconds = 0;
+  long iterations = 0;
+  for (int i = 0; i < a.steps; ++i) {
+    scenario->beforeStep(sim, sim.state().time);
+    const auto start = std::chrono::steady_clock::now();
+    const StepStats stats = sim.step();
+    stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    iterations += stats.iterations;
+    if ((i + 1) % a.every == 0) writeFrame(frame++);
+    progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
+  }
+  const Energies e = sim.energies();
+  std::printf("simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s\n",
+              a.steps, options.timeStep, level,
+              static_cast<long long>(sim.restMesh().elementCount()), scenario->name(),
+              toString(options.solver));
+  std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
+              a.steps / std::max(stepSeconds, 1e-12),
+              static_cast<double>(iterations) / std::max(a.steps, 1));
+  std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
+  std::printf("wrote %s (%lld frames)\n", pvd.c_str(), static_cast<long long>(frame));
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app) {
+  auto a = std::make_shared<SimulateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Run the corotated FEM on a dataset level; writes a ParaView time series (.pvd)");
+  cmd->add_option("DATASET", a->dataset, "dataset (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
+      ->required();
+  cmd->add_option("--steps", a->steps, "time steps")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--dt", a->options.timeStep, "time step in seconds")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--every", a->every, "write every k-th step")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--scenario", a->scenario, "wobble, drop, twist or sag")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"wobble", "drop", "twist", "sag"}));
+  cmd->add_option("--level", a->level, "simulated level, 0 = coarsest (default: finest)");
+  cmd->add_option("--solver", a->solver, "cg (block-Jacobi CG) or multigrid (CG with a V-cycle)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cg", "multigrid"}));
+  cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
+      ->capture_default_str();
+  cmd->add_option("--young", a->options.material.youngsModulus, "Young's modulus (Pa)")
+      ->capture_default_str();
+  cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio")
+      ->capture_default_str();
+  cmd->add_option("--density", a->options.material.density, "density (kg/m^3)")
+      ->capture_default_str();
+  cmd->add_option("--alpha", a->options.material.massDamping, "Rayleigh mass damping")
+      ->capture_default_str();
+  cmd->add_option("--beta", a->options.material.stiffnessDamping, "Rayleigh stiffness damping")
+      ->capture_default_str();
+  cmd->add_option("--surface", a->surface,
+                  "also write this surface, bound (closest) and deformed, per frame")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace tetskin::cli

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Corotated linear elasticity on linear tetrahedra (Georgii & Westermann; see
+// shared FEM notes): per element a rest stiffness K_e = V B^T C B, a rotation R
+// from the polar decomposition of the deformation gradient, the elastic force
+// f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T. Everything that
+// depends only on the rest shape (shape gradients, K_e, lumped mass, the
+// sparsity pattern and where each element's blocks go in it) is computed once.
+// Note: elements are processed in parallel by colour; the colouring is
+// computed once in the constructor.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <array>
+#include <vector>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/simulation/ElasticMaterial.h"
+
+namespace tetskin {
+
+// Row-major so rows can be processed in parallel (SpMV, Dirichlet rows).
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+class CorotatedFem {
+ public:
+  CorotatedFem(const TetMesh& rest, const ElasticMaterial& material);
+
+  Index nodeCount() const { return restPositions_.size() / 3; }
+  Index dofCount() const { return restPositions_.size(); }
+  Index elementCount() const { return static_cast<Index>(elements_.size()); }
+  const Eigen::VectorXd& restPositions() const { return restPositions_; }  // xyz per node
+  const Eigen::VectorXd& lumpedMass() const { return mass_; }              // per dof
+  const ElasticMaterial& material() const { return material_; }
+  // The pattern of the assembled stiffness (values zero), for callers that
+  // build systems of the same shape.
+  const SparseMatrix& pattern() const { return pattern_; }
+
+  // For positions x (3n): rotations, elastic forces (3n) and the stiffness
+  // R K R^T assembled into `stiffness` (given the pattern's shape; values
+  // overwritten). Elements are processed in parallel.
+  void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& stiffness);
+
+  // Elastic energy sum 1/2 z^T K_e z, z = R^T x_e - X_e, R from x.
+  double elasticEnergy(const Eigen::VectorXd& x) const;
+
+  // Per element von Mises stress at positions x.
+  Eigen::VectorXd vonMisesStress(const Eigen::VectorXd& x) const;
+
+  // The rotation of the polar decomposition F = R S, a proper rotation also
+  // for inverted elements (SVD with the sign fix of Irving, Teran & Fedkiw).
+  static Eigen::Matrix3d rotation(const Eigen::Matrix3d& F);
+
+  // Rest stiffness of element e (12 x 12, node-major xyz).
+  Eigen::Matrix<double, 12, 12> elementStiffness(Index e) const;
+  const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
+
+ private:
+  struct Element {
+    std::array<int, 4> nodes;
+    Eigen::Matrix3d restInverse;               // Dm^-1
+    std::array<Eigen::Vector3d, 4> gradients;  // shape-function gradients
+    double volume;
+    std::array<Eigen::Matrix3d, 16> stiffness;  // K_ij blocks, row-major (i*4+j)
+    std::array<int, 48> slots;  // value index of entry (3 n_i + a, 3 n_j) per (i, j, a)
+  };
+  static Eigen::Matrix3d elementRotation(const Element& el, const Eigen::VectorXd& x);
+  ElasticMaterial material_;
+  std::vector<Element> elements_;
+  Eigen::VectorXd restPositions_;
+  Eigen::VectorXd mass_;
+  SparseMatrix pattern_;
+  std::vector<Eigen::Matrix3d> rotations_;
+  // Elements grouped so that no two in a group share a node: each group is
+  // assembled in parallel without locks or atomics.
+  std::vector<std::vector<int>> colors_;
+};
+
+}  // namespace tetskin

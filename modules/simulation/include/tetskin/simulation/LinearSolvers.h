@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Solvers for the symmetric positive definite systems of the implicit step:
+// preconditioned conjugate gradients (block-Jacobi), and the same CG with a
+// multigrid V-cycle over the dataset's coarser levels as preconditioner.
+// Both start from the x passed in (warm start from the last step).
+
+#include <memory>
+#include <vector>
+
+#include "tetskin/simulation/CorotatedFem.h"
+
+namespace tetskin {
+
+struct SolveStats {
+  int iterations = 0;
+  double relativeResidual = 0;  // |b - A x| / |b|
+};
+
+// y = A x, rows in parallel.
+void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y);
+
+// Preconditioner interface: z = M^-1 r.
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  // Called once per system (the matrix changes every step).
+  virtual void setup(const SparseMatrix& A) = 0;
+  virtual void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const = 0;
+};
+
+// Inverse of each node's 3x3 diagonal block.
+class BlockJacobi : public Preconditioner {
+ public:
+  void setup(const SparseMatrix& A) override;
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
+
+ private:
+  std::vector<Eigen::Matrix3d> inverse_;
+};
+
+// Multigrid V-cycle on non-nested levels: `nodalProlongations[l]` maps the
+// nodes of level l+1 (coarser) to those of level l (level 0 is the system's
+// own). Coarse operators are Galerkin products P^T A P, rebuilt in setup()
+// by precomputed streams (GalerkinStream.h); symmetric Gauss-Seidel smoothing
+// (forward before, backward after, so the cycle is a symmetric
+// preconditioner); an exact Cholesky solve on the coarsest level. Fixed nodes
+// (Dirichlet) receive no coarse correction.
+class MultigridPreconditioner : public Preconditioner {
+ public:
+  explicit MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,
+                                   int smoothingSweeps = 1);
+  ~MultigridPreconditioner() override;
+  // 1 per fixed node of the finest level.
+  void setFixedNodes(const std::vector<char>& fixedNodes);
+  void setup(const SparseMatrix& A) override;
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
+  int levelCount() const { return static_cast<int>(nodal_.size()) + 1; }
+  const SparseMatrix& coarseOperator(int level) const {
+    return operators_.at(static_cast<std::size_t>(level));
+  }
+
+ private:
+  struct Impl;
+  std::vector<SparseMatrix> prolongations_;  // nodal, as given
+  std::vector<SparseMatrix> nodal_;          // with fixed rows removed
+  std::vector<SparseMatrix> transfers_;      // nodal_ expanded to xyz dofs
+  std::vector<SparseMatrix> restrictions_;   // their transposes
+  std::vector<SparseMatrix> operators_;      // [0] is a copy of A
+  int sweeps_;
+  std::shared_ptr<Impl> impl_;
+};
+
+// Preconditioned CG to `tolerance` (relative residual) or `maxIterations`.
+SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                             const Preconditioner& preconditioner, double tolerance,
+                             int maxIterations);
+
+}  // namespace tetskin

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Ready-made experiments for `tetskin simulate --scenario` (y is up):
+//   wobble  base fixed, a periodic sideways push on the upper part (the
+//           report's "animated deformation")
+//   drop    the body starts above a floor and falls onto it
+//   twist   base fixed, the top turned about the vertical axis
+//   sag     base fixed, gravity only
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tetskin/simulation/Simulation.h"
+
+namespace tetskin {
+
+struct ScenarioParameters {
+  double baseShare = 0.1;        // nodes in the lowest share of the height are fixed
+  double pushAcceleration = 15;  // wobble: peak sideways acceleration of the pushed part
+  double pushFrequency = 1.0;    // wobble: Hz
+  double dropHeight = 0.3;       // drop: start this share of the height above the floor
+  double twistDegrees = 90;      // twist: final angle of the top
+  double twistSeconds = 1.0;     // twist: time to reach it
+};
+
+class Scenario {
+ public:
+  virtual ~Scenario() = default;
+  virtual const char* name() const = 0;
+  // Fixed nodes, initial state, floor: called once before the first step.
+  virtual void setUp(Simulation& simulation) = 0;
+  // Forces and kinematic targets for the step that starts at `time`.
+  virtual void beforeStep(Simulation& simulation, double time) = 0;
+};
+
+// The simulation options a scenario needs (e.g. drop adds a floor).
+SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
+                                  const TetMesh& rest);
+
+// Throws Error for an unknown name.
+std::unique_ptr<Scenario> makeScenario(std::string_view name,
+                                       const ScenarioParameters& parameters = {});
+std::vector<std::string> scenarioNames();
+
+}  // namespace tetskin

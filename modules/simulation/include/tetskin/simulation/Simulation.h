@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The control mesh as an elastic body: corotated FEM, implicit (backward)
+// Euler steps (M + h C + h^2 K) dv = h (f - C v - h K v) with Rayleigh damping
+// C = alpha M + beta K, Dirichlet and kinematic nodes, gravity, external point
+// forces and a floor with penalty contact. Solved by block-Jacobi CG or by CG
+// with a multigrid V-cycle over the dataset's coarser levels.
+//
+// Threads: step() may run on one thread while others call state(),
+// setExternalForces() or energies(); those are guarded by a mutex. Two threads
+// must not call step() at the same time.
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/LinearSolvers.h"
+
+namespace tetskin {
+
+enum class SolverKind { ConjugateGradient, Multigrid };
+const char* toString(SolverKind kind);
+
+struct SimulationOptions {
+  ElasticMaterial material;
+  double timeStep = 1.0 / 60.0;
+  Eigen::Vector3d gravity{0, -9.81, 0};
+  std::optional<double> floorHeight;  // floor plane y = height, normal +y
+  double floorStiffness = 0;          // penalty; 0 = automatic (stiff enough for this mesh)
+  double friction = 0.3;              // share of tangential velocity lost in contact
+  SolverKind solver = SolverKind::ConjugateGradient;
+  double tolerance = 1e-6;  // relative residual of the linear solve
+  int maxIterations = 2000;
+};
+
+struct StepStats {
+  int iterations = 0;
+  double residual = 0;
+  int contacts = 0;
+  double assemblySeconds = 0;  // element rotations, forces, stiffness
+  double setupSeconds = 0;     // preconditioner (Galerkin products, factorization)
+  double solveSeconds = 0;     // CG iterations
+};
+
+struct SimulationState {
+  Points3 positions;  // level-local node numbering
+  Points3 velocities;
+  double time = 0;
+  Index steps = 0;
+};
+
+struct Energies {
+  double kinetic = 0, elastic = 0, gravitational = 0;
+  double total() const { return kinetic + elastic + gravitational; }
+};
+
+class Simulation {
+ public:
+  // Simulates `level` (< 0: the finest) of the dataset; multigrid uses the
+  // coarser levels.
+  Simulation(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options);
+  ~Simulation();
+
+  int level() const { return level_; }
+  const TetMesh& restMesh() const { return rest_; }
+  const SimulationOptions& options() const { return options_; }
+  const CorotatedFem& fem() const { return fem_; }
+
+  // Dirichlet nodes (level-local ids): they keep their position unless given
+  // a kinematic target.
+  void setFixedNodes(const std::vector<int>& nodes);
+  const std::vector<int>& fixedNodes() const { return fixedNodes_; }
+  // Positions the given fixed nodes must reach at the end of the next step.
+  void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
+  // Per-node external forces (level-local), kept until replaced.
+  void setExternalForces(const Points3& forces);
+  void setPositions(const Points3& positions);
+  void setVelocities(const Points3& velocities);
+
+  StepStats step();
+  SimulationState state() const;
+  Energies energies() const;
+  // Per element von Mises stress at the current state.
+  Eigen::VectorXd vonMisesStress() const;
+
+ private:
+  void buildSystem(double h, StepStats& stats);
+  MultiLevelTetMesh dataset_;
+  int level_;
+  TetMesh rest_;
+  SimulationOptions options_;
+  CorotatedFem fem_;
+  std::unique_ptr<Preconditioner> preconditioner_;
+  MultigridPreconditioner* multigrid_ = nullptr;
+
+  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_
+  Eigen::VectorXd x_, v_, external_;
+  double time_ = 0;
+  Index steps_ = 0;
+
+  std::vector<int> fixedNodes_;
+  std::vector<char> fixedDofs_;
+  Eigen::VectorXd prescribedDv_;  // for fixed dofs
+  std::vector<int> kinematicNodes_;
+  Points3 kinematicTargets_;
+
+  // Per-step work arrays, allocated once.
+  SparseMatrix stiffness_, system_;
+  std::vector<int> diagonalSlot_;
+  Eigen::VectorXd force_, rhs_, dv_, scratch_;
+  double floorStiffness_ = 0;
+};
+
+}  // namespace tetskin

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/simulation/Scenario.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
+
+namespace tetskin {
+namespace {
+
+std::vector<int> nodesBelow(const TetMesh& mesh, double y) {
+  std::vector<int> nodes;
+  for (Index v = 0; v < mesh.nodeCount(); ++v)
+    if (mesh.nodes(v, 1) <= y) nodes.push_back(static_cast<int>(v));
+  return nodes;
+}
+
+class Sag : public Scenario {
+ public:
+  explicit Sag(const ScenarioParameters& p) : p_(p) {}
+  const char* name() const override { return "sag"; }
+  void setUp(Simulation& sim) override {
+    const BoundingBox box = boundingBox(sim.restMesh().nodes);
+    sim.setFixedNodes(nodesBelow(sim.restMesh(), box.min.y() + p_.baseShare * box.extent().y()));
+  }
+  void beforeStep(Simulation&, double) override {}
+
+ protected:
+  ScenarioParameters p_;
+};
+
+class Wobble : public Sag {
+ public:
+  using Sag::Sag;
+  const char* name() const override { return "wobble"; }
+  void setUp(Simulation& sim) override {
+    Sag::setUp(sim);
+    const BoundingBox box = boundingBox(sim.restMesh().nodes);
+    const Eigen::VectorXd& mass = sim.fem().lumpedMass();
+    pushed_ = Points3::Zero(sim.restMesh().nodeCount(), 3);
+    // The upper 40%, weighted by height so the push bends rather than shears.
+    for (Index v = 0; v < pushed_.rows(); ++v) {
+      const double t = (sim.restMesh().nodes(v, 1) - box.min.y()) / box.extent().y();
+      if (t > 0.6) pushed_(v, 0) = mass[3 * v] * p_.pushAcceleration * (t - 0.6) / 0.4;
+    }
+  }
+  void beforeStep(Simulation& sim, double time) override {
+    sim.setExternalForces(pushed_ * std::sin(2 * M_PI * p_.pushFrequency * time));
+  }
+
+ private:
+  Points3 pushed_;
+};
+
+class Drop : public Scenario {
+ public:
+  explicit Drop(const ScenarioParameters& p) : p_(p) {}
+  const char* name() const override { return "drop"; }
+  void setUp(Simulation& sim) override {
+    const BoundingBox box = boundingBox(sim.restMesh().nodes);
+    Points3 lifted = sim.restMesh().nodes;
+    lifted.col(1).array() += p_.dropHeight * box.extent().y();
+    sim.setPositions(lifted);
+  }
+  void beforeStep(Simulation&, double) override {}
+
+ private:
+  ScenarioParameters p_;
+};
+
+class Twist : public Sag {
+ public:
+  using Sag::Sag;
+  const char* name() const override { return "twist"; }
+  void setUp(Simulation& sim) override {
+    const TetMesh& rest = sim.restMesh();
+    const BoundingBox box = boundingBox(rest.nodes);
+    std::vector<int> fixed = nodesBelow(rest, box.min.y() + p_.baseShare * box.extent().y());
+    top_.clear();
+    for (Index v = 0; v < rest.nodeCount(); ++v)
+      if (rest.nodes(v, 1) >= box.max.y() - 0.15 * box.extent().y())
+        top_.push_back(static_cast<int>(v));
+    fixed.insert(fixed.end(), top_.begin(), top_.end());
+    sim.setFixedNodes(fixed);
+    axis_ = box.center();
+  }
+  void beforeStep(Simulation& sim, double time) override {
+    const double h = sim.options().timeStep;
+    const double share = std::min((time + h) / p_.twistSeconds, 1.0);
+    const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, Eigen::Vector3d::UnitY());
+    Points3 targets(static_cast<Index>(top_.size()), 3);
+    for (std::size_t i = 0; i < top_.size(); ++i) {
+      const Eigen::Vector3d p = sim.restMesh().nodes.row(top_[i]).transpose();
+      targets.row(static_cast<Index>(i)) = (axis_ + turn * (p - axis_)).transpose();
+    }
+    sim.setKinematicTargets(top_, targets);
+  }
+
+ private:
+  std::vector<int> top_;
+  Eigen::Vector3d axis_;
+};
+
+}  // namespace
+
+SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
+                                  const TetMesh& rest) {
+  if (name == "drop" && !options.floorHeight) options.floorHeight = boundingBox(rest.nodes).min.y();
+  return options;
+}
+
+std::unique_ptr<Scenario> makeScenario(std::string_view name, const ScenarioParameters& p) {
+  if (name == "wobble") return std::make_unique<Wobble>(p);
+  if (name == "drop") return std::make_unique<Drop>(p);
+  if (name == "twist") return std::make_unique<Twist>(p);
+  if (name == "sag") return std::make_unique<Sag>(p);
+  throw Error("unknown scenario '" + std::string(name) + "' (known: wobble, drop, twist, sag)");
+}
+
+std::vector<std::string> scenarioNames() {
+  return {"wobble", "drop", "twist", "sag"};
+}
+
+}  // namespace tetskin

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A ParaView time series (.pvd): a list of (time, part, file). The .pvd is
+// rewritten atomically after every frame, so a run stopped halfway leaves a
+// valid series of the frames written so far.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tetskin {
+
+class PvdSeries {
+ public:
+  explicit PvdSeries(std::filesystem::path pvdPath);
+  const std::filesystem::path& path() const { return path_; }
+  // `file` relative to the .pvd's directory; `part` separates datasets of one
+  // time step (0 control mesh, 1 surface).
+  void add(double time, int part, const std::string& file);
+  void write() const;
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  struct Entry {
+    double time;
+    int part;
+    std::string file;
+  };
+  std::filesystem::path path_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace tetskin

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/vtkio/SimulationFrame.h"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "tetskin/vtkio/VtkConversion.h"
+
+namespace tetskin {
+namespace {
+
+vtkSmartPointer<vtkDoubleArray> vectors(const char* name, const Points3& values) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(values.rows());
+  for (Index i = 0; i < values.rows(); ++i) a->SetTuple(i, values.row(i).data());
+  return a;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
+                                                     const Points3& velocities,
+                                                     const Eigen::VectorXd& vonMisesStress,
+                                                     int level) {
+  TetMesh deformed{positions, rest.elements};
+  vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
+  grid->GetPointData()->AddArray(vectors("Displacement", positions - rest.nodes));
+  grid->GetPointData()->AddArray(vectors("Velocity", velocities));
+  auto stress = vtkSmartPointer<vtkDoubleArray>::New();
+  stress->SetName("VonMisesStress");
+  auto ratio = vtkSmartPointer<vtkDoubleArray>::New();
+  ratio->SetName("VolumeRatio");
+  auto levels = vtkSmartPointer<vtkIntArray>::New();
+  levels->SetName("Level");
+  stress->SetNumberOfValues(rest.elementCount());
+  ratio->SetNumberOfValues(rest.elementCount());
+  levels->SetNumberOfValues(rest.elementCount());
+  for (Index e = 0; e < rest.elementCount(); ++e) {
+    stress->SetValue(e, vonMisesStress[e]);
+    ratio->SetValue(e, elementVolume(deformed, e) / elementVolume(rest, e));
+    levels->SetValue(e, level);
+  }
+  grid->GetCellData()->AddArray(stress);
+  grid->GetCellData()->AddArray(ratio);
+  grid->GetCellData()->AddArray(levels);
+  return grid;
+}
+
+}  // namespace tetskin

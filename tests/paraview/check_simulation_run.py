@@ -1,0 +1,80 @@
+# Opens a `tetskin simulate --surface` run with ParaView's own PVD reader and
+# checks what a researcher would look at: time steps, arrays, value ranges.
+# Usage: check_simulation_run.py RUN.pvd EXPECTED_FRAMES LEVEL
+import sys
+
+from paraview import servermanager
+from paraview.simple import OpenDataFile, UpdatePipeline
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def leaves(data):
+    """The datasets of a (possibly nested) multiblock, depth first."""
+    if data is None:
+        return []
+    if data.IsA("vtkMultiBlockDataSet"):
+        out = []
+        for i in range(data.GetNumberOfBlocks()):
+            out += leaves(data.GetBlock(i))
+        return out
+    return [data]
+
+
+def array_range(data, association, name, component=-1):
+    arrays = data.GetPointData() if association == "point" else data.GetCellData()
+    array = arrays.GetArray(name)
+    if array is None:
+        fail("array %s (%s) missing in %s" % (name, association, data.GetClassName()))
+    return array.GetRange(component)
+
+
+pvd, frames, level = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+reader = OpenDataFile(pvd)
+times = list(reader.TimestepValues)
+if len(times) != frames:
+    fail("expected %d time steps, found %d" % (frames, len(times)))
+if times != sorted(times) or times[0] != 0.0:
+    fail("time steps are not ascending from 0: %s" % times)
+
+for index, time in enumerate([times[0], times[-1]]):
+    UpdatePipeline(time=time, proxy=reader)
+    data = servermanager.Fetch(reader)
+    blocks = leaves(data)
+    grids = [b for b in blocks if b.IsA("vtkUnstructuredGrid")]
+    surfaces = [b for b in blocks if b.IsA("vtkPolyData")]
+    if len(grids) != 1 or len(surfaces) != 1:
+        fail("expected one control mesh and one surface per step, got %s" % [b.GetClassName() for b in blocks])
+    grid, surface = grids[0], surfaces[0]
+    if grid.GetNumberOfCells() == 0 or grid.GetCellType(0) != 10:  # VTK_TETRA
+        fail("the control mesh has no tetrahedra")
+    displacement = array_range(grid, "point", "Displacement")
+    array_range(grid, "point", "Velocity")
+    stress = array_range(grid, "cell", "VonMisesStress")
+    levels = array_range(grid, "cell", "Level")
+    ratio = array_range(grid, "cell", "VolumeRatio")
+    if levels != (level, level):
+        fail("Level should be %d everywhere, is %s" % (level, levels))
+    if index == 0 and displacement[1] != 0.0:
+        fail("the first frame should be the rest state, max |displacement| %g" % displacement[1])
+    if index == 1 and not displacement[1] > 0.0:
+        fail("the last frame has not moved")
+    if index == 1 and not (stress[1] > 0.0 and ratio[0] > 0.0):
+        fail("stress %s or volume ratio %s out of range" % (stress, ratio))
+    weights = surface.GetPointData().GetArray("Weights")
+    if weights is None or weights.GetNumberOfComponents() != 3:
+        fail("surface Weights missing")
+    for p in range(0, surface.GetNumberOfPoints(), 97):
+        if abs(sum(weights.GetTuple3(p)) - 1.0) > 1e-9:
+            fail("weights of surface point %d do not sum to 1" % p)
+    for name in ("ControlIds", "Distance", "MinBarycentric", "FaceId", "Normals"):
+        if surface.GetPointData().GetArray(name) is None:
+            fail("surface array %s missing" % name)
+    normals = array_range(surface, "point", "Normals", -1)
+    if abs(normals[1] - 1.0) > 1e-6:
+        fail("surface normals are not unit length: %s" % (normals,))
+
+print("PASS: %d time steps, control mesh and surface arrays as expected" % len(times))

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <random>
+
+#include "Shapes.h"
+#include "tetskin/simulation/CorotatedFem.h"
+
+namespace tetskin {
+namespace {
+
+ElasticMaterial material() {
+  ElasticMaterial m;
+  m.youngsModulus = 1000;
+  m.poissonRatio = 0.3;
+  return m;
+}
+
+TEST(CorotatedFem, ElementStiffnessIsSymmetricPsdWithSixRigidModes) {
+  TetMesh t = test::unitTetrahedron();
+  t.nodes.row(3) << 0.2, 0.3, 1.1;
+  const CorotatedFem fem(t, material());
+  const Eigen::Matrix<double, 12, 12> K = fem.elementStiffness(0);
+  EXPECT_TRUE(K.isApprox(K.transpose(), 1e-12));
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eig(K);
+  const auto values = eig.eigenvalues();
+  const double scale = values.maxCoeff();
+  int zeros = 0;
+  for (int i = 0; i < 12; ++i) {
+    EXPECT_GT(values[i], -1e-10 * scale);
+    zeros += std::abs(values[i]) < 1e-10 * scale ? 1 : 0;
+  }
+  EXPECT_EQ(zeros, 6);
+  // Translations are in the null space: block rows sum to zero.
+  for (int i = 0; i < 4; ++i) {
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    for (int j = 0; j < 4; ++j) sum += K.block<3, 3>(3 * i, 3 * j);
+    EXPECT_LT(sum.norm(), 1e-10 * scale);
+  }
+}
+
+TEST(CorotatedFem, RotationOfPolarDecomposition) {
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  Eigen::Matrix3d S;
+  S << 1.2, 0.1, 0, 0.1, 0.9, 0.05, 0, 0.05, 1.1;
+  EXPECT_TRUE(CorotatedFem::rotation(R * S).isApprox(R, 1e-10));
+  // Inverted element: F has a negative determinant; R stays a proper rotation.
+  Eigen::Matrix3d inverted = R * S;
+  inverted.col(1) *= -0.3;
+  const Eigen::Matrix3d Ri = CorotatedFem::rotation(inverted);
+  EXPECT_NEAR(Ri.determinant(), 1.0, 1e-12);
+  EXPECT_TRUE((Ri.transpose() * Ri).isApprox(Eigen::Matrix3d::Identity(), 1e-12));
+}
+
+TEST(CorotatedFem, RigidMotionProducesNoElasticForce) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, 1, -0.2).normalized()).toRotationMatrix();
+  Eigen::VectorXd x(fem.dofCount()), f;
+  for (Index v = 0; v < fem.nodeCount(); ++v)
+    x.segment<3>(3 * v) = R * fem.restPositions().segment<3>(3 * v) + Eigen::Vector3d(5, -2, 1);
+  SparseMatrix K = fem.pattern();
+  fem.update(x, f, K);
+  EXPECT_LT(f.norm(), 1e-9);
+  // Round-off only: a 1% strain of this block stores about 0.6.
+  EXPECT_LT(fem.elasticEnergy(x), 1e-9);
+  for (const Eigen::Matrix3d& Re : fem.rotations()) EXPECT_TRUE(Re.isApprox(R, 1e-10));
+}
+
+TEST(CorotatedFem, ForcesRotateWithTheBody) {
+  const TetMesh mesh = test::tetGrid(2, 2, 2, {1, 1, 1});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0, 0.05);
+  Eigen::VectorXd x = fem.restPositions();
+  for (Index i = 0; i < x.size(); ++i) x[i] += noise(rng);
+  const Eigen::Matrix3d Q = Eigen::AngleAxisd(0.8, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  Eigen::VectorXd Qx(x.size()), f, fq;
+  for (Index v = 0; v < fem.nodeCount(); ++v) Qx.segment<3>(3 * v) = Q * x.segment<3>(3 * v);
+  SparseMatrix K = fem.pattern();
+  fem.update(x, f, K);
+  fem.update(Qx, fq, K);
+  for (Index v = 0; v < fem.nodeCount(); ++v)
+    EXPECT_TRUE(fq.segment<3>(3 * v).isApprox(Q * f.segment<3>(3 * v), 1e-9));
+}
+
+TEST(CorotatedFem, ForceIsTheNegativeEnergyGradient) {
+  const TetMesh mesh = test::tetGrid(2, 1, 1, {2, 1, 1});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(9);
+  std::normal_distribution<double> noise(0, 0.08);
+  Eigen::VectorXd x = fem.restPositions();
+  for (Index i = 0; i < x.size(); ++i) x[i] += noise(rng);
+  Eigen::VectorXd f;
+  SparseMatrix K = fem.pattern();
+  fem.update(x, f, K);
+  const double h = 1e-6;
+  for (Index i = 0; i < x.size(); ++i) {
+    Eigen::VectorXd plus = x, minus = x;
+    plus[i] += h;
+    minus[i] -= h;
+    const double gradient = (fem.elasticEnergy(plus) - fem.elasticEnergy(minus)) / (2 * h);
+    EXPECT_NEAR(-gradient, f[i], 1e-5 * (1 + std::abs(f[i]))) << "dof " << i;
+  }
+}
+
+TEST(CorotatedFem, LumpedMassSumsToTotalMass) {
+  const TetMesh mesh = test::tetGrid(2, 3, 4, {2, 3, 4});
+  ElasticMaterial m = material();
+  m.density = 7;
+  const CorotatedFem fem(mesh, m);
+  EXPECT_NEAR(fem.lumpedMass().sum(), 3 * 7 * 24.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace tetskin

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <thread>
+
+#include "Shapes.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/simulation/Scenario.h"
+#include "tetskin/simulation/Simulation.h"
+
+namespace tetskin {
+namespace {
+
+const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+
+MultiLevelTetMesh oneLevel(const TetMesh& mesh) {
+  MultiLevelTetMesh m;
+  appendLevel(m, mesh);
+  return m;
+}
+
+std::vector<int> nodesWithXBelow(const TetMesh& mesh, double x) {
+  std::vector<int> nodes;
+  for (Index v = 0; v < mesh.nodeCount(); ++v)
+    if (mesh.nodes(v, 0) <= x) nodes.push_back(static_cast<int>(v));
+  return nodes;
+}
+
+// Euler-Bernoulli: a cantilever of length L under its own weight q per length
+// deflects q L^4 / (8 E I) at the tip, I = b h^3 / 12.
+TEST(Simulation, CantileverMatchesEulerBernoulli) {
+  const double L = 10, b = 1, h = 1;
+  // Linear tetrahedra are too stiff in bending and converge from below:
+  // 40x4x4 cubes give -17%, 60x6x6 -8%, 80x8x8 -4.4%.
+  const TetMesh beam = test::tetGrid(80, 8, 8, {L, h, b});
+  SimulationOptions options;
+  options.material.youngsModulus = 1e6;
+  options.material.poissonRatio = 0.0;
+  options.material.density = 1;
+  options.material.massDamping = 5;
+  options.material.stiffnessDamping = 0;
+  options.timeStep = 1.0;  // large implicit steps march to the static equilibrium
+  options.tolerance = 1e-10;
+  options.solver = SolverKind::ConjugateGradient;
+  Simulation sim(oneLevel(beam), 0, options);
+  sim.setFixedNodes(nodesWithXBelow(beam, 1e-9));
+  double previous = 0, tip = 0;
+  for (int i = 0; i < 60; ++i) {
+    sim.step();
+    const Points3 x = sim.state().positions;
+    tip = 0;
+    int count = 0;
+    for (Index v = 0; v < x.rows(); ++v)
+      if (beam.nodes(v, 0) >= L - 1e-9) {
+        tip += beam.nodes(v, 1) - x(v, 1);
+        ++count;
+      }
+    tip /= count;
+    if (std::abs(tip - previous) < 1e-9 * tip) break;
+    previous = tip;
+  }
+  const double q = options.material.density * 9.81 * b * h;
+  const double I = b * h * h * h / 12;
+  const double expected = q * std::pow(L, 4) / (8 * options.material.youngsModulus * I);
+  std::printf("cantilever tip deflection: simulated %.5f, Euler-Bernoulli %.5f (%.1f%%)\n", tip,
+              expected, 100 * (tip - expected) / expected);
+  EXPECT_NEAR(tip, expected, 0.1 * expected);
+  EXPECT_LT(tip, expected * 1.02);  // linear tetrahedra are, if anything, too stiff
+}
+
+TEST(Simulation, UndampedEnergyNeverRisesAndDampedEnergyDecays) {
+  const TetMesh block = test::tetGrid(4, 2, 2, {2, 1, 1});
+  for (bool damped : {false, true}) {
+    SimulationOptions options;
+    options.material.youngsModulus = 1e4;
+    options.material.density = 10;
+    options.material.massDamping = damped ? 0.5 : 0.0;
+    options.material.stiffnessDamping = damped ? 0.01 : 0.0;
+    options.gravity.setZero();
+    options.tolerance = 1e-12;
+    Simulation sim(oneLevel(block), 0, options);
+    Points3 squashed = block.nodes;
+    squashed.col(0) *= 1.3;  // stretched: starts with elastic energy
+    sim.setPositions(squashed);
+    double energy = sim.energies().total();
+    const double initial = energy;
+    for (int i = 0; i < 120; ++i) {
+      sim.step();
+      const double next = sim.energies().total();
+      // One linearized step per time step (the tangent R K R^T leaves out
+      // dR/dx) is not exactly dissipative: rises stay at round-off level,
+      // about 3e-11 of the initial energy here.
+      EXPECT_LE(next - energy, 1e-10 * initial) << "step " << i << (damped ? " damped" : "");
+      energy = next;
+    }
+    if (damped) {
+      EXPECT_LT(energy, 0.05 * initial);
+    }
+  }
+}
+
+TEST(Simulation, InvertedElementsRecoverWithoutNaN) {
+  const TetMesh block = test::tetGrid(3, 3, 3, {1, 1, 1});
+  SimulationOptions options;
+  options.material.youngsModulus = 1e4;
+  options.material.density = 10;
+  options.material.massDamping = 5;  // settle within the test's 300 steps
+  options.gravity.setZero();
+  Simulation sim(oneLevel(block), 0, options);
+  Points3 flipped = block.nodes;
+  flipped.col(1) *= -0.2;  // mirror and flatten: every element inverted
+  sim.setPositions(flipped);
+  const double initial = sim.energies().elastic;
+  for (int i = 0; i < 300; ++i) sim.step();
+  const Points3 x = sim.state().positions;
+  ASSERT_TRUE(x.allFinite());
+  TetMesh now = block;
+  now.nodes = x;
+  Index positive = 0;
+  for (Index e = 0; e < now.elementCount(); ++e) positive += elementVolume(now, e) > 0 ? 1 : 0;
+  EXPECT_EQ(positive, now.elementCount());
+  // Back to its rest shape up to a rigid motion: no elastic energy left.
+  EXPECT_LT(sim.energies().elastic, 1e-9 * initial);
+  double volume = 0;
+  for (Index e = 0; e < now.elementCount(); ++e) volume += elementVolume(now, e);
+  EXPECT_NEAR(volume, 1.0, 1e-6);
+}
+
+TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  {
+    SimulationOptions options;
+    Simulation sim(d.mesh, 0, options);
+    auto twist = makeScenario("twist");
+    twist->setUp(sim);
+    for (int i = 0; i < 70; ++i) {
+      twist->beforeStep(sim, sim.state().time);
+      sim.step();
+    }
+    EXPECT_TRUE(sim.state().positions.allFinite());
+    // The fixed base has not moved.
+    const auto& fixed = sim.fixedNodes();
+    const Points3 x = sim.state().positions;
+    EXPECT_LT((x.row(fixed.front()) - sim.restMesh().nodes.row(fixed.front())).norm(), 1e-12);
+  }
+  {
+    SimulationOptions options =
+        scenarioOptions("drop", SimulationOptions{}, extractLevel(d.mesh, 0));
+    ASSERT_TRUE(options.floorHeight);
+    Simulation sim(d.mesh, 0, options);
+    auto drop = makeScenario("drop");
+    drop->setUp(sim);
+    const double start = boundingBox(sim.state().positions).min.y();
+    EXPECT_GT(start, *options.floorHeight + 1);
+    int contacts = 0;
+    for (int i = 0; i < 240; ++i) {
+      drop->beforeStep(sim, sim.state().time);
+      contacts = std::max(contacts, sim.step().contacts);
+    }
+    EXPECT_GT(contacts, 0);
+    const Points3 x = sim.state().positions;
+    EXPECT_TRUE(x.allFinite());
+    EXPECT_GE(boundingBox(x).min.y(), *options.floorHeight - 1e-9);
+    EXPECT_LT(boundingBox(x).min.y(), *options.floorHeight + 0.05);  // resting on it
+  }
+}
+
+TEST(Simulation, WobbleMovesTheTopBackAndForth) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {
+    SimulationOptions options;
+    options.solver = solver;
+    Simulation sim(d.mesh, 1, options);
+    auto wobble = makeScenario("wobble");
+    wobble->setUp(sim);
+    double minX = 1e9, maxX = -1e9;
+    Index top = 0;
+    sim.restMesh().nodes.col(1).maxCoeff(&top);
+    for (int i = 0; i < 90; ++i) {
+      wobble->beforeStep(sim, sim.state().time);
+      const StepStats s = sim.step();
+      EXPECT_LE(s.residual, options.tolerance);
+      const double x = sim.state().positions(top, 0) - sim.restMesh().nodes(top, 0);
+      minX = std::min(minX, x);
+      maxX = std::max(maxX, x);
+    }
+    EXPECT_GT(maxX, 0.05) << toString(solver);
+    EXPECT_LT(minX, -0.05) << toString(solver);
+  }
+}
+
+TEST(Simulation, StateCanBeReadWhileAnotherThreadSteps) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  makeScenario("sag")->setUp(sim);
+  std::atomic<bool> done{false};
+  std::thread stepper([&] {
+    for (int i = 0; i < 30; ++i) sim.step();
+    done = true;
+  });
+  Index reads = 0;
+  while (!done) {
+    const SimulationState s = sim.state();
+    ASSERT_TRUE(s.positions.allFinite());
+    ASSERT_EQ(s.positions.rows(), sim.restMesh().nodeCount());
+    sim.setExternalForces(Points3::Zero(sim.restMesh().nodeCount(), 3));
+    ++reads;
+  }
+  stepper.join();
+  EXPECT_EQ(sim.state().steps, 30);
+  EXPECT_GT(reads, 0);
+}
+
+TEST(Simulation, BadParametersAreErrors) {
+  const TetMesh block = test::tetGrid(1, 1, 1, {1, 1, 1});
+  SimulationOptions options;
+  options.material.poissonRatio = 0.5;
+  EXPECT_THROW(Simulation(oneLevel(block), 0, options), Error);
+  options = {};
+  options.timeStep = 0;
+  EXPECT_THROW(Simulation(oneLevel(block), 0, options), Error);
+  EXPECT_THROW(makeScenario("spin"), Error);
+}
+
+}  // namespace
+}  // namespace tetskin
