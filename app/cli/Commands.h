@@ -15,7 +15,7 @@ void addBuildCommand(CLI::App& app);
 void addBindCommand(CLI::App& app);
 void addDeformCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
-// Subcommands of the product contract whose module has not landed yet.
-void addPendingCommands(CLI::App& app);
+void addRenderCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
 
 }  // namespace tetskin::cli

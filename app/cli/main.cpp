@@ -17,9 +17,10 @@ int main(int argc, char** argv) {
   tetskin::cli::addBindCommand(app);
   tetskin::cli::addDeformCommand(app);
   tetskin::cli::addSimulateCommand(app);
+  tetskin::cli::addRenderCommand(app);
+  tetskin::cli::addBenchCommand(app);
   tetskin::cli::addInfoCommand(app);
   tetskin::cli::addConvertCommand(app);
-  tetskin::cli::addPendingCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "AnimatedScene.h"
+
+#include <vtkRenderer.h>
+
+#include <chrono>
+
+#include "tetskin/binding/BindSurface.h"
+
+namespace tetskin::cli {
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
+                             const SceneOptions& o)
+    : dataset_(dataset), level_(resolveLevel(dataset.mesh, o.level)), nodes_(dataset.mesh.nodes) {
+  const SurfaceBinding binding = bindSurface(surface, dataset.mesh, level_);
+  surface_ = std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, o.path,
+                                                 dataset.config.material);
+  view_ = std::make_unique<OffscreenView>(o.width, o.height);
+  view_->renderer()->AddActor(surface_->actor());
+  const TetMesh rest = extractLevel(dataset.mesh, level_);
+  if (o.control != "none") {
+    control_ = std::make_unique<ControlMeshActor>(rest, parseControlMeshStyle(o.control));
+    view_->renderer()->AddActor(control_->actor());
+  }
+  // Framed on the control level at rest: the same view for every path.
+  const BoundingBox box = boundingBox(rest.nodes);
+  const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
+                            box.max.y(), box.min.z(), box.max.z()};
+  view_->setCamera(o.camera, bounds);
+  simulation_ = std::make_unique<Simulation>(
+      dataset.mesh, level_, scenarioOptions(o.scenario, SimulationOptions{}, rest));
+  scenario_ = makeScenario(o.scenario);
+  scenario_->setUp(*simulation_);
+  view_->render();
+}
+
+AnimatedScene::~AnimatedScene() = default;
+
+Index AnimatedScene::elementCount() const {
+  return dataset_.mesh.levels[static_cast<std::size_t>(level_)].elementCount;
+}
+
+FrameStats AnimatedScene::run(int frames) {
+  FrameStats s;
+  s.frames = frames;
+  const LevelRange& range = dataset_.mesh.levels[static_cast<std::size_t>(level_)];
+  const auto start = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) {
+    auto t = std::chrono::steady_clock::now();
+    scenario_->beforeStep(*simulation_, simulation_->state().time);
+    simulation_->step();
+    const Points3 positions = simulation_->state().positions;
+    nodes_.middleRows(range.firstNode, range.nodeCount) = positions;
+    s.simulation += since(t);
+    const FrameTimes times = surface_->update(nodes_);
+    s.deformation += times.deformSeconds;
+    s.upload += times.uploadSeconds;
+    if (control_) control_->update(positions);
+    t = std::chrono::steady_clock::now();
+    view_->render();
+    s.draw += since(t);
+  }
+  s.seconds = since(start);
+  return s;
+}
+
+}  // namespace tetskin::cli

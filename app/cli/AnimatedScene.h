@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The animated scene of `tetskin render --frames` and `tetskin bench`: a
+// simulated control level, a bound surface drawn by one render path, an
+// offscreen view; run(N) times N frames stage by stage.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/rendering/ControlMeshActor.h"
+#include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/simulation/Scenario.h"
+
+namespace tetskin::cli {
+
+struct SceneOptions {
+  int level = -1;
+  RenderPath path = RenderPath::Cpu;
+  std::string scenario = "wobble";
+  int width = 800, height = 600;
+  CameraPreset camera = CameraPreset::Iso;
+  std::string control = "none";  // none, surface, wireframe, shrink
+};
+
+struct FrameStats {
+  int frames = 0;
+  double seconds = 0;                                            // wall time of all frames
+  double simulation = 0, deformation = 0, upload = 0, draw = 0;  // summed
+  double framesPerSecond() const { return seconds > 0 ? frames / seconds : 0; }
+};
+
+class AnimatedScene {
+ public:
+  AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface, const SceneOptions& options);
+  ~AnimatedScene();
+  // Simulates, deforms and draws `frames` frames (the first draw, which
+  // compiles shaders, happens in the constructor and is not counted).
+  FrameStats run(int frames);
+  OffscreenView& view() { return *view_; }
+  int level() const { return level_; }
+  Index elementCount() const;
+
+ private:
+  const Dataset& dataset_;
+  int level_;
+  std::unique_ptr<DeformableSurface> surface_;
+  std::unique_ptr<OffscreenView> view_;
+  std::unique_ptr<ControlMeshActor> control_;
+  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<Scenario> scenario_;
+  Points3 nodes_;
+};
+
+}  // namespace tetskin::cli

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A bound surface as a VTK actor that follows the control mesh, drawn by one
+// of the render paths. update() takes the control state of a frame; the
+// actor is then ready to render.
+
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/io/DatasetConfig.h"
+#include "tetskin/rendering/RenderPath.h"
+
+class vtkActor;
+class vtkPolyData;
+
+namespace tetskin {
+
+struct FrameTimes {
+  double deformSeconds = 0;  // CPU deformation (cpu path) or control normals (gpu paths)
+  double uploadSeconds = 0;  // handing data to VTK / the GPU buffers
+};
+
+class DeformableSurface {
+ public:
+  // `restSurface` and `binding` as from tetskin bind (triangle methods);
+  // `dataset` gives the rest nodes (dataset numbering).
+  DeformableSurface(const MultiLevelTetMesh& dataset, const SurfaceMesh& restSurface,
+                    const SurfaceBinding& binding, RenderPath path, const Material& material);
+  ~DeformableSurface();
+
+  RenderPath path() const;
+  vtkActor* actor() const;
+  // The polydata VTK draws (deformed on the cpu path, at rest on gpu paths).
+  vtkPolyData* polyData() const;
+  // Control state in the dataset's numbering.
+  FrameTimes update(const Points3& controlPositions);
+  // Bounds of the deformed surface of the last update (xmin, xmax, ...).
+  const double* bounds() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tetskin

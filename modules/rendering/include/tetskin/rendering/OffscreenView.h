@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// An offscreen render window for `tetskin render`, tests and benchmarks:
+// needs an X display (Debian's VTK is built for X only; use xvfb-run).
+
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+class vtkRenderer;
+class vtkRenderWindow;
+class vtkImageData;
+
+namespace tetskin {
+
+enum class CameraPreset { Front, Side, Top, Iso };
+CameraPreset parseCameraPreset(std::string_view name);  // front, side, top, iso
+
+class OffscreenView {
+ public:
+  // Throws Error when there is no X display.
+  OffscreenView(int width, int height);
+  ~OffscreenView();
+  vtkRenderer* renderer() const;
+  vtkRenderWindow* window() const;
+  // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
+  void setCamera(CameraPreset preset, const double bounds[6]);
+  void render();
+  vtkSmartPointer<vtkImageData> capture();
+  void writePng(const std::filesystem::path& path);  // atomic
+  // The OpenGL renderer string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+  std::string glRenderer();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tetskin

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A vtkOpenGLPolyDataMapper that deforms a bound surface on the GPU (the
+// report's "GPU 1-pass", section 4.3): rest positions, control ids, weights
+// and distances are vertex attributes uploaded once; per frame only the
+// control mesh's positions and vertex normals go to the GPU, as texture
+// buffers; the vertex shader computes position and normal. It behaves like an
+// ordinary mapper: bounds are the deformed surface's (camera reset, culling),
+// and hardware picking sees the deformed surface.
+//
+// The input polydata must carry point arrays ControlIds (3), Weights (3),
+// Distance (1) and Normals (any: the shader replaces them).
+
+#include <vtkNew.h>
+#include <vtkOpenGLPolyDataMapper.h>
+
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkTextureObject;
+
+class vtkTetSkinGpuDeformMapper : public vtkOpenGLPolyDataMapper {
+ public:
+  static vtkTetSkinGpuDeformMapper* New();
+  vtkTypeMacro(vtkTetSkinGpuDeformMapper,
+               vtkOpenGLPolyDataMapper) void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  // Control node positions and normals, xyz per node in the dataset's
+  // numbering; uploaded at the next render.
+  void SetControlState(const float* positions, const float* normals, vtkIdType nodes);
+  // Bounds of the deformed surface (the CPU knows the control state).
+  void SetDeformedBounds(const double bounds[6]);
+
+  void ComputeBounds() override;
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+ protected:
+  vtkTetSkinGpuDeformMapper();
+  ~vtkTetSkinGpuDeformMapper() override;
+  void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
+                           vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+ private:
+  vtkTetSkinGpuDeformMapper(const vtkTetSkinGpuDeformMapper&) = delete;
+  void operator=(const vtkTetSkinGpuDeformMapper&) = delete;
+
+  std::vector<float> Positions, Normals;  // xyz_ per node
+  vtkIdType Nodes = 0;
+  bool StateChanged = false;
+  double DeformedBounds[6] = {0, -1, 0, -1, 0, -1};
+  vtkNew<vtkOpenGLBufferObject> PositionBuffer, NormalBuffer;
+  vtkNew<vtkTextureObject> PositionTexture, NormalTexture;
+};

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/rendering/DeformableSurface.h"
+
+#include <vtkActor.h>
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+
+#include <chrono>
+
+#include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/deformation/VertexNormals.h"
+#include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
+#include "tetskin/spatial/Aabb.h"
+#include "tetskin/vtkio/BindingFile.h"
+
+namespace tetskin {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void applyMaterial(vtkActor* actor, const Material& m) {
+  vtkProperty* p = actor->GetProperty();
+  p->SetInterpolationToPhong();  // per-pixel lighting, as in the report's measurements
+  p->SetColor(m.color[0], m.color[1], m.color[2]);
+  p->SetSpecular(m.specular);
+  p->SetSpecularPower(m.shininess);
+  p->SetDiffuse(0.8);
+  p->SetAmbient(0.1);
+}
+
+}  // namespace
+
+struct DeformableSurface::Impl {
+  RenderPath path;
+  vtkSmartPointer<vtkPolyData> polyData;
+  vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
+  std::unique_ptr<SurfaceDeformer> deformer;
+  Points3 positions, normals;  // cpu path output
+  vtkSmartPointer<vtkTetSkinGpuDeformMapper> gpuMapper;
+  // gpu path: control vertex normals over the bound level's boundary.
+  Triangles boundary;
+  VertexTriangleAdjacency boundaryAdjacency;
+  Points3 boundaryScratch, controlNormals;
+  std::vector<float> controlPositionsF, controlNormalsF;
+  double bounds[6] = {0, -1, 0, -1, 0, -1};
+  double maxDistance = 0;
+};
+
+DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
+                                     const SurfaceMesh& restSurface, const SurfaceBinding& binding,
+                                     RenderPath path, const Material& material)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.path = path;
+  if (binding.method == BindingMethod::Embed && path != RenderPath::Cpu)
+    throw Error("the gpu paths draw triangle bindings (closest or seed), not embed");
+  if (binding.offset != OffsetMode::Normal && path != RenderPath::Cpu)
+    throw Error("the gpu paths use the normal offset; bind with --offset normal");
+  BoundSurface bound{restSurface, binding, ""};
+  bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
+  s.polyData = bindingToPolyData(bound);
+  s.maxDistance = binding.distance.cwiseAbs().maxCoeff();
+  if (path == RenderPath::Cpu) {
+    s.deformer = std::make_unique<SurfaceDeformer>(restSurface, binding, dataset.nodes);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(s.polyData);
+    mapper->ScalarVisibilityOff();
+    s.actor->SetMapper(mapper);
+  } else {
+    validateBinding(binding, restSurface.vertexCount(), dataset.nodes.rows(), "binding");
+    const int level = binding.level < 0 ? dataset.finestLevel() : binding.level;
+    const LevelRange& r = dataset.levels.at(static_cast<std::size_t>(level));
+    s.boundary = boundaryFaces(extractLevel(dataset, level), static_cast<int>(r.firstNode)).faces;
+    s.boundaryAdjacency = vertexTriangleAdjacency(s.boundary, dataset.nodes.rows());
+    s.boundaryScratch.resize(s.boundary.rows(), 3);
+    s.controlNormals.resize(dataset.nodes.rows(), 3);
+    s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
+    s.gpuMapper->SetInputData(s.polyData);
+    s.gpuMapper->ScalarVisibilityOff();
+    s.actor->SetMapper(s.gpuMapper);
+  }
+  applyMaterial(s.actor, material);
+  update(dataset.nodes);
+}
+
+DeformableSurface::~DeformableSurface() = default;
+
+RenderPath DeformableSurface::path() const {
+  return impl_->path;
+}
+vtkActor* DeformableSurface::actor() const {
+  return impl_->actor;
+}
+vtkPolyData* DeformableSurface::polyData() const {
+  return impl_->polyData;
+}
+const double* DeformableSurface::bounds() const {
+  return impl_->bounds;
+}
+
+FrameTimes DeformableSurface::update(const Points3& control) {
+  Impl& s = *impl_;
+  FrameTimes times;
+  auto start = std::chrono::steady_clock::now();
+  if (s.path == RenderPath::Cpu) {
+    s.deformer->deform(control, s.positions, s.normals);
+    times.deformSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    vtkPoints* points = s.polyData->GetPoints();
+    auto* normals = vtkDoubleArray::SafeDownCast(s.polyData->GetPointData()->GetNormals());
+    std::copy(s.positions.data(), s.positions.data() + s.positions.size(),
+              static_cast<double*>(points->GetVoidPointer(0)));
+    std::copy(s.normals.data(), s.normals.data() + s.normals.size(), normals->GetPointer(0));
+    points->Modified();
+    normals->Modified();
+    s.polyData->Modified();
+    s.polyData->GetBounds(s.bounds);
+    times.uploadSeconds = secondsSince(start);
+    return times;
+  }
+  computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
+                       s.controlNormals);
+  s.controlPositionsF.assign(control.data(), control.data() + control.size());
+  s.controlNormalsF.assign(s.controlNormals.data(),
+                           s.controlNormals.data() + s.controlNormals.size());
+  // Bounds: the boundary nodes' box grown by the largest offset, plus 1% of
+  // its size for vertices bound slightly outside their triangle.
+  Aabb box;
+  for (Index f = 0; f < s.boundary.rows(); ++f)
+    for (int k = 0; k < 3; ++k) box.extend(control.row(s.boundary(f, k)).transpose());
+  const double margin = s.maxDistance + 0.01 * (box.max - box.min).norm();
+  for (int k = 0; k < 3; ++k) {
+    s.bounds[2 * k] = box.min[k] - margin;
+    s.bounds[2 * k + 1] = box.max[k] + margin;
+  }
+  times.deformSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  s.gpuMapper->SetControlState(s.controlPositionsF.data(), s.controlNormalsF.data(),
+                               control.rows());
+  s.gpuMapper->SetDeformedBounds(s.bounds);
+  times.uploadSeconds = secondsSince(start);
+  return times;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/rendering/OffscreenView.h"
+
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
+
+namespace tetskin {
+
+CameraPreset parseCameraPreset(std::string_view name) {
+  if (name == "front") return CameraPreset::Front;
+  if (name == "side") return CameraPreset::Side;
+  if (name == "top") return CameraPreset::Top;
+  if (name == "iso") return CameraPreset::Iso;
+  throw Error("unknown camera preset '" + std::string(name) + "' (front, side, top, iso)");
+}
+
+struct OffscreenView::Impl {
+  vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+};
+
+OffscreenView::OffscreenView(int width, int height) : impl_(std::make_unique<Impl>()) {
+  // Without a display Debian's VTK aborts the process; say what to do instead.
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+    throw Error("rendering needs an X display: run under xvfb-run -a (no DISPLAY is set)");
+  impl_->window->SetOffScreenRendering(1);
+  impl_->window->SetMultiSamples(0);  // identical images on every run
+  impl_->window->SetSize(width, height);
+  impl_->window->AddRenderer(impl_->renderer);
+  impl_->renderer->SetBackground(0.12, 0.13, 0.15);
+  impl_->renderer->SetBackground2(0.32, 0.34, 0.40);
+  impl_->renderer->GradientBackgroundOn();
+}
+
+OffscreenView::~OffscreenView() = default;
+vtkRenderer* OffscreenView::renderer() const {
+  return impl_->renderer;
+}
+vtkRenderWindow* OffscreenView::window() const {
+  return impl_->window;
+}
+
+void OffscreenView::setCamera(CameraPreset preset, const double bounds[6]) {
+  vtkCamera* camera = impl_->renderer->GetActiveCamera();
+  const double center[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
+                            (bounds[4] + bounds[5]) / 2};
+  double direction[3] = {0, 0, 1};
+  double up[3] = {0, 1, 0};
+  switch (preset) {
+    case CameraPreset::Front:
+      break;
+    case CameraPreset::Side:
+      direction[0] = 1, direction[2] = 0;
+      break;
+    case CameraPreset::Top:
+      direction[1] = 1, direction[2] = 0, up[1] = 0, up[2] = -1;
+      break;
+    case CameraPreset::Iso:
+      direction[0] = 0.6, direction[1] = 0.45, direction[2] = 0.66;
+      break;
+  }
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
+  camera->SetViewUp(up);
+  impl_->renderer->ResetCamera(const_cast<double*>(bounds));
+}
+
+void OffscreenView::render() {
+  impl_->window->Render();
+}
+
+vtkSmartPointer<vtkImageData> OffscreenView::capture() {
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  grab->SetInput(impl_->window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkSmartPointer<vtkImageData> image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+void OffscreenView::writePng(const std::filesystem::path& path) {
+  vtkSmartPointer<vtkImageData> image = capture();
+  writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(tmp.c_str());
+    writer->SetInputData(image);
+    writer->Write();
+  });
+}
+
+std::string OffscreenView::glRenderer() {
+  std::istringstream report(impl_->window->ReportCapabilities());
+  std::string line;
+  while (std::getline(report, line))
+    if (line.rfind("OpenGL renderer string:", 0) == 0) {
+      line = line.substr(line.find(':') + 1);
+      return line.substr(line.find_first_not_of(' '));
+    }
+  return "unknown";
+}
+
+}  // namespace tetskin
