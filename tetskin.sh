@@ -9,6 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
 BUILD_DIR=${BUILD_DIR:-build}
+# Compiler cache keyed on paths relative to the checkout: clones elsewhere hit it too.
+export CCACHE_BASEDIR="$ROOT"
 JOBS=${JOBS:-$(nproc)}
 
 DEPS=(

@@ -63,7 +63,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("DATASET", a->dataset, "dataset (.json)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--surface", a->surface, "surface (default: the dataset's surface)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--path", a->path, "cpu or gpu-1pass (gpu-2pass, fur-cpu, fur-gpu: not yet)")
+  cmd->add_option("--path", a->path, "cpu, gpu-1pass or gpu-2pass (fur-cpu, fur-gpu: not yet)")
       ->capture_default_str();
   cmd->add_option("-o,--output", a->output, "image (.png)")->required();
   cmd->add_option("--level", a->level, "bound and simulated level (default: finest)");

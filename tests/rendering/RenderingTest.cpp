@@ -9,6 +9,7 @@
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkPropPicker.h>
 #include <vtkRenderer.h>
 
 #include <Eigen/Geometry>
@@ -23,6 +24,7 @@
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 
 namespace tetskin {
 namespace {
@@ -116,6 +118,64 @@ TEST_F(Rendering, CpuPathMatchesItsBaseline) {
 TEST_F(Rendering, Gpu1PassMatchesItsBaseline) {
   expectMatchesBaseline(render(RenderPath::Gpu1Pass, twisted(dataset_.mesh.nodes)),
                         "gpu1pass_twist.png");
+}
+
+TEST_F(Rendering, Gpu2PassMatchesItsBaseline) {
+  expectMatchesBaseline(render(RenderPath::Gpu2Pass, twisted(dataset_.mesh.nodes)),
+                        "gpu2pass_twist.png");
+}
+
+TEST_F(Rendering, Gpu2PassEqualsTheCpuPath) {
+  // Same positions and the same smooth normals, computed on the GPU.
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  const double error =
+      difference(render(RenderPath::Cpu, control), render(RenderPath::Gpu2Pass, control));
+  std::printf("pixels differing by > 24/255: cpu vs gpu-2pass %.3f%%\n", 100 * error);
+  EXPECT_LT(error, 0.002);
+}
+
+TEST_F(Rendering, Gpu2PassBufferHoldsTheCpuDeformerPositions) {
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  DeformableSurface deformable(dataset_.mesh, surface_, binding_, RenderPath::Gpu2Pass,
+                               dataset_.config.material);
+  deformable.update(control);
+  OffscreenView view(64, 64);
+  view.renderer()->AddActor(deformable.actor());
+  view.render();
+  auto* mapper = vtkTetSkinGpu2PassMapper::SafeDownCast(deformable.actor()->GetMapper());
+  ASSERT_NE(mapper, nullptr);
+  const std::vector<float> gpu = mapper->ReadDeformedPositions(view.window());
+  SurfaceDeformer deformer(surface_, binding_, dataset_.mesh.nodes);
+  Points3 positions, normals;
+  deformer.deform(control, positions, normals);
+  ASSERT_EQ(gpu.size(), static_cast<std::size_t>(4 * positions.rows()));
+  const double diagonal = boundingBox(positions).diagonal();
+  double worst = 0;
+  for (Index v = 0; v < positions.rows(); ++v)
+    for (int k = 0; k < 3; ++k)
+      worst = std::max(worst, std::abs(gpu[static_cast<std::size_t>(4 * v + k)] - positions(v, k)));
+  std::printf("gpu-2pass vs CPU deformer: max |difference| %.2e (%.2e of the diagonal)\n", worst,
+              worst / diagonal);
+  EXPECT_LT(worst / diagonal, 1e-5);  // single precision on the GPU
+}
+
+TEST_F(Rendering, HardwarePickingSeesTheDeformedSurface) {
+  // Move the control mesh far to the side: only the GPU-deformed surface is
+  // there, the rest-pose points (what the CPU knows) are not.
+  Points3 moved = dataset_.mesh.nodes;
+  moved.col(0).array() += 30.0;
+  for (RenderPath path : {RenderPath::Gpu1Pass, RenderPath::Gpu2Pass}) {
+    DeformableSurface deformable(dataset_.mesh, surface_, binding_, path, dataset_.config.material);
+    deformable.update(moved);
+    OffscreenView view(200, 200);
+    view.renderer()->AddActor(deformable.actor());
+    view.setCamera(CameraPreset::Front, deformable.bounds());
+    view.render();
+    auto picker = vtkSmartPointer<vtkPropPicker>::New();
+    EXPECT_TRUE(picker->Pick(100, 100, 0, view.renderer())) << toString(path);
+    EXPECT_EQ(picker->GetActor(), deformable.actor()) << toString(path);
+    EXPECT_FALSE(picker->Pick(2, 2, 0, view.renderer())) << toString(path);  // background
+  }
 }
 
 TEST_F(Rendering, PathsAgree) {

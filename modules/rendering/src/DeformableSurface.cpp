@@ -15,6 +15,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/deformation/VertexNormals.h"
+#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
 #include "tetskin/spatial/Aabb.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -45,6 +46,7 @@ struct DeformableSurface::Impl {
   std::unique_ptr<SurfaceDeformer> deformer;
   Points3 positions, normals;  // cpu path output
   vtkSmartPointer<vtkTetSkinGpuDeformMapper> gpuMapper;
+  vtkSmartPointer<vtkTetSkinGpu2PassMapper> gpu2Mapper;
   // gpu path: control vertex normals over the bound level's boundary.
   Triangles boundary;
   VertexTriangleAdjacency boundaryAdjacency;
@@ -82,10 +84,31 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     s.boundaryAdjacency = vertexTriangleAdjacency(s.boundary, dataset.nodes.rows());
     s.boundaryScratch.resize(s.boundary.rows(), 3);
     s.controlNormals.resize(dataset.nodes.rows(), 3);
-    s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
-    s.gpuMapper->SetInputData(s.polyData);
-    s.gpuMapper->ScalarVisibilityOff();
-    s.actor->SetMapper(s.gpuMapper);
+    if (path == RenderPath::Gpu1Pass) {
+      s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
+      s.gpuMapper->SetInputData(s.polyData);
+      s.gpuMapper->ScalarVisibilityOff();
+      s.actor->SetMapper(s.gpuMapper);
+    } else {
+      s.gpu2Mapper = vtkSmartPointer<vtkTetSkinGpu2PassMapper>::New();
+      std::vector<int> ids(static_cast<std::size_t>(3 * restSurface.vertexCount()));
+      std::vector<float> weights(static_cast<std::size_t>(4 * restSurface.vertexCount()));
+      for (Index v = 0; v < restSurface.vertexCount(); ++v) {
+        for (int k = 0; k < 3; ++k) {
+          ids[static_cast<std::size_t>(3 * v + k)] = binding.controlIds(v, k);
+          weights[static_cast<std::size_t>(4 * v + k)] = static_cast<float>(binding.weights(v, k));
+        }
+        weights[static_cast<std::size_t>(4 * v + 3)] = static_cast<float>(binding.distance[v]);
+      }
+      const std::vector<int> triangles(restSurface.triangles.data(),
+                                       restSurface.triangles.data() + restSurface.triangles.size());
+      const VertexTriangleAdjacency ring =
+          vertexTriangleAdjacency(restSurface.triangles, restSurface.vertexCount());
+      s.gpu2Mapper->SetSurface(ids, weights, triangles, ring.offsets, ring.triangles);
+      s.gpu2Mapper->SetInputData(s.polyData);
+      s.gpu2Mapper->ScalarVisibilityOff();
+      s.actor->SetMapper(s.gpu2Mapper);
+    }
   }
   applyMaterial(s.actor, material);
   update(dataset.nodes);
@@ -126,11 +149,13 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     times.uploadSeconds = secondsSince(start);
     return times;
   }
-  computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
-                       s.controlNormals);
   s.controlPositionsF.assign(control.data(), control.data() + control.size());
-  s.controlNormalsF.assign(s.controlNormals.data(),
-                           s.controlNormals.data() + s.controlNormals.size());
+  if (s.path == RenderPath::Gpu1Pass) {
+    computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
+                         s.controlNormals);
+    s.controlNormalsF.assign(s.controlNormals.data(),
+                             s.controlNormals.data() + s.controlNormals.size());
+  }
   // Bounds: the boundary nodes' box grown by the largest offset, plus 1% of
   // its size for vertices bound slightly outside their triangle.
   Aabb box;
@@ -143,9 +168,14 @@ FrameTimes DeformableSurface::update(const Points3& control) {
   }
   times.deformSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  s.gpuMapper->SetControlState(s.controlPositionsF.data(), s.controlNormalsF.data(),
-                               control.rows());
-  s.gpuMapper->SetDeformedBounds(s.bounds);
+  if (s.gpuMapper) {
+    s.gpuMapper->SetControlState(s.controlPositionsF.data(), s.controlNormalsF.data(),
+                                 control.rows());
+    s.gpuMapper->SetDeformedBounds(s.bounds);
+  } else {
+    s.gpu2Mapper->SetControlPositions(s.controlPositionsF.data(), control.rows());
+    s.gpu2Mapper->SetDeformedBounds(s.bounds);
+  }
   times.uploadSeconds = secondsSince(start);
   return times;
 }

@@ -9,10 +9,11 @@ namespace tetskin {
 enum class RenderPath {
   Cpu,       // threaded CPU deformer, points and normals updated in the vtkPolyData
   Gpu1Pass,  // vertex shader deformation from a per-frame control-state texture buffer
+  Gpu2Pass,  // compute pass into GPU buffers (positions, smooth normals), then the draw
 };
 
 // Throws Error for an unknown path, and for the report's paths this build does
-// not have yet (gpu-2pass, fur-cpu, fur-gpu), saying so.
+// not have yet (fur-cpu, fur-gpu), saying so.
 RenderPath parseRenderPath(std::string_view name);
 const char* toString(RenderPath path);
 

@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
+
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLBufferObject.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLVertexBufferObject.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+#include <string>
+
+#include "tetskin/shaders/Shaders.h"
+
+vtkStandardNewMacro(vtkTetSkinGpu2PassMapper)
+
+    namespace {
+  // A raw OpenGL shader-storage buffer (VTK 9.1 has no wrapper for them).
+  struct StorageBuffer {
+    GLuint id = 0;
+    void upload(const void* data, std::size_t bytes) {
+      if (!id) glGenBuffers(1, &id);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_DRAW);
+    }
+    void release() {
+      if (id) glDeleteBuffers(1, &id);
+      id = 0;
+    }
+  };
+
+  GLuint compileCompute(const char* source, std::string& log) {
+    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      char text[4096];
+      glGetShaderInfoLog(shader, sizeof text, nullptr, text);
+      log = text;
+      glDeleteShader(shader);
+      return 0;
+    }
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glDeleteShader(shader);
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+      char text[4096];
+      glGetProgramInfoLog(program, sizeof text, nullptr, text);
+      log = text;
+      glDeleteProgram(program);
+      return 0;
+    }
+    return program;
+  }
+
+}  // namespace
+
+struct vtkTetSkinGpu2PassMapper::GpuState {
+  StorageBuffer control, ids, weights, triangles, faces, offsets, ring;
+  GLuint positions = 0, faceNormals = 0, vertexNormals = 0;  // programs
+  bool failed = false;
+};
+
+vtkTetSkinGpu2PassMapper::vtkTetSkinGpu2PassMapper() : Gpu(new GpuState) {
+  this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+}
+
+vtkTetSkinGpu2PassMapper::~vtkTetSkinGpu2PassMapper() {
+  delete this->Gpu;
+}
+
+void vtkTetSkinGpu2PassMapper::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Vertices: " << this->Vertices << ", ControlNodes: " << this->Nodes << "\n";
+}
+
+void vtkTetSkinGpu2PassMapper::SetSurface(const std::vector<int>& controlIds,
+                                          const std::vector<float>& weightsAndOffset,
+                                          const std::vector<int>& triangles,
+                                          const std::vector<int>& ringOffsets,
+                                          const std::vector<int>& ringFaces) {
+  this->Vertices = static_cast<vtkIdType>(controlIds.size() / 3);
+  this->TriangleCount = static_cast<vtkIdType>(triangles.size() / 3);
+  this->Ids.assign(static_cast<std::size_t>(4 * this->Vertices), 0);
+  for (vtkIdType v = 0; v < this->Vertices; ++v)
+    for (int k = 0; k < 3; ++k)
+      this->Ids[static_cast<std::size_t>(4 * v + k)] =
+          controlIds[static_cast<std::size_t>(3 * v + k)];
+  this->Triangles.assign(static_cast<std::size_t>(4 * this->TriangleCount), 0);
+  for (vtkIdType t = 0; t < this->TriangleCount; ++t)
+    for (int k = 0; k < 3; ++k)
+      this->Triangles[static_cast<std::size_t>(4 * t + k)] =
+          triangles[static_cast<std::size_t>(3 * t + k)];
+  this->Weights = weightsAndOffset;
+  this->RingOffsets = ringOffsets;
+  this->RingFaces = ringFaces;
+  if (this->RingFaces.empty()) this->RingFaces.push_back(0);  // no empty SSBOs
+  this->SurfaceChanged = true;
+  this->Modified();
+}
+
+void vtkTetSkinGpu2PassMapper::SetControlPositions(const float* positions, vtkIdType nodes) {
+  this->Nodes = nodes;
+  this->Control.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
+  for (vtkIdType v = 0; v < nodes; ++v)
+    for (int k = 0; k < 3; ++k)
+      this->Control[static_cast<std::size_t>(4 * v + k)] = positions[3 * v + k];
+  this->ControlChanged = true;
+  this->Modified();
+}
+
+void vtkTetSkinGpu2PassMapper::SetDeformedBounds(const double bounds[6]) {
+  std::copy(bounds, bounds + 6, this->DeformedBounds);
+  this->Modified();
+}
+
+void vtkTetSkinGpu2PassMapper::ComputeBounds() {
+  if (this->DeformedBounds[0] <= this->DeformedBounds[1]) {
+    std::copy(this->DeformedBounds, this->DeformedBounds + 6, this->Bounds);
+    return;
+  }
+  this->Superclass::ComputeBounds();
+}
+
+void vtkTetSkinGpu2PassMapper::ComputePass() {
+  GpuState& g = *this->Gpu;
+  if (g.failed || this->Vertices == 0) return;
+  if (!g.positions) {
+    std::string log;
+    g.positions = compileCompute(tetskin::shaders::kGpu2passPositionsCs, log);
+    if (g.positions) g.faceNormals = compileCompute(tetskin::shaders::kGpu2passFaceNormalsCs, log);
+    if (g.faceNormals)
+      g.vertexNormals = compileCompute(tetskin::shaders::kGpu2passVertexNormalsCs, log);
+    if (!g.vertexNormals) {
+      g.failed = true;
+      vtkErrorMacro(<< "gpu-2pass compute shaders failed (OpenGL 4.3 needed): " << log);
+      return;
+    }
+  }
+  if (this->SurfaceChanged) {
+    g.ids.upload(this->Ids.data(), this->Ids.size() * sizeof(int));
+    g.weights.upload(this->Weights.data(), this->Weights.size() * sizeof(float));
+    g.triangles.upload(this->Triangles.data(), this->Triangles.size() * sizeof(int));
+    g.offsets.upload(this->RingOffsets.data(), this->RingOffsets.size() * sizeof(int));
+    g.ring.upload(this->RingFaces.data(), this->RingFaces.size() * sizeof(int));
+    std::vector<float> zeros(
+        static_cast<std::size_t>(4 * std::max<vtkIdType>(this->TriangleCount, 1)), 0.0f);
+    g.faces.upload(zeros.data(), zeros.size() * sizeof(float));
+    zeros.assign(static_cast<std::size_t>(4 * this->Vertices), 0.0f);
+    // The outputs are texture buffers for the draw pass and storage buffers here.
+    this->PositionBuffer->Upload(zeros, vtkOpenGLBufferObject::TextureBuffer);
+    this->NormalBuffer->Upload(zeros, vtkOpenGLBufferObject::TextureBuffer);
+    this->PositionTexture->CreateTextureBuffer(static_cast<unsigned int>(this->Vertices), 4,
+                                               VTK_FLOAT, this->PositionBuffer);
+    this->NormalTexture->CreateTextureBuffer(static_cast<unsigned int>(this->Vertices), 4,
+                                             VTK_FLOAT, this->NormalBuffer);
+    this->SurfaceChanged = false;
+  }
+  if (this->ControlChanged) {
+    g.control.upload(this->Control.data(), this->Control.size() * sizeof(float));
+    this->ControlChanged = false;
+  }
+  const GLuint groups = static_cast<GLuint>((this->Vertices + 63) / 64);
+  const GLuint faceGroups = static_cast<GLuint>((this->TriangleCount + 63) / 64);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.control.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3,
+                   static_cast<GLuint>(this->PositionBuffer->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.triangles.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.faces.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.offsets.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.ring.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8,
+                   static_cast<GLuint>(this->NormalBuffer->GetHandle()));
+  glUseProgram(g.positions);
+  glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
+  glDispatchCompute(groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(g.faceNormals);
+  glUniform1i(glGetUniformLocation(g.faceNormals, "triangleCount"),
+              static_cast<GLint>(this->TriangleCount));
+  if (faceGroups > 0) glDispatchCompute(faceGroups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(g.vertexNormals);
+  glUniform1i(glGetUniformLocation(g.vertexNormals, "vertexCount"),
+              static_cast<GLint>(this->Vertices));
+  glDispatchCompute(groups, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(0);  // VTK binds its own programs and tracks which one is bound
+}
+
+void vtkTetSkinGpu2PassMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  this->PositionTexture->SetContext(window);
+  this->NormalTexture->SetContext(window);
+  this->ComputePass();
+  // VTK caches the bound program; make it rebind after our glUseProgram.
+  window->GetShaderCache()->ReleaseCurrentShader();
+  this->Superclass::RenderPieceStart(ren, act);
+  this->PositionTexture->Activate();
+  this->NormalTexture->Activate();
+}
+
+void vtkTetSkinGpu2PassMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
+  this->PositionTexture->Deactivate();
+  this->NormalTexture->Deactivate();
+  this->Superclass::RenderPieceFinish(ren, act);
+}
+
+std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWindow* window) {
+  std::vector<float> out(static_cast<std::size_t>(4 * this->Vertices));
+  if (out.empty() || !this->PositionBuffer->GetHandle()) return out;
+  window->MakeCurrent();
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(this->PositionBuffer->GetHandle()));
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                     static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return out;
+}
+
+void vtkTetSkinGpu2PassMapper::ReleaseGraphicsResources(vtkWindow* window) {
+  GpuState& g = *this->Gpu;
+  for (StorageBuffer* b :
+       {&g.control, &g.ids, &g.weights, &g.triangles, &g.faces, &g.offsets, &g.ring})
+    b->release();
+  for (GLuint* p : {&g.positions, &g.faceNormals, &g.vertexNormals}) {
+    if (*p) glDeleteProgram(*p);
+    *p = 0;
+  }
+  this->PositionTexture->ReleaseGraphicsResources(window);
+  this->NormalTexture->ReleaseGraphicsResources(window);
+  this->PositionBuffer->ReleaseGraphicsResources();
+  this->NormalBuffer->ReleaseGraphicsResources();
+  this->SurfaceChanged = this->ControlChanged = true;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+void vtkTetSkinGpu2PassMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders,
+                                                   vtkRenderer* ren, vtkActor* act) {
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vs, "//VTK::CustomUniforms::Dec",
+                               tetskin::shaders::kGpu2passDrawDeclarationsVs);
+  vtkShaderProgram::Substitute(vs, "//VTK::CustomBegin::Impl",
+                               tetskin::shaders::kGpu2passDrawImplVs);
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  vs = shaders[vtkShader::Vertex]->GetSource();
+  vtkShaderProgram::Substitute(vs, "* vertexMC", "* deformedMC", true);
+  vtkShaderProgram::Substitute(vs, "normalMatrix * normalMC", "normalMatrix * deformedNormalMC",
+                               true);
+  shaders[vtkShader::Vertex]->SetSource(vs);
+}
+
+void vtkTetSkinGpu2PassMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+                                                         vtkActor* act) {
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  if (cellBO.Program) {
+    cellBO.Program->SetUniformi("tetskinDeformedPositions",
+                                this->PositionTexture->GetTextureUnit());
+    cellBO.Program->SetUniformi("tetskinDeformedNormals", this->NormalTexture->GetTextureUnit());
+  }
+}
