@@ -13,8 +13,17 @@
 namespace tetskin::cli {
 namespace {
 
+// The bundled data: the source tree's for a build, else the installed package's.
+std::filesystem::path defaultDataDir() {
+  if (std::filesystem::exists(std::filesystem::path(TETSKIN_DATA_DIR) / "bunny.json"))
+    return TETSKIN_DATA_DIR;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return exe.parent_path().parent_path() / "share" / "tetskin" / "data";
+}
+
 struct BenchArgs {
-  std::filesystem::path data = TETSKIN_DATA_DIR;
+  std::filesystem::path data = defaultDataDir();
   int frames = 60;
   std::string size = "640x480";
   bool json = false;
