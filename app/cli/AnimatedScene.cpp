@@ -21,7 +21,7 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
     : dataset_(dataset), level_(resolveLevel(dataset.mesh, o.level)), nodes_(dataset.mesh.nodes) {
   const SurfaceBinding binding = bindSurface(surface, dataset.mesh, level_);
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, o.path,
-                                                 dataset.config.material);
+                                                 dataset.config.material, o.texture);
   view_ = std::make_unique<OffscreenView>(o.width, o.height);
   view_->renderer()->AddActor(surface_->actor());
   const TetMesh rest = extractLevel(dataset.mesh, level_);

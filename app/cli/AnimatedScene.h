@@ -23,7 +23,8 @@ struct SceneOptions {
   std::string scenario = "wobble";
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
-  std::string control = "none";  // none, surface, wireframe, shrink
+  std::string control = "none";   // none, surface, wireframe, shrink
+  std::filesystem::path texture;  // PNG applied through the surface's texture coordinates
 };
 
 struct FrameStats {

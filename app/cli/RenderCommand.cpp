@@ -13,7 +13,7 @@ namespace tetskin::cli {
 namespace {
 
 struct RenderArgs {
-  std::filesystem::path dataset, surface, output;
+  std::filesystem::path dataset, surface, output, texture;
   std::string path = "cpu", camera = "iso", control = "none", scenario = "wobble", size = "800x600";
   int level = -1, frames = 0;
 };
@@ -28,6 +28,7 @@ void run(const RenderArgs& a) {
   o.level = a.level;
   o.scenario = a.scenario;
   o.control = a.control;
+  o.texture = a.texture;
   if (o.control != "none") parseControlMeshStyle(o.control);  // reject typos before any work
   const Dataset dataset = loadDataset(a.dataset);
   std::filesystem::path surfacePath = a.surface;
@@ -66,6 +67,9 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--path", a->path, "cpu, gpu-1pass or gpu-2pass (fur-cpu, fur-gpu: not yet)")
       ->capture_default_str();
   cmd->add_option("-o,--output", a->output, "image (.png)")->required();
+  cmd->add_option("--texture", a->texture,
+                  "colour texture (PNG) for a surface with texture coordinates")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--level", a->level, "bound and simulated level (default: finest)");
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();

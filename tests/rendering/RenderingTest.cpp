@@ -19,6 +19,7 @@
 #include <filesystem>
 
 #include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
@@ -176,6 +177,35 @@ TEST_F(Rendering, HardwarePickingSeesTheDeformedSurface) {
     EXPECT_EQ(picker->GetActor(), deformable.actor()) << toString(path);
     EXPECT_FALSE(picker->Pick(2, 2, 0, view.renderer())) << toString(path);  // background
   }
+}
+
+TEST_F(Rendering, TextureIsDrawnAlikeByCpuAndGpu2Pass) {
+  const SurfaceMesh textured = readObj(kData + "bunny_8k_tex.obj");
+  ASSERT_TRUE(textured.hasTexcoords());
+  const SurfaceBinding binding = bindSurface(textured, dataset_.mesh, 1);
+  auto draw = [&](RenderPath path, bool withTexture) {
+    DeformableSurface deformable(dataset_.mesh, textured, binding, path, dataset_.config.material,
+                                 withTexture ? kData + "bunny_texture.png" : std::string());
+    deformable.update(twisted(dataset_.mesh.nodes));
+    OffscreenView view(256, 256);
+    view.renderer()->AddActor(deformable.actor());
+    const BoundingBox box = boundingBox(extractLevel(dataset_.mesh, 1).nodes);
+    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
+                              box.max.y(), box.min.z(), box.max.z()};
+    view.setCamera(CameraPreset::Iso, bounds);
+    view.render();
+    return view.capture();
+  };
+  const auto cpu = draw(RenderPath::Cpu, true);
+  const double paths = difference(cpu, draw(RenderPath::Gpu2Pass, true));
+  const double texture = difference(cpu, draw(RenderPath::Cpu, false));
+  std::printf("textured: cpu vs gpu-2pass %.3f%%, with vs without texture %.2f%%\n", 100 * paths,
+              100 * texture);
+  EXPECT_LT(paths, 0.002);
+  EXPECT_GT(texture, 0.05);  // the spots are there
+  EXPECT_THROW(DeformableSurface(dataset_.mesh, surface_, binding_, RenderPath::Cpu,
+                                 dataset_.config.material, kData + "bunny_texture.png"),
+               Error);  // bunny_8k.obj has no texture coordinates
 }
 
 TEST_F(Rendering, PathsAgree) {

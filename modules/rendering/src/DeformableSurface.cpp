@@ -3,11 +3,14 @@
 
 #include <vtkActor.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkTexture.h>
 
 #include <chrono>
 
@@ -58,7 +61,8 @@ struct DeformableSurface::Impl {
 
 DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
                                      const SurfaceMesh& restSurface, const SurfaceBinding& binding,
-                                     RenderPath path, const Material& material)
+                                     RenderPath path, const Material& material,
+                                     const std::filesystem::path& texture)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.path = path;
@@ -111,6 +115,21 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     }
   }
   applyMaterial(s.actor, material);
+  if (!texture.empty()) {
+    if (!restSurface.hasTexcoords())
+      throw Error(texture.string(), 0, "the surface has no texture coordinates to apply it with");
+    auto reader = vtkSmartPointer<vtkPNGReader>::New();
+    if (!std::filesystem::is_regular_file(texture) || !reader->CanReadFile(texture.c_str()))
+      throw Error(texture.string(), 0, "is not a readable PNG image");
+    reader->SetFileName(texture.c_str());
+    reader->Update();
+    auto vtkTex = vtkSmartPointer<vtkTexture>::New();
+    vtkTex->SetInputConnection(reader->GetOutputPort());
+    vtkTex->InterpolateOn();
+    vtkTex->RepeatOn();
+    s.actor->SetTexture(vtkTex);
+    s.actor->GetProperty()->SetColor(1, 1, 1);  // the texture gives the colour
+  }
   update(dataset.nodes);
 }
 

@@ -6,6 +6,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "tetskin/core/SurfaceBinding.h"
@@ -27,9 +28,12 @@ struct FrameTimes {
 class DeformableSurface {
  public:
   // `restSurface` and `binding` as from tetskin bind (triangle methods);
-  // `dataset` gives the rest nodes (dataset numbering).
+  // `dataset` gives the rest nodes (dataset numbering). A `texture` (PNG)
+  // colours the surface through its texture coordinates (the report's
+  // "BunnyTex"); throws Error when the surface has none or the file is bad.
   DeformableSurface(const MultiLevelTetMesh& dataset, const SurfaceMesh& restSurface,
-                    const SurfaceBinding& binding, RenderPath path, const Material& material);
+                    const SurfaceBinding& binding, RenderPath path, const Material& material,
+                    const std::filesystem::path& texture = {});
   ~DeformableSurface();
 
   RenderPath path() const;
