@@ -11,14 +11,18 @@ function(tetskin_add_module name)
   set_target_properties(tetskin_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()
 
-# tetskin_add_test(NAME SOURCES ... DEPS ...): one GoogleTest executable, its
-# tests registered one by one with CTest.
+# tetskin_add_test(NAME SOURCES ... DEPS ... [LABELS ...] [RESOURCE_LOCK name]):
+# one GoogleTest executable, its tests registered one by one with CTest.
 function(tetskin_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "RESOURCE_LOCK" "SOURCES;DEPS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main TetSkin::flags)
   target_compile_definitions(${name} PRIVATE
     TETSKIN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     TETSKIN_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "${ARG_LABELS}")
+  set(properties LABELS "${ARG_LABELS}")
+  if(ARG_RESOURCE_LOCK)
+    list(APPEND properties RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES ${properties})
 endfunction()
