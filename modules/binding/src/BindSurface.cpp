@@ -15,6 +15,7 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/spatial/AabbTree.h"
+#include "tetskin/spatial/TetLocator.h"
 #include "tetskin/spatial/TriangleDistance.h"
 
 namespace tetskin {
@@ -231,58 +232,22 @@ SurfaceBinding bindSeed(const SurfaceMesh& surface, const ControlSurface& cs,
   return out;
 }
 
-// Barycentric coordinates of p in element e (unclamped: negative outside).
-Eigen::Vector4d tetBarycentric(const TetMesh& m, Index e, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d a = m.nodes.row(m.elements(e, 0)), b = m.nodes.row(m.elements(e, 1)),
-                        c = m.nodes.row(m.elements(e, 2)), d = m.nodes.row(m.elements(e, 3));
-  Eigen::Matrix3d t;
-  t << b - a, c - a, d - a;
-  const Eigen::Vector3d l = t.partialPivLu().solve(p - a);
-  return {1 - l.sum(), l[0], l[1], l[2]};
-}
-
-double squaredDistanceToTet(const TetMesh& m, Index e, const Eigen::Vector3d& p) {
-  if (tetBarycentric(m, e, p).minCoeff() >= 0) return 0;
-  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  double best = kInf;
-  for (const auto& f : kFaces)
-    best = std::min(best, closestPointOnTriangle(p, m.nodes.row(m.elements(e, f[0])).transpose(),
-                                                 m.nodes.row(m.elements(e, f[1])).transpose(),
-                                                 m.nodes.row(m.elements(e, f[2])).transpose())
-                              .squaredDistance);
-  return best;
-}
-
 // SOFA/VegaFEM-style embedding: the containing element's 4 barycentric
 // weights; outside the volume the nearest element, extrapolated.
 SurfaceBinding bindEmbed(const SurfaceMesh& surface, const ControlSurface& cs,
                          const BindingOptions& options, int level) {
   SurfaceBinding out = emptyBinding(surface, options, level);
   const TetMesh& m = cs.level;
-  std::vector<Aabb> boxes(static_cast<std::size_t>(m.elementCount()));
-  for (Index e = 0; e < m.elementCount(); ++e)
-    for (int k = 0; k < 4; ++k)
-      boxes[static_cast<std::size_t>(e)].extend(m.nodes.row(m.elements(e, k)).transpose());
-  const AabbTree tree(boxes);
+  const TetLocator locator(m);
   forEachVertex(surface.vertexCount(), [&](Index v) {
-    const Eigen::Vector3d p = surface.positions.row(v).transpose();
-    int chosen = -1;
-    double best2 = kInf;
-    tree.forEachNear(p, best2, [&](int e, double& radius2) {
-      const double d2 = squaredDistanceToTet(m, e, p);
-      if (d2 < radius2 || (d2 == radius2 && e < chosen)) {
-        radius2 = d2;
-        chosen = e;
-      }
-    });
-    const Eigen::Vector4d w = tetBarycentric(m, chosen, p);
+    const TetLocation at = locator.locate(surface.positions.row(v).transpose());
     for (int k = 0; k < 4; ++k) {
-      out.controlIds(v, k) = m.elements(chosen, k) + cs.nodeOffset;
-      out.weights(v, k) = w[k];
+      out.controlIds(v, k) = m.elements(at.element, k) + cs.nodeOffset;
+      out.weights(v, k) = at.barycentric[k];
     }
-    out.distance[v] = std::sqrt(best2);
-    out.faceId[v] = chosen + cs.elementOffset;
-    out.minBarycentric[v] = w.minCoeff();
+    out.distance[v] = std::sqrt(at.squaredDistance);
+    out.faceId[v] = at.element + cs.elementOffset;
+    out.minBarycentric[v] = at.barycentric.minCoeff();
   });
   return out;
 }
