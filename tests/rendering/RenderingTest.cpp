@@ -54,7 +54,15 @@ class Rendering : public ::testing::Test {
   }
 
   vtkSmartPointer<vtkImageData> render(RenderPath path, const Points3& control) {
-    DeformableSurface deformable(dataset_.mesh, surface_, binding_, path, dataset_.config.material);
+    return render(path, control, surface_, binding_, {});
+  }
+
+  // The surface bound to level 1, seen from the iso preset at 256x256.
+  vtkSmartPointer<vtkImageData> render(RenderPath path, const Points3& control,
+                                       const SurfaceMesh& surface, const SurfaceBinding& binding,
+                                       const std::string& texture) {
+    DeformableSurface deformable(dataset_.mesh, surface, binding, path, dataset_.config.material,
+                                 texture);
     deformable.update(control);
     OffscreenView view(256, 256);
     view.renderer()->AddActor(deformable.actor());
@@ -183,18 +191,10 @@ TEST_F(Rendering, TextureIsDrawnAlikeByCpuAndGpu2Pass) {
   const SurfaceMesh textured = readObj(kData + "bunny_8k_tex.obj");
   ASSERT_TRUE(textured.hasTexcoords());
   const SurfaceBinding binding = bindSurface(textured, dataset_.mesh, 1);
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  const std::string texturePng = kData + "bunny_texture.png";
   auto draw = [&](RenderPath path, bool withTexture) {
-    DeformableSurface deformable(dataset_.mesh, textured, binding, path, dataset_.config.material,
-                                 withTexture ? kData + "bunny_texture.png" : std::string());
-    deformable.update(twisted(dataset_.mesh.nodes));
-    OffscreenView view(256, 256);
-    view.renderer()->AddActor(deformable.actor());
-    const BoundingBox box = boundingBox(extractLevel(dataset_.mesh, 1).nodes);
-    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                              box.max.y(), box.min.z(), box.max.z()};
-    view.setCamera(CameraPreset::Iso, bounds);
-    view.render();
-    return view.capture();
+    return render(path, control, textured, binding, withTexture ? texturePng : std::string());
   };
   const auto cpu = draw(RenderPath::Cpu, true);
   const double paths = difference(cpu, draw(RenderPath::Gpu2Pass, true));

@@ -18,48 +18,48 @@
 
 vtkStandardNewMacro(vtkTetSkinGpu2PassMapper)
 
-    namespace {
-  // A raw OpenGL shader-storage buffer (VTK 9.1 has no wrapper for them).
-  struct StorageBuffer {
-    GLuint id = 0;
-    void upload(const void* data, std::size_t bytes) {
-      if (!id) glGenBuffers(1, &id);
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_DRAW);
-    }
-    void release() {
-      if (id) glDeleteBuffers(1, &id);
-      id = 0;
-    }
-  };
-
-  GLuint compileCompute(const char* source, std::string& log) {
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      char text[4096];
-      glGetShaderInfoLog(shader, sizeof text, nullptr, text);
-      log = text;
-      glDeleteShader(shader);
-      return 0;
-    }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, shader);
-    glLinkProgram(program);
-    glDeleteShader(shader);
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-      char text[4096];
-      glGetProgramInfoLog(program, sizeof text, nullptr, text);
-      log = text;
-      glDeleteProgram(program);
-      return 0;
-    }
-    return program;
+namespace {
+// A raw OpenGL shader-storage buffer (VTK 9.1 has no wrapper for them).
+struct StorageBuffer {
+  GLuint id = 0;
+  void upload(const void* data, std::size_t bytes) {
+    if (!id) glGenBuffers(1, &id);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_DRAW);
   }
+  void release() {
+    if (id) glDeleteBuffers(1, &id);
+    id = 0;
+  }
+};
+
+GLuint compileCompute(const char* source, std::string& log) {
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char text[4096];
+    glGetShaderInfoLog(shader, sizeof text, nullptr, text);
+    log = text;
+    glDeleteShader(shader);
+    return 0;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char text[4096];
+    glGetProgramInfoLog(program, sizeof text, nullptr, text);
+    log = text;
+    glDeleteProgram(program);
+    return 0;
+  }
+  return program;
+}
 
 }  // namespace
 
@@ -69,9 +69,11 @@ struct vtkTetSkinGpu2PassMapper::GpuState {
   bool failed = false;
 };
 
-vtkTetSkinGpu2PassMapper::vtkTetSkinGpu2PassMapper() : Gpu(new GpuState) {
-  this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
-}
+vtkTetSkinGpu2PassMapper::vtkTetSkinGpu2PassMapper()
+    : vtkTetSkinBufferMapper(tetskin::shaders::kGpu2passDrawDeclarationsVs,
+                             tetskin::shaders::kGpu2passDrawImplVs, "tetskinDeformedPositions",
+                             "tetskinDeformedNormals"),
+      Gpu(new GpuState) {}
 
 vtkTetSkinGpu2PassMapper::~vtkTetSkinGpu2PassMapper() {
   delete this->Gpu;
@@ -117,20 +119,7 @@ void vtkTetSkinGpu2PassMapper::SetControlPositions(const float* positions, vtkId
   this->Modified();
 }
 
-void vtkTetSkinGpu2PassMapper::SetDeformedBounds(const double bounds[6]) {
-  std::copy(bounds, bounds + 6, this->DeformedBounds);
-  this->Modified();
-}
-
-void vtkTetSkinGpu2PassMapper::ComputeBounds() {
-  if (this->DeformedBounds[0] <= this->DeformedBounds[1]) {
-    std::copy(this->DeformedBounds, this->DeformedBounds + 6, this->Bounds);
-    return;
-  }
-  this->Superclass::ComputeBounds();
-}
-
-void vtkTetSkinGpu2PassMapper::ComputePass() {
+void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   GpuState& g = *this->Gpu;
   if (g.failed || this->Vertices == 0) return;
   if (!g.positions) {
@@ -156,12 +145,8 @@ void vtkTetSkinGpu2PassMapper::ComputePass() {
     g.faces.upload(zeros.data(), zeros.size() * sizeof(float));
     zeros.assign(static_cast<std::size_t>(4 * this->Vertices), 0.0f);
     // The outputs are texture buffers for the draw pass and storage buffers here.
-    this->PositionBuffer->Upload(zeros, vtkOpenGLBufferObject::TextureBuffer);
-    this->NormalBuffer->Upload(zeros, vtkOpenGLBufferObject::TextureBuffer);
-    this->PositionTexture->CreateTextureBuffer(static_cast<unsigned int>(this->Vertices), 4,
-                                               VTK_FLOAT, this->PositionBuffer);
-    this->NormalTexture->CreateTextureBuffer(static_cast<unsigned int>(this->Vertices), 4,
-                                             VTK_FLOAT, this->NormalBuffer);
+    this->UploadTexels(0, zeros);
+    this->UploadTexels(1, zeros);
     this->SurfaceChanged = false;
   }
   if (this->ControlChanged) {
@@ -173,14 +158,12 @@ void vtkTetSkinGpu2PassMapper::ComputePass() {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.control.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3,
-                   static_cast<GLuint>(this->PositionBuffer->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, static_cast<GLuint>(this->Buffer(0)->GetHandle()));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.triangles.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.faces.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.offsets.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.ring.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8,
-                   static_cast<GLuint>(this->NormalBuffer->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, static_cast<GLuint>(this->Buffer(1)->GetHandle()));
   glUseProgram(g.positions);
   glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
   glDispatchCompute(groups, 1, 1);
@@ -196,32 +179,16 @@ void vtkTetSkinGpu2PassMapper::ComputePass() {
   glDispatchCompute(groups, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
-  glUseProgram(0);  // VTK binds its own programs and tracks which one is bound
-}
-
-void vtkTetSkinGpu2PassMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  this->PositionTexture->SetContext(window);
-  this->NormalTexture->SetContext(window);
-  this->ComputePass();
+  glUseProgram(0);
   // VTK caches the bound program; make it rebind after our glUseProgram.
   window->GetShaderCache()->ReleaseCurrentShader();
-  this->Superclass::RenderPieceStart(ren, act);
-  this->PositionTexture->Activate();
-  this->NormalTexture->Activate();
-}
-
-void vtkTetSkinGpu2PassMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
-  this->PositionTexture->Deactivate();
-  this->NormalTexture->Deactivate();
-  this->Superclass::RenderPieceFinish(ren, act);
 }
 
 std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWindow* window) {
   std::vector<float> out(static_cast<std::size_t>(4 * this->Vertices));
-  if (out.empty() || !this->PositionBuffer->GetHandle()) return out;
+  if (out.empty() || !this->Buffer(0)->GetHandle()) return out;
   window->MakeCurrent();
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(this->PositionBuffer->GetHandle()));
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(this->Buffer(0)->GetHandle()));
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
                      static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -237,36 +204,6 @@ void vtkTetSkinGpu2PassMapper::ReleaseGraphicsResources(vtkWindow* window) {
     if (*p) glDeleteProgram(*p);
     *p = 0;
   }
-  this->PositionTexture->ReleaseGraphicsResources(window);
-  this->NormalTexture->ReleaseGraphicsResources(window);
-  this->PositionBuffer->ReleaseGraphicsResources();
-  this->NormalBuffer->ReleaseGraphicsResources();
   this->SurfaceChanged = this->ControlChanged = true;
   this->Superclass::ReleaseGraphicsResources(window);
-}
-
-void vtkTetSkinGpu2PassMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders,
-                                                   vtkRenderer* ren, vtkActor* act) {
-  std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "//VTK::CustomUniforms::Dec",
-                               tetskin::shaders::kGpu2passDrawDeclarationsVs);
-  vtkShaderProgram::Substitute(vs, "//VTK::CustomBegin::Impl",
-                               tetskin::shaders::kGpu2passDrawImplVs);
-  shaders[vtkShader::Vertex]->SetSource(vs);
-  this->Superclass::ReplaceShaderValues(shaders, ren, act);
-  vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "* vertexMC", "* deformedMC", true);
-  vtkShaderProgram::Substitute(vs, "normalMatrix * normalMC", "normalMatrix * deformedNormalMC",
-                               true);
-  shaders[vtkShader::Vertex]->SetSource(vs);
-}
-
-void vtkTetSkinGpu2PassMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
-                                                         vtkActor* act) {
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
-  if (cellBO.Program) {
-    cellBO.Program->SetUniformi("tetskinDeformedPositions",
-                                this->PositionTexture->GetTextureUnit());
-    cellBO.Program->SetUniformi("tetskinDeformedNormals", this->NormalTexture->GetTextureUnit());
-  }
 }

@@ -11,46 +11,28 @@
 // The input polydata must carry point arrays ControlIds (3), Weights (3),
 // Distance (1) and Normals (any: the shader replaces them).
 
-#include <vtkNew.h>
-#include <vtkOpenGLPolyDataMapper.h>
-
 #include <vector>
 
-class vtkOpenGLBufferObject;
-class vtkTextureObject;
+#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 
-class vtkTetSkinGpuDeformMapper : public vtkOpenGLPolyDataMapper {
+class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
  public:
   static vtkTetSkinGpuDeformMapper* New();
-  vtkTypeMacro(vtkTetSkinGpuDeformMapper,
-               vtkOpenGLPolyDataMapper) void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkTetSkinGpuDeformMapper, vtkTetSkinBufferMapper)
 
   // Control node positions and normals, xyz per node in the dataset's
   // numbering; uploaded at the next render.
   void SetControlState(const float* positions, const float* normals, vtkIdType nodes);
-  // Bounds of the deformed surface (the CPU knows the control state).
-  void SetDeformedBounds(const double bounds[6]);
-
-  void ComputeBounds() override;
-  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
  protected:
   vtkTetSkinGpuDeformMapper();
-  ~vtkTetSkinGpuDeformMapper() override;
-  void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
-                           vtkActor* act) override;
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  ~vtkTetSkinGpuDeformMapper() override = default;
+  void PrepareBuffers(vtkOpenGLRenderWindow* window) override;
 
  private:
   vtkTetSkinGpuDeformMapper(const vtkTetSkinGpuDeformMapper&) = delete;
   void operator=(const vtkTetSkinGpuDeformMapper&) = delete;
-
   std::vector<float> Positions, Normals;  // xyz_ per node
-  vtkIdType Nodes = 0;
   bool StateChanged = false;
-  double DeformedBounds[6] = {0, -1, 0, -1, 0, -1};
-  vtkNew<vtkOpenGLBufferObject> PositionBuffer, NormalBuffer;
-  vtkNew<vtkTextureObject> PositionTexture, NormalTexture;
 };
