@@ -98,8 +98,8 @@ demo() {
   log "simulating the finest level (wobble), the 64k bunny following it"
   "$tetskin" simulate "$out/bunny.json" --scenario wobble --steps 60 --every 2 \
     --surface data/bunny_64k.obj -o "$out/wobble.pvd"
-  log "rendering 30 animated frames, cpu and gpu-1pass paths"
-  for path in cpu gpu-1pass; do
+  log "rendering 30 animated frames on each render path"
+  for path in cpu gpu-1pass gpu-2pass; do
     with_display "$tetskin" render "$out/bunny.json" --surface data/bunny_64k.obj --path "$path" \
       --frames 30 --control wireframe --level 0 -o "$out/bunny_$path.png"
   done
