@@ -45,6 +45,7 @@ ControlMeshActor::ControlMeshActor(const TetMesh& rest, ControlMeshStyle style)
   if (style == ControlMeshStyle::Wireframe) {
     p->SetRepresentationToWireframe();
     p->SetLineWidth(1.0);
+    p->LightingOff();  // lines have no meaningful normal: lit, they turn black from behind
   } else if (style == ControlMeshStyle::Surface) {
     p->SetOpacity(0.35);
   }
