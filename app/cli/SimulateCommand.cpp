@@ -73,11 +73,11 @@ void run(SimulateArgs& a) {
     if (deformer) {
       controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
       deformer->deform(controlAll, surfacePositions, surfaceNormals);
-      BoundSurface frameSurface = *bound;
-      frameSurface.surface.positions = surfacePositions;
-      frameSurface.surface.normals = surfaceNormals;
+      // The deformer keeps the rest shape: the frame's geometry can go in place.
+      bound->surface.positions = surfacePositions;
+      bound->surface.normals = surfaceNormals;
       std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frame));
-      writeBinding(directory / framesName / name, frameSurface);
+      writeBinding(directory / framesName / name, *bound);
       series.add(s.time, 1, framesName + "/" + name);
     }
     series.write();  // after every frame: a stopped run leaves a valid series

@@ -1,19 +1,12 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/io/Dataset.h"
 
-#include <cctype>
-
 #include "tetskin/core/Error.h"
+#include "tetskin/io/FileNames.h"
 #include "tetskin/io/TetGenFormat.h"
 
 namespace tetskin {
 namespace {
-
-bool hasExtension(const std::filesystem::path& path, const char* ext) {
-  std::string e = path.extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e == ext;
-}
 
 Dataset loadNodeElePair(const std::filesystem::path& path) {
   std::filesystem::path nodePath = path, elePath = path;
@@ -35,7 +28,8 @@ Dataset loadNodeElePair(const std::filesystem::path& path) {
 }  // namespace
 
 Dataset loadDataset(const std::filesystem::path& path) {
-  if (hasExtension(path, ".node") || hasExtension(path, ".ele")) return loadNodeElePair(path);
+  if (lowerExtension(path) == ".node" || lowerExtension(path) == ".ele")
+    return loadNodeElePair(path);
   Dataset dataset;
   dataset.config = readDatasetConfig(path);
   const std::filesystem::path nodePath = dataset.config.resolve(dataset.config.nodeFile);

@@ -29,8 +29,7 @@ Points3 unflatten(const Eigen::VectorXd& x) {
 
 Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
                        const SimulationOptions& options)
-    : dataset_(dataset),
-      level_(level < 0 ? dataset.finestLevel() : level),
+    : level_(level < 0 ? dataset.finestLevel() : level),
       rest_(extractLevel(dataset, level_)),
       options_(options),
       fem_(rest_, options.material) {
@@ -67,7 +66,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   // Automatic floor stiffness: about a hundred times the stiffest element
   // diagonal, so penetration stays small without ruining the conditioning.
   floorStiffness_ = options.floorStiffness;
-  if (!(floorStiffness_ > 0)) {
+  if (options.floorHeight && !(floorStiffness_ > 0)) {
     Eigen::VectorXd force;
     fem_.update(x_, force, stiffness_);
     floorStiffness_ = 100.0 * stiffness_.diagonal().maxCoeff();

@@ -7,24 +7,17 @@
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 
-#include <cctype>
-
 #include "PlyHeader.h"
 #include "VtkErrorCapture.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/FileNames.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string e = path.extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
 
 template <typename Reader>
 SurfaceMesh readWithVtk(const std::filesystem::path& path) {

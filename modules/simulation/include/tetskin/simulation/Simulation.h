@@ -89,7 +89,6 @@ class Simulation {
 
  private:
   void buildSystem(double h, StepStats& stats);
-  MultiLevelTetMesh dataset_;
   int level_;
   TetMesh rest_;
   SimulationOptions options_;
