@@ -103,6 +103,11 @@ demo() {
     with_display "$tetskin" render "$out/bunny.json" --surface data/bunny_64k.obj --path "$path" \
       --frames 30 --control wireframe --level 0 -o "$out/bunny_$path.png"
   done
+  log "rendering 30 animated frames with fur (textured 8k bunny, both fur paths)"
+  for path in fur-cpu fur-gpu; do
+    with_display "$tetskin" render "$out/bunny.json" --surface data/bunny_8k_tex.obj \
+      --texture data/bunny_texture.png --path "$path" --frames 30 --level 0 -o "$out/bunny_$path.png"
+  done
   log "export for ParaView"
   "$tetskin" convert data/bunny_64k.obj "$out/bunny_64k.vtp"
   for level in 0 1 2; do "$tetskin" convert "$out/bunny.json" "$out/bunny_level$level.vtu" --level $level; done

@@ -21,9 +21,9 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
     : dataset_(dataset), level_(resolveLevel(dataset.mesh, o.level)), nodes_(dataset.mesh.nodes) {
   const SurfaceBinding binding = bindSurface(surface, dataset.mesh, level_);
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, o.path,
-                                                 dataset.config.material, o.texture);
+                                                 dataset.config.material, o.texture, o.fur);
   view_ = std::make_unique<OffscreenView>(o.width, o.height);
-  view_->renderer()->AddActor(surface_->actor());
+  surface_->addTo(view_->renderer());
   const TetMesh rest = extractLevel(dataset.mesh, level_);
   if (o.control != "none") {
     control_ = std::make_unique<ControlMeshActor>(rest, parseControlMeshStyle(o.control));
@@ -38,6 +38,7 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
       dataset.mesh, level_, scenarioOptions(o.scenario, SimulationOptions{}, rest));
   scenario_ = makeScenario(o.scenario);
   scenario_->setUp(*simulation_);
+  surface_->setFrameSeconds(simulation_->options().timeStep);
   view_->render();
 }
 
@@ -45,6 +46,10 @@ AnimatedScene::~AnimatedScene() = default;
 
 Index AnimatedScene::elementCount() const {
   return dataset_.mesh.levels[static_cast<std::size_t>(level_)].elementCount;
+}
+
+int AnimatedScene::furShells() const {
+  return surface_->fur() ? surface_->fur()->shellsDrawn() : 0;
 }
 
 FrameStats AnimatedScene::run(int frames) {

@@ -25,6 +25,8 @@ struct SceneOptions {
   CameraPreset camera = CameraPreset::Iso;
   std::string control = "none";   // none, surface, wireframe, shrink
   std::filesystem::path texture;  // PNG applied through the surface's texture coordinates
+                                  // (on fur paths: the fur's colour and mask)
+  FurParameters fur;              // for the fur paths
 };
 
 struct FrameStats {
@@ -44,6 +46,8 @@ class AnimatedScene {
   OffscreenView& view() { return *view_; }
   int level() const { return level_; }
   Index elementCount() const;
+  // Shells the fur paths drew in the last frame (0 without fur).
+  int furShells() const;
 
  private:
   const Dataset& dataset_;

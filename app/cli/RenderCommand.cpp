@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -16,7 +17,41 @@ struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture;
   std::string path = "cpu", camera = "iso", control = "none", scenario = "wobble", size = "800x600";
   int level = -1, frames = 0;
+  // Fur: overrides of the dataset config's `fur` section.
+  std::optional<int> furShells, furMinShells, furTextureSize;
+  std::optional<double> furLength, furDensity, furDrag, furVelvet, furRepeats;
+  std::optional<std::uint32_t> furSeed;
+  std::optional<std::string> furLighting;
+  std::optional<bool> furFins, furAdaptive;
 };
+
+FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
+  FurParameters f = config.fur;
+  auto check = [](bool ok, const char* what) {
+    if (!ok) throw Error(std::string(what));
+  };
+  if (a.furShells) f.shells = *a.furShells;
+  if (a.furMinShells) f.minShells = *a.furMinShells;
+  if (a.furTextureSize) f.textureSize = *a.furTextureSize;
+  if (a.furLength) f.length = *a.furLength;
+  if (a.furDensity) f.density = *a.furDensity;
+  if (a.furDrag) f.drag = *a.furDrag;
+  if (a.furVelvet) f.velvet = *a.furVelvet;
+  if (a.furRepeats) f.textureRepeats = *a.furRepeats;
+  if (a.furSeed) f.seed = *a.furSeed;
+  if (a.furLighting) f.lighting = parseFurLighting(*a.furLighting);
+  if (a.furFins) f.fins = *a.furFins;
+  if (a.furAdaptive) f.adaptiveShells = *a.furAdaptive;
+  check(f.shells >= 1 && f.shells <= 256, "--fur-shells must lie in [1, 256]");
+  check(f.minShells >= 1 && f.minShells <= f.shells, "--fur-min-shells must lie in [1, shells]");
+  check(f.length > 0 && f.length <= 1, "--fur-length must lie in (0, 1]");
+  check(f.density >= 0 && f.density <= 1, "--fur-density must lie in [0, 1]");
+  check(f.drag >= 0 && f.drag <= 10, "--fur-drag must lie in [0, 10]");
+  check(f.velvet >= 0 && f.velvet <= 1, "--fur-velvet must lie in [0, 1]");
+  check(f.textureRepeats > 0 && f.textureRepeats <= 1000, "--fur-repeats must lie in (0, 1000]");
+  check(f.textureSize >= 8 && f.textureSize <= 4096, "--fur-texture-size must lie in [8, 4096]");
+  return f;
+}
 
 void run(const RenderArgs& a) {
   SceneOptions o;
@@ -31,6 +66,9 @@ void run(const RenderArgs& a) {
   o.texture = a.texture;
   if (o.control != "none") parseControlMeshStyle(o.control);  // reject typos before any work
   const Dataset dataset = loadDataset(a.dataset);
+  o.fur = furParameters(a, dataset.config);
+  if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
+    o.texture = dataset.config.resolve(*o.fur.colorTexture);
   std::filesystem::path surfacePath = a.surface;
   if (surfacePath.empty()) {
     if (!dataset.config.surface)
@@ -45,6 +83,7 @@ void run(const RenderArgs& a) {
     std::printf("%d frames, path %s, %lld triangles, level %d (%lld tetrahedra), %dx%d\n", a.frames,
                 toString(o.path), static_cast<long long>(surface.triangleCount()), scene.level(),
                 static_cast<long long>(scene.elementCount()), o.width, o.height);
+    if (scene.furShells() > 0) std::printf("  fur: %d shells drawn\n", scene.furShells());
     std::printf(
         "  %.1f frames/s; per frame: simulation %.2f ms, deformation %.2f ms, upload %.2f ms, draw "
         "%.2f ms\n",
@@ -64,12 +103,32 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("DATASET", a->dataset, "dataset (.json)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--surface", a->surface, "surface (default: the dataset's surface)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--path", a->path, "cpu, gpu-1pass or gpu-2pass (fur-cpu, fur-gpu: not yet)")
+  cmd->add_option("--path", a->path, "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu")
       ->capture_default_str();
   cmd->add_option("-o,--output", a->output, "image (.png)")->required();
   cmd->add_option("--texture", a->texture,
-                  "colour texture (PNG) for a surface with texture coordinates")
+                  "colour texture (PNG) for a surface with texture coordinates; on fur paths it "
+                  "colours the fur and its alpha 0 masks it (default there: the config's "
+                  "fur.color_texture)")
       ->check(CLI::ExistingFile);
+  const char* fur = "Fur (fur paths; default: the dataset config's fur section)";
+  cmd->add_option("--fur-shells", a->furShells, "most shells drawn")->group(fur);
+  cmd->add_option("--fur-min-shells", a->furMinShells, "fewest shells when adaptive")->group(fur);
+  cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
+      ->group(fur);
+  cmd->add_option("--fur-length", a->furLength, "fur length / bounding-box diagonal")->group(fur);
+  cmd->add_option("--fur-density", a->furDensity, "share of texels with a hair")->group(fur);
+  cmd->add_option("--fur-texture-size", a->furTextureSize, "fur texture edge in texels")
+      ->group(fur);
+  cmd->add_option("--fur-repeats", a->furRepeats, "fur texture tiles across the diagonal")
+      ->group(fur);
+  cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")->group(fur);
+  cmd->add_option("--fur-drag", a->furDrag, "seconds of velocity the tips trail by (0: static)")
+      ->group(fur);
+  cmd->add_option("--fur-lighting", a->furLighting, "velvet or kajiya-kay")->group(fur);
+  cmd->add_option("--fur-velvet", a->furVelvet, "highlight offset off the mirror direction")
+      ->group(fur);
+  cmd->add_option("--fur-fins", a->furFins, "silhouette fins (true/false)")->group(fur);
   cmd->add_option("--level", a->level, "bound and simulated level (default: finest)");
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();

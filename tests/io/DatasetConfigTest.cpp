@@ -116,6 +116,47 @@ TEST(DatasetConfig, InvalidFieldsNameTheirJsonPointer) {
                     "/levels/0/statistics/min_dihedral_deg");
 }
 
+TEST(DatasetConfig, FurSectionOptionalFieldsDefaultAndRoundTrip) {
+  const DatasetConfig plain = parseDatasetConfig(kConfig, "d.json", "/data");
+  EXPECT_EQ(plain.fur.lighting, FurLighting::Velvet);  // absent: defaults
+  EXPECT_FALSE(plain.fur.fins);
+  EXPECT_TRUE(plain.fur.adaptiveShells);
+  EXPECT_FALSE(plain.fur.colorTexture);
+  const std::string full = replaced(
+      kConfig, R"("seed": 42})",
+      R"("seed": 42, "texture_repeats": 3.5, "root_shade": 0.2, "drag": 0.1, "max_bend": 0.4,
+          "lighting": "kajiya-kay", "velvet": 0.7, "base_darkening": 0.3, "fins": true,
+          "adaptive_shells": false, "min_shells": 8, "color_texture": "mask.png"})");
+  test::ScratchDir dir;
+  const DatasetConfig c = parseDatasetConfig(full, "d.json", dir.path());
+  EXPECT_EQ(c.fur.textureRepeats, 3.5);
+  EXPECT_EQ(c.fur.rootShade, 0.2);
+  EXPECT_EQ(c.fur.drag, 0.1);
+  EXPECT_EQ(c.fur.maxBend, 0.4);
+  EXPECT_EQ(c.fur.lighting, FurLighting::KajiyaKay);
+  EXPECT_EQ(c.fur.velvet, 0.7);
+  EXPECT_EQ(c.fur.baseDarkening, 0.3);
+  EXPECT_TRUE(c.fur.fins);
+  EXPECT_FALSE(c.fur.adaptiveShells);
+  EXPECT_EQ(c.fur.minShells, 8);
+  EXPECT_EQ(c.fur.colorTexture, std::filesystem::path("mask.png"));
+  writeDatasetConfig(dir / "d.json", c);
+  const DatasetConfig back = readDatasetConfig(dir / "d.json");
+  EXPECT_EQ(back.fur.lighting, c.fur.lighting);
+  EXPECT_EQ(back.fur.minShells, c.fur.minShells);
+  EXPECT_EQ(back.fur.colorTexture, c.fur.colorTexture);
+  EXPECT_EQ(back.fur.maxBend, c.fur.maxBend);
+  EXPECT_EQ(back.fur.fins, c.fur.fins);
+  expectConfigError(replaced(kConfig, R"("seed": 42})", R"("seed": 42, "lighting": "shiny"})"),
+                    "/fur/lighting: unknown fur lighting 'shiny'");
+  expectConfigError(replaced(kConfig, R"("seed": 42})", R"("seed": 42, "min_shells": 25})"),
+                    "/fur/min_shells: must lie in [1, 24]");
+  expectConfigError(replaced(kConfig, R"("seed": 42})", R"("seed": 42, "fins": 1})"),
+                    "/fur/fins: must be true or false");
+  expectConfigError(replaced(kConfig, R"("seed": 42})", R"("seed": 42, "fur_length": 1})"),
+                    "/fur/fur_length: is not a known field");
+}
+
 TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
   expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
   expectConfigError("", "invalid JSON", 1);

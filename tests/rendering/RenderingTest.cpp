@@ -3,13 +3,16 @@
 // the deformed bounds a GPU-deforming mapper reports.
 #include <gtest/gtest.h>
 #include <vtkActor.h>
+#include <vtkCubeSource.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkPropPicker.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 
 #include <Eigen/Geometry>
@@ -18,12 +21,15 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "Shapes.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 
@@ -58,14 +64,20 @@ class Rendering : public ::testing::Test {
   }
 
   // The surface bound to level 1, seen from the iso preset at 256x256.
+  // With `before`, the frame before `control` (dynamic fur sees the motion).
   vtkSmartPointer<vtkImageData> render(RenderPath path, const Points3& control,
                                        const SurfaceMesh& surface, const SurfaceBinding& binding,
-                                       const std::string& texture) {
+                                       const std::string& texture, const FurParameters& fur = {},
+                                       const Points3* before = nullptr) {
     DeformableSurface deformable(dataset_.mesh, surface, binding, path, dataset_.config.material,
-                                 texture);
-    deformable.update(control);
+                                 texture, fur);
     OffscreenView view(256, 256);
-    view.renderer()->AddActor(deformable.actor());
+    deformable.addTo(view.renderer());
+    if (before) {
+      deformable.update(*before);
+      view.render();  // the GPU keeps the previous frame's positions when it draws one
+    }
+    deformable.update(control);
     const BoundingBox box = boundingBox(extractLevel(dataset_.mesh, 1).nodes);
     const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                               box.max.y(), box.min.z(), box.max.z()};
@@ -221,6 +233,158 @@ TEST_F(Rendering, PathsAgree) {
               100 * error, 100 * moved);
   EXPECT_LT(error, 0.03);
   EXPECT_GT(moved, 3 * error);  // the comparison does see a real change of shape
+}
+
+// Fur: small, dense and tall enough to see at 256x256; fixed shell count.
+FurParameters testFur() {
+  FurParameters f;
+  f.enabled = true;
+  f.shells = 8;
+  f.adaptiveShells = false;
+  f.length = 0.04;
+  f.textureSize = 64;
+  f.textureRepeats = 8;
+  return f;
+}
+
+TEST_F(Rendering, FurCpuAndFurGpuMatchTheirBaselinesAndEachOther) {
+  // Still: the last two frames the same (no motion; the constructor's first
+  // frame is at rest).
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  const auto cpu = render(RenderPath::FurCpu, control, surface_, binding_, "", testFur(), &control);
+  const auto gpu = render(RenderPath::FurGpu, control, surface_, binding_, "", testFur(), &control);
+  expectMatchesBaseline(cpu, "fur_cpu_static.png");
+  expectMatchesBaseline(gpu, "fur_gpu_static.png");
+  const double paths = difference(cpu, gpu);
+  const double fur = difference(cpu, render(RenderPath::Cpu, control));
+  std::printf("fur-cpu vs fur-gpu %.3f%%, fur vs no fur %.1f%%\n", 100 * paths, 100 * fur);
+  EXPECT_LT(paths, 0.01);
+  EXPECT_GT(fur, 0.05);  // the fur is there
+}
+
+TEST_F(Rendering, DynamicFurTrailsTheMotionOnBothPaths) {
+  const Points3 rest = dataset_.mesh.nodes;
+  const Points3 control = twisted(rest);
+  FurParameters fur = testFur();
+  fur.drag = 0.5;
+  for (RenderPath path : {RenderPath::FurCpu, RenderPath::FurGpu}) {
+    const auto moving = render(path, control, surface_, binding_, "", fur, &rest);
+    const auto still = render(path, control, surface_, binding_, "", fur, &control);
+    const double change = difference(moving, still);
+    std::printf("%s: after motion vs still %.2f%%\n", toString(path), 100 * change);
+    EXPECT_GT(change, 0.005) << toString(path);
+    expectMatchesBaseline(
+        moving, std::string(path == RenderPath::FurCpu ? "fur_cpu" : "fur_gpu") + "_motion.png");
+  }
+}
+
+TEST_F(Rendering, ColourTextureAlphaMasksTheFur) {
+  const SurfaceMesh textured = readObj(kData + "bunny_8k_tex.obj");
+  const SurfaceBinding binding = bindSurface(textured, dataset_.mesh, 1);
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  // The bundled texture with its alpha cleared in the left half (u < 0.5),
+  // and cleared everywhere.
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  reader->SetFileName((kData + "bunny_texture.png").c_str());
+  reader->Update();
+  auto masked = [&](bool half) {
+    vtkImageData* in = reader->GetOutput();
+    int dims[3];
+    in->GetDimensions(dims);
+    auto out = vtkSmartPointer<vtkImageData>::New();
+    out->SetDimensions(dims);
+    out->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+    const int channels = in->GetNumberOfScalarComponents();
+    for (int y = 0; y < dims[1]; ++y)
+      for (int x = 0; x < dims[0]; ++x) {
+        auto* src = static_cast<unsigned char*>(in->GetScalarPointer(x, y, 0));
+        auto* dst = static_cast<unsigned char*>(out->GetScalarPointer(x, y, 0));
+        for (int c = 0; c < 3; ++c) dst[c] = src[std::min(c, channels - 1)];
+        dst[3] = (!half || x < dims[0] / 2) ? 0 : 255;
+      }
+    const std::filesystem::path file =
+        std::filesystem::path(TETSKIN_ACTUAL_DIR) / (half ? "mask_half.png" : "mask_all.png");
+    write(out, file);
+    return file.string();
+  };
+  const std::string half = masked(true), all = masked(false);
+  FurParameters bald = testFur();
+  bald.density = 0;
+  const auto halfImage = render(RenderPath::FurCpu, control, textured, binding, half, testFur());
+  const auto allImage = render(RenderPath::FurCpu, control, textured, binding, all, testFur());
+  const auto noHair = render(RenderPath::FurCpu, control, textured, binding, "", bald);
+  const auto furry = render(RenderPath::FurCpu, control, textured, binding, "", testFur());
+  // Masked everywhere = no hair at all: only the darkened skin remains.
+  EXPECT_LT(difference(allImage, noHair), 0.001);
+  // Half masked: differs from both the bald and the fully furred bunny.
+  const double fromBald = difference(halfImage, noHair), fromFurry = difference(halfImage, furry);
+  std::printf("half mask vs bald %.1f%%, vs unmasked %.1f%%\n", 100 * fromBald, 100 * fromFurry);
+  EXPECT_GT(fromBald, 0.01);
+  EXPECT_GT(fromFurry, 0.01);
+  expectMatchesBaseline(halfImage, "fur_masked.png");
+  expectMatchesBaseline(render(RenderPath::FurGpu, control, textured, binding, half, testFur()),
+                        "fur_gpu_masked.png");
+}
+
+TEST_F(Rendering, FurClosesOverTheSeamsOfBoxTextureCoordinates) {
+  // A cube: every edge is a seam between two cube sides. The fur's vertices
+  // along a seam share their stitched normals, so the fur wraps round the
+  // edges; a "soup" cube (every face its own vertices, flat normals) leaves
+  // the fur open there.
+  // With hair on every texel, bare skin shows only where the fur opens.
+  auto draw = [&](const SurfaceMesh* cube, const std::string& name) {
+    OffscreenView view(256, 256);
+    auto source = vtkSmartPointer<vtkCubeSource>::New();
+    source->SetXLength(2);
+    source->SetYLength(2);
+    source->SetZLength(2);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(source->GetOutputPort());
+    auto skin = vtkSmartPointer<vtkActor>::New();
+    skin->SetMapper(mapper);
+    skin->GetProperty()->SetColor(0.1, 0.1, 0.6);
+    view.renderer()->AddActor(skin);
+    FurParameters fur = testFur();
+    fur.length = 0.08;
+    fur.density = 1;
+    fur.textureRepeats = 4;
+    std::unique_ptr<FurLayer> layer;
+    if (cube) {
+      layer = std::make_unique<FurLayer>(*cube, fur, dataset_.config.material, nullptr, nullptr);
+      layer->addTo(view.renderer());
+      layer->update(cube->positions, vertexNormals(cube->positions, cube->triangles));
+    }
+    const double bounds[6] = {-1.2, 1.2, -1.2, 1.2, -1.2, 1.2};
+    view.setCamera(CameraPreset::Iso, bounds);
+    view.render();
+    auto image = view.capture();
+    if (!name.empty()) expectMatchesBaseline(image, name);
+    return image;
+  };
+  // Pixels of the skin that the fur leaves unchanged.
+  const auto bare = draw(nullptr, "");
+  auto bareShare = [&](vtkImageData* furred) {
+    vtkDataArray* a = bare->GetPointData()->GetScalars();
+    vtkDataArray* b = furred->GetPointData()->GetScalars();
+    Index skin = 0, unchanged = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
+      const bool isSkin = a->GetComponent(i, 2) > a->GetComponent(i, 0) + 60;  // the blue cube
+      if (!isSkin) continue;
+      ++skin;
+      double largest = 0;
+      for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, std::abs(a->GetComponent(i, c) - b->GetComponent(i, c)));
+      unchanged += largest <= 24 ? 1 : 0;
+    }
+    return static_cast<double>(unchanged) / static_cast<double>(std::max<Index>(skin, 1));
+  };
+  const SurfaceMesh cube = test::box({-1, -1, -1}, {1, 1, 1});
+  const SurfaceMesh soup = test::soup(cube);
+  const double stitched = bareShare(draw(&cube, "fur_seam_cube.png"));
+  const double split = bareShare(draw(&soup, ""));
+  std::printf("bare skin: stitched %.2f%%, split %.2f%%\n", 100 * stitched, 100 * split);
+  EXPECT_LT(stitched, 0.002);
+  EXPECT_GT(split, stitched + 0.005);
 }
 
 TEST_F(Rendering, GpuMapperBoundsContainTheDeformedSurface) {

@@ -130,6 +130,16 @@ std::filesystem::path DatasetConfig::resolve(const std::filesystem::path& p) con
   return p.is_absolute() ? p : directory / p;
 }
 
+const char* toString(FurLighting lighting) {
+  return lighting == FurLighting::KajiyaKay ? "kajiya-kay" : "velvet";
+}
+
+FurLighting parseFurLighting(std::string_view name) {
+  if (name == "velvet") return FurLighting::Velvet;
+  if (name == "kajiya-kay") return FurLighting::KajiyaKay;
+  throw Error("unknown fur lighting '" + std::string(name) + "' (known: velvet, kajiya-kay)");
+}
+
 DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
                                  const std::filesystem::path& directory) {
   json root;
@@ -189,6 +199,30 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     config.fur.density = f.number("density", 0, 1);
     config.fur.textureSize = static_cast<int>(f.integer("texture_size", 8, 4096));
     config.fur.seed = static_cast<std::uint32_t>(f.integer("seed", 0, 0xffffffffLL));
+    FurParameters& p = config.fur;
+    if (f.has("texture_repeats")) p.textureRepeats = f.number("texture_repeats", 0, 1000, true);
+    if (f.has("root_shade")) p.rootShade = f.number("root_shade", 0, 1);
+    if (f.has("drag")) p.drag = f.number("drag", 0, 10);
+    if (f.has("max_bend")) p.maxBend = f.number("max_bend", 0, 1);
+    if (f.has("lighting")) {
+      try {
+        p.lighting = parseFurLighting(f.string("lighting"));
+      } catch (const Error& e) {
+        f.fail("/fur/lighting", e.what());
+      }
+    }
+    if (f.has("velvet")) p.velvet = f.number("velvet", 0, 1);
+    if (f.has("base_darkening")) p.baseDarkening = f.number("base_darkening", 0, 1);
+    for (auto [key, flag] : {std::pair{"fins", &p.fins}, {"adaptive_shells", &p.adaptiveShells}})
+      if (f.has(key)) {
+        if (!f.get(key).is_boolean()) f.fail(f.where(key), "must be true or false");
+        *flag = f.get(key).get<bool>();
+      }
+    if (f.has("min_shells")) p.minShells = static_cast<int>(f.integer("min_shells", 1, p.shells));
+    if (auto t = f.optionalString("color_texture")) p.colorTexture = *t;
+    for (const char* key : {"texture_repeats", "root_shade", "drag", "max_bend", "lighting",
+                            "velvet", "base_darkening", "fins", "adaptive_shells", "min_shells"})
+      f.optional(key);
     f.rejectUnknown();
   }
   top.optional("fur");
@@ -236,7 +270,18 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
                  {"length", config.fur.length},
                  {"density", config.fur.density},
                  {"texture_size", config.fur.textureSize},
-                 {"seed", config.fur.seed}};
+                 {"seed", config.fur.seed},
+                 {"texture_repeats", config.fur.textureRepeats},
+                 {"root_shade", config.fur.rootShade},
+                 {"drag", config.fur.drag},
+                 {"max_bend", config.fur.maxBend},
+                 {"lighting", toString(config.fur.lighting)},
+                 {"velvet", config.fur.velvet},
+                 {"base_darkening", config.fur.baseDarkening},
+                 {"fins", config.fur.fins},
+                 {"adaptive_shells", config.fur.adaptiveShells},
+                 {"min_shells", config.fur.minShells}};
+  if (config.fur.colorTexture) root["fur"]["color_texture"] = config.fur.colorTexture->string();
   root["provenance"] = config.provenance;
   writeTextAtomically(path, [&](std::ostream& out) { out << root.dump(2) << '\n'; });
 }

@@ -10,6 +10,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderer.h>
 #include <vtkTexture.h>
 
 #include <chrono>
@@ -57,24 +58,42 @@ struct DeformableSurface::Impl {
   std::vector<float> controlPositionsF, controlNormalsF;
   double bounds[6] = {0, -1, 0, -1, 0, -1};
   double maxDistance = 0;
+  std::unique_ptr<FurLayer> fur;
 };
+
+namespace {
+
+vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& file) {
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  if (!std::filesystem::is_regular_file(file) || !reader->CanReadFile(file.c_str()))
+    throw Error(file.string(), 0, "is not a readable PNG image");
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  if (image->GetScalarType() != VTK_UNSIGNED_CHAR || image->GetNumberOfScalarComponents() < 3)
+    throw Error(file.string(), 0, "must be an 8-bit RGB or RGBA image");
+  return image;
+}
+
+}  // namespace
 
 DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
                                      const SurfaceMesh& restSurface, const SurfaceBinding& binding,
                                      RenderPath path, const Material& material,
-                                     const std::filesystem::path& texture)
+                                     const std::filesystem::path& texture, const FurParameters& fur)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.path = path;
-  if (binding.method == BindingMethod::Embed && path != RenderPath::Cpu)
+  const RenderPath skin = skinPath(path);
+  if (binding.method == BindingMethod::Embed && skin != RenderPath::Cpu)
     throw Error("the gpu paths draw triangle bindings (closest or seed), not embed");
-  if (binding.offset != OffsetMode::Normal && path != RenderPath::Cpu)
+  if (binding.offset != OffsetMode::Normal && skin != RenderPath::Cpu)
     throw Error("the gpu paths use the normal offset; bind with --offset normal");
   BoundSurface bound{restSurface, binding, ""};
   bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
   s.polyData = bindingToPolyData(bound);
   s.maxDistance = binding.distance.cwiseAbs().maxCoeff();
-  if (path == RenderPath::Cpu) {
+  if (skin == RenderPath::Cpu) {
     s.deformer = std::make_unique<SurfaceDeformer>(restSurface, binding, dataset.nodes);
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(s.polyData);
@@ -88,7 +107,7 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     s.boundaryAdjacency = vertexTriangleAdjacency(s.boundary, dataset.nodes.rows());
     s.boundaryScratch.resize(s.boundary.rows(), 3);
     s.controlNormals.resize(dataset.nodes.rows(), 3);
-    if (path == RenderPath::Gpu1Pass) {
+    if (skin == RenderPath::Gpu1Pass) {
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
       s.gpuMapper->SetInputData(s.polyData);
       s.gpuMapper->ScalarVisibilityOff();
@@ -115,16 +134,23 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     }
   }
   applyMaterial(s.actor, material);
+  vtkSmartPointer<vtkImageData> image;
   if (!texture.empty()) {
     if (!restSurface.hasTexcoords())
       throw Error(texture.string(), 0, "the surface has no texture coordinates to apply it with");
-    auto reader = vtkSmartPointer<vtkPNGReader>::New();
-    if (!std::filesystem::is_regular_file(texture) || !reader->CanReadFile(texture.c_str()))
-      throw Error(texture.string(), 0, "is not a readable PNG image");
-    reader->SetFileName(texture.c_str());
-    reader->Update();
+    image = readPng(texture);
+  }
+  if (hasFur(path)) {
+    // The skin under the fur: darker, its highlight weaker and broader.
+    vtkProperty* p = s.actor->GetProperty();
+    p->SetColor(material.color[0] * fur.baseDarkening, material.color[1] * fur.baseDarkening,
+                material.color[2] * fur.baseDarkening);
+    p->SetSpecular(0.3 * material.specular);
+    p->SetSpecularPower(std::max(1.0, material.shininess / 4));
+    s.fur = std::make_unique<FurLayer>(restSurface, fur, material, image, s.gpu2Mapper);
+  } else if (image) {
     auto vtkTex = vtkSmartPointer<vtkTexture>::New();
-    vtkTex->SetInputConnection(reader->GetOutputPort());
+    vtkTex->SetInputData(image);
     vtkTex->InterpolateOn();
     vtkTex->RepeatOn();
     s.actor->SetTexture(vtkTex);
@@ -147,13 +173,24 @@ vtkPolyData* DeformableSurface::polyData() const {
 const double* DeformableSurface::bounds() const {
   return impl_->bounds;
 }
+FurLayer* DeformableSurface::fur() const {
+  return impl_->fur.get();
+}
+void DeformableSurface::addTo(vtkRenderer* renderer) {
+  renderer->AddActor(impl_->actor);
+  if (impl_->fur) impl_->fur->addTo(renderer);
+}
+void DeformableSurface::setFrameSeconds(double seconds) {
+  if (impl_->fur) impl_->fur->setFrameSeconds(seconds);
+}
 
 FrameTimes DeformableSurface::update(const Points3& control) {
   Impl& s = *impl_;
   FrameTimes times;
   auto start = std::chrono::steady_clock::now();
-  if (s.path == RenderPath::Cpu) {
+  if (s.deformer) {
     s.deformer->deform(control, s.positions, s.normals);
+    if (s.fur) s.fur->update(s.positions, s.normals);
     times.deformSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     vtkPoints* points = s.polyData->GetPoints();
@@ -169,7 +206,7 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     return times;
   }
   s.controlPositionsF.assign(control.data(), control.data() + control.size());
-  if (s.path == RenderPath::Gpu1Pass) {
+  if (s.gpuMapper) {
     computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
                          s.controlNormals);
     s.controlNormalsF.assign(s.controlNormals.data(),

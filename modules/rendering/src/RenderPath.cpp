@@ -9,8 +9,8 @@ RenderPath parseRenderPath(std::string_view name) {
   if (name == "cpu") return RenderPath::Cpu;
   if (name == "gpu-1pass") return RenderPath::Gpu1Pass;
   if (name == "gpu-2pass") return RenderPath::Gpu2Pass;
-  if (name == "fur-cpu" || name == "fur-gpu")
-    throw Error("render path '" + std::string(name) + "' is not available in this build yet");
+  if (name == "fur-cpu") return RenderPath::FurCpu;
+  if (name == "fur-gpu") return RenderPath::FurGpu;
   throw Error("unknown render path '" + std::string(name) +
               "' (known: cpu, gpu-1pass, gpu-2pass, fur-cpu, fur-gpu)");
 }
@@ -23,8 +23,22 @@ const char* toString(RenderPath path) {
       return "gpu-1pass";
     case RenderPath::Gpu2Pass:
       return "gpu-2pass";
+    case RenderPath::FurCpu:
+      return "fur-cpu";
+    case RenderPath::FurGpu:
+      return "fur-gpu";
   }
   return "?";
+}
+
+bool hasFur(RenderPath path) {
+  return path == RenderPath::FurCpu || path == RenderPath::FurGpu;
+}
+
+RenderPath skinPath(RenderPath path) {
+  if (path == RenderPath::FurCpu) return RenderPath::Cpu;
+  if (path == RenderPath::FurGpu) return RenderPath::Gpu2Pass;
+  return path;
 }
 
 }  // namespace tetskin

@@ -9,6 +9,8 @@
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
 
+#include "ShaderInjection.h"
+
 vtkTetSkinBufferMapper::vtkTetSkinBufferMapper(const char* declarations, const char* implementation,
                                                const char* firstSampler, const char* secondSampler)
     : Declarations(declarations),
@@ -75,17 +77,10 @@ void vtkTetSkinBufferMapper::ReleaseGraphicsResources(vtkWindow* window) {
 
 void vtkTetSkinBufferMapper::ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders,
                                                  vtkRenderer* ren, vtkActor* act) {
-  std::string vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "//VTK::CustomUniforms::Dec", this->Declarations);
-  vtkShaderProgram::Substitute(vs, "//VTK::CustomBegin::Impl", this->Implementation);
-  shaders[vtkShader::Vertex]->SetSource(vs);
+  tetskin::detail::insertVertexCode(shaders[vtkShader::Vertex], this->Declarations,
+                                    this->Implementation);
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
-  // After VTK's own substitutions: use the deformed position and normal.
-  vs = shaders[vtkShader::Vertex]->GetSource();
-  vtkShaderProgram::Substitute(vs, "* vertexMC", "* deformedMC", true);
-  vtkShaderProgram::Substitute(vs, "normalMatrix * normalMC", "normalMatrix * deformedNormalMC",
-                               true);
-  shaders[vtkShader::Vertex]->SetSource(vs);
+  tetskin::detail::useDeformedVertex(shaders[vtkShader::Vertex]);
 }
 
 void vtkTetSkinBufferMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,

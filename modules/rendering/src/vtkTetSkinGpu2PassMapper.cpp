@@ -64,7 +64,10 @@ GLuint compileCompute(const char* source, std::string& log) {
 }  // namespace
 
 struct vtkTetSkinGpu2PassMapper::GpuState {
-  StorageBuffer control, ids, weights, triangles, faces, offsets, ring;
+  StorageBuffer control, previousControl, ids, weights, triangles, faces, offsets, ring;
+  vtkNew<vtkOpenGLBufferObject> previous;
+  vtkNew<vtkTextureObject> previousTexture;
+  GLsizeiptr previousBytes = 0;
   GLuint positions = 0, faceNormals = 0, vertexNormals = 0;  // programs
   bool failed = false;
 };
@@ -110,11 +113,15 @@ void vtkTetSkinGpu2PassMapper::SetSurface(const std::vector<int>& controlIds,
 }
 
 void vtkTetSkinGpu2PassMapper::SetControlPositions(const float* positions, vtkIdType nodes) {
+  // The state before this one (the same on the first call): dynamic fur's velocities.
+  const bool first = this->Control.empty() || this->Nodes != nodes;
   this->Nodes = nodes;
+  if (!first) this->PreviousControl.swap(this->Control);
   this->Control.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
   for (vtkIdType v = 0; v < nodes; ++v)
     for (int k = 0; k < 3; ++k)
       this->Control[static_cast<std::size_t>(4 * v + k)] = positions[3 * v + k];
+  if (first) this->PreviousControl = this->Control;
   this->ControlChanged = true;
   this->Modified();
 }
@@ -149,10 +156,12 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
     this->UploadTexels(1, zeros);
     this->SurfaceChanged = false;
   }
+  const bool newFrame = this->ControlChanged;
   if (this->ControlChanged) {
     g.control.upload(this->Control.data(), this->Control.size() * sizeof(float));
     this->ControlChanged = false;
   }
+  if (this->KeepPrevious && newFrame) this->ComputePreviousPositions(window);
   const GLuint groups = static_cast<GLuint>((this->Vertices + 63) / 64);
   const GLuint faceGroups = static_cast<GLuint>((this->TriangleCount + 63) / 64);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.control.id);
@@ -184,6 +193,43 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   window->GetShaderCache()->ReleaseCurrentShader();
 }
 
+void vtkTetSkinGpu2PassMapper::ComputePreviousPositions(vtkOpenGLRenderWindow* window) {
+  GpuState& g = *this->Gpu;
+  const auto bytes = static_cast<GLsizeiptr>(4 * this->Vertices * sizeof(float));
+  if (!g.previous->GetHandle() || g.previousBytes != bytes) {
+    g.previous->Upload(std::vector<float>(static_cast<std::size_t>(4 * this->Vertices), 0.0f),
+                       vtkOpenGLBufferObject::TextureBuffer);
+    g.previousBytes = bytes;
+    g.previousTexture->SetContext(window);
+    g.previousTexture->CreateTextureBuffer(static_cast<unsigned int>(this->Vertices), 4, VTK_FLOAT,
+                                           g.previous);
+  }
+  // The positions pass again, over the previous control state.
+  g.previousControl.upload(this->PreviousControl.data(),
+                           this->PreviousControl.size() * sizeof(float));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.previousControl.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, static_cast<GLuint>(g.previous->GetHandle()));
+  glUseProgram(g.positions);
+  glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
+  glDispatchCompute(static_cast<GLuint>((this->Vertices + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void vtkTetSkinGpu2PassMapper::SetKeepPreviousPositions(bool keep) {
+  this->KeepPrevious = keep;
+}
+vtkTextureObject* vtkTetSkinGpu2PassMapper::DeformedPositions() {
+  return this->Texture(0);
+}
+vtkTextureObject* vtkTetSkinGpu2PassMapper::DeformedNormals() {
+  return this->Texture(1);
+}
+vtkTextureObject* vtkTetSkinGpu2PassMapper::PreviousPositions() {
+  return this->Gpu->previousTexture;
+}
+
 std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWindow* window) {
   std::vector<float> out(static_cast<std::size_t>(4 * this->Vertices));
   if (out.empty() || !this->Buffer(0)->GetHandle()) return out;
@@ -197,13 +243,16 @@ std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWind
 
 void vtkTetSkinGpu2PassMapper::ReleaseGraphicsResources(vtkWindow* window) {
   GpuState& g = *this->Gpu;
-  for (StorageBuffer* b :
-       {&g.control, &g.ids, &g.weights, &g.triangles, &g.faces, &g.offsets, &g.ring})
+  for (StorageBuffer* b : {&g.control, &g.previousControl, &g.ids, &g.weights, &g.triangles,
+                           &g.faces, &g.offsets, &g.ring})
     b->release();
   for (GLuint* p : {&g.positions, &g.faceNormals, &g.vertexNormals}) {
     if (*p) glDeleteProgram(*p);
     *p = 0;
   }
+  g.previousTexture->ReleaseGraphicsResources(window);
+  g.previous->ReleaseGraphicsResources();
+  g.previousBytes = 0;
   this->SurfaceChanged = this->ControlChanged = true;
   this->Superclass::ReleaseGraphicsResources(window);
 }

@@ -13,10 +13,12 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/DatasetConfig.h"
+#include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/RenderPath.h"
 
 class vtkActor;
 class vtkPolyData;
+class vtkRenderer;
 
 namespace tetskin {
 
@@ -30,14 +32,24 @@ class DeformableSurface {
   // `restSurface` and `binding` as from tetskin bind (triangle methods);
   // `dataset` gives the rest nodes (dataset numbering). A `texture` (PNG)
   // colours the surface through its texture coordinates (the report's
-  // "BunnyTex"); throws Error when the surface has none or the file is bad.
+  // "BunnyTex"); on the fur paths it colours and masks the fur instead
+  // (alpha 0: no fur) and the skin is drawn darkened, with a weaker, broader
+  // highlight. Throws Error when the surface has no texture coordinates or
+  // the file is bad.
   DeformableSurface(const MultiLevelTetMesh& dataset, const SurfaceMesh& restSurface,
                     const SurfaceBinding& binding, RenderPath path, const Material& material,
-                    const std::filesystem::path& texture = {});
+                    const std::filesystem::path& texture = {}, const FurParameters& fur = {});
   ~DeformableSurface();
 
   RenderPath path() const;
+  // The skin (what picking hits).
   vtkActor* actor() const;
+  // Adds the skin and, on fur paths, the fur after it.
+  void addTo(vtkRenderer* renderer);
+  // The fur of the fur paths, else null.
+  FurLayer* fur() const;
+  // Seconds between updates, for the velocities of dynamic fur (default 1/60).
+  void setFrameSeconds(double seconds);
   // The polydata VTK draws (deformed on the cpu path, at rest on gpu paths).
   vtkPolyData* polyData() const;
   // Control state in the dataset's numbering.

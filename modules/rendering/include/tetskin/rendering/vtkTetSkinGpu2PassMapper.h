@@ -12,6 +12,7 @@
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 
 class vtkRenderWindow;
+class vtkTextureObject;
 
 class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
  public:
@@ -31,6 +32,16 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
+  // What later draws of the same frame (fur-gpu) read: texture buffers of
+  // xyzw per vertex, valid after this mapper rendered. With
+  // KeepPreviousPositions on, PreviousPositions() holds the positions of the
+  // control state set before the last one (equal on the first), so velocities
+  // are those between the last two SetControlPositions, as on the CPU.
+  void SetKeepPreviousPositions(bool keep);
+  vtkTextureObject* DeformedPositions();
+  vtkTextureObject* DeformedNormals();
+  vtkTextureObject* PreviousPositions();
+
  protected:
   vtkTetSkinGpu2PassMapper();
   ~vtkTetSkinGpu2PassMapper() override;
@@ -38,6 +49,7 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
   void PrepareBuffers(vtkOpenGLRenderWindow* window) override;
 
  private:
+  void ComputePreviousPositions(vtkOpenGLRenderWindow* window);
   vtkTetSkinGpu2PassMapper(const vtkTetSkinGpu2PassMapper&) = delete;
   void operator=(const vtkTetSkinGpu2PassMapper&) = delete;
 
@@ -48,4 +60,6 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
   std::vector<float> Control;  // xyz_ per node
   vtkIdType Vertices = 0, TriangleCount = 0, Nodes = 0;
   bool SurfaceChanged = false, ControlChanged = false;
+  bool KeepPrevious = false;
+  std::vector<float> PreviousControl;  // xyz_ per node, the state before Control
 };
