@@ -15,7 +15,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
-#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -53,39 +53,25 @@ void run(SimulateArgs& a) {
         std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
   }
 
-  std::filesystem::path pvd = a.output;
-  if (pvd.extension() != ".pvd") pvd += ".pvd";
-  const std::filesystem::path directory = std::filesystem::absolute(pvd).parent_path();
-  const std::string framesName = pvd.stem().string() + "_frames";
-  std::filesystem::create_directories(directory / framesName);
-  PvdSeries series(pvd);
+  RunRecorder recorder(a.output);
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
   Points3 controlAll = dataset.mesh.nodes, surfacePositions, surfaceNormals;
 
-  auto writeFrame = [&](Index frame) {
+  auto writeFrame = [&] {
     const SimulationState s = sim.state();
-    char name[64];
-    std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frame));
-    writeVtu(
-        directory / framesName / name,
-        simulationFrame(sim.restMesh(), s.positions, s.velocities, sim.vonMisesStress(), level));
-    series.add(s.time, 0, framesName + "/" + name);
     if (deformer) {
       controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
       deformer->deform(controlAll, surfacePositions, surfaceNormals);
       // The deformer keeps the rest shape: the frame's geometry can go in place.
       bound->surface.positions = surfacePositions;
       bound->surface.normals = surfaceNormals;
-      std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frame));
-      writeBinding(directory / framesName / name, *bound);
-      series.add(s.time, 1, framesName + "/" + name);
     }
-    series.write();  // after every frame: a stopped run leaves a valid series
+    recorder.addFrame(s.time, sim.restMesh(), s.positions, s.velocities, sim.vonMisesStress(),
+                      level, deformer ? bound.get() : nullptr);
   };
 
   Progress progress(a.quiet);
-  Index frame = 0;
-  writeFrame(frame++);
+  writeFrame();
   double stepSeconds = 0;
   long iterations = 0;
   for (int i = 0; i < a.steps; ++i) {
@@ -94,7 +80,7 @@ void run(SimulateArgs& a) {
     const StepStats stats = sim.step();
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     iterations += stats.iterations;
-    if ((i + 1) % a.every == 0) writeFrame(frame++);
+    if ((i + 1) % a.every == 0) writeFrame();
     progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
   }
   const Energies e = sim.energies();
@@ -106,7 +92,8 @@ void run(SimulateArgs& a) {
               a.steps / std::max(stepSeconds, 1e-12),
               static_cast<double>(iterations) / std::max(a.steps, 1));
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
-  std::printf("wrote %s (%lld frames)\n", pvd.c_str(), static_cast<long long>(frame));
+  std::printf("wrote %s (%lld frames)\n", recorder.path().c_str(),
+              static_cast<long long>(recorder.frames()));
 }
 
 }  // namespace

@@ -8,6 +8,15 @@ namespace {
 
 const Eigen::Vector3d O(0, 0, 0), X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
 
+TEST(Geometry, NearestPointIsTheClosestRowAndTheFirstOnTies) {
+  Points3 p(4, 3);
+  p << 0, 0, 0, 1, 0, 0, 0, 2, 0, 1, 0, 0;
+  EXPECT_EQ(nearestPoint(p, {0.9, 0.1, 0}), 1);  // row 3 is as near: the lower wins
+  EXPECT_EQ(nearestPoint(p, {0, 1.5, 0}), 2);
+  EXPECT_EQ(nearestPoint(p, {-5, 0, 0}), 0);
+  EXPECT_EQ(nearestPoint(Points3(), {0, 0, 0}), -1);
+}
+
 TEST(Geometry, UnitTetrahedronHasVolumeOneSixthAndSignFollowsOrientation) {
   EXPECT_DOUBLE_EQ(signedTetVolume(O, X, Y, Z), 1.0 / 6.0);
   EXPECT_DOUBLE_EQ(signedTetVolume(O, Y, X, Z), -1.0 / 6.0);

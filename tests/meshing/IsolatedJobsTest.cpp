@@ -3,6 +3,8 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
+
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/IsolatedJobs.h"
@@ -50,6 +52,25 @@ TEST(IsolatedJobs, FailuresOfOneJobDoNotStopTheOthers) {
   ASSERT_TRUE(results[6].ok) << results[6].error;
   EXPECT_EQ(results[6].mesh.nodeCount(), 100000);
   EXPECT_EQ(results[6].mesh.elementCount(), 50000);
+}
+
+}  // namespace
+}  // namespace tetskin
+
+namespace tetskin {
+namespace {
+
+TEST(IsolatedJobs, CancellingKillsTheRunningJobsAtOnce) {
+  const std::vector<MeshJob> jobs(4, []() -> TetMesh {
+    ::sleep(30);
+    return {};
+  });
+  const auto start = std::chrono::steady_clock::now();
+  int polls = 0;
+  EXPECT_THROW(runIsolated(jobs, 2, 60, {}, [&] { return ++polls > 3; }), Cancelled);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 10.0);  // not the jobs' 30 s
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(ModelBuilder, BundledBunnyGivesTheRequestedLevels) {
   options.jobs = 2;
   std::vector<std::string> log;
   const BuildResult r =
-      buildDataset(inputs, options, {[&](const std::string& l) { log.push_back(l); }, {}});
+      buildDataset(inputs, options, {[&](const std::string& l) { log.push_back(l); }, {}, {}});
   const Dataset& d = r.dataset;
   ASSERT_EQ(d.mesh.levelCount(), 3);
   const double targets[3] = {600, 2683.28, 12000};
@@ -76,7 +76,7 @@ TEST(ModelBuilder, UnrepairableInputsAreSkippedOrReported) {
   options.levels = 1;
   const BuildResult r =
       buildDataset({{"holey", holey, ""}, {"box", test::box({0, 0, 0}, {1, 1, 1}), ""}}, options,
-                   {[&](const std::string& l) { log.push_back(l); }, {}});
+                   {[&](const std::string& l) { log.push_back(l); }, {}, {}});
   EXPECT_EQ(r.dataset.mesh.levelCount(), 1);
   EXPECT_EQ(r.dataset.config.levels[0].source.input, "box");
   bool skipped = false;

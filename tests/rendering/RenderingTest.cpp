@@ -7,8 +7,6 @@
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
-#include <vtkPNGReader.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPropPicker.h>
@@ -21,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "ImageCompare.h"
 #include "Shapes.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
@@ -32,6 +31,7 @@
 #include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 namespace {
@@ -86,45 +86,14 @@ class Rendering : public ::testing::Test {
     return view.capture();
   }
 
-  // Share of pixels whose largest channel difference exceeds 24 of 255
-  // (vtkImageDifference's default tolerance would pass very different images).
   static double difference(vtkImageData* a, vtkImageData* b) {
-    EXPECT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
-    vtkDataArray* pa = a->GetPointData()->GetScalars();
-    vtkDataArray* pb = b->GetPointData()->GetScalars();
-    const int channels = std::min(3, pa->GetNumberOfComponents());
-    Index differing = 0;
-    for (vtkIdType i = 0; i < pa->GetNumberOfTuples(); ++i) {
-      double largest = 0;
-      for (int c = 0; c < channels; ++c)
-        largest = std::max(largest, std::abs(pa->GetComponent(i, c) - pb->GetComponent(i, c)));
-      differing += largest > 24 ? 1 : 0;
-    }
-    return static_cast<double>(differing) / static_cast<double>(pa->GetNumberOfTuples());
+    return test::differingPixelShare(a, b);
   }
-
   static void write(vtkImageData* image, const std::filesystem::path& path) {
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(image);
-    writer->Write();
+    writePng(path, image);
   }
-
-  // Compares with the committed baseline; TETSKIN_UPDATE_BASELINES=1 rewrites it.
   static void expectMatchesBaseline(vtkImageData* image, const std::string& name) {
-    const std::filesystem::path baseline = std::filesystem::path(TETSKIN_BASELINE_DIR) / name;
-    const std::filesystem::path actual = std::filesystem::path(TETSKIN_ACTUAL_DIR) / name;
-    write(image, actual);
-    if (std::getenv("TETSKIN_UPDATE_BASELINES")) write(image, baseline);
-    ASSERT_TRUE(std::filesystem::exists(baseline))
-        << "no baseline " << baseline << "; the rendered image is " << actual
-        << " (TETSKIN_UPDATE_BASELINES=1 makes it the baseline)";
-    auto reader = vtkSmartPointer<vtkPNGReader>::New();
-    reader->SetFileName(baseline.c_str());
-    reader->Update();
-    const double error = difference(image, reader->GetOutput());
-    EXPECT_LT(error, 0.002) << name << " differs from its baseline in " << 100 * error
-                            << "% of the pixels; see " << actual;
+    test::expectMatchesBaseline(image, TETSKIN_BASELINE_DIR, TETSKIN_ACTUAL_DIR, name);
   }
 
   Dataset dataset_;
@@ -284,11 +253,9 @@ TEST_F(Rendering, ColourTextureAlphaMasksTheFur) {
   const Points3 control = twisted(dataset_.mesh.nodes);
   // The bundled texture with its alpha cleared in the left half (u < 0.5),
   // and cleared everywhere.
-  auto reader = vtkSmartPointer<vtkPNGReader>::New();
-  reader->SetFileName((kData + "bunny_texture.png").c_str());
-  reader->Update();
+  const vtkSmartPointer<vtkImageData> texture = readPng(kData + "bunny_texture.png");
   auto masked = [&](bool half) {
-    vtkImageData* in = reader->GetOutput();
+    vtkImageData* in = texture;
     int dims[3];
     in->GetDimensions(dims);
     auto out = vtkSmartPointer<vtkImageData>::New();

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 
 namespace tetskin {
 
@@ -39,6 +40,19 @@ Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& 
   const double length = n.norm();
   if (!(length > 0.0) || !std::isfinite(length)) return Eigen::Vector3d::Zero();
   return n / length;
+}
+
+Index nearestPoint(const Points3& points, const Eigen::Vector3d& query) {
+  Index best = -1;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < points.rows(); ++i) {
+    const double d = (points.row(i).transpose() - query).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = i;
+    }
+  }
+  return best;
 }
 
 }  // namespace tetskin

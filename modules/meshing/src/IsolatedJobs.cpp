@@ -115,7 +115,8 @@ struct Running {
 
 std::vector<IsolatedResult> runIsolated(
     const std::vector<MeshJob>& jobs, int parallel, double timeoutSeconds,
-    const std::function<void(std::size_t, const IsolatedResult&)>& onDone) {
+    const std::function<void(std::size_t, const IsolatedResult&)>& onDone,
+    const std::function<bool()>& cancelled) {
   std::vector<IsolatedResult> results(jobs.size());
   std::vector<Running> running;
   std::size_t next = 0;
@@ -129,6 +130,16 @@ std::vector<IsolatedResult> runIsolated(
   };
 
   while (next < jobs.size() || !running.empty()) {
+    if (cancelled && cancelled()) {
+      for (Running& r : running) {
+        ::kill(r.pid, SIGKILL);
+        int status = 0;
+        while (::waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        ::close(r.fd);
+      }
+      throw Cancelled();
+    }
     while (next < jobs.size() && static_cast<int>(running.size()) < parallel) {
       int fds[2];
       if (::pipe(fds) != 0) throw Error("cannot create a pipe for the mesher process");

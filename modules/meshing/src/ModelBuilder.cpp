@@ -139,6 +139,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   if (events.progress) events.progress("repair", 0, inputs.size());
   const std::vector<RepairedInput> prepared = prepareInputs(std::move(inputs), options, events);
   endStage(options.decimate ? "repair + decimation" : "repair");
+  if (events.cancelled && events.cancelled()) throw Cancelled();
   const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
 
   std::vector<MeshJob> jobs;
@@ -157,13 +158,15 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   std::size_t done = 0;
   if (events.progress) events.progress("meshing", 0, specs.size());
   const std::vector<IsolatedResult> meshed = runIsolated(
-      jobs, options.jobs, options.timeoutSeconds, [&](std::size_t i, const IsolatedResult& r) {
+      jobs, options.jobs, options.timeoutSeconds,
+      [&](std::size_t i, const IsolatedResult& r) {
         ++done;
         if (events.progress) events.progress("meshing", done, specs.size());
         if (!r.ok)
           say(events, "candidate " + prepared[specs[i].input].name + " " + specs[i].label +
                           " failed: " + r.error);
-      });
+      },
+      events.cancelled);
   endStage("meshing");
   result.meshingSeconds = result.stageSeconds.back().second;
 

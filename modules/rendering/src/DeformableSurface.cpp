@@ -4,7 +4,6 @@
 #include <vtkActor.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
-#include <vtkPNGReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -23,6 +22,7 @@
 #include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
 #include "tetskin/spatial/Aabb.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 namespace {
@@ -60,22 +60,6 @@ struct DeformableSurface::Impl {
   double maxDistance = 0;
   std::unique_ptr<FurLayer> fur;
 };
-
-namespace {
-
-vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& file) {
-  auto reader = vtkSmartPointer<vtkPNGReader>::New();
-  if (!std::filesystem::is_regular_file(file) || !reader->CanReadFile(file.c_str()))
-    throw Error(file.string(), 0, "is not a readable PNG image");
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  if (image->GetScalarType() != VTK_UNSIGNED_CHAR || image->GetNumberOfScalarComponents() < 3)
-    throw Error(file.string(), 0, "must be an 8-bit RGB or RGBA image");
-  return image;
-}
-
-}  // namespace
 
 DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
                                      const SurfaceMesh& restSurface, const SurfaceBinding& binding,

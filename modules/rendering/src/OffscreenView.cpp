@@ -4,7 +4,6 @@
 #include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
-#include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
@@ -13,7 +12,7 @@
 #include <sstream>
 
 #include "tetskin/core/Error.h"
-#include "tetskin/io/AtomicFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 
@@ -39,9 +38,7 @@ OffscreenView::OffscreenView(int width, int height) : impl_(std::make_unique<Imp
   impl_->window->SetMultiSamples(0);  // identical images on every run
   impl_->window->SetSize(width, height);
   impl_->window->AddRenderer(impl_->renderer);
-  impl_->renderer->SetBackground(0.12, 0.13, 0.15);
-  impl_->renderer->SetBackground2(0.32, 0.34, 0.40);
-  impl_->renderer->GradientBackgroundOn();
+  styleBackground(impl_->renderer);
 }
 
 OffscreenView::~OffscreenView() = default;
@@ -53,7 +50,11 @@ vtkRenderWindow* OffscreenView::window() const {
 }
 
 void OffscreenView::setCamera(CameraPreset preset, const double bounds[6]) {
-  vtkCamera* camera = impl_->renderer->GetActiveCamera();
+  placeCamera(impl_->renderer, preset, bounds);
+}
+
+void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6]) {
+  vtkCamera* camera = renderer->GetActiveCamera();
   const double center[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
                             (bounds[4] + bounds[5]) / 2};
   double direction[3] = {0, 0, 1};
@@ -74,7 +75,13 @@ void OffscreenView::setCamera(CameraPreset preset, const double bounds[6]) {
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
   camera->SetViewUp(up);
-  impl_->renderer->ResetCamera(const_cast<double*>(bounds));
+  renderer->ResetCamera(const_cast<double*>(bounds));
+}
+
+void styleBackground(vtkRenderer* renderer) {
+  renderer->SetBackground(0.12, 0.13, 0.15);
+  renderer->SetBackground2(0.32, 0.34, 0.40);
+  renderer->GradientBackgroundOn();
 }
 
 void OffscreenView::render() {
@@ -92,13 +99,7 @@ vtkSmartPointer<vtkImageData> OffscreenView::capture() {
 }
 
 void OffscreenView::writePng(const std::filesystem::path& path) {
-  vtkSmartPointer<vtkImageData> image = capture();
-  writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(tmp.c_str());
-    writer->SetInputData(image);
-    writer->Write();
-  });
+  tetskin::writePng(path, capture());
 }
 
 std::string OffscreenView::glRenderer() {

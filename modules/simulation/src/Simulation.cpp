@@ -107,6 +107,11 @@ void Simulation::setExternalForces(const Points3& forces) {
   external_ = flatten(forces);
 }
 
+Points3 Simulation::externalForces() const {
+  std::lock_guard lock(mutex_);
+  return unflatten(external_);
+}
+
 void Simulation::setPositions(const Points3& positions) {
   if (positions.rows() != rest_.nodeCount()) throw Error("one position per node");
   std::lock_guard lock(mutex_);

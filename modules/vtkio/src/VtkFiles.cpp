@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/VtkFiles.h"
 
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkPNGWriter.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
@@ -56,6 +59,28 @@ vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path) {
 }
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path) {
   return readXml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(path);
+}
+
+void writePng(const std::filesystem::path& path, vtkImageData* image) {
+  writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(tmp.c_str());
+    writer->SetInputData(image);
+    writer->Write();
+    if (writer->GetErrorCode() != 0) throw Error(path.string(), 0, "cannot write the PNG image");
+  });
+}
+
+vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path) {
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  if (!std::filesystem::is_regular_file(path) || !reader->CanReadFile(path.c_str()))
+    throw Error(path.string(), 0, "is not a readable PNG image");
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  if (image->GetScalarType() != VTK_UNSIGNED_CHAR || image->GetNumberOfScalarComponents() < 3)
+    throw Error(path.string(), 0, "must be an 8-bit RGB or RGBA image");
+  return image;
 }
 
 }  // namespace tetskin

@@ -24,6 +24,9 @@ struct BoundingBox {
 // Axis-aligned bounding box of the given rows; empty for no rows.
 BoundingBox boundingBox(const Points3& points);
 
+// Row of `points` nearest to `query` (the lowest on ties); -1 when empty.
+Index nearestPoint(const Points3& points, const Eigen::Vector3d& query);
+
 // Signed volume of the tetrahedron (a, b, c, d): positive when d lies on the
 // side of triangle (a, b, c) that its counter-clockwise normal points away
 // from, i.e. (b-a) x (c-a) . (d-a) > 0 (TetGen's orientation).

@@ -8,9 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/core/Error.h"
 #include "tetskin/core/TetMesh.h"
 
 namespace tetskin {
+
+// Thrown when a caller cancels long work (a build from the GUI).
+struct Cancelled : Error {
+  Cancelled() : Error("cancelled") {}
+};
 
 struct IsolatedResult {
   bool ok = false;
@@ -24,8 +30,11 @@ using MeshJob = std::function<TetMesh()>;
 // Runs every job in a forked child process, at most `parallel` at once. A job
 // still running after `timeoutSeconds` is killed. `onDone(index, result)` runs
 // in the calling process as each job ends. Results are in job order.
+// `cancelled`, polled about every 0.1 s: when it returns true every running
+// child is killed and Cancelled is thrown.
 std::vector<IsolatedResult> runIsolated(
     const std::vector<MeshJob>& jobs, int parallel, double timeoutSeconds,
-    const std::function<void(std::size_t, const IsolatedResult&)>& onDone = {});
+    const std::function<void(std::size_t, const IsolatedResult&)>& onDone = {},
+    const std::function<bool()>& cancelled = {});
 
 }  // namespace tetskin

@@ -53,6 +53,9 @@ struct CandidateReport {
 struct BuildEvents {
   std::function<void(const std::string&)> log;  // one line of report
   std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
+  // Polled between stages and while meshing; true stops the build with
+  // Cancelled (IsolatedJobs.h), killing the running mesher processes.
+  std::function<bool()> cancelled;
 };
 
 struct BuildResult {
@@ -65,7 +68,8 @@ struct BuildResult {
   std::vector<std::pair<std::string, double>> stageSeconds;
 };
 
-// Throws Error when no input survives repair or no candidate can be meshed.
+// Throws Error when no input survives repair or no candidate can be meshed,
+// Cancelled when events.cancelled says so.
 BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
                          const BuildEvents& events = {});
 

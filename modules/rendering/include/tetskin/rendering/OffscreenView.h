@@ -18,6 +18,10 @@ namespace tetskin {
 
 enum class CameraPreset { Front, Side, Top, Iso };
 CameraPreset parseCameraPreset(std::string_view name);  // front, side, top, iso
+// Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
+void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6]);
+// TetSkin's gradient background (every view looks alike).
+void styleBackground(vtkRenderer* renderer);
 
 class OffscreenView {
  public:

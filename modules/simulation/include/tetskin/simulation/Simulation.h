@@ -78,6 +78,7 @@ class Simulation {
   void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
   // Per-node external forces (level-local), kept until replaced.
   void setExternalForces(const Points3& forces);
+  Points3 externalForces() const;
   void setPositions(const Points3& positions);
   void setVelocities(const Points3& velocities);
 

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Atomic VTK XML writers (.vtp, .vtu) and checked readers, for exports that
-// ParaView opens.
+// ParaView opens; PNG images (screenshots, textures).
 
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
 
+class vtkImageData;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
@@ -16,5 +17,8 @@ void writeVtp(const std::filesystem::path& path, vtkPolyData* data);
 void writeVtu(const std::filesystem::path& path, vtkUnstructuredGrid* data);
 vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path);
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path);
+void writePng(const std::filesystem::path& path, vtkImageData* image);
+// An 8-bit RGB or RGBA image; throws Error naming the file otherwise.
+vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path);
 
 }  // namespace tetskin

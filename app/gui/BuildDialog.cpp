@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "BuildDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <filesystem>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/meshing/IsolatedJobs.h"
+#include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+
+namespace tetskin::gui {
+
+BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
+  setWindowTitle("Build dataset");
+  auto* layout = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  inputs_ = new QListWidget;
+  inputs_->setObjectName("buildInputs");
+  auto* add = new QPushButton("Add surfaces...");
+  connect(add, &QPushButton::clicked, this, [this] {
+    const QStringList files = QFileDialog::getOpenFileNames(this, "Input surfaces", {},
+                                                            "Surfaces (*.obj *.ply *.stl *.vtp)");
+    inputs_->addItems(files);
+  });
+  auto* inputRow = new QVBoxLayout;
+  inputRow->addWidget(inputs_);
+  inputRow->addWidget(add);
+  form->addRow("Inputs (finest first)", inputRow);
+  output_ = new QLineEdit;
+  output_->setObjectName("buildOutput");
+  output_->setPlaceholderText("out/bunny (writes .node, .ele, .json)");
+  form->addRow("Output", output_);
+  levels_ = new QSpinBox;
+  levels_->setRange(1, 16);
+  levels_->setValue(3);
+  minElements_ = new QSpinBox;
+  minElements_->setRange(1, 100000000);
+  minElements_->setValue(600);
+  maxElements_ = new QSpinBox;
+  maxElements_->setRange(1, 100000000);
+  maxElements_->setValue(12000);
+  form->addRow("Levels", levels_);
+  form->addRow("Min elements", minElements_);
+  form->addRow("Max elements", maxElements_);
+  mesher_ = new QComboBox;
+  mesher_->addItems({"tetgen", "netgen"});
+  form->addRow("Mesher", mesher_);
+  qualities_ = new QLineEdit("2.0,1.8,1.6,1.4,1.2");
+  form->addRow("TetGen qualities", qualities_);
+  decimate_ = new QCheckBox("derive coarser inputs by decimation");
+  form->addRow("", decimate_);
+  jobs_ = new QSpinBox;
+  jobs_->setRange(1, 256);
+  jobs_->setValue(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  form->addRow("Mesher processes", jobs_);
+  layout->addLayout(form);
+  progress_ = new QProgressBar;
+  progress_->setObjectName("buildProgress");
+  layout->addWidget(progress_);
+  log_ = new QPlainTextEdit;
+  log_->setReadOnly(true);
+  log_->setMinimumHeight(120);
+  layout->addWidget(log_);
+  auto* buttons = new QHBoxLayout;
+  run_ = new QPushButton("Build");
+  cancel_ = new QPushButton("Cancel");
+  cancel_->setEnabled(false);
+  auto* close = new QPushButton("Close");
+  buttons->addWidget(run_);
+  buttons->addWidget(cancel_);
+  buttons->addStretch();
+  buttons->addWidget(close);
+  layout->addLayout(buttons);
+  connect(run_, &QPushButton::clicked, this, [this] { start(); });
+  connect(cancel_, &QPushButton::clicked, this, [this] { cancel(); });
+  connect(close, &QPushButton::clicked, this, [this] {
+    cancel();
+    accept();
+  });
+}
+
+BuildDialog::~BuildDialog() {
+  cancelled_ = true;
+  if (worker_.joinable()) worker_.join();
+}
+
+void BuildDialog::setInputs(const QStringList& files) {
+  inputs_->clear();
+  inputs_->addItems(files);
+}
+void BuildDialog::setOutput(const QString& basePath) {
+  output_->setText(basePath);
+}
+void BuildDialog::setLevels(int levels, int minElements, int maxElements) {
+  levels_->setValue(levels);
+  minElements_->setValue(minElements);
+  maxElements_->setValue(maxElements);
+}
+void BuildDialog::setQualities(const QString& commaSeparated) {
+  qualities_->setText(commaSeparated);
+}
+QString BuildDialog::log() const {
+  return log_->toPlainText();
+}
+
+void BuildDialog::appendLog(const QString& line) {
+  log_->appendPlainText(line);
+}
+
+bool BuildDialog::start() {
+  if (running_) return false;
+  if (worker_.joinable()) worker_.join();
+  BuildOptions options;
+  options.levels = levels_->value();
+  options.minElements = minElements_->value();
+  options.maxElements = maxElements_->value();
+  options.mesher = mesher_->currentIndex() == 1 ? MesherKind::Netgen : MesherKind::TetGen;
+  options.decimate = decimate_->isChecked();
+  options.jobs = jobs_->value();
+  options.qualities.clear();
+  for (const QString& q : qualities_->text().split(',', Qt::SkipEmptyParts)) {
+    bool ok = false;
+    const double value = q.trimmed().toDouble(&ok);
+    if (!ok || !(value >= 1.0)) {
+      appendLog("error: quality '" + q + "' is not a number >= 1");
+      return false;
+    }
+    options.qualities.push_back(value);
+  }
+  QStringList files;
+  for (int i = 0; i < inputs_->count(); ++i) files << inputs_->item(i)->text();
+  if (files.isEmpty() || output_->text().isEmpty()) {
+    appendLog("error: give at least one input surface and an output");
+    return false;
+  }
+  std::filesystem::path out = output_->text().toStdString();
+  if (out.extension() == ".json") out.replace_extension();
+  const std::filesystem::path json = out.string() + ".json";
+  std::vector<std::filesystem::path> paths;
+  for (const QString& f : files) paths.emplace_back(f.toStdString());
+  cancelled_ = false;
+  running_ = true;
+  run_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setValue(0);
+  appendLog("building " + QString::fromStdString(json.string()));
+  worker_ = std::thread([this, options, paths, json] {
+    // Runs off the GUI thread; everything it shows goes back through the event loop.
+    auto post = [this](auto f) { QMetaObject::invokeMethod(this, f, Qt::QueuedConnection); };
+    try {
+      const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
+      std::filesystem::create_directories(directory);
+      std::vector<SurfaceInput> inputs;
+      for (const auto& path : paths) {
+        SurfaceInput input{
+            path.string(), readSurface(path),
+            std::filesystem::relative(std::filesystem::absolute(path), directory).generic_string()};
+        inputs.push_back(std::move(input));
+      }
+      BuildEvents events;
+      events.log = [post, this](const std::string& line) {
+        post([this, text = QString::fromStdString(line)] { appendLog(text); });
+      };
+      events.progress = [post, this](const std::string& stage, std::size_t done,
+                                     std::size_t total) {
+        post([this, stage = QString::fromStdString(stage), done, total] {
+          progress_->setFormat(stage + " %v/%m");
+          progress_->setMaximum(static_cast<int>(std::max<std::size_t>(total, 1)));
+          progress_->setValue(static_cast<int>(done));
+        });
+      };
+      events.cancelled = [this] { return cancelled_.load(); };
+      BuildResult result = buildDataset(std::move(inputs), options, events);
+      if (cancelled_) throw Cancelled();
+      saveDataset(json, result.dataset);
+      post([this, j = QString::fromStdString(json.string())] { finish(true, "done", j); });
+    } catch (const Cancelled&) {
+      post([this] { finish(false, "cancelled", {}); });
+    } catch (const std::exception& e) {
+      post([this, m = QString::fromStdString(e.what())] { finish(false, "error: " + m, {}); });
+    }
+  });
+  return true;
+}
+
+void BuildDialog::cancel() {
+  if (running_) cancelled_ = true;
+}
+
+void BuildDialog::finish(bool ok, const QString& message, const QString& json) {
+  if (worker_.joinable()) worker_.join();
+  running_ = false;
+  run_->setEnabled(true);
+  cancel_->setEnabled(false);
+  appendLog(message);
+  if (ok) {
+    progress_->setValue(progress_->maximum());
+    Q_EMIT built(json);
+  } else {
+    Q_EMIT failed(message);
+  }
+}
+
+}  // namespace tetskin::gui

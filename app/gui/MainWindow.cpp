@@ -1,0 +1,780 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "MainWindow.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageData.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPixmap>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include "BuildDialog.h"
+#include "HistogramWidget.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/FileNames.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin::gui {
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+QComboBox* combo(const char* name, const QStringList& items) {
+  auto* c = new QComboBox;
+  c->setObjectName(name);
+  c->addItems(items);
+  return c;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(bool interactive, QWidget* parent)
+    : QMainWindow(parent), interactive_(interactive) {
+  setWindowTitle("TetSkin");
+  setAcceptDrops(true);
+  view_ = new QVTKOpenGLNativeWidget(this);
+  view_->setObjectName("view");
+  window_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window_->SetMultiSamples(0);
+  view_->setRenderWindow(window_);
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+  window_->AddRenderer(renderer_);
+  scene_ = std::make_unique<Scene>(renderer_);
+  setCentralWidget(view_);
+  view_->installEventFilter(this);
+
+  auto dock = [this](const char* title, QWidget* widget) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(QString(title) + "Dock");
+    auto* scroll = new QScrollArea;  // a short window scrolls instead of squeezing
+    scroll->setWidget(widget);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    d->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, d);
+    return d;
+  };
+  QDockWidget* viewDock = dock("View", buildViewDock());
+  QDockWidget* simulationDock = dock("Simulation", buildSimulationDock());
+  dock("Binding", buildBindingDock());
+  tabifyDockWidget(viewDock, simulationDock);
+  viewDock->raise();
+  buildMenus();
+
+  vtkRenderWindowInteractor* interactor = window_->GetInteractor();
+  auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+  interactor->SetInteractorStyle(style);
+  interactor->AddObserver(vtkCommand::LeftButtonPressEvent, this, &MainWindow::onLeftPress, 10.0f);
+  interactor->AddObserver(vtkCommand::MouseMoveEvent, this, &MainWindow::onMouseMove, 10.0f);
+  interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, this, &MainWindow::onLeftRelease,
+                          10.0f);
+
+  timer_ = new QTimer(this);
+  connect(timer_, &QTimer::timeout, this, [this] { tick(); });
+  timer_->start(16);
+  overlayStart_ = std::chrono::steady_clock::now();
+  statusBar()->showMessage("Open a dataset (File > Open, or drop files here)");
+}
+
+MainWindow::~MainWindow() {
+  runner_.reset();  // stop the simulation thread before the scene goes
+}
+
+QWidget* MainWindow::buildViewDock() {
+  auto* w = new QWidget;
+  auto* form = new QFormLayout(w);
+  renderPath_ = combo("renderPath", {"cpu", "gpu-1pass", "gpu-2pass", "fur-cpu", "fur-gpu"});
+  form->addRow("Render path", renderPath_);
+  connect(renderPath_, &QComboBox::currentTextChanged, this,
+          [this](const QString& name) { setRenderPath(name); });
+  showSurface_ = new QCheckBox("surface (and fur)");
+  showSurface_->setObjectName("showSurface");
+  showSurface_->setChecked(true);
+  form->addRow("Show", showSurface_);
+  connect(showSurface_, &QCheckBox::toggled, this, [this](bool on) {
+    scene_->setSurfaceVisible(on);
+    renderNow();
+  });
+  controlStyle_ = combo("controlStyle", {"none", "surface", "wireframe", "shrink"});
+  controlStyle_->setCurrentText("wireframe");
+  form->addRow("Control mesh", controlStyle_);
+  connect(controlStyle_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+    if (name == "none")
+      scene_->setControlStyle(std::nullopt);
+    else
+      scene_->setControlStyle(parseControlMeshStyle(name.toStdString()));
+    renderNow();
+  });
+  controlLevel_ = new QSpinBox;
+  controlLevel_->setObjectName("controlLevel");
+  form->addRow("Control level", controlLevel_);
+  connect(controlLevel_, qOverload<int>(&QSpinBox::valueChanged), this, [this](int level) {
+    scene_->setControlLevel(level);
+    renderNow();
+  });
+  camera_ = combo("camera", {"iso", "front", "side", "top"});
+  form->addRow("Camera", camera_);
+  connect(camera_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+    scene_->setCamera(parseCameraPreset(name.toStdString()));
+    renderNow();
+  });
+  furShells_ = new QSpinBox;
+  furShells_->setObjectName("furShells");
+  furShells_->setRange(1, 256);
+  furShells_->setValue(16);
+  furLength_ = new QDoubleSpinBox;
+  furLength_->setObjectName("furLength");
+  furLength_->setRange(0.001, 1);
+  furLength_->setSingleStep(0.005);
+  furLength_->setDecimals(3);
+  furLength_->setValue(0.03);
+  furLighting_ = combo("furLighting", {"velvet", "kajiya-kay"});
+  furFins_ = new QCheckBox("fins at silhouettes");
+  furFins_->setObjectName("furFins");
+  form->addRow("Fur shells", furShells_);
+  form->addRow("Fur length", furLength_);
+  form->addRow("Fur lighting", furLighting_);
+  form->addRow("", furFins_);
+  auto furChanged = [this] {
+    if (!scene_->hasDataset()) return;
+    try {
+      scene_->setFurParameters(furFromControls());
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
+    renderNow();
+  };
+  connect(furShells_, qOverload<int>(&QSpinBox::valueChanged), this, furChanged);
+  connect(furLength_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, furChanged);
+  connect(furLighting_, &QComboBox::currentTextChanged, this, furChanged);
+  connect(furFins_, &QCheckBox::toggled, this, furChanged);
+  return w;
+}
+
+QWidget* MainWindow::buildBindingDock() {
+  auto* w = new QWidget;
+  auto* layout = new QVBoxLayout(w);
+  auto* form = new QFormLayout;
+  colorBy_ = combo("colorBy", {"material", "MinBarycentric", "Distance", "FaceId"});
+  form->addRow("Colour by", colorBy_);
+  connect(colorBy_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+    scene_->setColorBy(static_cast<ColorBy>(index));
+    refreshBindingPanel();
+    renderNow();
+  });
+  highlight_ = new QCheckBox("negative weights, far vertices");
+  highlight_->setObjectName("highlight");
+  form->addRow("Highlight", highlight_);
+  connect(highlight_, &QCheckBox::toggled, this, [this](bool on) {
+    scene_->setHighlightProblems(on);
+    refreshBindingPanel();
+    renderNow();
+  });
+  layout->addLayout(form);
+  histogram_ = new HistogramWidget;
+  histogram_->setObjectName("histogram");
+  layout->addWidget(histogram_);
+  vertexInfo_ = new QLabel("Click the surface to inspect a vertex; Shift+drag pulls the body.");
+  vertexInfo_->setObjectName("vertexInfo");
+  vertexInfo_->setWordWrap(true);
+  vertexInfo_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(vertexInfo_);
+  auto* rebindRow = new QHBoxLayout;
+  rebindMethod_ = combo("rebindMethod", {"closest", "seed", "embed"});
+  rebindLevel_ = new QSpinBox;
+  rebindLevel_->setObjectName("rebindLevel");
+  auto* rebind = new QPushButton("Rebind");
+  rebind->setObjectName("rebind");
+  rebindRow->addWidget(rebindMethod_);
+  rebindRow->addWidget(new QLabel("level"));
+  rebindRow->addWidget(rebindLevel_);
+  rebindRow->addWidget(rebind);
+  layout->addLayout(rebindRow);
+  connect(rebind, &QPushButton::clicked, this, [this] {
+    try {
+      const auto method = parseBindingMethod(rebindMethod_->currentText().toStdString());
+      scene_->rebind(*method, rebindLevel_->value());
+      controlLevel_->setValue(scene_->level());
+      resetSimulation();
+      refreshBindingPanel();
+      renderNow();
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
+  });
+  comparison_ = new QLabel;
+  comparison_->setObjectName("comparison");
+  comparison_->setWordWrap(true);
+  comparison_->setFont(QFont("monospace", 8));
+  layout->addWidget(comparison_);
+  layout->addStretch();
+  return w;
+}
+
+QWidget* MainWindow::buildSimulationDock() {
+  auto* w = new QWidget;
+  auto* layout = new QVBoxLayout(w);
+  auto* buttons = new QHBoxLayout;
+  play_ = new QPushButton("Play");
+  play_->setObjectName("play");
+  play_->setCheckable(true);
+  step_ = new QPushButton("Step");
+  step_->setObjectName("step");
+  reset_ = new QPushButton("Reset");
+  reset_->setObjectName("reset");
+  record_ = new QPushButton("Record");
+  record_->setObjectName("record");
+  record_->setCheckable(true);
+  for (QPushButton* b : {play_, step_, reset_, record_}) buttons->addWidget(b);
+  layout->addLayout(buttons);
+  connect(play_, &QPushButton::toggled, this, [this](bool on) {
+    if (!runner_) return;
+    if (on)
+      runner_->play();
+    else
+      runner_->pause();
+    play_->setText(on ? "Pause" : "Play");
+  });
+  connect(step_, &QPushButton::clicked, this, [this] {
+    if (!runner_) return;
+    play_->setChecked(false);
+    runner_->step();
+    showLatestState();
+  });
+  connect(reset_, &QPushButton::clicked, this, [this] { resetSimulation(); });
+  connect(record_, &QPushButton::toggled, this, [this](bool on) {
+    if (!on) {
+      stopRecording();
+      return;
+    }
+    const QString file =
+        interactive_ ? QFileDialog::getSaveFileName(this, "Record run", "run.pvd", "*.pvd") : "";
+    if (file.isEmpty() || !startRecording(file)) record_->setChecked(false);
+  });
+  auto* form = new QFormLayout;
+  scenario_ = combo("scenario", {});
+  for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
+  scenario_->setCurrentText("wobble");
+  solver_ = combo("solver", {"cg", "multigrid"});
+  timeStep_ = new QDoubleSpinBox;
+  timeStep_->setObjectName("timeStep");
+  timeStep_->setDecimals(4);
+  timeStep_->setRange(1e-4, 0.1);
+  timeStep_->setValue(1.0 / 60.0);
+  young_ = new QDoubleSpinBox;
+  young_->setObjectName("young");
+  young_->setRange(1e2, 1e10);
+  young_->setDecimals(0);
+  young_->setValue(ElasticMaterial{}.youngsModulus);
+  poisson_ = new QDoubleSpinBox;
+  poisson_->setObjectName("poisson");
+  poisson_->setRange(0, 0.49);
+  poisson_->setSingleStep(0.01);
+  poisson_->setValue(ElasticMaterial{}.poissonRatio);
+  form->addRow("Scenario", scenario_);
+  form->addRow("Solver", solver_);
+  form->addRow("Time step (s)", timeStep_);
+  form->addRow("Young's modulus (Pa)", young_);
+  form->addRow("Poisson's ratio", poisson_);
+  layout->addLayout(form);
+  layout->addWidget(new QLabel("Changes apply on Reset."));
+  layout->addStretch();
+  return w;
+}
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu("&File");
+  file->addAction(
+      "&Open...", this,
+      [this] {
+        const QStringList files = QFileDialog::getOpenFileNames(
+            this, "Open", {},
+            "TetSkin files (*.json *.node *.ele *.obj *.ply *.stl *.vtp);;All files (*)");
+        openFiles(files);
+      },
+      QKeySequence::Open);
+  recentMenu_ = file->addMenu("Open &Recent");
+  refreshRecentMenu();
+  file->addAction("&Build dataset...", this, [this] { buildDialog()->show(); });
+  file->addSeparator();
+  file->addAction("&Export frame...", this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, "Export frame", "frame.vtp",
+                                                      "Surface (*.vtp);;Control mesh (*.vtu)");
+    if (!path.isEmpty()) exportFrame(path);
+  });
+  file->addAction("&Screenshot...", this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, "Screenshot", "tetskin.png", "*.png");
+    if (!path.isEmpty()) saveScreenshot(path);
+  });
+  file->addSeparator();
+  file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+  QMenu* viewMenu = menuBar()->addMenu("&View");
+  for (const char* preset : {"iso", "front", "side", "top"})
+    viewMenu->addAction(QString("Camera: ") + preset, this,
+                        [this, preset] { camera_->setCurrentText(preset); });
+}
+
+vtkRenderer* MainWindow::renderer() {
+  return renderer_;
+}
+
+BuildDialog* MainWindow::buildDialog() {
+  if (!buildDialog_) {
+    buildDialog_ = new BuildDialog(this);
+    connect(buildDialog_, &BuildDialog::built, this,
+            [this](const QString& json) { openFile(json); });
+  }
+  return buildDialog_;
+}
+
+void MainWindow::fail(const QString& message) {
+  lastError_ = message;
+  statusBar()->showMessage("error: " + message);
+  if (interactive_) QMessageBox::critical(this, "TetSkin", message);
+}
+
+bool MainWindow::openFiles(const QStringList& paths) {
+  bool ok = true;
+  for (const QString& p : paths) ok = openFile(p) && ok;
+  return ok;
+}
+
+bool MainWindow::openFile(const QString& qpath) {
+  const std::filesystem::path path = qpath.toStdString();
+  const std::string ext = lowerExtension(path);
+  try {
+    if (ext == ".json" || ext == ".node" || ext == ".ele") {
+      scene_->openDataset(path);
+    } else if (ext == ".vtp") {
+      vtkSmartPointer<vtkPolyData> polyData = readVtp(path);
+      if (polyData->GetPointData()->GetArray("ControlIds"))
+        scene_->openBinding(path);
+      else
+        scene_->openSurface(path);
+    } else if (ext == ".obj" || ext == ".ply" || ext == ".stl") {
+      scene_->openSurface(path);
+    } else {
+      throw Error(path.string(), 0,
+                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp)");
+    }
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  afterLoad(qpath);
+  return true;
+}
+
+void MainWindow::afterLoad(const QString& path) {
+  lastError_.clear();
+  rememberRecent(QFileInfo(path).absoluteFilePath());
+  const int levels = static_cast<int>(scene_->dataset().mesh.levels.size());
+  for (QSpinBox* s : {controlLevel_, rebindLevel_}) {
+    const QSignalBlocker block(s);
+    s->setRange(0, levels - 1);
+    s->setValue(scene_->level());
+  }
+  {
+    const FurParameters& fur = scene_->dataset().config.fur;
+    const QSignalBlocker a(furShells_), b(furLength_), c(furLighting_), d(furFins_);
+    furShells_->setValue(fur.shells);
+    furLength_->setValue(fur.length);
+    furLighting_->setCurrentText(toString(fur.lighting));
+    furFins_->setChecked(fur.fins);
+  }
+  setWindowTitle("TetSkin - " + QString::fromStdString(scene_->datasetPath().filename().string()));
+  resetSimulation();
+  refreshBindingPanel();
+  statusBar()->showMessage("opened " + path);
+  renderNow();
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+  QSettings settings;
+  QStringList recent = settings.value("recentFiles").toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > kMaxRecent) recent.removeLast();
+  settings.setValue("recentFiles", recent);
+  refreshRecentMenu();
+}
+
+QStringList MainWindow::recentFiles() const {
+  return QSettings().value("recentFiles").toStringList();
+}
+
+void MainWindow::refreshRecentMenu() {
+  recentMenu_->clear();
+  for (const QString& path : recentFiles())
+    recentMenu_->addAction(path, this, [this, path] { openFile(path); });
+  recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+void MainWindow::setRenderPath(const QString& name) {
+  if (renderPath_->currentText() != name) {
+    renderPath_->setCurrentText(name);  // comes back here through the signal
+    return;
+  }
+  try {
+    scene_->setRenderPath(parseRenderPath(name.toStdString()));
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    const QSignalBlocker block(renderPath_);
+    renderPath_->setCurrentText(toString(scene_->renderPath()));
+  }
+  renderNow();
+}
+
+FurParameters MainWindow::furFromControls() const {
+  FurParameters fur = scene_->hasDataset() ? scene_->dataset().config.fur : FurParameters{};
+  fur.shells = furShells_->value();
+  fur.minShells = std::min(fur.minShells, fur.shells);
+  fur.length = furLength_->value();
+  fur.lighting = parseFurLighting(furLighting_->currentText().toStdString());
+  fur.fins = furFins_->isChecked();
+  return fur;
+}
+
+void MainWindow::resetSimulation() {
+  runner_.reset();
+  shownSteps_ = -1;
+  if (play_) {
+    const QSignalBlocker block(play_);
+    play_->setChecked(false);
+    play_->setText("Play");
+  }
+  if (!scene_->hasDataset()) return;
+  SimulationOptions options;
+  options.timeStep = timeStep_->value();
+  options.material.youngsModulus = young_->value();
+  options.material.poissonRatio = poisson_->value();
+  options.solver =
+      solver_->currentText() == "multigrid" ? SolverKind::Multigrid : SolverKind::ConjugateGradient;
+  try {
+    runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, scene_->level(), options,
+                                                 scenario_->currentText().toStdString());
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return;
+  }
+  if (scene_->deformable()) scene_->deformable()->setFrameSeconds(options.timeStep);
+  showLatestState();
+}
+
+void MainWindow::showLatestState() {
+  if (!runner_) return;
+  const SimulationState state = runner_->state();
+  lastTimes_ = scene_->showControlState(state.positions);
+  shownSteps_ = state.steps;
+  if (recorder_) {
+    try {
+      Simulation& sim = runner_->simulation();
+      const BoundSurface surface = scene_->deformedBoundSurface();
+      recorder_->addFrame(state.time, sim.restMesh(), state.positions, state.velocities,
+                          sim.vonMisesStress(), scene_->level(), &surface);
+    } catch (const std::exception& e) {
+      stopRecording();
+      fail(QString::fromStdString(e.what()));
+    }
+  }
+  renderNow();
+}
+
+void MainWindow::tick() {
+  if (runner_ && runner_->steps() != shownSteps_) showLatestState();
+  if (std::chrono::steady_clock::now() - overlayStart_ > std::chrono::milliseconds(500))
+    refreshOverlay();
+}
+
+void MainWindow::renderNow() {
+  const auto start = std::chrono::steady_clock::now();
+  window_->Render();
+  drawSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++framesSinceOverlay_;
+}
+
+void MainWindow::setOverlayVisible(bool visible) {
+  overlayVisible_ = visible;
+  if (!visible) scene_->setOverlayText("");
+}
+
+void MainWindow::refreshOverlay() {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - overlayStart_).count();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "%s  %.1f fps | step %.1f ms (%lld) | deform %.2f ms | upload %.2f ms | draw "
+                "%.1f ms",
+                toString(scene_->renderPath()), framesSinceOverlay_ / std::max(seconds, 1e-9),
+                runner_ ? 1e3 * runner_->lastStepSeconds() : 0.0,
+                static_cast<long long>(runner_ ? runner_->steps() : 0),
+                1e3 * lastTimes_.deformSeconds, 1e3 * lastTimes_.uploadSeconds,
+                framesSinceOverlay_ ? 1e3 * drawSeconds_ / framesSinceOverlay_ : 0.0);
+  if (overlayVisible_) scene_->setOverlayText(text);
+  overlayStart_ = now;
+  framesSinceOverlay_ = 0;
+  drawSeconds_ = 0;
+}
+
+void MainWindow::refreshBindingPanel() {
+  if (!scene_->hasSurface()) {
+    histogram_->setValues({}, "no surface");
+    comparison_->clear();
+    return;
+  }
+  const SurfaceBinding& b = scene_->binding();
+  const bool distance = scene_->colorBy() == ColorBy::Distance;
+  const Eigen::VectorXd& values = distance ? b.distance : b.minBarycentric;
+  histogram_->setValues(std::vector<double>(values.data(), values.data() + values.size()),
+                        distance ? "Distance" : "MinBarycentric (red: outside)");
+  QString comparison = QString::fromStdString(scene_->comparisonText());
+  if (scene_->highlightedCount() > 0)
+    comparison += QString("\nhighlighted: %1 vertices").arg(scene_->highlightedCount());
+  comparison_->setText(QString("%1, level %2\n").arg(toString(b.method)).arg(scene_->level()) +
+                       comparison);
+  vertexInfo_->setText(vertexInfoText());
+}
+
+QString MainWindow::vertexInfoText() const {
+  if (!scene_->pickedVertex())
+    return "Click the surface to inspect a vertex; Shift+drag pulls the body.";
+  const VertexInfo i = scene_->vertexInfo(*scene_->pickedVertex());
+  const int n = scene_->binding().controlsPerVertex();
+  QString ids, weights;
+  for (int k = 0; k < n; ++k) {
+    ids += QString::number(i.controlIds[k]) + (k + 1 < n ? " " : "");
+    weights += QString::number(i.weights[k], 'f', 4) + (k + 1 < n ? " " : "");
+  }
+  return QString("vertex %1: %2 %3, control ids %4, weights %5, distance %6, min barycentric %7")
+      .arg(i.vertex)
+      .arg(n == 4 ? "element" : "face")
+      .arg(i.face)
+      .arg(ids, weights)
+      .arg(i.distance, 0, 'g', 4)
+      .arg(i.minBarycentric, 0, 'g', 4);
+}
+
+std::optional<Index> MainWindow::clickAt(int x, int y) {
+  const std::optional<Index> v = scene_->pickVertex(x, y);
+  if (!v) scene_->showPickedVertex(std::nullopt);
+  vertexInfo_->setText(vertexInfoText());
+  statusBar()->showMessage(v ? vertexInfoText() : "no surface vertex there");
+  renderNow();
+  return v;
+}
+
+bool MainWindow::onLeftPress(vtkObject*, unsigned long, void*) {
+  vtkRenderWindowInteractor* i = window_->GetInteractor();
+  if (!i->GetShiftKey() || !runner_) return false;
+  pullVertex_ = scene_->pickVertex(i->GetEventPosition()[0], i->GetEventPosition()[1]);
+  pulling_ = pullVertex_.has_value();
+  return pulling_;  // true: the camera does not move
+}
+
+bool MainWindow::onMouseMove(vtkObject*, unsigned long, void*) {
+  if (!pulling_ || !runner_) return false;
+  vtkRenderWindowInteractor* i = window_->GetInteractor();
+  const VertexInfo info = scene_->vertexInfo(*pullVertex_);
+  const Eigen::Vector3d target =
+      scene_->displayToWorld(i->GetEventPosition()[0], i->GetEventPosition()[1], info.position);
+  // A spring to the mouse, as stiff as the body itself at the scale of its size.
+  const BoundingBox box = boundingBox(scene_->surface());
+  const double stiffness =
+      0.2 * runner_->simulation().options().material.youngsModulus * (box.max - box.min).norm();
+  const LevelRange& r = scene_->dataset().mesh.levels[static_cast<std::size_t>(scene_->level())];
+  std::vector<int> nodes;
+  Points3 forces(scene_->binding().controlsPerVertex(), 3);
+  for (int k = 0; k < scene_->binding().controlsPerVertex(); ++k) {
+    nodes.push_back(info.controlIds[k] - static_cast<int>(r.firstNode));
+    forces.row(k) = (stiffness * info.weights[k] * (target - info.position)).transpose();
+  }
+  runner_->pull(nodes, forces);
+  if (!runner_->playing()) {
+    const QSignalBlocker block(play_);
+    play_->setChecked(true);
+    play_->setText("Pause");
+    runner_->play();
+  }
+  return true;
+}
+
+bool MainWindow::onLeftRelease(vtkObject*, unsigned long, void*) {
+  if (!pulling_) return false;
+  pulling_ = false;
+  runner_->release();
+  return true;
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  // Clicks are seen here, before VTK: once the camera style has grabbed the
+  // interactor's focus on a press, VTK observers no longer see the release.
+  if (watched == view_ &&
+      (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::MouseButtonRelease)) {
+    const auto* mouse = static_cast<QMouseEvent*>(event);
+    const double scale = view_->devicePixelRatioF();
+    const int x = static_cast<int>(mouse->pos().x() * scale);
+    const int y = static_cast<int>((view_->height() - 1 - mouse->pos().y()) * scale);
+    if (mouse->button() == Qt::LeftButton && !(mouse->modifiers() & Qt::ShiftModifier)) {
+      if (event->type() == QEvent::MouseButtonPress) {
+        clickX_ = x;
+        clickY_ = y;
+      } else if (std::abs(x - clickX_) <= 2 && std::abs(y - clickY_) <= 2) {
+        clickAt(x, y);
+      }
+    }
+  }
+  return QMainWindow::eventFilter(watched, event);
+}
+
+vtkSmartPointer<vtkImageData> MainWindow::grabImage() {
+  renderNow();
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  grab->SetInput(window_);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+bool MainWindow::saveScreenshot(const QString& path, bool wholeWindow) {
+  try {
+    vtkSmartPointer<vtkImageData> view = grabImage();
+    if (!wholeWindow) {
+      writePng(path.toStdString(), view);
+    } else {
+      // Qt grabs the widgets but not the OpenGL view (it comes out black
+      // under Xvfb): paint VTK's own image of it into place.
+      int dims[3];
+      view->GetDimensions(dims);
+      const int channels = view->GetNumberOfScalarComponents();
+      QImage picture(dims[0], dims[1], QImage::Format_RGB888);
+      const auto* pixels = static_cast<const unsigned char*>(view->GetScalarPointer());
+      for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x) {
+          const unsigned char* p = pixels + channels * (y * dims[0] + x);
+          picture.setPixel(x, dims[1] - 1 - y, qRgb(p[0], p[1], p[2]));
+        }
+      QPixmap window = grab();
+      QPainter painter(&window);
+      painter.drawImage(QRect(view_->mapTo(this, QPoint(0, 0)), view_->size()), picture);
+      painter.end();
+      const std::filesystem::path file = path.toStdString();
+      writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+        if (!window.save(QString::fromStdString(tmp.string()), "PNG"))
+          throw Error(file.string(), 0, "cannot write the PNG image");
+      });
+    }
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  statusBar()->showMessage("wrote " + path);
+  return true;
+}
+
+bool MainWindow::exportFrame(const QString& qpath) {
+  const std::filesystem::path path = qpath.toStdString();
+  try {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".vtu") {
+      if (!runner_) throw Error("open a dataset first");
+      Simulation& sim = runner_->simulation();
+      const SimulationState s = runner_->state();
+      writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities,
+                                     sim.vonMisesStress(), scene_->level()));
+    } else if (ext == ".vtp") {
+      writeBinding(path, scene_->deformedBoundSurface());
+    } else {
+      throw Error(path.string(), 0, "export as .vtu (control mesh) or .vtp (surface)");
+    }
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  statusBar()->showMessage("wrote " + qpath);
+  return true;
+}
+
+bool MainWindow::startRecording(const QString& pvd) {
+  if (!scene_->hasSurface() || !runner_) {
+    fail("open a dataset and a surface before recording");
+    return false;
+  }
+  try {
+    recorder_ = std::make_unique<RunRecorder>(pvd.toStdString());
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  showLatestState();  // the first frame
+  const QSignalBlocker block(record_);
+  record_->setChecked(true);
+  return true;
+}
+
+void MainWindow::stopRecording() {
+  if (recorder_)
+    statusBar()->showMessage(QString("recorded %1 frames to %2")
+                                 .arg(recorder_->frames())
+                                 .arg(QString::fromStdString(recorder_->path().string())));
+  recorder_.reset();
+  const QSignalBlocker block(record_);
+  record_->setChecked(false);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  QStringList files;
+  for (const QUrl& url : event->mimeData()->urls())
+    if (url.isLocalFile()) files << url.toLocalFile();
+  // A dataset first, so that surfaces dropped with it bind to it.
+  std::stable_sort(files.begin(), files.end(), [](const QString& a, const QString& b) {
+    const auto rank = [](const QString& f) {
+      return f.endsWith(".json") || f.endsWith(".node") || f.endsWith(".ele") ? 0 : 1;
+    };
+    return rank(a) < rank(b);
+  });
+  openFiles(files);
+  event->acceptProposedAction();
+}
+
+}  // namespace tetskin::gui

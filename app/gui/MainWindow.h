@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// tetskin-gui's window: the VTK view in the middle, docks for the view,
+// binding diagnostics and the simulation, menus for files and export. Every
+// action is also a public method, so tests drive the window as a user would
+// without dialogs (non-interactive windows report errors through lastError()).
+
+#include <vtkSmartPointer.h>
+
+#include <QMainWindow>
+#include <QString>
+#include <QStringList>
+#include <chrono>
+#include <memory>
+#include <optional>
+
+#include "Scene.h"
+#include "SimulationRunner.h"
+#include "tetskin/vtkio/RunRecorder.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QMenu;
+class QPushButton;
+class QSpinBox;
+class QTimer;
+class QVTKOpenGLNativeWidget;
+class vtkGenericOpenGLRenderWindow;
+class vtkImageData;
+class vtkObject;
+class vtkRenderer;
+
+namespace tetskin::gui {
+
+class HistogramWidget;
+class BuildDialog;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(bool interactive = true, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  Scene& scene() { return *scene_; }
+  SimulationRunner* runner() { return runner_.get(); }
+  QVTKOpenGLNativeWidget* view() { return view_; }
+  vtkRenderer* renderer();
+  BuildDialog* buildDialog();
+
+  // By extension: .json/.node/.ele dataset, .obj/.ply/.stl surface, .vtp
+  // binding (with ControlIds) or surface. False on error (see lastError()).
+  bool openFile(const QString& path);
+  bool openFiles(const QStringList& paths);
+  QString lastError() const { return lastError_; }
+  QStringList recentFiles() const;
+
+  void setRenderPath(const QString& name);
+  void renderNow();
+  vtkSmartPointer<vtkImageData> grabImage();
+  // The 3D view only, or (wholeWindow) the window with its docks.
+  bool saveScreenshot(const QString& path, bool wholeWindow = false);
+  // .vtu: the simulated level now; .vtp: the deformed bound surface now.
+  bool exportFrame(const QString& path);
+  bool startRecording(const QString& pvd);
+  void stopRecording();
+  Index recordedFrames() const { return recorder_ ? recorder_->frames() : 0; }
+  // Click (pick) and pull, in VTK display coordinates.
+  std::optional<Index> clickAt(int x, int y);
+  QString vertexInfoText() const;
+  void resetSimulation();
+  // Draws the latest simulated state (the timer does this while playing).
+  void showLatestState();
+  // The FPS and timing overlay (off for reproducible screenshots).
+  void setOverlayVisible(bool visible);
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  void buildMenus();
+  QWidget* buildViewDock();
+  QWidget* buildBindingDock();
+  QWidget* buildSimulationDock();
+  void fail(const QString& message);
+  void afterLoad(const QString& path);
+  void rememberRecent(const QString& path);
+  void refreshRecentMenu();
+  void refreshBindingPanel();
+  void refreshOverlay();
+  FurParameters furFromControls() const;
+  bool onLeftPress(vtkObject*, unsigned long, void*);
+  bool onMouseMove(vtkObject*, unsigned long, void*);
+  bool onLeftRelease(vtkObject*, unsigned long, void*);
+  void tick();
+
+  bool interactive_;
+  bool overlayVisible_ = true;
+  QVTKOpenGLNativeWidget* view_;
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
+  vtkSmartPointer<vtkRenderer> renderer_;
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<SimulationRunner> runner_;
+  std::unique_ptr<RunRecorder> recorder_;
+  BuildDialog* buildDialog_ = nullptr;
+  QString lastError_;
+  QTimer* timer_;
+  QMenu* recentMenu_;
+  // View.
+  QComboBox *renderPath_, *controlStyle_, *camera_;
+  QSpinBox* controlLevel_;
+  QCheckBox* showSurface_;
+  QSpinBox* furShells_;
+  QDoubleSpinBox* furLength_;
+  QComboBox* furLighting_;
+  QCheckBox* furFins_;
+  // Binding.
+  QComboBox *colorBy_, *rebindMethod_;
+  QCheckBox* highlight_;
+  HistogramWidget* histogram_;
+  QLabel *vertexInfo_, *comparison_;
+  QSpinBox* rebindLevel_;
+  // Simulation.
+  QPushButton *play_, *step_, *reset_, *record_;
+  QDoubleSpinBox *timeStep_, *young_, *poisson_;
+  QComboBox *scenario_, *solver_;
+  // Frame bookkeeping.
+  Index shownSteps_ = -1;
+  int framesSinceOverlay_ = 0;
+  std::chrono::steady_clock::time_point overlayStart_;
+  double drawSeconds_ = 0;
+  FrameTimes lastTimes_;
+  // Mouse.
+  int clickX_ = -100, clickY_ = -100;
+  bool pulling_ = false;
+  std::optional<Index> pullVertex_;
+};
+
+}  // namespace tetskin::gui

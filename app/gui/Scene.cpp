@@ -1,0 +1,452 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "Scene.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkLookupTable.h>
+#include <vtkMapper.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPropPicker.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin::gui {
+namespace {
+
+const char* arrayName(ColorBy c) {
+  switch (c) {
+    case ColorBy::MinBarycentric:
+      return "MinBarycentric";
+    case ColorBy::Distance:
+      return "Distance";
+    case ColorBy::FaceId:
+      return "FaceId";
+    case ColorBy::Material:
+      break;
+  }
+  return "";
+}
+
+vtkSmartPointer<vtkActor> overlayActor(double r, double g, double b, float pointSize) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->PickableOff();
+  vtkProperty* p = actor->GetProperty();
+  p->SetColor(r, g, b);
+  p->SetPointSize(pointSize);
+  p->RenderPointsAsSpheresOn();
+  p->SetLineWidth(3);
+  p->LightingOff();
+  actor->VisibilityOff();
+  return actor;
+}
+
+}  // namespace
+
+const char* toString(ColorBy c) {
+  return c == ColorBy::Material ? "material" : arrayName(c);
+}
+
+Scene::Scene(vtkRenderer* renderer) : renderer_(renderer) {
+  styleBackground(renderer_);
+  problems_ = overlayActor(1.0, 0.15, 0.1, 7);
+  triangle_ = overlayActor(1.0, 0.85, 0.1, 11);
+  renderer_->AddActor(problems_);
+  renderer_->AddActor(triangle_);
+  legend_ = vtkSmartPointer<vtkScalarBarActor>::New();
+  legend_->SetNumberOfLabels(5);
+  legend_->SetWidth(0.08);
+  legend_->SetHeight(0.5);
+  legend_->SetPosition(0.9, 0.25);
+  legend_->VisibilityOff();
+  renderer_->AddActor2D(legend_);
+  overlay_ = vtkSmartPointer<vtkTextActor>::New();
+  overlay_->GetTextProperty()->SetFontSize(14);
+  overlay_->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
+  overlay_->SetDisplayPosition(8, 8);
+  renderer_->AddActor2D(overlay_);
+}
+
+Scene::~Scene() = default;
+
+void Scene::openDataset(const std::filesystem::path& path) {
+  Dataset loaded = loadDataset(path);  // throws before anything changes
+  std::optional<SurfaceMesh> surface = surface_;
+  if (!surface && loaded.config.surface) {
+    const std::filesystem::path file = loaded.config.resolve(*loaded.config.surface);
+    if (std::filesystem::exists(file)) surface = readSurface(file);
+  }
+  const int level = loaded.mesh.finestLevel();
+  SurfaceBinding binding;
+  if (surface) binding = bindSurface(*surface, loaded.mesh, level);
+  surfaceDrawing_.reset();
+  dataset_ = std::move(loaded);
+  datasetPath_ = path;
+  surface_ = std::move(surface);
+  binding_ = std::move(binding);
+  fur_ = dataset_->config.fur;
+  level_ = controlLevel_ = level;
+  nodes_ = dataset_->mesh.nodes;
+  previousSummary_.reset();
+  picked_.reset();
+  rebuildControl();
+  rebuildSurface();
+  setCamera(CameraPreset::Iso);
+}
+
+void Scene::openSurface(const std::filesystem::path& path) {
+  if (!dataset_) throw Error(path.string(), 0, "open a dataset before a surface to bind");
+  SurfaceMesh surface = readSurface(path);
+  SurfaceBinding binding = bindSurface(surface, dataset_->mesh, level_);
+  surface_ = std::move(surface);
+  binding_ = std::move(binding);
+  previousSummary_.reset();
+  picked_.reset();
+  rebuildSurface();
+}
+
+void Scene::openBinding(const std::filesystem::path& path) {
+  if (!dataset_) throw Error(path.string(), 0, "open the dataset the binding refers to first");
+  BoundSurface bound = readBinding(path);
+  validateBinding(bound.binding, bound.surface.vertexCount(), dataset_->mesh.nodes.rows(),
+                  path.string());
+  const int level = resolveLevel(dataset_->mesh, bound.binding.level);
+  surface_ = std::move(bound.surface);
+  binding_ = std::move(bound.binding);
+  binding_.level = level;
+  level_ = level;
+  previousSummary_.reset();
+  picked_.reset();
+  rebuildControl();
+  rebuildSurface();
+}
+
+void Scene::rebuildSurface() {
+  if (surfaceDrawing_) {
+    renderer_->RemoveActor(surfaceDrawing_->actor());
+    if (FurLayer* fur = surfaceDrawing_->fur())
+      for (vtkActor* a : fur->actors()) renderer_->RemoveActor(a);
+    surfaceDrawing_.reset();
+  }
+  if (!surface_ || !dataset_) return;
+  std::filesystem::path texture;
+  const DatasetConfig& config = dataset_->config;
+  if (surface_->hasTexcoords()) {
+    if (hasFur(path_) && fur_.colorTexture)
+      texture = config.resolve(*fur_.colorTexture);
+    else if (config.texture)
+      texture = config.resolve(*config.texture);
+  }
+  surfaceDrawing_ = std::make_unique<DeformableSurface>(dataset_->mesh, *surface_, binding_, path_,
+                                                        config.material, texture, fur_);
+  surfaceDrawing_->addTo(renderer_);
+  surfaceDrawing_->update(nodes_);
+  deformer_ = std::make_unique<SurfaceDeformer>(*surface_, binding_, dataset_->mesh.nodes);
+  deformedValid_ = false;
+  const BoundingBox box = boundingBox(*surface_);
+  summary_ = summarizeBinding(binding_, (box.max - box.min).norm());
+  setSurfaceVisible(surfaceVisible_);
+  applyColoring();
+  updateDiagnostics();
+}
+
+void Scene::rebuildControl() {
+  if (control_) renderer_->RemoveActor(control_->actor());
+  control_.reset();
+  if (!dataset_ || !controlStyle_) return;
+  const TetMesh rest = extractLevel(dataset_->mesh, controlLevel_);
+  control_ = std::make_unique<ControlMeshActor>(rest, *controlStyle_);
+  control_->actor()->PickableOff();
+  renderer_->AddActor(control_->actor());
+  const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(controlLevel_)];
+  control_->update(nodes_.middleRows(r.firstNode, r.nodeCount));
+}
+
+void Scene::setRenderPath(RenderPath path) {
+  const RenderPath before = path_;
+  path_ = path;
+  try {
+    rebuildSurface();
+  } catch (...) {
+    path_ = before;
+    rebuildSurface();
+    throw;
+  }
+}
+
+void Scene::setFurParameters(const FurParameters& fur) {
+  fur_ = fur;
+  if (hasFur(path_)) rebuildSurface();
+}
+
+void Scene::setControlStyle(std::optional<ControlMeshStyle> style) {
+  controlStyle_ = style;
+  rebuildControl();
+}
+
+void Scene::setControlLevel(int level) {
+  if (!dataset_) return;
+  controlLevel_ = resolveLevel(dataset_->mesh, level);
+  rebuildControl();
+}
+
+void Scene::setSurfaceVisible(bool visible) {
+  surfaceVisible_ = visible;
+  if (!surfaceDrawing_) return;
+  surfaceDrawing_->actor()->SetVisibility(visible);
+  if (FurLayer* fur = surfaceDrawing_->fur())
+    for (vtkActor* a : fur->actors()) a->SetVisibility(visible);
+}
+
+void Scene::setColorBy(ColorBy colorBy) {
+  colorBy_ = colorBy;
+  applyColoring();
+}
+
+void Scene::applyColoring() {
+  legend_->VisibilityOff();
+  if (!surfaceDrawing_) return;
+  vtkMapper* mapper = surfaceDrawing_->actor()->GetMapper();
+  if (colorBy_ == ColorBy::Material) {
+    mapper->ScalarVisibilityOff();
+    return;
+  }
+  double range[2] = {0, 1};
+  auto lut = vtkSmartPointer<vtkLookupTable>::New();
+  switch (colorBy_) {
+    case ColorBy::MinBarycentric:
+      // Red below 0 (outside the triangle), blue inside.
+      range[0] = std::min(-0.05, binding_.minBarycentric.minCoeff());
+      range[1] = std::max(0.05, binding_.minBarycentric.maxCoeff());
+      lut->SetHueRange(0.0, 0.66);
+      break;
+    case ColorBy::Distance: {
+      const double m = std::max(1e-12, binding_.distance.cwiseAbs().maxCoeff());
+      range[0] = -m;
+      range[1] = m;
+      lut->SetHueRange(0.66, 0.0);
+      break;
+    }
+    case ColorBy::FaceId:
+      range[1] = std::max(1, binding_.faceId.maxCoeff());
+      lut->SetNumberOfTableValues(64);
+      lut->SetHueRange(0.0, 1.0);
+      break;
+    case ColorBy::Material:
+      break;
+  }
+  lut->SetTableRange(range);
+  lut->Build();
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(arrayName(colorBy_));
+  mapper->SetScalarRange(range);
+  mapper->SetColorModeToMapScalars();
+  mapper->ScalarVisibilityOn();
+  legend_->SetLookupTable(lut);
+  legend_->SetTitle(arrayName(colorBy_));
+  legend_->VisibilityOn();
+}
+
+void Scene::setHighlightProblems(bool on) {
+  highlight_ = on;
+  updateDiagnostics();
+}
+
+void Scene::setCamera(CameraPreset preset) {
+  if (!dataset_) return;
+  const BoundingBox box =
+      surface_ ? boundingBox(*surface_) : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
+  const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
+                            box.max.y(), box.min.z(), box.max.z()};
+  placeCamera(renderer_, preset, bounds);
+}
+
+void Scene::setOverlayText(const std::string& text) {
+  overlay_->SetInput(text.c_str());
+}
+
+void Scene::rebind(BindingMethod method, int level) {
+  if (!dataset_ || !surface_) throw Error("open a dataset and a surface first");
+  const int resolved = resolveLevel(dataset_->mesh, level);
+  BindingOptions options;
+  options.method = method;
+  SurfaceBinding binding = bindSurface(*surface_, dataset_->mesh, resolved, options);
+  const BindingSummary before = summary_;
+  const SurfaceBinding previous = binding_;
+  const int previousLevel = level_;
+  binding_ = std::move(binding);
+  level_ = resolved;
+  try {
+    rebuildSurface();  // embed on a gpu path throws: keep the old binding
+  } catch (...) {
+    binding_ = previous;
+    level_ = previousLevel;
+    rebuildSurface();
+    throw;
+  }
+  previousSummary_ = before;
+  picked_.reset();
+  if (controlLevel_ != level_) {
+    controlLevel_ = level_;
+    rebuildControl();
+  }
+}
+
+std::string Scene::comparisonText() const {
+  auto line = [](const BindingSummary& s) {
+    char text[160];
+    std::snprintf(text, sizeof text, "inside %.1f%%, |d| p50 %.2e p99 %.2e max %.2e",
+                  100 * s.shareInside, s.distanceP50, s.distanceP99, s.distanceMax);
+    return std::string(text);
+  };
+  std::string out = "now:    " + line(summary_);
+  if (previousSummary_) out += "\nbefore: " + line(*previousSummary_);
+  return out;
+}
+
+VertexInfo Scene::vertexInfo(Index v) const {
+  VertexInfo info;
+  if (!surface_ || v < 0 || v >= surface_->vertexCount()) return info;
+  info.vertex = v;
+  info.face = binding_.faceId[v];
+  info.controlIds = binding_.controlIds.row(v).transpose();
+  info.weights = binding_.weights.row(v).transpose();
+  info.distance = binding_.distance[v];
+  info.minBarycentric = binding_.minBarycentric[v];
+  info.position = deformedPositions().row(v).transpose();
+  return info;
+}
+
+std::optional<Index> Scene::pickVertex(int x, int y) {
+  if (!surfaceDrawing_ || !surfaceVisible_) return std::nullopt;
+  auto picker = vtkSmartPointer<vtkPropPicker>::New();
+  if (!picker->Pick(x, y, 0, renderer_) || picker->GetActor() != surfaceDrawing_->actor())
+    return std::nullopt;
+  const double* p = picker->GetPickPosition();
+  const Index v = nearestPoint(deformedPositions(), Eigen::Vector3d(p[0], p[1], p[2]));
+  if (v < 0) return std::nullopt;
+  showPickedVertex(v);
+  return v;
+}
+
+void Scene::showPickedVertex(std::optional<Index> vertex) {
+  picked_ = vertex;
+  updateDiagnostics();
+}
+
+Eigen::Vector3d Scene::displayToWorld(int x, int y, const Eigen::Vector3d& near) const {
+  renderer_->SetWorldPoint(near.x(), near.y(), near.z(), 1.0);
+  renderer_->WorldToDisplay();
+  const double depth = renderer_->GetDisplayPoint()[2];
+  renderer_->SetDisplayPoint(x, y, depth);
+  renderer_->DisplayToWorld();
+  const double* w = renderer_->GetWorldPoint();
+  const double h = w[3] != 0 ? w[3] : 1.0;
+  return Eigen::Vector3d(w[0] / h, w[1] / h, w[2] / h);
+}
+
+FrameTimes Scene::showControlState(const Points3& levelPositions) {
+  FrameTimes times;
+  if (!dataset_) return times;
+  const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(level_)];
+  if (levelPositions.rows() != r.nodeCount) return times;
+  nodes_.middleRows(r.firstNode, r.nodeCount) = levelPositions;
+  deformedValid_ = false;
+  if (surfaceDrawing_) times = surfaceDrawing_->update(nodes_);
+  if (control_ && controlLevel_ == level_) control_->update(levelPositions);
+  updateDiagnostics();
+  return times;
+}
+
+const Points3& Scene::deformedPositions() const {
+  if (!deformedValid_ && deformer_) {
+    deformer_->deform(nodes_, deformed_, deformedNormals_);
+    deformedValid_ = true;
+  }
+  return deformed_;
+}
+
+vtkActor* Scene::surfaceActor() const {
+  return surfaceDrawing_ ? surfaceDrawing_->actor() : nullptr;
+}
+
+void Scene::updateDiagnostics() {
+  // Problem vertices.
+  highlighted_ = 0;
+  if (highlight_ && surface_) {
+    const Points3& x = deformedPositions();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto verts = vtkSmartPointer<vtkCellArray>::New();
+    const double far = summary_.distanceP99 * summary_.diagonal;
+    for (Index v = 0; v < x.rows(); ++v)
+      if (binding_.minBarycentric[v] < 0 || std::abs(binding_.distance[v]) > far) {
+        const vtkIdType id = points->InsertNextPoint(x(v, 0), x(v, 1), x(v, 2));
+        verts->InsertNextCell(1, &id);
+        ++highlighted_;
+      }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetVerts(verts);
+    vtkPolyDataMapper::SafeDownCast(problems_->GetMapper())->SetInputData(poly);
+  }
+  problems_->SetVisibility(highlight_ && highlighted_ > 0);
+  // The picked vertex, its control triangle (or tetrahedron) and their link.
+  if (picked_ && surface_) {
+    const VertexInfo info = vertexInfo(*picked_);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto verts = vtkSmartPointer<vtkCellArray>::New();
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    const int n = binding_.controlsPerVertex();
+    Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d p = nodes_.row(info.controlIds[k]).transpose();
+      anchor += info.weights[k] * p;
+      const vtkIdType id = points->InsertNextPoint(p.data());
+      verts->InsertNextCell(1, &id);
+    }
+    for (int k = 0; k < n; ++k)
+      for (int j = k + 1; j < n; ++j) {
+        const vtkIdType edge[2] = {k, j};
+        lines->InsertNextCell(2, edge);
+      }
+    const vtkIdType a = points->InsertNextPoint(anchor.data());
+    const vtkIdType b = points->InsertNextPoint(info.position.data());
+    const vtkIdType link[2] = {a, b};
+    lines->InsertNextCell(2, link);
+    verts->InsertNextCell(1, &b);
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetVerts(verts);
+    poly->SetLines(lines);
+    vtkPolyDataMapper::SafeDownCast(triangle_->GetMapper())->SetInputData(poly);
+  }
+  triangle_->SetVisibility(picked_.has_value() && surface_.has_value());
+}
+
+BoundSurface Scene::deformedBoundSurface() const {
+  if (!surface_) throw Error("no surface to export");
+  BoundSurface bound{*surface_, binding_, datasetPath_.generic_string()};
+  bound.surface.positions = deformedPositions();
+  bound.surface.normals = deformedNormals_;
+  return bound;
+}
+
+}  // namespace tetskin::gui

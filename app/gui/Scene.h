@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// What tetskin-gui shows, without any Qt widget: the dataset, the bound
+// surface drawn by a render path (with fur on the fur paths), the control
+// mesh of a chosen level, binding diagnostics (colour by an array with a
+// legend, problem vertices, the picked vertex's control triangle) and the
+// FPS overlay. It only wires the modules' public APIs; MainWindow drives it
+// and the tests drive it through MainWindow.
+
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/rendering/ControlMeshActor.h"
+#include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/vtkio/BindingFile.h"
+
+class vtkActor;
+class vtkRenderer;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace tetskin::gui {
+
+enum class ColorBy { Material, MinBarycentric, Distance, FaceId };
+const char* toString(ColorBy colorBy);
+
+struct VertexInfo {
+  Index vertex = -1;
+  int face = -1;               // boundary face (element for embed)
+  Eigen::Vector4i controlIds;  // dataset numbering; 4th is -1 for triangle bindings
+  Eigen::Vector4d weights;
+  double distance = 0, minBarycentric = 0;
+  Eigen::Vector3d position;  // deformed, this frame
+};
+
+class Scene {
+ public:
+  explicit Scene(vtkRenderer* renderer);
+  ~Scene();
+
+  // Loading; each throws Error naming the file (and line) on bad input and
+  // leaves the scene as it was.
+  void openDataset(const std::filesystem::path& path);  // .json, .node or .ele
+  void openSurface(const std::filesystem::path& path);  // OBJ, PLY, STL, VTP; bound at once
+  void openBinding(const std::filesystem::path& path);  // a .vtp from tetskin bind
+  bool hasDataset() const { return dataset_.has_value(); }
+  bool hasSurface() const { return surface_.has_value(); }
+  const Dataset& dataset() const { return *dataset_; }
+  const std::filesystem::path& datasetPath() const { return datasetPath_; }
+  const SurfaceMesh& surface() const { return *surface_; }
+  const SurfaceBinding& binding() const { return binding_; }
+  // The bound (and simulated) level.
+  int level() const { return level_; }
+
+  // View.
+  void setRenderPath(RenderPath path);
+  RenderPath renderPath() const { return path_; }
+  void setFurParameters(const FurParameters& fur);
+  void setControlStyle(std::optional<ControlMeshStyle> style);  // nullopt: hidden
+  std::optional<ControlMeshStyle> controlStyle() const { return controlStyle_; }
+  void setControlLevel(int level);  // the shown level; other than level() it stays at rest
+  int controlLevel() const { return controlLevel_; }
+  void setSurfaceVisible(bool visible);
+  bool surfaceVisible() const { return surfaceVisible_; }
+  void setColorBy(ColorBy colorBy);
+  ColorBy colorBy() const { return colorBy_; }
+  // Marks vertices with a negative weight or a distance beyond the 99th percentile.
+  void setHighlightProblems(bool on);
+  Index highlightedCount() const { return highlighted_; }
+  void setCamera(CameraPreset preset);
+  void setOverlayText(const std::string& text);
+
+  // Binding diagnostics.
+  void rebind(BindingMethod method, int level);
+  const BindingSummary& summary() const { return summary_; }
+  // The summary before the last rebind, for comparison.
+  const std::optional<BindingSummary>& previousSummary() const { return previousSummary_; }
+  std::string comparisonText() const;
+  VertexInfo vertexInfo(Index vertex) const;
+  // Hardware pick at display coordinates (VTK's: origin bottom left); the
+  // nearest surface vertex to the picked point, and shows its control triangle.
+  std::optional<Index> pickVertex(int x, int y);
+  void showPickedVertex(std::optional<Index> vertex);
+  std::optional<Index> pickedVertex() const { return picked_; }
+  // World point under display (x, y) at the depth of `near` (for dragging).
+  Eigen::Vector3d displayToWorld(int x, int y, const Eigen::Vector3d& near) const;
+
+  // A simulated frame: the bound level's node positions (level-local).
+  FrameTimes showControlState(const Points3& levelPositions);
+  // The current state in the dataset's numbering, and the deformed surface.
+  const Points3& controlNodes() const { return nodes_; }
+  const Points3& deformedPositions() const;
+  DeformableSurface* deformable() const { return surfaceDrawing_.get(); }
+  vtkActor* surfaceActor() const;
+
+  // The bound surface deformed to this frame (for .vtp export).
+  BoundSurface deformedBoundSurface() const;
+
+ private:
+  void rebuildSurface();
+  void rebuildControl();
+  void applyColoring();
+  void updateDiagnostics();
+  void bindCurrent(BindingMethod method, int level);
+
+  vtkRenderer* renderer_;
+  std::optional<Dataset> dataset_;
+  std::filesystem::path datasetPath_;
+  std::optional<SurfaceMesh> surface_;
+  SurfaceBinding binding_;
+  BindingSummary summary_;
+  std::optional<BindingSummary> previousSummary_;
+  int level_ = 0, controlLevel_ = 0;
+  RenderPath path_ = RenderPath::Cpu;
+  FurParameters fur_;
+  std::optional<ControlMeshStyle> controlStyle_ = ControlMeshStyle::Wireframe;
+  bool surfaceVisible_ = true, highlight_ = false;
+  ColorBy colorBy_ = ColorBy::Material;
+  Index highlighted_ = 0;
+  std::optional<Index> picked_;
+  Points3 nodes_;  // dataset numbering, this frame
+  mutable Points3 deformed_, deformedNormals_;
+  mutable bool deformedValid_ = false;
+  std::unique_ptr<SurfaceDeformer> deformer_;
+  std::unique_ptr<DeformableSurface> surfaceDrawing_;
+  std::unique_ptr<ControlMeshActor> control_;
+  vtkSmartPointer<vtkActor> problems_, triangle_;
+  vtkSmartPointer<vtkScalarBarActor> legend_;
+  vtkSmartPointer<vtkTextActor> overlay_;
+};
+
+}  // namespace tetskin::gui

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "SimulationRunner.h"
+
+#include <chrono>
+
+namespace tetskin::gui {
+
+SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, int level,
+                                   const SimulationOptions& options, const std::string& scenario) {
+  const TetMesh rest = extractLevel(dataset, level);
+  simulation_ =
+      std::make_unique<Simulation>(dataset, level, scenarioOptions(scenario, options, rest));
+  scenario_ = makeScenario(scenario);
+  scenario_->setUp(*simulation_);
+  pull_ = applied_ = Points3::Zero(rest.nodes.rows(), 3);
+  thread_ = std::thread([this] { loop(); });
+}
+
+SimulationRunner::~SimulationRunner() {
+  quit_ = true;
+  wake_.notify_all();
+  thread_.join();
+}
+
+void SimulationRunner::play() {
+  playing_ = true;
+  wake_.notify_all();
+}
+
+void SimulationRunner::pause() {
+  playing_ = false;
+}
+
+void SimulationRunner::step() {
+  if (!playing_) stepOnce();
+}
+
+Index SimulationRunner::steps() const {
+  return simulation_->state().steps;
+}
+
+void SimulationRunner::pull(const std::vector<int>& nodes, const Points3& forces) {
+  std::lock_guard<std::mutex> lock(pullMutex_);
+  pull_.setZero();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    pull_.row(nodes[i]) += forces.row(static_cast<Index>(i));
+}
+
+void SimulationRunner::release() {
+  std::lock_guard<std::mutex> lock(pullMutex_);
+  pull_.setZero();
+}
+
+void SimulationRunner::stepOnce() {
+  std::lock_guard<std::mutex> lock(stepMutex_);
+  const auto start = std::chrono::steady_clock::now();
+  // The scenario's forces plus the user's pull: take back last step's pull
+  // first, since a scenario may keep its forces rather than set them anew.
+  simulation_->setExternalForces(simulation_->externalForces() - applied_);
+  scenario_->beforeStep(*simulation_, simulation_->state().time);
+  {
+    std::lock_guard<std::mutex> pullLock(pullMutex_);
+    applied_ = pull_;
+  }
+  simulation_->setExternalForces(simulation_->externalForces() + applied_);
+  simulation_->step();
+  lastStepSeconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SimulationRunner::loop() {
+  using Clock = std::chrono::steady_clock;
+  const auto dt = std::chrono::duration<double>(simulation_->options().timeStep);
+  auto next = Clock::now();
+  while (!quit_) {
+    if (!playing_) {
+      std::unique_lock<std::mutex> lock(waitMutex_);
+      wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return quit_ || playing_; });
+      next = Clock::now();
+      continue;
+    }
+    stepOnce();
+    // Real time at most: simulated seconds do not run ahead of the clock.
+    next += std::chrono::duration_cast<Clock::duration>(dt);
+    if (next > Clock::now())
+      std::this_thread::sleep_until(next);
+    else
+      next = Clock::now();
+  }
+}
+
+}  // namespace tetskin::gui

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The simulation of tetskin-gui on its own thread, in parallel with the
+// drawing (the report expected this to raise the frame rate): play runs steps
+// paced to real time, pause stops after the current step, step() runs one.
+// The GUI thread reads the latest state and sets pulling forces at any time
+// (Simulation guards both with its mutex).
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "tetskin/simulation/Scenario.h"
+#include "tetskin/simulation/Simulation.h"
+
+namespace tetskin::gui {
+
+class SimulationRunner {
+ public:
+  // Throws Error for an unknown scenario or bad options.
+  SimulationRunner(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options,
+                   const std::string& scenario);
+  ~SimulationRunner();
+
+  void play();
+  void pause();
+  bool playing() const { return playing_; }
+  // One step now (waits for it); only while paused.
+  void step();
+  Index steps() const;
+  SimulationState state() const { return simulation_->state(); }
+  Simulation& simulation() { return *simulation_; }
+  double lastStepSeconds() const { return lastStepSeconds_; }
+  // Pulls the level-local `nodes` with `forces` (rows) until released.
+  void pull(const std::vector<int>& nodes, const Points3& forces);
+  void release();
+
+ private:
+  void loop();
+  void stepOnce();
+
+  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<Scenario> scenario_;
+  Points3 pull_;     // what the user pulls with now (guarded by pullMutex_)
+  Points3 applied_;  // the pull added to the forces of the running step
+  std::mutex pullMutex_;
+  std::atomic<bool> playing_{false}, quit_{false};
+  std::atomic<double> lastStepSeconds_{0};
+  std::mutex stepMutex_;  // one step at a time
+  std::mutex waitMutex_;
+  std::condition_variable wake_;
+  std::thread thread_;
+};
+
+}  // namespace tetskin::gui

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A simulation run as a ParaView time series: RUN.pvd plus RUN_frames/ with
+// one control-mesh .vtu (and optionally one bound-surface .vtp) per frame.
+// The .pvd is rewritten after every frame, so a run stopped at any point
+// leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
+
+#include <filesystem>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
+
+namespace tetskin {
+
+class RunRecorder {
+ public:
+  // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/.
+  explicit RunRecorder(std::filesystem::path pvd);
+  const std::filesystem::path& path() const { return series_.path(); }
+  Index frames() const { return frames_; }
+  // The control level's state (level-local nodes) and, if given, the bound
+  // surface already deformed to this frame.
+  void addFrame(double time, const TetMesh& rest, const Points3& positions,
+                const Points3& velocities, const Eigen::VectorXd& vonMisesStress, int level,
+                const BoundSurface* deformedSurface = nullptr);
+
+ private:
+  std::filesystem::path directory_;
+  std::string framesName_;
+  PvdSeries series_;
+  Index frames_ = 0;
+};
+
+}  // namespace tetskin

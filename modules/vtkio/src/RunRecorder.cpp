@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/vtkio/RunRecorder.h"
+
+#include <vtkUnstructuredGrid.h>
+
+#include <cstdio>
+
+#include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin {
+namespace {
+
+std::filesystem::path withPvdExtension(std::filesystem::path p) {
+  if (p.extension() != ".pvd") p += ".pvd";
+  return p;
+}
+
+}  // namespace
+
+RunRecorder::RunRecorder(std::filesystem::path pvd)
+    : directory_(std::filesystem::absolute(withPvdExtension(pvd)).parent_path()),
+      framesName_(withPvdExtension(pvd).stem().string() + "_frames"),
+      series_(withPvdExtension(pvd)) {
+  std::filesystem::create_directories(directory_ / framesName_);
+}
+
+void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& positions,
+                           const Points3& velocities, const Eigen::VectorXd& vonMisesStress,
+                           int level, const BoundSurface* deformedSurface) {
+  char name[64];
+  std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
+  writeVtu(directory_ / framesName_ / name,
+           simulationFrame(rest, positions, velocities, vonMisesStress, level));
+  series_.add(time, 0, framesName_ + "/" + name);
+  if (deformedSurface) {
+    std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));
+    writeBinding(directory_ / framesName_ / name, *deformedSurface);
+    series_.add(time, 1, framesName_ + "/" + name);
+  }
+  series_.write();
+  ++frames_;
+}
+
+}  // namespace tetskin

@@ -1,0 +1,358 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// tetskin-gui driven as a user would: files, view toggles, render paths,
+// picking, simulation, pulling, export, recording, the build dialog, drops,
+// and a screenshot against its baseline.
+#include <QVTKOpenGLNativeWidget.h>
+#include <gtest/gtest.h>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkMapper.h>
+#include <vtkRenderer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDropEvent>
+#include <QLabel>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+#include <QUrl>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "BuildDialog.h"
+#include "HistogramWidget.h"
+#include "ImageCompare.h"
+#include "MainWindow.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin::gui {
+namespace {
+
+const QString kData = QString(TETSKIN_SOURCE_DIR) + "/data/";
+
+std::filesystem::path scratch(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(TETSKIN_ACTUAL_DIR) / "scratch";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+class Gui : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!QApplication::instance()) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
+    window_ = std::make_unique<MainWindow>(false);
+    window_->setOverlayVisible(false);
+    window_->view()->setFixedSize(400, 300);
+    window_->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window_.get()));
+  }
+  void TearDown() override { window_.reset(); }
+
+  void openSample() {
+    ASSERT_TRUE(window_->openFiles({kData + "bunny.json", kData + "bunny.obj"}))
+        << window_->lastError().toStdString();
+  }
+  template <class T>
+  T* child(const char* name) {
+    T* w = window_->findChild<T*>(name);
+    EXPECT_NE(w, nullptr) << name;
+    return w;
+  }
+  double changeFrom(vtkImageData* before) {
+    return test::differingPixelShare(before, window_->grabImage());
+  }
+  // Mouse events as Qt delivers them to the view (QTest's own release does
+  // not reach QVTKOpenGLNativeWidget's interactor).
+  void mouse(QEvent::Type type, QPoint at, Qt::MouseButtons held,
+             Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    const Qt::MouseButton button = type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton;
+    QMouseEvent event(type, at, window_->view()->mapToGlobal(at), button, held, modifiers);
+    QApplication::sendEvent(window_->view(), &event);
+  }
+  // A click at VTK display coordinates (origin bottom left), through Qt.
+  void click(int x, int y) {
+    const QPoint at(x, window_->view()->height() - 1 - y);
+    mouse(QEvent::MouseButtonPress, at, Qt::LeftButton);
+    mouse(QEvent::MouseButtonRelease, at, Qt::NoButton);
+  }
+  // Display position of a world point.
+  Eigen::Vector2d project(const Eigen::Vector3d& p) {
+    vtkRenderer* r = window_->renderer();
+    r->SetWorldPoint(p.x(), p.y(), p.z(), 1);
+    r->WorldToDisplay();
+    return {r->GetDisplayPoint()[0], r->GetDisplayPoint()[1]};
+  }
+
+  std::unique_ptr<MainWindow> window_;
+};
+
+TEST_F(Gui, OpensTheSampleDatasetAndSurface) {
+  const auto empty = window_->grabImage();
+  openSample();
+  const Scene& s = window_->scene();
+  EXPECT_EQ(s.dataset().mesh.levels.size(), 3u);
+  EXPECT_EQ(s.surface().vertexCount(), 1839);
+  EXPECT_EQ(s.level(), 2);  // bound to the finest level
+  EXPECT_EQ(s.binding().vertexCount(), 1839);
+  EXPECT_TRUE(window_->windowTitle().contains("bunny.json"));
+  EXPECT_TRUE(window_->recentFiles().first().endsWith("bunny.obj"));
+  EXPECT_GT(changeFrom(empty), 0.1);  // the bunny is drawn
+  EXPECT_EQ(child<QSpinBox>("controlLevel")->maximum(), 2);
+}
+
+TEST_F(Gui, BadFilesNameFileAndLineAndChangeNothing) {
+  openSample();
+  const std::filesystem::path bad = scratch("bad.obj");
+  std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 0 1 nope\nf 1 2 3\n";
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(bad.string())));
+  EXPECT_TRUE(window_->lastError().contains("bad.obj:3")) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().surface().vertexCount(), 1839);  // the old surface stays
+  const std::filesystem::path badJson = scratch("bad.json");
+  std::ofstream(badJson) << "{\n  \"format\": \"tetskin-dataset\",\n  oops\n}\n";
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(badJson.string())));
+  EXPECT_TRUE(window_->lastError().contains("bad.json:3")) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().dataset().mesh.levels.size(), 3u);
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(scratch("notes.txt").string())));
+  EXPECT_TRUE(window_->lastError().contains("is not a file tetskin-gui opens"));
+}
+
+TEST_F(Gui, EveryViewToggleChangesThePicture) {
+  openSample();
+  auto* control = child<QComboBox>("controlStyle");
+  control->setCurrentText("none");
+  auto previous = window_->grabImage();
+  for (const char* style : {"surface", "wireframe", "shrink"}) {
+    control->setCurrentText(style);
+    ASSERT_TRUE(window_->scene().controlStyle().has_value());
+    const auto image = window_->grabImage();
+    EXPECT_GT(test::differingPixelShare(previous, image), 0.005) << style;
+    previous = image;
+  }
+  child<QSpinBox>("controlLevel")->setValue(0);
+  EXPECT_EQ(window_->scene().controlLevel(), 0);
+  EXPECT_GT(changeFrom(previous), 0.005);  // a coarser wireframe
+  control->setCurrentText("none");
+  previous = window_->grabImage();
+  child<QCheckBox>("showSurface")->setChecked(false);
+  EXPECT_GT(changeFrom(previous), 0.1);
+  child<QCheckBox>("showSurface")->setChecked(true);
+  child<QComboBox>("camera")->setCurrentText("top");
+  EXPECT_GT(changeFrom(previous), 0.05);
+}
+
+TEST_F(Gui, EveryRenderPathDraws) {
+  openSample();
+  child<QComboBox>("controlStyle")->setCurrentText("none");
+  window_->setRenderPath("cpu");
+  const auto cpu = window_->grabImage();
+  for (const char* path : {"gpu-1pass", "gpu-2pass", "fur-cpu", "fur-gpu"}) {
+    window_->setRenderPath(path);
+    EXPECT_TRUE(window_->lastError().isEmpty())
+        << path << ": " << window_->lastError().toStdString();
+    EXPECT_STREQ(toString(window_->scene().renderPath()), path);
+    const double change = changeFrom(cpu);
+    if (QString(path).startsWith("fur"))
+      EXPECT_GT(change, 0.05) << path;  // fur is there
+    else
+      EXPECT_LT(change, 0.05) << path;  // the same surface
+  }
+  child<QCheckBox>("furFins")->setChecked(true);
+  EXPECT_TRUE(window_->scene().deformable()->fur()->actors().size() == 2);
+}
+
+TEST_F(Gui, ClickingTheSurfaceReportsTheVertexAndItsControlTriangle) {
+  openSample();
+  child<QComboBox>("controlStyle")->setCurrentText("none");
+  window_->grabImage();
+  const int x = window_->view()->width() / 2, y = window_->view()->height() / 2;
+  click(x, y);
+  const std::optional<Index> picked = window_->scene().pickedVertex();
+  ASSERT_TRUE(picked.has_value()) << "nothing picked at the centre of the view: "
+                                  << window_->vertexInfoText().toStdString();
+  const VertexInfo info = window_->scene().vertexInfo(*picked);
+  const SurfaceBinding& b = window_->scene().binding();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(info.controlIds[k], b.controlIds(*picked, k));
+    EXPECT_EQ(info.weights[k], b.weights(*picked, k));
+  }
+  EXPECT_EQ(info.face, b.faceId[*picked]);
+  // The vertex is the one under the cursor (within a few pixels at this size).
+  const Eigen::Vector2d at = project(info.position);
+  EXPECT_LT((at - Eigen::Vector2d(x, y)).norm(), 8.0);
+  const QString text = child<QLabel>("vertexInfo")->text();
+  EXPECT_TRUE(text.contains(QString("vertex %1:").arg(*picked))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QString("control ids %1 %2 %3")
+                                .arg(b.controlIds(*picked, 0))
+                                .arg(b.controlIds(*picked, 1))
+                                .arg(b.controlIds(*picked, 2))))
+      << text.toStdString();
+  click(2, 2);  // the background: nothing
+  EXPECT_FALSE(window_->scene().pickedVertex().has_value());
+}
+
+TEST_F(Gui, StepPlayAndResetTheSimulation) {
+  openSample();
+  ASSERT_NE(window_->runner(), nullptr);
+  const Points3 rest = window_->scene().dataset().mesh.nodes;
+  for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->steps(), 3);
+  EXPECT_GT((window_->scene().controlNodes() - rest).norm(), 0.0);  // wobble moved it
+  QTest::mouseClick(child<QPushButton>("play"), Qt::LeftButton);
+  EXPECT_TRUE(window_->runner()->playing());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return window_->runner()->steps() >= 6; }, 20000));
+  QTest::mouseClick(child<QPushButton>("play"), Qt::LeftButton);
+  EXPECT_FALSE(window_->runner()->playing());
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  EXPECT_EQ((window_->scene().controlNodes() - rest).norm(), 0.0);
+}
+
+TEST_F(Gui, ShiftDragPullsTheBody) {
+  openSample();
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  child<QComboBox>("controlStyle")->setCurrentText("none");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  window_->grabImage();
+  QWidget* view = window_->view();
+  const QPoint from(view->width() / 2, view->height() / 2);
+  mouse(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::ShiftModifier);
+  const std::optional<Index> grabbed = window_->scene().pickedVertex();
+  ASSERT_TRUE(grabbed.has_value());
+  const Eigen::Vector2d before = project(window_->scene().vertexInfo(*grabbed).position);
+  mouse(QEvent::MouseMove, from + QPoint(60, 0), Qt::LeftButton, Qt::ShiftModifier);
+  EXPECT_TRUE(window_->runner()->playing());
+  const Index start = window_->runner()->steps();
+  EXPECT_TRUE(QTest::qWaitFor([&] { return window_->runner()->steps() >= start + 12; }, 30000));
+  mouse(QEvent::MouseButtonRelease, from + QPoint(60, 0), Qt::NoButton, Qt::ShiftModifier);
+  const Index released = window_->runner()->steps();
+  EXPECT_TRUE(QTest::qWaitFor([&] { return window_->runner()->steps() >= released + 2; }, 30000));
+  EXPECT_EQ(window_->runner()->simulation().externalForces().norm(), 0.0);  // let go
+  window_->showLatestState();
+  const Eigen::Vector2d after = project(window_->scene().vertexInfo(*grabbed).position);
+  std::printf("pulled vertex moved %.1f px right, %.1f px up\n", after.x() - before.x(),
+              after.y() - before.y());
+  EXPECT_GT(after.x() - before.x(), 2.0);  // toward the mouse
+}
+
+TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
+  openSample();
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const std::filesystem::path vtu = scratch("frame.vtu"), vtp = scratch("frame.vtp");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtu.string())));
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtp.string())));
+  const auto grid = readVtu(vtu);
+  EXPECT_EQ(grid->GetNumberOfPoints(), 3270);
+  EXPECT_EQ(grid->GetNumberOfCells(), 12713);
+  const BoundSurface back = readBinding(vtp);
+  EXPECT_EQ(back.surface.vertexCount(), 1839);
+  EXPECT_EQ(back.binding.controlIds, window_->scene().binding().controlIds);
+  EXPECT_TRUE(back.surface.positions.isApprox(window_->scene().deformedPositions()));
+  const std::filesystem::path pvd = scratch("run.pvd");
+  std::filesystem::remove_all(scratch("run_frames"));
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  for (int i = 0; i < 2; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->recordedFrames(), 3);  // the first frame and two steps
+  window_->stopRecording();
+  std::stringstream text;
+  text << std::ifstream(pvd).rdbuf();
+  std::size_t entries = 0;
+  for (std::size_t at = text.str().find("<DataSet"); at != std::string::npos;
+       at = text.str().find("<DataSet", at + 1))
+    ++entries;
+  EXPECT_EQ(entries, 6u);  // control mesh and surface per frame
+  EXPECT_EQ(readVtu(scratch("run_frames/control_00002.vtu"))->GetNumberOfCells(), 12713);
+  EXPECT_FALSE(window_->exportFrame(QString::fromStdString(scratch("frame.txt").string())));
+}
+
+TEST_F(Gui, BindingDiagnosticsColourHighlightAndRebind) {
+  openSample();
+  child<QComboBox>("colorBy")->setCurrentText("MinBarycentric");
+  EXPECT_EQ(window_->scene().colorBy(), ColorBy::MinBarycentric);
+  EXPECT_TRUE(window_->scene().surfaceActor()->GetMapper()->GetScalarVisibility());
+  const auto* histogram = child<HistogramWidget>("histogram");
+  int total = 0;
+  for (int c : histogram->counts()) total += c;
+  EXPECT_EQ(total, 1839);
+  EXPECT_DOUBLE_EQ(histogram->low(), window_->scene().binding().minBarycentric.minCoeff());
+  child<QCheckBox>("highlight")->setChecked(true);
+  const SurfaceBinding& b = window_->scene().binding();
+  const BindingSummary& s = window_->scene().summary();
+  Index expected = 0;
+  for (Index v = 0; v < b.vertexCount(); ++v)
+    expected += b.minBarycentric[v] < 0 || std::abs(b.distance[v]) > s.distanceP99 * s.diagonal;
+  EXPECT_EQ(window_->scene().highlightedCount(), expected);
+  EXPECT_GT(expected, 0);
+  child<QComboBox>("rebindMethod")->setCurrentText("seed");
+  child<QSpinBox>("rebindLevel")->setValue(1);
+  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
+  EXPECT_EQ(window_->scene().binding().method, BindingMethod::Seed);
+  EXPECT_EQ(window_->scene().level(), 1);
+  EXPECT_EQ(window_->runner()->simulation().level(), 1);  // the simulation follows
+  EXPECT_TRUE(window_->scene().previousSummary().has_value());
+  EXPECT_TRUE(child<QLabel>("comparison")->text().contains("before:"));
+  // embed cannot be drawn by a gpu path: refused, the old binding stays.
+  window_->setRenderPath("gpu-2pass");
+  child<QComboBox>("rebindMethod")->setCurrentText("embed");
+  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
+  EXPECT_TRUE(window_->lastError().contains("embed")) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().binding().method, BindingMethod::Seed);
+}
+
+TEST_F(Gui, DroppedFilesOpenDatasetFirst) {
+  QMimeData mime;
+  mime.setUrls(
+      {QUrl::fromLocalFile(kData + "bunny_8k.obj"), QUrl::fromLocalFile(kData + "bunny.json")});
+  QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window_.get(), &enter);
+  EXPECT_TRUE(enter.isAccepted());
+  QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window_.get(), &drop);
+  ASSERT_TRUE(window_->scene().hasSurface())
+      << window_->lastError().toStdString() << " / " << window_->windowTitle().toStdString();
+  EXPECT_EQ(window_->scene().surface().triangleCount(), 7998);
+}
+
+TEST_F(Gui, BuildDialogBuildsADatasetAndCancels) {
+  BuildDialog* dialog = window_->buildDialog();
+  const std::filesystem::path out = scratch("built");
+  std::filesystem::remove(scratch("built.json"));
+  dialog->setInputs({kData + "bunny.obj"});
+  dialog->setOutput(QString::fromStdString(out.string()));
+  dialog->setLevels(1, 300, 3000);
+  dialog->setQualities("2.0");
+  ASSERT_TRUE(dialog->start());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 120000));
+  EXPECT_TRUE(dialog->log().contains("done")) << dialog->log().toStdString();
+  ASSERT_TRUE(window_->scene().hasDataset());
+  EXPECT_EQ(window_->scene().datasetPath(), scratch("built.json"));
+  // Cancel at once: no dataset is written.
+  const std::filesystem::path other = scratch("cancelled");
+  std::filesystem::remove(scratch("cancelled.json"));
+  dialog->setOutput(QString::fromStdString(other.string()));
+  dialog->setQualities("2.0,1.8,1.6,1.4,1.2");
+  ASSERT_TRUE(dialog->start());
+  dialog->cancel();
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 60000));
+  EXPECT_TRUE(dialog->log().endsWith("cancelled")) << dialog->log().toStdString();
+  EXPECT_FALSE(std::filesystem::exists(scratch("cancelled.json")));
+}
+
+TEST_F(Gui, ScreenshotMatchesItsBaseline) {
+  openSample();
+  const std::filesystem::path png = scratch("screenshot.png");
+  ASSERT_TRUE(window_->saveScreenshot(QString::fromStdString(png.string())));
+  test::expectMatchesBaseline(readPng(png), TETSKIN_BASELINE_DIR, TETSKIN_ACTUAL_DIR,
+                              "gui_sample.png", 0.005);
+}
+
+}  // namespace
+}  // namespace tetskin::gui

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// GoogleTest main with a QApplication; listing the tests needs no display.
+#include <QVTKOpenGLNativeWidget.h>
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <cstdlib>
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  const char* display = std::getenv("DISPLAY");
+  if (::testing::GTEST_FLAG(list_tests) || !display || !*display)
+    return RUN_ALL_TESTS();  // tests skip
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("TetSkin");
+  QApplication::setApplicationName("tetskin-gui-tests");
+  // Recent files and other settings go to the build tree, not the user's home.
+  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope,
+                     QDir::currentPath() + "/gui_settings");
+  QSettings().clear();
+  return RUN_ALL_TESTS();
+}
