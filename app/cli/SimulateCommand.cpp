@@ -123,6 +123,10 @@ void addSimulateCommand(CLI::App& app) {
       ->check(CLI::IsMember({"cg", "multigrid"}));
   cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
       ->capture_default_str();
+  cmd->add_option("--coarse-reuse", a->options.coarseReuse,
+                  "multigrid: rebuild the coarse operators every N steps (solves stay exact)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--young", a->options.material.youngsModulus, "Young's modulus (Pa)")
       ->capture_default_str();
   cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio")

@@ -2,6 +2,7 @@
 // Implicit steps per second of the wobble scenario with block-Jacobi CG and
 // with multigrid-preconditioned CG, both to the same relative residual, in the
 // same run. Prints a table; asserts nothing.
+#include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -16,9 +17,11 @@ using namespace tetskin;
 
 namespace {
 
-void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps) {
+void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
+         int coarseReuse = 1) {
   SimulationOptions options;
   options.solver = solver;
+  options.coarseReuse = coarseReuse;
   options.tolerance = 1e-6;
   Simulation sim(mesh, level, options);
   auto scenario = makeScenario("wobble");
@@ -40,10 +43,40 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
   }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%-22s %8lld  %-9s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
-              static_cast<long long>(sim.restMesh().elementCount()), toString(solver),
-              steps / total, static_cast<double>(iterations) / steps, 1e3 * total / steps,
-              1e3 * assembly / steps, 1e3 * setup / steps, 1e3 * solve / steps);
+  char solverName[32];
+  std::snprintf(solverName, sizeof solverName, coarseReuse > 1 ? "%s/%d" : "%s", toString(solver),
+                coarseReuse);
+  std::printf("%-22s %8lld  %-12s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
+              static_cast<long long>(sim.restMesh().elementCount()), solverName, steps / total,
+              static_cast<double>(iterations) / steps, 1e3 * total / steps, 1e3 * assembly / steps,
+              1e3 * setup / steps, 1e3 * solve / steps);
+}
+
+// Rotation extraction per element and step: the SVD (the reference) against
+// the warm-started quaternion ascent the stepper uses, on deformation
+// gradients that drift a little from call to call, as between time steps.
+void rotations() {
+  constexpr int kCount = 200000;
+  std::vector<Eigen::Matrix3d> gradients(kCount);
+  for (int i = 0; i < kCount; ++i)
+    gradients[static_cast<std::size_t>(i)] =
+        Eigen::AngleAxisd(1e-3 * i, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() *
+        (Eigen::Matrix3d::Identity() + 0.05 * Eigen::Matrix3d::Random());
+  double checksum = 0;
+  auto time = [&](auto&& extract) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const Eigen::Matrix3d& F : gradients) checksum += extract(F)(0, 0);
+    return 1e9 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+           kCount;
+  };
+  const double svd = time([](const Eigen::Matrix3d& F) { return CorotatedFem::rotation(F); });
+  Eigen::Quaterniond warm = Eigen::Quaterniond::Identity();
+  const double fast =
+      time([&warm](const Eigen::Matrix3d& F) { return CorotatedFem::rotation(F, warm); });
+  std::printf(
+      "rotation extraction, 1 thread: SVD %.0f ns, warm-started quaternion %.0f ns (%.1fx)"
+      " [checksum %.3g]\n",
+      svd, fast, svd / fast, checksum);
 }
 
 }  // namespace
@@ -54,12 +87,16 @@ int main(int argc, char** argv) {
   const Dataset sample = loadDataset(data + "bunny.json");
   std::printf("wobble scenario, dt 1/60 s, relative residual 1e-6, %u hardware threads, %d steps\n",
               std::thread::hardware_concurrency(), steps);
-  std::printf("%-22s %8s  %-9s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
+  rotations();
+  std::printf("(multigrid/N: coarse operators rebuilt every N steps)\n");
+  std::printf("%-22s %8s  %-12s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
   for (int level : {0, 2})
     for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {
       const std::string name = "bunny level " + std::to_string(level);
       row(name.c_str(), sample.mesh, level, solver, steps);
+      if (solver == SolverKind::Multigrid && level > 0)
+        row(name.c_str(), sample.mesh, level, solver, steps, 4);
     }
   // A ~100k-element dataset: the bunny at TetGen quality 1.2 on top of
   // coarser levels, built here.
@@ -72,6 +109,8 @@ int main(int argc, char** argv) {
   const BuildResult big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
   for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid})
     row("bunny 4 levels, finest", big.dataset.mesh, 3, solver, std::max(3, steps / 5));
+  row("bunny 4 levels, finest", big.dataset.mesh, 3, SolverKind::Multigrid, std::max(3, steps / 5),
+      4);
   (void)argv;
   return 0;
 }

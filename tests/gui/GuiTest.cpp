@@ -104,7 +104,8 @@ TEST_F(Gui, OpensTheSampleDatasetAndSurface) {
   EXPECT_EQ(s.level(), 2);  // bound to the finest level
   EXPECT_EQ(s.binding().vertexCount(), 1839);
   EXPECT_TRUE(window_->windowTitle().contains("bunny.json"));
-  EXPECT_TRUE(window_->recentFiles().first().endsWith("bunny.obj"));
+  EXPECT_TRUE(window_->recentFiles().first().endsWith("bunny.obj"))
+      << window_->recentFiles().join(", ").toStdString();
   EXPECT_GT(changeFrom(empty), 0.1);  // the bunny is drawn
   EXPECT_EQ(child<QSpinBox>("controlLevel")->maximum(), 2);
 }

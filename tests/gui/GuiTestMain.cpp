@@ -18,9 +18,12 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   QApplication::setOrganizationName("TetSkin");
   QApplication::setApplicationName("tetskin-gui-tests");
-  // Recent files and other settings go to the build tree, not the user's home.
-  QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope,
-                     QDir::currentPath() + "/gui_settings");
+  // Recent files and other settings go to the build tree, not the user's home;
+  // one folder per process (CTest runs each test in its own), since QSettings
+  // notices another process's writes to a shared file only by its timestamp.
+  QSettings::setPath(
+      QSettings::NativeFormat, QSettings::UserScope,
+      QDir::currentPath() + "/gui_settings/" + QString::number(QCoreApplication::applicationPid()));
   QSettings().clear();
   return RUN_ALL_TESTS();
 }

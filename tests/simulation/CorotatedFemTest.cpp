@@ -55,6 +55,28 @@ TEST(CorotatedFem, RotationOfPolarDecomposition) {
   EXPECT_TRUE((Ri.transpose() * Ri).isApprox(Eigen::Matrix3d::Identity(), 1e-12));
 }
 
+TEST(CorotatedFem, FastRotationEqualsTheSvdRotationColdAndWarm) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int inverted = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Eigen::Matrix3d F;
+    for (int k = 0; k < 9; ++k) F(k / 3, k % 3) = u(random);
+    F += (i % 2 ? 1.5 : 0.2) * Eigen::Matrix3d::Identity();  // near and far from a rotation
+    inverted += F.determinant() < 0;
+    const Eigen::Matrix3d reference = CorotatedFem::rotation(F);
+    Eigen::Quaterniond cold = Eigen::Quaterniond::Identity();
+    const Eigen::Matrix3d fast = CorotatedFem::rotation(F, cold);
+    EXPECT_TRUE(fast.isApprox(reference, 1e-8)) << "F =\n" << F;
+    EXPECT_NEAR(fast.determinant(), 1.0, 1e-12);
+    // Warm start from a nearby rotation, as from the last time step.
+    Eigen::Quaterniond warm(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitX()) *
+                            Eigen::Quaterniond(reference));
+    EXPECT_TRUE(CorotatedFem::rotation(F, warm).isApprox(reference, 1e-8));
+  }
+  EXPECT_GT(inverted, 100);  // inverted elements were among them
+}
+
 TEST(CorotatedFem, RigidMotionProducesNoElasticForce) {
   const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
   CorotatedFem fem(mesh, material());

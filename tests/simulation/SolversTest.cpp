@@ -72,6 +72,26 @@ TEST(Solvers, CgAndMultigridAgreeWithADirectSolve) {
   EXPECT_LT((xCg - reference).norm() / reference.norm(), 1e-8);
   EXPECT_LT((xMg - reference).norm() / reference.norm(), 1e-8);
   EXPECT_LT(mgStats.iterations, cg.iterations);
+
+  // Coarse operators reused from an earlier system: still the exact solution
+  // of this one, with a few iterations more at most.
+  MultigridPreconditioner reused(prolongations);
+  reused.setCoarseReuse(3);
+  SparseMatrix earlier = A;
+  earlier *= 0.7;  // a different (still SPD) system first
+  reused.setup(earlier);
+  reused.setup(A);  // keeps the coarse operators of `earlier`
+  MultigridPreconditioner ofEarlier(prolongations);
+  ofEarlier.setup(earlier);
+  const Eigen::SparseMatrix<double> kept(reused.coarseOperator(1));
+  EXPECT_EQ((kept - Eigen::SparseMatrix<double>(ofEarlier.coarseOperator(1))).norm(), 0.0);
+  EXPECT_GT((kept - Eigen::SparseMatrix<double>(mg.coarseOperator(1))).norm(), 0.1 * kept.norm());
+  Eigen::VectorXd xReused = Eigen::VectorXd::Zero(b.size());
+  const SolveStats reusedStats = conjugateGradient(A, b, xReused, reused, 1e-10, 5000);
+  EXPECT_LT((xReused - reference).norm() / reference.norm(), 1e-8);
+  EXPECT_LT(reusedStats.iterations, cg.iterations);
+  std::printf("multigrid CG with coarse operators of 0.7 A: %d iterations\n",
+              reusedStats.iterations);
   std::printf("iterations to 1e-10: block-Jacobi CG %d, multigrid CG %d\n", cg.iterations,
               mgStats.iterations);
   // The streamed Galerkin product equals the plain sparse product.

@@ -3,6 +3,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -47,6 +48,37 @@ Eigen::Matrix3d CorotatedFem::rotation(const Eigen::Matrix3d& F) {
   if (U.determinant() < 0) U.col(2) *= -1;
   if (V.determinant() < 0) V.col(2) *= -1;
   return U * V.transpose();
+}
+
+Eigen::Matrix3d CorotatedFem::rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q) {
+  const double scale = F.norm();
+  if (!(scale > 0) || !std::isfinite(scale)) return rotation(F);
+  const Eigen::Matrix3d A = F / scale;  // the tolerances below are relative
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Eigen::Matrix3d R = q.toRotationMatrix();
+    // Maximize trace(R^T A) over R exp([w]x): with S = R^T A the gradient is
+    // s = axial(S - S^T) and the Hessian H = trace(S) I - sym(S), so Newton's
+    // step is H w = s (quadratic convergence; Müller et al. divide by trace(S)
+    // alone, which converges linearly). Far from the maximum, where H is not
+    // positive definite, their gradient step.
+    const Eigen::Matrix3d S = R.transpose() * A;
+    const Eigen::Vector3d gradient(S(2, 1) - S(1, 2), S(0, 2) - S(2, 0), S(1, 0) - S(0, 1));
+    const Eigen::Matrix3d symmetric = 0.5 * (S + S.transpose());
+    const Eigen::Matrix3d hessian = symmetric.trace() * Eigen::Matrix3d::Identity() - symmetric;
+    const Eigen::LLT<Eigen::Matrix3d> llt(hessian);
+    Eigen::Vector3d step = llt.info() == Eigen::Success && hessian.diagonal().minCoeff() > 1e-3
+                               ? Eigen::Vector3d(llt.solve(gradient))
+                               : Eigen::Vector3d(gradient / (std::abs(symmetric.trace()) + 1e-9));
+    const double angle = step.norm();
+    if (angle < 1e-14) return R;
+    if (angle > 1.0) step /= angle;  // trust region: at most a radian per step
+    q = q * Eigen::Quaterniond(Eigen::AngleAxisd(step.norm(), step.normalized()));
+    q.normalize();
+  }
+  // Not converged (a near-degenerate F): the SVD decides.
+  const Eigen::Matrix3d R = rotation(F);
+  q = Eigen::Quaterniond(R);
+  return R;
 }
 
 CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
@@ -107,14 +139,19 @@ CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
               static_cast<int>(std::lower_bound(begin, end, col) - inner);
         }
   rotations_.assign(elements_.size(), Eigen::Matrix3d::Identity());
+  estimates_.assign(elements_.size(), Eigen::Quaterniond::Identity());
   colors_ = colourElements(rest);
 }
 
-Eigen::Matrix3d CorotatedFem::elementRotation(const Element& el, const Eigen::VectorXd& x) {
+Eigen::Matrix3d CorotatedFem::deformationGradient(const Element& el, const Eigen::VectorXd& x) {
   const Eigen::Vector3d x0 = x.segment<3>(3 * el.nodes[0]);
   Eigen::Matrix3d Ds;
   for (int k = 0; k < 3; ++k) Ds.col(k) = x.segment<3>(3 * el.nodes[k + 1]) - x0;
-  return rotation(Ds * el.restInverse);
+  return Ds * el.restInverse;
+}
+
+Eigen::Matrix3d CorotatedFem::elementRotation(const Element& el, const Eigen::VectorXd& x) {
+  return rotation(deformationGradient(el, x));
 }
 
 Eigen::Matrix<double, 12, 12> CorotatedFem::elementStiffness(Index e) const {
@@ -134,34 +171,40 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force,
   double* values = stiffness.valuePtr();
   std::fill(values, values + stiffness.nonZeros(), 0.0);
   for (const std::vector<int>& colour : colors_) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 64),
-                      [&](const auto& range) {
-                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                          const int e = colour[c];
-                          const Element& el = elements_[static_cast<std::size_t>(e)];
-                          const Eigen::Matrix3d R = elementRotation(el, x);
-                          rotations_[static_cast<std::size_t>(e)] = R;
-                          // z = R^T x - X per node: the displacement in the element's rotated
-                          // frame.
-                          std::array<Eigen::Vector3d, 4> z;
-                          for (int k = 0; k < 4; ++k)
-                            z[k] = R.transpose() * x.segment<3>(3 * el.nodes[k]) -
-                                   restPositions_.segment<3>(3 * el.nodes[k]);
-                          for (int i = 0; i < 4; ++i) {
-                            Eigen::Vector3d fi = Eigen::Vector3d::Zero();
-                            for (int j = 0; j < 4; ++j) {
-                              const Eigen::Matrix3d& Kij = el.stiffness[i * 4 + j];
-                              fi += Kij * z[j];
-                              const Eigen::Matrix3d rotated = R * Kij * R.transpose();
-                              for (int a = 0; a < 3; ++a) {
-                                double* slot = values + el.slots[(i * 4 + j) * 3 + a];
-                                for (int b = 0; b < 3; ++b) slot[b] += rotated(a, b);
-                              }
-                            }
-                            force.segment<3>(3 * el.nodes[i]) -= R * fi;
-                          }
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, colour.size(), 64), [&](const auto& range) {
+          for (std::size_t c = range.begin(); c != range.end(); ++c) {
+            const int e = colour[c];
+            const Element& el = elements_[static_cast<std::size_t>(e)];
+            const Eigen::Matrix3d R =
+                rotation(deformationGradient(el, x), estimates_[static_cast<std::size_t>(e)]);
+            rotations_[static_cast<std::size_t>(e)] = R;
+            // z = R^T x - X per node: the displacement in the element's rotated
+            // frame.
+            std::array<Eigen::Vector3d, 4> z;
+            for (int k = 0; k < 4; ++k)
+              z[k] = R.transpose() * x.segment<3>(3 * el.nodes[k]) -
+                     restPositions_.segment<3>(3 * el.nodes[k]);
+            for (int i = 0; i < 4; ++i) {
+              Eigen::Vector3d fi = Eigen::Vector3d::Zero();
+              for (int j = 0; j < 4; ++j) fi += el.stiffness[i * 4 + j] * z[j];
+              force.segment<3>(3 * el.nodes[i]) -= R * fi;
+              // K_e is symmetric: block (j, i) is block (i, j) transposed.
+              for (int j = i; j < 4; ++j) {
+                const Eigen::Matrix3d rotated = R * el.stiffness[i * 4 + j] * R.transpose();
+                for (int a = 0; a < 3; ++a) {
+                  double* slot = values + el.slots[(i * 4 + j) * 3 + a];
+                  for (int b = 0; b < 3; ++b) slot[b] += rotated(a, b);
+                }
+                if (j == i) continue;
+                for (int a = 0; a < 3; ++a) {
+                  double* slot = values + el.slots[(j * 4 + i) * 3 + a];
+                  for (int b = 0; b < 3; ++b) slot[b] += rotated(b, a);
+                }
+              }
+            }
+          }
+        });
   }
 }
 

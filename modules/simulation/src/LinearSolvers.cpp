@@ -40,34 +40,88 @@ Eigen::Matrix3d diagonalBlock(const SparseMatrix& A, Index node) {
   return block;
 }
 
-// One Gauss-Seidel sweep over the rows in the given direction.
-void gaussSeidel(const SparseMatrix& A, const Eigen::VectorXd& diagonal, const Eigen::VectorXd& b,
-                 Eigen::VectorXd& x, bool forward) {
-  const int n = static_cast<int>(A.rows());
+// Nodes coloured so that no two nodes of one colour are coupled in A: the
+// nodes of a colour can be relaxed at the same time.
+std::vector<std::vector<int>> colourNodes(const SparseMatrix& A) {
+  const int nodes = static_cast<int>(A.rows() / 3);
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  std::vector<int> colour(static_cast<std::size_t>(nodes), -1);
+  std::vector<std::vector<int>> colours;
+  std::vector<int> seenBy;  // per colour: the last node that found a neighbour in it
+  for (int v = 0; v < nodes; ++v) {
+    for (int a = 0; a < 3; ++a)
+      for (int k = outer[3 * v + a]; k < outer[3 * v + a + 1]; ++k) {
+        const int c = colour[static_cast<std::size_t>(inner[k] / 3)];
+        if (c >= 0) seenBy[static_cast<std::size_t>(c)] = v;
+      }
+    std::size_t c = 0;
+    while (c < colours.size() && seenBy[c] == v) ++c;
+    if (c == colours.size()) {
+      colours.emplace_back();
+      seenBy.push_back(-1);
+    }
+    colours[c].push_back(v);
+    colour[static_cast<std::size_t>(v)] = static_cast<int>(c);
+  }
+  return colours;
+}
+
+// One block Gauss-Seidel sweep: each node's 3 unknowns solved together
+// (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)), colour after colour, the
+// nodes of a colour in parallel; `forward` false runs the colours backwards.
+void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>& inverseDiagonal,
+                      const std::vector<std::vector<int>>& colours, const Eigen::VectorXd& b,
+                      Eigen::VectorXd& x, bool forward) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const double* values = A.valuePtr();
-  for (int i = 0; i < n; ++i) {
-    const int row = forward ? i : n - 1 - i;
-    double sum = b[row];
-    for (int k = outer[row]; k < outer[row + 1]; ++k)
-      if (inner[k] != row) sum -= values[k] * x[inner[k]];
-    x[row] = sum / diagonal[row];
+  auto relax = [&](int v) {
+    // b_v - A_v x + D_v x_v: the full row product, then the own block added back.
+    Eigen::Vector3d residual;
+    Eigen::Vector3d own = Eigen::Vector3d::Zero();
+    for (int a = 0; a < 3; ++a) {
+      const int row = 3 * v + a;
+      double sum = b[row];
+      for (int k = outer[row]; k < outer[row + 1]; ++k) {
+        const double term = values[k] * x[inner[k]];
+        sum -= term;
+        if (inner[k] >= 3 * v && inner[k] < 3 * v + 3) own[a] += term;
+      }
+      residual[a] = sum + own[a];
+    }
+    x.segment<3>(3 * v) = inverseDiagonal[static_cast<std::size_t>(v)] * residual;
+  };
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    const std::vector<int>& nodes = colours[forward ? i : colours.size() - 1 - i];
+    if (nodes.size() < 512) {  // too little work to share between threads
+      for (int v : nodes) relax(v);
+      continue;
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nodes.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t n = range.begin(); n != range.end(); ++n) relax(nodes[n]);
+                      });
   }
+}
+
+// Inverse 3x3 diagonal blocks (identity where a block is singular).
+void invertDiagonalBlocks(const SparseMatrix& A, std::vector<Eigen::Matrix3d>& inverse) {
+  const Index nodes = A.rows() / 3;
+  inverse.resize(static_cast<std::size_t>(nodes));
+  tbb::parallel_for(Index(0), nodes, [&](Index v) {
+    const Eigen::Matrix3d block = diagonalBlock(A, v);
+    Eigen::Matrix3d result;
+    bool invertible = false;
+    block.computeInverseWithCheck(result, invertible);
+    inverse[static_cast<std::size_t>(v)] = invertible ? result : Eigen::Matrix3d::Identity();
+  });
 }
 
 }  // namespace
 
 void BlockJacobi::setup(const SparseMatrix& A) {
-  const Index nodes = A.rows() / 3;
-  inverse_.resize(static_cast<std::size_t>(nodes));
-  tbb::parallel_for(Index(0), nodes, [&](Index v) {
-    const Eigen::Matrix3d block = diagonalBlock(A, v);
-    Eigen::Matrix3d inverse;
-    bool invertible = false;
-    block.computeInverseWithCheck(inverse, invertible);
-    inverse_[static_cast<std::size_t>(v)] = invertible ? inverse : Eigen::Matrix3d::Identity();
-  });
+  invertDiagonalBlocks(A, inverse_);
 }
 
 void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
@@ -79,7 +133,10 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
 
 struct MultigridPreconditioner::Impl {
   std::vector<GalerkinStream> streams;  // built on the first setup() after a change
-  std::vector<Eigen::VectorXd> diagonals;
+  std::vector<std::vector<Eigen::Matrix3d>> inverseDiagonals;  // per level
+  std::vector<std::vector<std::vector<int>>> colours;          // per level, with the streams
+  const SparseMatrix* fine = nullptr;                          // the system of the last setup
+  int setupsSinceCoarse = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest;
   // Scratch per level: right-hand side, solution, residual.
   mutable std::vector<Eigen::VectorXd> b, x, r;
@@ -114,32 +171,52 @@ void MultigridPreconditioner::setFixedNodes(const std::vector<char>& fixedNodes)
   impl_->streams.clear();
 }
 
+void MultigridPreconditioner::setCoarseReuse(int setups) {
+  reuse_ = std::max(1, setups);
+}
+
 void MultigridPreconditioner::setup(const SparseMatrix& A) {
+  // Level 0 is A itself (not copied: the caller keeps it alive while solving).
+  impl_->fine = &A;
+  const bool fresh = impl_->streams.empty();
+  if (!fresh && ++impl_->setupsSinceCoarse < reuse_) {
+    // Coarse operators from an earlier system: still an SPD preconditioner
+    // of this one, and CG still solves this system to the tolerance.
+    invertDiagonalBlocks(A, impl_->inverseDiagonals[0]);
+    return;
+  }
+  impl_->setupsSinceCoarse = 0;
   operators_.resize(nodal_.size() + 1);
-  operators_[0] = A;
   if (impl_->streams.empty()) {
     const SparseMatrix* fine = &A;
+    impl_->colours.assign(1, colourNodes(A));
     for (std::size_t l = 0; l < nodal_.size(); ++l) {
       impl_->streams.emplace_back(*fine, nodal_[l]);
       fine = &impl_->streams.back().pattern();
+      impl_->colours.push_back(colourNodes(*fine));
     }
   }
   for (std::size_t l = 0; l < nodal_.size(); ++l)
-    impl_->streams[l].compute(operators_[l], operators_[l + 1]);
-  impl_->diagonals.resize(operators_.size());
+    impl_->streams[l].compute(level(l), operators_[l + 1]);
+  impl_->inverseDiagonals.resize(operators_.size());
   for (std::size_t l = 0; l < operators_.size(); ++l)
-    impl_->diagonals[l] = operators_[l].diagonal();
+    invertDiagonalBlocks(level(l), impl_->inverseDiagonals[l]);
   // With Dirichlet rows removed from P, columns of P can become linearly
   // dependent and the coarsest operator singular. Its null vectors v have
   // P v = 0 and never reach the fine grid, so a tiny shift that makes the
   // factorization possible changes nothing that matters.
-  impl_->coarsest.setShift(1e-12 * operators_.back().diagonal().cwiseAbs().maxCoeff());
-  impl_->coarsest.compute(Eigen::SparseMatrix<double>(operators_.back()));
+  const SparseMatrix& coarsest = level(operators_.size() - 1);
+  impl_->coarsest.setShift(1e-12 * coarsest.diagonal().cwiseAbs().maxCoeff());
+  impl_->coarsest.compute(Eigen::SparseMatrix<double>(coarsest));
   if (impl_->coarsest.info() != Eigen::Success)
     throw Error("multigrid: the coarsest operator could not be factorized");
   impl_->b.resize(operators_.size());
   impl_->x.resize(operators_.size());
   impl_->r.resize(operators_.size());
+}
+
+const SparseMatrix& MultigridPreconditioner::level(std::size_t l) const {
+  return l == 0 ? *impl_->fine : operators_[l];
 }
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
@@ -150,17 +227,18 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
   for (std::size_t l = 0; l < last; ++l) {
     s.x[l].setZero(s.b[l].size());
     for (int i = 0; i < sweeps_; ++i)
-      gaussSeidel(operators_[l], s.diagonals[l], s.b[l], s.x[l], true);
-    multiply(operators_[l], s.x[l], s.r[l]);
+      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], true);
+    multiply(level(l), s.x[l], s.r[l]);
     s.r[l] = s.b[l] - s.r[l];
-    s.b[l + 1] = restrictions_[l] * s.r[l];
+    multiply(restrictions_[l], s.r[l], s.b[l + 1]);
   }
   s.x[last] = s.coarsest.solve(s.b[last]);
   // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
   for (std::size_t l = last; l-- > 0;) {
-    s.x[l] += transfers_[l] * s.x[l + 1];
+    multiply(transfers_[l], s.x[l + 1], s.r[l]);
+    s.x[l] += s.r[l];
     for (int i = 0; i < sweeps_; ++i)
-      gaussSeidel(operators_[l], s.diagonals[l], s.b[l], s.x[l], false);
+      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], false);
   }
   z = s.x[0];
 }

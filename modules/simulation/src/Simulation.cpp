@@ -34,6 +34,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       options_(options),
       fem_(rest_, options.material) {
   if (!(options.timeStep > 0)) throw Error("the time step must be positive");
+  if (options.coarseReuse < 1) throw Error("the coarse-operator reuse must be at least 1 step");
   x_ = fem_.restPositions();
   v_.setZero(fem_.dofCount());
   external_.setZero(fem_.dofCount());
@@ -58,6 +59,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       fine = coarseMesh.nodes;
     }
     auto mg = std::make_unique<MultigridPreconditioner>(std::move(prolongations));
+    mg->setCoarseReuse(options.coarseReuse);
     multigrid_ = mg.get();
     preconditioner_ = std::move(mg);
   } else {

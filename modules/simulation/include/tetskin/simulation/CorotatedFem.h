@@ -10,6 +10,7 @@
 // computed once in the constructor.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <array>
 #include <vector>
@@ -48,8 +49,15 @@ class CorotatedFem {
   Eigen::VectorXd vonMisesStress(const Eigen::VectorXd& x) const;
 
   // The rotation of the polar decomposition F = R S, a proper rotation also
-  // for inverted elements (SVD with the sign fix of Irving, Teran & Fedkiw).
+  // for inverted elements (SVD with the sign fix of Irving, Teran & Fedkiw):
+  // the rotation that maximizes trace(R^T F).
   static Eigen::Matrix3d rotation(const Eigen::Matrix3d& F);
+  // The same rotation by quaternion steps in the manner of Müller et al. 2016
+  // ("A robust method to extract the rotational part of deformations"), with
+  // Newton steps on trace(R^T F) from `estimate` (updated in place): one or
+  // two steps when warm-started from the last time step; falls back to the
+  // SVD if it does not converge.
+  static Eigen::Matrix3d rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& estimate);
 
   // Rest stiffness of element e (12 x 12, node-major xyz).
   Eigen::Matrix<double, 12, 12> elementStiffness(Index e) const;
@@ -64,6 +72,7 @@ class CorotatedFem {
     std::array<Eigen::Matrix3d, 16> stiffness;  // K_ij blocks, row-major (i*4+j)
     std::array<int, 48> slots;  // value index of entry (3 n_i + a, 3 n_j) per (i, j, a)
   };
+  static Eigen::Matrix3d deformationGradient(const Element& el, const Eigen::VectorXd& x);
   static Eigen::Matrix3d elementRotation(const Element& el, const Eigen::VectorXd& x);
   ElasticMaterial material_;
   std::vector<Element> elements_;
@@ -71,6 +80,7 @@ class CorotatedFem {
   Eigen::VectorXd mass_;
   SparseMatrix pattern_;
   std::vector<Eigen::Matrix3d> rotations_;
+  std::vector<Eigen::Quaterniond> estimates_;  // warm starts of the rotation per element
   // Elements grouped so that no two in a group share a node: each group is
   // assembled in parallel without locks or atomics.
   std::vector<std::vector<int>> colors_;

@@ -42,9 +42,10 @@ class BlockJacobi : public Preconditioner {
 // Multigrid V-cycle on non-nested levels: `nodalProlongations[l]` maps the
 // nodes of level l+1 (coarser) to those of level l (level 0 is the system's
 // own). Coarse operators are Galerkin products P^T A P, rebuilt in setup()
-// by precomputed streams (GalerkinStream.h); symmetric Gauss-Seidel smoothing
-// (forward before, backward after, so the cycle is a symmetric
-// preconditioner); an exact Cholesky solve on the coarsest level. Fixed nodes
+// by precomputed streams (GalerkinStream.h); block (3x3 per node) Gauss-Seidel
+// smoothing, multicoloured so each colour's nodes relax in parallel, forward
+// before and backward after (the cycle is a symmetric preconditioner); an
+// exact Cholesky solve on the coarsest level. Fixed nodes
 // (Dirichlet) receive no coarse correction.
 class MultigridPreconditioner : public Preconditioner {
  public:
@@ -53,21 +54,28 @@ class MultigridPreconditioner : public Preconditioner {
   ~MultigridPreconditioner() override;
   // 1 per fixed node of the finest level.
   void setFixedNodes(const std::vector<char>& fixedNodes);
+  // Rebuild the coarse operators (Galerkin products, coarsest factorization)
+  // on every `setups`-th setup only; the finest level is always the current
+  // system. 1 (the default) rebuilds every time.
+  void setCoarseReuse(int setups);
   void setup(const SparseMatrix& A) override;
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
   int levelCount() const { return static_cast<int>(nodal_.size()) + 1; }
+  // Level 0 is the system of the last setup(), which must outlive apply().
   const SparseMatrix& coarseOperator(int level) const {
-    return operators_.at(static_cast<std::size_t>(level));
+    return this->level(static_cast<std::size_t>(level));
   }
 
  private:
+  const SparseMatrix& level(std::size_t l) const;
   struct Impl;
   std::vector<SparseMatrix> prolongations_;  // nodal, as given
   std::vector<SparseMatrix> nodal_;          // with fixed rows removed
   std::vector<SparseMatrix> transfers_;      // nodal_ expanded to xyz dofs
   std::vector<SparseMatrix> restrictions_;   // their transposes
-  std::vector<SparseMatrix> operators_;      // [0] is a copy of A
+  std::vector<SparseMatrix> operators_;      // [0] unused: level 0 is the caller's A
   int sweeps_;
+  int reuse_ = 1;
   std::shared_ptr<Impl> impl_;
 };
 

@@ -34,6 +34,9 @@ struct SimulationOptions {
   double friction = 0.3;              // share of tangential velocity lost in contact
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance = 1e-6;  // relative residual of the linear solve
+  // Multigrid: rebuild the coarse operators every this many steps (1 = every
+  // step); the solve stays exact to `tolerance` either way.
+  int coarseReuse = 1;
   int maxIterations = 2000;
 };
 
