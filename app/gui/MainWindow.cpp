@@ -122,12 +122,20 @@ QWidget* MainWindow::buildViewDock() {
   form->addRow("Render path", renderPath_);
   connect(renderPath_, &QComboBox::currentTextChanged, this,
           [this](const QString& name) { setRenderPath(name); });
-  showSurface_ = new QCheckBox("surface (and fur)");
+  showSurface_ = new QCheckBox("surface");
   showSurface_->setObjectName("showSurface");
   showSurface_->setChecked(true);
   form->addRow("Show", showSurface_);
   connect(showSurface_, &QCheckBox::toggled, this, [this](bool on) {
     scene_->setSurfaceVisible(on);
+    renderNow();
+  });
+  auto* showFur = new QCheckBox("fur (fur paths)");
+  showFur->setObjectName("showFur");
+  showFur->setChecked(true);
+  form->addRow("", showFur);
+  connect(showFur, &QCheckBox::toggled, this, [this](bool on) {
+    scene_->setFurVisible(on);
     renderNow();
   });
   controlStyle_ = combo("controlStyle", {"none", "surface", "wireframe", "shrink"});

@@ -211,8 +211,14 @@ void Scene::setSurfaceVisible(bool visible) {
   surfaceVisible_ = visible;
   if (!surfaceDrawing_) return;
   surfaceDrawing_->actor()->SetVisibility(visible);
+  setFurVisible(furVisible_);
+}
+
+void Scene::setFurVisible(bool visible) {
+  furVisible_ = visible;
+  if (!surfaceDrawing_) return;
   if (FurLayer* fur = surfaceDrawing_->fur())
-    for (vtkActor* a : fur->actors()) a->SetVisibility(visible);
+    for (vtkActor* a : fur->actors()) a->SetVisibility(visible && surfaceVisible_);
 }
 
 void Scene::setColorBy(ColorBy colorBy) {

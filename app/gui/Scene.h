@@ -71,6 +71,9 @@ class Scene {
   int controlLevel() const { return controlLevel_; }
   void setSurfaceVisible(bool visible);
   bool surfaceVisible() const { return surfaceVisible_; }
+  // The fur of the fur paths on its own (the skin stays).
+  void setFurVisible(bool visible);
+  bool furVisible() const { return furVisible_; }
   void setColorBy(ColorBy colorBy);
   ColorBy colorBy() const { return colorBy_; }
   // Marks vertices with a negative weight or a distance beyond the 99th percentile.
@@ -123,7 +126,7 @@ class Scene {
   RenderPath path_ = RenderPath::Cpu;
   FurParameters fur_;
   std::optional<ControlMeshStyle> controlStyle_ = ControlMeshStyle::Wireframe;
-  bool surfaceVisible_ = true, highlight_ = false;
+  bool surfaceVisible_ = true, furVisible_ = true, highlight_ = false;
   ColorBy colorBy_ = ColorBy::Material;
   Index highlighted_ = 0;
   std::optional<Index> picked_;

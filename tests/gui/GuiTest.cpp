@@ -168,6 +168,14 @@ TEST_F(Gui, EveryRenderPathDraws) {
   }
   child<QCheckBox>("furFins")->setChecked(true);
   EXPECT_TRUE(window_->scene().deformable()->fur()->actors().size() == 2);
+  // The fur toggle hides the fur and leaves the skin, also across path changes.
+  const auto furry = window_->grabImage();
+  child<QCheckBox>("showFur")->setChecked(false);
+  EXPECT_GT(changeFrom(furry), 0.05);
+  EXPECT_TRUE(window_->scene().surfaceActor()->GetVisibility());
+  window_->setRenderPath("gpu-2pass");
+  window_->setRenderPath("fur-gpu");
+  EXPECT_FALSE(window_->scene().deformable()->fur()->actors()[0]->GetVisibility());
 }
 
 TEST_F(Gui, ClickingTheSurfaceReportsTheVertexAndItsControlTriangle) {
