@@ -620,10 +620,10 @@ bool MainWindow::onMouseMove(vtkObject*, unsigned long, void*) {
   const VertexInfo info = scene_->vertexInfo(*pullVertex_);
   const Eigen::Vector3d target =
       scene_->displayToWorld(i->GetEventPosition()[0], i->GetEventPosition()[1], info.position);
-  // A spring to the mouse, as stiff as the body itself at the scale of its size.
-  const BoundingBox box = boundingBox(scene_->surface());
+  // A spring to the mouse, as stiff as the body itself at the scale of its size
+  // (the binding summary already holds the surface's bounding-box diagonal).
   const double stiffness =
-      0.2 * runner_->simulation().options().material.youngsModulus * (box.max - box.min).norm();
+      0.2 * runner_->simulation().options().material.youngsModulus * scene_->summary().diagonal;
   const LevelRange& r = scene_->dataset().mesh.levels[static_cast<std::size_t>(scene_->level())];
   std::vector<int> nodes;
   Points3 forces(scene_->binding().controlsPerVertex(), 3);
