@@ -18,11 +18,11 @@ using namespace tetskin;
 namespace {
 
 void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
-         int coarseReuse = 1) {
+         int coarseReuse = 1, double tolerance = 1e-6) {
   SimulationOptions options;
   options.solver = solver;
   options.coarseReuse = coarseReuse;
-  options.tolerance = 1e-6;
+  options.tolerance = tolerance;
   Simulation sim(mesh, level, options);
   auto scenario = makeScenario("wobble");
   scenario->setUp(sim);
@@ -50,6 +50,41 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
               static_cast<long long>(sim.restMesh().elementCount()), solverName, steps / total,
               static_cast<double>(iterations) / steps, 1e3 * total / steps, 1e3 * assembly / steps,
               1e3 * setup / steps, 1e3 * solve / steps);
+}
+
+// How far a looser solve tolerance moves the trajectory: the wobble run with
+// each tolerance against the same run at 1e-8, over `steps` steps; prints the
+// largest node distance (relative to the bounding-box diagonal) and the mean
+// iterations.
+void toleranceAccuracy(const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps) {
+  auto run = [&](double tolerance, double& iterations, double& seconds) {
+    SimulationOptions options;
+    options.solver = solver;
+    options.tolerance = tolerance;
+    Simulation sim(mesh, level, options);
+    auto scenario = makeScenario("wobble");
+    scenario->setUp(sim);
+    long total = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < steps; ++i) {
+      scenario->beforeStep(sim, sim.state().time);
+      total += sim.step().iterations;
+    }
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    iterations = static_cast<double>(total) / steps;
+    return sim.state().positions;
+  };
+  double iterations = 0, seconds = 0;
+  const Points3 reference = run(1e-8, iterations, seconds);
+  const double diagonal = (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).norm();
+  for (double tolerance : {1e-6, 1e-4, 1e-3, 1e-2}) {
+    const Points3 positions = run(tolerance, iterations, seconds);
+    std::printf(
+        "  %-10s tolerance %-6g  %5.1f iter  %7.1f steps/s  largest deviation %.2e of the "
+        "diagonal\n",
+        toString(solver), tolerance, iterations, steps / seconds,
+        (positions - reference).rowwise().norm().maxCoeff() / diagonal);
+  }
 }
 
 // Rotation extraction per element and step: the SVD (the reference) against
@@ -91,6 +126,9 @@ int main(int argc, char** argv) {
   std::printf("(multigrid/N: coarse operators rebuilt every N steps)\n");
   std::printf("%-22s %8s  %-12s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
+  std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
+  for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid})
+    toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
   for (int level : {0, 2})
     for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {
       const std::string name = "bunny level " + std::to_string(level);

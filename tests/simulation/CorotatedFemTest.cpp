@@ -130,6 +130,51 @@ TEST(CorotatedFem, ForceIsTheNegativeEnergyGradient) {
   }
 }
 
+// The assembled stiffness is the sum over elements of R_e K_e R_e^T, and the
+// force -R_e K_e (R_e^T x_e - X_e), with K_e the rest stiffness and R_e the
+// rotations of this state: a dense reference assembly from the public
+// per-element pieces.
+TEST(CorotatedFem, AssemblyEqualsTheSumOfRotatedElementMatrices) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.1);
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+  Eigen::VectorXd x(fem.dofCount());
+  for (Index v = 0; v < fem.nodeCount(); ++v)
+    x.segment<3>(3 * v) = Q * fem.restPositions().segment<3>(3 * v);
+  for (Index i = 0; i < x.size(); ++i) x[i] += noise(rng);
+  Eigen::VectorXd f;
+  SparseMatrix K = fem.pattern();
+  fem.update(x, f, K);
+  Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(fem.dofCount(), fem.dofCount());
+  Eigen::VectorXd referenceForce = Eigen::VectorXd::Zero(fem.dofCount());
+  for (Index e = 0; e < mesh.elementCount(); ++e) {
+    const Eigen::Matrix3d& R = fem.rotations()[static_cast<std::size_t>(e)];
+    Eigen::Matrix<double, 12, 12> rotation = Eigen::Matrix<double, 12, 12>::Zero();
+    Eigen::Matrix<double, 12, 1> xe, Xe;
+    for (int k = 0; k < 4; ++k) {
+      rotation.block<3, 3>(3 * k, 3 * k) = R;
+      xe.segment<3>(3 * k) = x.segment<3>(3 * mesh.elements(e, k));
+      Xe.segment<3>(3 * k) = fem.restPositions().segment<3>(3 * mesh.elements(e, k));
+    }
+    const Eigen::Matrix<double, 12, 12> Ke = fem.elementStiffness(e);
+    const Eigen::Matrix<double, 12, 12> rotated = rotation * Ke * rotation.transpose();
+    const Eigen::Matrix<double, 12, 1> fe = -rotation * Ke * (rotation.transpose() * xe - Xe);
+    for (int i = 0; i < 4; ++i) {
+      const Index ni = mesh.elements(e, i);
+      referenceForce.segment<3>(3 * ni) += fe.segment<3>(3 * i);
+      for (int j = 0; j < 4; ++j)
+        reference.block<3, 3>(3 * ni, 3 * mesh.elements(e, j)) += rotated.block<3, 3>(3 * i, 3 * j);
+    }
+  }
+  const Eigen::MatrixXd assembled(K);
+  EXPECT_LT((assembled - reference).norm(), 1e-10 * reference.norm());
+  EXPECT_LT((f - referenceForce).norm(), 1e-10 * referenceForce.norm());
+  EXPECT_GT(referenceForce.norm(), 1.0);  // the state is really deformed
+}
+
 TEST(CorotatedFem, LumpedMassSumsToTotalMass) {
   const TetMesh mesh = test::tetGrid(2, 3, 4, {2, 3, 4});
   ElasticMaterial m = material();

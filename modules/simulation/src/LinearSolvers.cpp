@@ -9,22 +9,72 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/simulation/GalerkinStream.h"
-#include "tetskin/simulation/Prolongation.h"
 
 namespace tetskin {
+
+// The node-block layout (CorotatedFem::pattern()): rows 3v, 3v+1, 3v+2 share
+// one sorted column list made of whole triples 3c, 3c+1, 3c+2. The kernels
+// below read one column index per 3x3 block instead of one per entry.
+bool hasNodeBlocks(const SparseMatrix& A) {
+  if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed()) return false;
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  for (Index v = 0; v < A.rows() / 3; ++v) {
+    const int start = outer[3 * v], length = outer[3 * v + 1] - start;
+    if (length % 3 != 0) return false;
+    for (int a = 1; a < 3; ++a)
+      if (outer[3 * v + a + 1] - outer[3 * v + a] != length) return false;
+    for (int k = 0; k < length; ++k) {
+      const int column = inner[start + k];
+      if (column != inner[start + k - k % 3] + k % 3 || column % 3 != k % 3) return false;
+      for (int a = 1; a < 3; ++a)
+        if (inner[outer[3 * v + a] + k] != column) return false;
+    }
+  }
+  return true;
+}
 
 void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   if (y.size() != A.rows()) y.resize(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const double* values = A.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(A.rows()), 1024),
+  const double* in = x.data();
+  double* out = y.data();
+  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(A.rows() / 3), 256),
                     [&](const auto& r) {
-                      for (int row = r.begin(); row != r.end(); ++row) {
-                        double sum = 0;
-                        for (int k = outer[row]; k < outer[row + 1]; ++k)
-                          sum += values[k] * x[inner[k]];
-                        y[row] = sum;
+                      for (int v = r.begin(); v != r.end(); ++v) {
+                        const int start = outer[3 * v], length = outer[3 * v + 1] - start;
+                        const int* columns = inner + start;
+                        const double* row0 = values + start;
+                        const double* row1 = values + outer[3 * v + 1];
+                        const double* row2 = values + outer[3 * v + 2];
+                        double s0 = 0, s1 = 0, s2 = 0;
+                        for (int k = 0; k < length; k += 3) {
+                          const double* xc = in + columns[k];
+                          s0 += row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
+                          s1 += row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
+                          s2 += row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
+                        }
+                        out[3 * v] = s0;
+                        out[3 * v + 1] = s1;
+                        out[3 * v + 2] = s2;
+                      }
+                    });
+}
+
+void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+  if (y.size() != 3 * P.rows()) y.resize(3 * P.rows());
+  const int* outer = P.outerIndexPtr();
+  const int* inner = P.innerIndexPtr();
+  const double* values = P.valuePtr();
+  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(P.rows()), 512),
+                    [&](const auto& r) {
+                      for (int i = r.begin(); i != r.end(); ++i) {
+                        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+                        for (int k = outer[i]; k < outer[i + 1]; ++k)
+                          sum += values[k] * x.segment<3>(3 * inner[k]);
+                        y.segment<3>(3 * i) = sum;
                       }
                     });
 }
@@ -77,20 +127,22 @@ void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>&
   const int* inner = A.innerIndexPtr();
   const double* values = A.valuePtr();
   auto relax = [&](int v) {
-    // b_v - A_v x + D_v x_v: the full row product, then the own block added back.
-    Eigen::Vector3d residual;
-    Eigen::Vector3d own = Eigen::Vector3d::Zero();
-    for (int a = 0; a < 3; ++a) {
-      const int row = 3 * v + a;
-      double sum = b[row];
-      for (int k = outer[row]; k < outer[row + 1]; ++k) {
-        const double term = values[k] * x[inner[k]];
-        sum -= term;
-        if (inner[k] >= 3 * v && inner[k] < 3 * v + 3) own[a] += term;
-      }
-      residual[a] = sum + own[a];
+    // b_v - sum_{u != v} A_vu x_u, block by block (node-block layout).
+    const int start = outer[3 * v], length = outer[3 * v + 1] - start;
+    const int* columns = inner + start;
+    const double* row0 = values + start;
+    const double* row1 = values + outer[3 * v + 1];
+    const double* row2 = values + outer[3 * v + 2];
+    double s0 = b[3 * v], s1 = b[3 * v + 1], s2 = b[3 * v + 2];
+    for (int k = 0; k < length; k += 3) {
+      if (columns[k] == 3 * v) continue;
+      const double* xc = x.data() + columns[k];
+      s0 -= row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
+      s1 -= row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
+      s2 -= row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
     }
-    x.segment<3>(3 * v) = inverseDiagonal[static_cast<std::size_t>(v)] * residual;
+    x.segment<3>(3 * v) =
+        inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Vector3d(s0, s1, s2);
   };
   for (std::size_t i = 0; i < colours.size(); ++i) {
     const std::vector<int>& nodes = colours[forward ? i : colours.size() - 1 - i];
@@ -162,12 +214,8 @@ void MultigridPreconditioner::setFixedNodes(const std::vector<char>& fixedNodes)
         for (SparseMatrix::InnerIterator it(P, row); it; ++it) it.valueRef() = 0;
     P.prune(0.0);
   }
-  transfers_.clear();
   restrictions_.clear();
-  for (const SparseMatrix& P : nodal_) {
-    transfers_.push_back(expandToDofs(P));
-    restrictions_.push_back(transfers_.back().transpose());
-  }
+  for (const SparseMatrix& P : nodal_) restrictions_.push_back(P.transpose());
   impl_->streams.clear();
 }
 
@@ -188,6 +236,7 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   impl_->setupsSinceCoarse = 0;
   operators_.resize(nodal_.size() + 1);
   if (impl_->streams.empty()) {
+    if (!hasNodeBlocks(A)) throw Error("multigrid: the system is not in the node-block layout");
     const SparseMatrix* fine = &A;
     impl_->colours.assign(1, colourNodes(A));
     for (std::size_t l = 0; l < nodal_.size(); ++l) {
@@ -230,12 +279,12 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
       blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], true);
     multiply(level(l), s.x[l], s.r[l]);
     s.r[l] = s.b[l] - s.r[l];
-    multiply(restrictions_[l], s.r[l], s.b[l + 1]);
+    multiplyNodal(restrictions_[l], s.r[l], s.b[l + 1]);
   }
   s.x[last] = s.coarsest.solve(s.b[last]);
   // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
   for (std::size_t l = last; l-- > 0;) {
-    multiply(transfers_[l], s.x[l + 1], s.r[l]);
+    multiplyNodal(nodal_[l], s.x[l + 1], s.r[l]);
     s.x[l] += s.r[l];
     for (int i = 0; i < sweeps_; ++i)
       blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], false);
@@ -247,6 +296,14 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations) {
   SolveStats stats;
+  // The cheap part of hasNodeBlocks() (row lengths), on every call.
+  bool blocked = A.rows() == A.cols() && A.rows() % 3 == 0 && A.isCompressed();
+  for (Index v = 0; blocked && v < A.rows() / 3; ++v) {
+    const int* outer = A.outerIndexPtr() + 3 * v;
+    blocked = (outer[1] - outer[0]) % 3 == 0 && outer[2] - outer[1] == outer[1] - outer[0] &&
+              outer[3] - outer[2] == outer[1] - outer[0];
+  }
+  if (!blocked) throw Error("conjugate gradients: the system is not in the node-block layout");
   const double bNorm = b.norm();
   if (x.size() != b.size()) x.setZero(b.size());
   if (bNorm == 0) {

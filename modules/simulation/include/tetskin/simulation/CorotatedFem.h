@@ -4,10 +4,17 @@
 // shared FEM notes): per element a rest stiffness K_e = V B^T C B, a rotation R
 // from the polar decomposition of the deformation gradient, the elastic force
 // f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T. Everything that
-// depends only on the rest shape (shape gradients, K_e, lumped mass, the
-// sparsity pattern and where each element's blocks go in it) is computed once.
-// Note: elements are processed in parallel by colour; the colouring is
-// computed once in the constructor.
+// depends only on the rest shape (shape gradients, lumped mass, the sparsity
+// pattern and where each element's blocks go in it) is computed once.
+//
+// The material is isotropic, so nothing 12x12 is stored or multiplied: with
+// shape gradients g_k and r_k = R g_k, block (i, j) of R K_e R^T is
+// V (lambda r_i r_j^T + mu r_j r_i^T + mu (g_i . g_j) I), and K_e z sums to
+// V sigma g_i per node with sigma the linear stress of sym(R^T F) - I. Both
+// are a few dozen flops per block, against two 3x3 products for R K_ij R^T.
+// Assembly runs in parallel over chunks of spatially close elements (Morton
+// order), coloured once in the constructor so that the chunks of a colour
+// share no node.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -65,24 +72,29 @@ class CorotatedFem {
 
  private:
   struct Element {
+    int id;  // in the mesh (elements are stored in Morton order)
     std::array<int, 4> nodes;
-    Eigen::Matrix3d restInverse;               // Dm^-1
     std::array<Eigen::Vector3d, 4> gradients;  // shape-function gradients
     double volume;
-    std::array<Eigen::Matrix3d, 16> stiffness;  // K_ij blocks, row-major (i*4+j)
-    std::array<int, 48> slots;  // value index of entry (3 n_i + a, 3 n_j) per (i, j, a)
+    std::array<int, 16> slots;      // value index of entry (3 n_i, 3 n_j) per (i, j)
+    std::array<int, 4> rowLengths;  // of node i's rows: row 3 n_i + a starts a lengths on
   };
   static Eigen::Matrix3d deformationGradient(const Element& el, const Eigen::VectorXd& x);
-  static Eigen::Matrix3d elementRotation(const Element& el, const Eigen::VectorXd& x);
+  // The element's strain in its rotated frame, sym(R^T F) - I, and the
+  // linear (Hooke) stress of a strain.
+  static Eigen::Matrix3d rotatedFrameStrain(const Eigen::Matrix3d& R, const Eigen::Matrix3d& F);
+  Eigen::Matrix3d linearStress(const Eigen::Matrix3d& strain) const;
   ElasticMaterial material_;
-  std::vector<Element> elements_;
+  std::vector<Element> elements_;  // Morton order of the centroids
+  std::vector<int> storedAt_;      // per mesh element: its index in elements_
   Eigen::VectorXd restPositions_;
   Eigen::VectorXd mass_;
   SparseMatrix pattern_;
   std::vector<Eigen::Matrix3d> rotations_;
-  std::vector<Eigen::Quaterniond> estimates_;  // warm starts of the rotation per element
-  // Elements grouped so that no two in a group share a node: each group is
-  // assembled in parallel without locks or atomics.
+  std::vector<Eigen::Quaterniond> estimates_;  // warm starts, per stored element
+  // Chunks of consecutive stored elements (their first index), grouped so
+  // that no two chunks of a group share a node: each group is assembled in
+  // parallel without locks or atomics.
   std::vector<std::vector<int>> colors_;
 };
 

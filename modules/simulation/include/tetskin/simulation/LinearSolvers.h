@@ -17,8 +17,19 @@ struct SolveStats {
   double relativeResidual = 0;  // |b - A x| / |b|
 };
 
-// y = A x, rows in parallel.
+// The systems here have the node-block layout of CorotatedFem::pattern():
+// each node pair either has a full 3x3 block (zeros included) or none, so the
+// three rows of a node share one column list. hasNodeBlocks() checks that;
+// the solvers below require it (conjugateGradient checks the row lengths on
+// every call, the multigrid the whole layout when it first sees a pattern).
+bool hasNodeBlocks(const SparseMatrix& A);
+
+// y = A x for A in the node-block layout, nodes in parallel.
 void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y);
+
+// y = P x for a nodal P (one weight per node pair) applied to xyz vectors:
+// y_i = sum_j P_ij x_j per coordinate.
+void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
 // Preconditioner interface: z = M^-1 r.
 class Preconditioner {
@@ -71,8 +82,7 @@ class MultigridPreconditioner : public Preconditioner {
   struct Impl;
   std::vector<SparseMatrix> prolongations_;  // nodal, as given
   std::vector<SparseMatrix> nodal_;          // with fixed rows removed
-  std::vector<SparseMatrix> transfers_;      // nodal_ expanded to xyz dofs
-  std::vector<SparseMatrix> restrictions_;   // their transposes
+  std::vector<SparseMatrix> restrictions_;   // nodal_ transposed
   std::vector<SparseMatrix> operators_;      // [0] unused: level 0 is the caller's A
   int sweeps_;
   int reuse_ = 1;
