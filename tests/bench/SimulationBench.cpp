@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
+#include <string>
 #include <thread>
 
 #include "tetskin/io/Dataset.h"
@@ -43,10 +44,11 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
   }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  char solverName[32];
-  std::snprintf(solverName, sizeof solverName, coarseReuse > 1 ? "%s/%d" : "%s", toString(solver),
-                coarseReuse);
-  std::printf("%-22s %8lld  %-12s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
+  char reuse[16] = "", loose[32] = "", solverName[64];
+  if (coarseReuse > 1) std::snprintf(reuse, sizeof reuse, "/%d", coarseReuse);
+  if (tolerance != 1e-6) std::snprintf(loose, sizeof loose, " tol %g", tolerance);
+  std::snprintf(solverName, sizeof solverName, "%s%s%s", toString(solver), reuse, loose);
+  std::printf("%-22s %8lld  %-24s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
               static_cast<long long>(sim.restMesh().elementCount()), solverName, steps / total,
               static_cast<double>(iterations) / steps, 1e3 * total / steps, 1e3 * assembly / steps,
               1e3 * setup / steps, 1e3 * solve / steps);
@@ -56,10 +58,12 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
 // each tolerance against the same run at 1e-8, over `steps` steps; prints the
 // largest node distance (relative to the bounding-box diagonal) and the mean
 // iterations.
-void toleranceAccuracy(const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps) {
+void toleranceAccuracy(const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
+                       int coarseReuse = 1) {
   auto run = [&](double tolerance, double& iterations, double& seconds) {
     SimulationOptions options;
     options.solver = solver;
+    options.coarseReuse = coarseReuse;
     options.tolerance = tolerance;
     Simulation sim(mesh, level, options);
     auto scenario = makeScenario("wobble");
@@ -79,10 +83,13 @@ void toleranceAccuracy(const MultiLevelTetMesh& mesh, int level, SolverKind solv
   const double diagonal = (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).norm();
   for (double tolerance : {1e-6, 1e-4, 1e-3, 1e-2}) {
     const Points3 positions = run(tolerance, iterations, seconds);
+    char name[32];
+    std::snprintf(name, sizeof name, coarseReuse > 1 ? "%s/%d" : "%s", toString(solver),
+                  coarseReuse);
     std::printf(
-        "  %-10s tolerance %-6g  %5.1f iter  %7.1f steps/s  largest deviation %.2e of the "
+        "  %-12s tolerance %-6g  %5.1f iter  %7.1f steps/s  largest deviation %.2e of the "
         "diagonal\n",
-        toString(solver), tolerance, iterations, steps / seconds,
+        name, tolerance, iterations, steps / seconds,
         (positions - reference).rowwise().norm().maxCoeff() / diagonal);
   }
 }
@@ -124,11 +131,12 @@ int main(int argc, char** argv) {
               std::thread::hardware_concurrency(), steps);
   rotations();
   std::printf("(multigrid/N: coarse operators rebuilt every N steps)\n");
-  std::printf("%-22s %8s  %-12s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
+  std::printf("%-22s %8s  %-24s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
   for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid})
     toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
+  toleranceAccuracy(sample.mesh, 2, SolverKind::Multigrid, 4 * steps, 4);
   for (int level : {0, 2})
     for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {
       const std::string name = "bunny level " + std::to_string(level);

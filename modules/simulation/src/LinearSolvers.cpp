@@ -90,39 +90,74 @@ Eigen::Matrix3d diagonalBlock(const SparseMatrix& A, Index node) {
   return block;
 }
 
-// Nodes coloured so that no two nodes of one colour are coupled in A: the
-// nodes of a colour can be relaxed at the same time.
-std::vector<std::vector<int>> colourNodes(const SparseMatrix& A) {
-  const int nodes = static_cast<int>(A.rows() / 3);
+// The order of a Gauss-Seidel sweep: nodes in breadth-first order of A's
+// graph, cut into chunks of consecutive (so mostly neighbouring) nodes, and
+// the chunks coloured so that no two chunks of one colour are coupled in A.
+// A sweep relaxes the colours one after another, the chunks of a colour in
+// parallel and the nodes of a chunk in order: deterministic, and each chunk
+// works on a few nearby rows that stay in cache.
+struct SweepOrder {
+  std::vector<int> nodes;                 // breadth-first order
+  std::vector<std::vector<int>> colours;  // per colour: first positions of its chunks in `nodes`
+};
+
+
+constexpr int kSweepChunk = 32;
+
+SweepOrder sweepOrder(const SparseMatrix& A) {
+  const int count = static_cast<int>(A.rows() / 3);
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  std::vector<int> colour(static_cast<std::size_t>(nodes), -1);
-  std::vector<std::vector<int>> colours;
-  std::vector<int> seenBy;  // per colour: the last node that found a neighbour in it
-  for (int v = 0; v < nodes; ++v) {
-    for (int a = 0; a < 3; ++a)
-      for (int k = outer[3 * v + a]; k < outer[3 * v + a + 1]; ++k) {
-        const int c = colour[static_cast<std::size_t>(inner[k] / 3)];
-        if (c >= 0) seenBy[static_cast<std::size_t>(c)] = v;
-      }
-    std::size_t c = 0;
-    while (c < colours.size() && seenBy[c] == v) ++c;
-    if (c == colours.size()) {
-      colours.emplace_back();
-      seenBy.push_back(-1);
-    }
-    colours[c].push_back(v);
-    colour[static_cast<std::size_t>(v)] = static_cast<int>(c);
+  auto forNeighbours = [&](int v, auto&& visit) {  // one column index per block
+    for (int k = outer[3 * v]; k < outer[3 * v + 1]; k += 3) visit(inner[k] / 3);
+  };
+  SweepOrder order;
+  order.nodes.reserve(static_cast<std::size_t>(count));
+  std::vector<char> seen(static_cast<std::size_t>(count), 0);
+  for (int start = 0; start < count; ++start) {  // every connected component
+    if (seen[static_cast<std::size_t>(start)]) continue;
+    seen[static_cast<std::size_t>(start)] = 1;
+    std::size_t next = order.nodes.size();  // the queue is the tail of order.nodes
+    order.nodes.push_back(start);
+    for (; next < order.nodes.size(); ++next)
+      forNeighbours(order.nodes[next], [&](int u) {
+        if (!seen[static_cast<std::size_t>(u)]) {
+          seen[static_cast<std::size_t>(u)] = 1;
+          order.nodes.push_back(u);
+        }
+      });
   }
-  return colours;
+  // A chunk may join a colour if none of its nodes is in or next to a chunk
+  // of that colour already.
+  std::vector<std::vector<char>> covered;  // per colour, per node
+  for (int first = 0; first < count; first += kSweepChunk) {
+    const int last = std::min(count, first + kSweepChunk);
+    std::size_t c = 0;
+    for (;; ++c) {
+      if (c == covered.size()) {
+        covered.emplace_back(static_cast<std::size_t>(count), 0);
+        order.colours.emplace_back();
+      }
+      bool free = true;
+      for (int i = first; free && i < last; ++i)
+        free = !covered[c][static_cast<std::size_t>(order.nodes[static_cast<std::size_t>(i)])];
+      if (free) break;
+    }
+    order.colours[c].push_back(first);
+    for (int i = first; i < last; ++i)
+      forNeighbours(order.nodes[static_cast<std::size_t>(i)],
+                    [&](int u) { covered[c][static_cast<std::size_t>(u)] = 1; });
+  }
+  return order;
 }
 
 // One block Gauss-Seidel sweep: each node's 3 unknowns solved together
-// (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)), colour after colour, the
-// nodes of a colour in parallel; `forward` false runs the colours backwards.
+// (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)) in the sweep order; `forward`
+// false runs it exactly backwards (colours, and nodes within each chunk), so
+// a forward and a backward sweep make a symmetric smoother.
 void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>& inverseDiagonal,
-                      const std::vector<std::vector<int>>& colours, const Eigen::VectorXd& b,
-                      Eigen::VectorXd& x, bool forward) {
+                      const SweepOrder& order, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                      bool forward) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const double* values = A.valuePtr();
@@ -144,16 +179,23 @@ void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>&
     x.segment<3>(3 * v) =
         inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Vector3d(s0, s1, s2);
   };
-  for (std::size_t i = 0; i < colours.size(); ++i) {
-    const std::vector<int>& nodes = colours[forward ? i : colours.size() - 1 - i];
-    if (nodes.size() < 512) {  // too little work to share between threads
-      for (int v : nodes) relax(v);
+  const int count = static_cast<int>(order.nodes.size());
+  auto sweepChunk = [&](int first) {
+    const int last = std::min(count, first + kSweepChunk);
+    if (forward)
+      for (int i = first; i < last; ++i) relax(order.nodes[static_cast<std::size_t>(i)]);
+    else
+      for (int i = last; i-- > first;) relax(order.nodes[static_cast<std::size_t>(i)]);
+  };
+  for (std::size_t i = 0; i < order.colours.size(); ++i) {
+    const std::vector<int>& chunks = order.colours[forward ? i : order.colours.size() - 1 - i];
+    if (count < 2048) {  // too little work to share between threads
+      for (int first : chunks) sweepChunk(first);
       continue;
     }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nodes.size(), 256),
-                      [&](const auto& range) {
-                        for (std::size_t n = range.begin(); n != range.end(); ++n) relax(nodes[n]);
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), 2), [&](const auto& range) {
+      for (std::size_t c = range.begin(); c != range.end(); ++c) sweepChunk(chunks[c]);
+    });
   }
 }
 
@@ -186,7 +228,7 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
 struct MultigridPreconditioner::Impl {
   std::vector<GalerkinStream> streams;  // built on the first setup() after a change
   std::vector<std::vector<Eigen::Matrix3d>> inverseDiagonals;  // per level
-  std::vector<std::vector<std::vector<int>>> colours;          // per level, with the streams
+  std::vector<SweepOrder> sweeps;                              // per level, with the streams
   const SparseMatrix* fine = nullptr;                          // the system of the last setup
   int setupsSinceCoarse = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest;
@@ -217,6 +259,7 @@ void MultigridPreconditioner::setFixedNodes(const std::vector<char>& fixedNodes)
   restrictions_.clear();
   for (const SparseMatrix& P : nodal_) restrictions_.push_back(P.transpose());
   impl_->streams.clear();
+  impl_->sweeps.clear();
 }
 
 void MultigridPreconditioner::setCoarseReuse(int setups) {
@@ -235,18 +278,18 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   }
   impl_->setupsSinceCoarse = 0;
   operators_.resize(nodal_.size() + 1);
-  if (impl_->streams.empty()) {
+  const bool build = impl_->streams.empty();
+  if (build) {
     if (!hasNodeBlocks(A)) throw Error("multigrid: the system is not in the node-block layout");
-    const SparseMatrix* fine = &A;
-    impl_->colours.assign(1, colourNodes(A));
-    for (std::size_t l = 0; l < nodal_.size(); ++l) {
-      impl_->streams.emplace_back(*fine, nodal_[l]);
-      fine = &impl_->streams.back().pattern();
-      impl_->colours.push_back(colourNodes(*fine));
-    }
+    impl_->sweeps.assign(1, sweepOrder(A));
   }
-  for (std::size_t l = 0; l < nodal_.size(); ++l)
+  for (std::size_t l = 0; l < nodal_.size(); ++l) {
+    if (build) {
+      impl_->streams.emplace_back(level(l), nodal_[l]);
+      impl_->sweeps.push_back(sweepOrder(impl_->streams.back().pattern()));
+    }
     impl_->streams[l].compute(level(l), operators_[l + 1]);
+  }
   impl_->inverseDiagonals.resize(operators_.size());
   for (std::size_t l = 0; l < operators_.size(); ++l)
     invertDiagonalBlocks(level(l), impl_->inverseDiagonals[l]);
@@ -256,7 +299,9 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   // factorization possible changes nothing that matters.
   const SparseMatrix& coarsest = level(operators_.size() - 1);
   impl_->coarsest.setShift(1e-12 * coarsest.diagonal().cwiseAbs().maxCoeff());
-  impl_->coarsest.compute(Eigen::SparseMatrix<double>(coarsest));
+  const Eigen::SparseMatrix<double> columnMajor(coarsest);
+  if (build) impl_->coarsest.analyzePattern(columnMajor);  // the ordering, once per pattern
+  impl_->coarsest.factorize(columnMajor);
   if (impl_->coarsest.info() != Eigen::Success)
     throw Error("multigrid: the coarsest operator could not be factorized");
   impl_->b.resize(operators_.size());
@@ -276,7 +321,7 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
   for (std::size_t l = 0; l < last; ++l) {
     s.x[l].setZero(s.b[l].size());
     for (int i = 0; i < sweeps_; ++i)
-      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], true);
+      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.sweeps[l], s.b[l], s.x[l], true);
     multiply(level(l), s.x[l], s.r[l]);
     s.r[l] = s.b[l] - s.r[l];
     multiplyNodal(restrictions_[l], s.r[l], s.b[l + 1]);
@@ -287,7 +332,7 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
     multiplyNodal(nodal_[l], s.x[l + 1], s.r[l]);
     s.x[l] += s.r[l];
     for (int i = 0; i < sweeps_; ++i)
-      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.colours[l], s.b[l], s.x[l], false);
+      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.sweeps[l], s.b[l], s.x[l], false);
   }
   z = s.x[0];
 }

@@ -52,12 +52,12 @@ class BlockJacobi : public Preconditioner {
 
 // Multigrid V-cycle on non-nested levels: `nodalProlongations[l]` maps the
 // nodes of level l+1 (coarser) to those of level l (level 0 is the system's
-// own). Coarse operators are Galerkin products P^T A P, rebuilt in setup()
-// by precomputed streams (GalerkinStream.h); block (3x3 per node) Gauss-Seidel
-// smoothing, multicoloured so each colour's nodes relax in parallel, forward
-// before and backward after (the cycle is a symmetric preconditioner); an
-// exact Cholesky solve on the coarsest level. Fixed nodes
-// (Dirichlet) receive no coarse correction.
+// own). Coarse operators are Galerkin products P^T A P, rebuilt in setup() by precomputed streams
+// (GalerkinStream.h); block (3x3 per node) Gauss-Seidel smoothing over coloured chunks of
+// neighbouring nodes (chunks of a colour relax in parallel), forward before
+// and exactly backward after (the cycle is a symmetric preconditioner); an
+// exact Cholesky solve on the coarsest level. Fixed nodes (Dirichlet)
+// receive no coarse correction.
 class MultigridPreconditioner : public Preconditioner {
  public:
   explicit MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,
