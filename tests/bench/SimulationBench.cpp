@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -18,25 +19,38 @@ using namespace tetskin;
 
 namespace {
 
-void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
-         int coarseReuse = 1, double tolerance = 1e-6) {
+// The wobble scenario set up on a simulation of `level`.
+struct Wobble {
+  std::unique_ptr<Simulation> sim;
+  std::unique_ptr<Scenario> scenario;
+  StepStats step() {
+    scenario->beforeStep(*sim, sim->state().time);
+    return sim->step();
+  }
+};
+
+Wobble wobble(const MultiLevelTetMesh& mesh, int level, SolverKind solver, int coarseReuse,
+              double tolerance) {
   SimulationOptions options;
   options.solver = solver;
   options.coarseReuse = coarseReuse;
   options.tolerance = tolerance;
-  Simulation sim(mesh, level, options);
-  auto scenario = makeScenario("wobble");
-  scenario->setUp(sim);
-  for (int i = 0; i < 2; ++i) {  // warm up: one-time setup (e.g. Galerkin streams) is not timed
-    scenario->beforeStep(sim, sim.state().time);
-    sim.step();
-  }
+  Wobble run{std::make_unique<Simulation>(mesh, level, options), makeScenario("wobble")};
+  run.scenario->setUp(*run.sim);
+  return run;
+}
+
+void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
+         int coarseReuse = 1) {
+  Wobble run = wobble(mesh, level, solver, coarseReuse, 1e-6);
+  const Simulation& sim = *run.sim;
+  // Warm up: one-time setup (e.g. Galerkin streams) is not timed.
+  for (int i = 0; i < 2; ++i) run.step();
   double assembly = 0, setup = 0, solve = 0;
   long iterations = 0;
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < steps; ++i) {
-    scenario->beforeStep(sim, sim.state().time);
-    const StepStats s = sim.step();
+    const StepStats s = run.step();
     assembly += s.assemblySeconds;
     setup += s.setupSeconds;
     solve += s.solveSeconds;
@@ -44,11 +58,10 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
   }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  char reuse[16] = "", loose[32] = "", solverName[64];
-  if (coarseReuse > 1) std::snprintf(reuse, sizeof reuse, "/%d", coarseReuse);
-  if (tolerance != 1e-6) std::snprintf(loose, sizeof loose, " tol %g", tolerance);
-  std::snprintf(solverName, sizeof solverName, "%s%s%s", toString(solver), reuse, loose);
-  std::printf("%-22s %8lld  %-24s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
+  char solverName[32];
+  std::snprintf(solverName, sizeof solverName, coarseReuse > 1 ? "%s/%d" : "%s", toString(solver),
+                coarseReuse);
+  std::printf("%-22s %8lld  %-12s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
               static_cast<long long>(sim.restMesh().elementCount()), solverName, steps / total,
               static_cast<double>(iterations) / steps, 1e3 * total / steps, 1e3 * assembly / steps,
               1e3 * setup / steps, 1e3 * solve / steps);
@@ -61,22 +74,13 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, SolverKind 
 void toleranceAccuracy(const MultiLevelTetMesh& mesh, int level, SolverKind solver, int steps,
                        int coarseReuse = 1) {
   auto run = [&](double tolerance, double& iterations, double& seconds) {
-    SimulationOptions options;
-    options.solver = solver;
-    options.coarseReuse = coarseReuse;
-    options.tolerance = tolerance;
-    Simulation sim(mesh, level, options);
-    auto scenario = makeScenario("wobble");
-    scenario->setUp(sim);
+    Wobble wobbling = wobble(mesh, level, solver, coarseReuse, tolerance);
     long total = 0;
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < steps; ++i) {
-      scenario->beforeStep(sim, sim.state().time);
-      total += sim.step().iterations;
-    }
+    for (int i = 0; i < steps; ++i) total += wobbling.step().iterations;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     iterations = static_cast<double>(total) / steps;
-    return sim.state().positions;
+    return wobbling.sim->state().positions;
   };
   double iterations = 0, seconds = 0;
   const Points3 reference = run(1e-8, iterations, seconds);
@@ -131,7 +135,7 @@ int main(int argc, char** argv) {
               std::thread::hardware_concurrency(), steps);
   rotations();
   std::printf("(multigrid/N: coarse operators rebuilt every N steps)\n");
-  std::printf("%-22s %8s  %-24s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
+  std::printf("%-22s %8s  %-12s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
   for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid})

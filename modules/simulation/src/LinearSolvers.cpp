@@ -15,15 +15,30 @@ namespace tetskin {
 // The node-block layout (CorotatedFem::pattern()): rows 3v, 3v+1, 3v+2 share
 // one sorted column list made of whole triples 3c, 3c+1, 3c+2. The kernels
 // below read one column index per 3x3 block instead of one per entry.
-bool hasNodeBlocks(const SparseMatrix& A) {
+namespace {
+
+// The cheap half of the layout check, O(rows): square, compressed, and the
+// three rows of every node equally long, a whole number of blocks.
+bool hasNodeRowLengths(const SparseMatrix& A) {
   if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed()) return false;
+  const int* outer = A.outerIndexPtr();
+  for (Index v = 0; v < A.rows() / 3; ++v) {
+    const int length = outer[3 * v + 1] - outer[3 * v];
+    if (length % 3 != 0) return false;
+    for (int a = 1; a < 3; ++a)
+      if (outer[3 * v + a + 1] - outer[3 * v + a] != length) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool hasNodeBlocks(const SparseMatrix& A) {
+  if (!hasNodeRowLengths(A)) return false;
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   for (Index v = 0; v < A.rows() / 3; ++v) {
     const int start = outer[3 * v], length = outer[3 * v + 1] - start;
-    if (length % 3 != 0) return false;
-    for (int a = 1; a < 3; ++a)
-      if (outer[3 * v + a + 1] - outer[3 * v + a] != length) return false;
     for (int k = 0; k < length; ++k) {
       const int column = inner[start + k];
       if (column != inner[start + k - k % 3] + k % 3 || column % 3 != k % 3) return false;
@@ -100,7 +115,6 @@ struct SweepOrder {
   std::vector<int> nodes;                 // breadth-first order
   std::vector<std::vector<int>> colours;  // per colour: first positions of its chunks in `nodes`
 };
-
 
 constexpr int kSweepChunk = 32;
 
@@ -269,8 +283,8 @@ void MultigridPreconditioner::setCoarseReuse(int setups) {
 void MultigridPreconditioner::setup(const SparseMatrix& A) {
   // Level 0 is A itself (not copied: the caller keeps it alive while solving).
   impl_->fine = &A;
-  const bool fresh = impl_->streams.empty();
-  if (!fresh && ++impl_->setupsSinceCoarse < reuse_) {
+  const bool build = impl_->streams.empty();  // first setup for this pattern
+  if (!build && ++impl_->setupsSinceCoarse < reuse_) {
     // Coarse operators from an earlier system: still an SPD preconditioner
     // of this one, and CG still solves this system to the tolerance.
     invertDiagonalBlocks(A, impl_->inverseDiagonals[0]);
@@ -278,7 +292,6 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   }
   impl_->setupsSinceCoarse = 0;
   operators_.resize(nodal_.size() + 1);
-  const bool build = impl_->streams.empty();
   if (build) {
     if (!hasNodeBlocks(A)) throw Error("multigrid: the system is not in the node-block layout");
     impl_->sweeps.assign(1, sweepOrder(A));
@@ -341,14 +354,8 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations) {
   SolveStats stats;
-  // The cheap part of hasNodeBlocks() (row lengths), on every call.
-  bool blocked = A.rows() == A.cols() && A.rows() % 3 == 0 && A.isCompressed();
-  for (Index v = 0; blocked && v < A.rows() / 3; ++v) {
-    const int* outer = A.outerIndexPtr() + 3 * v;
-    blocked = (outer[1] - outer[0]) % 3 == 0 && outer[2] - outer[1] == outer[1] - outer[0] &&
-              outer[3] - outer[2] == outer[1] - outer[0];
-  }
-  if (!blocked) throw Error("conjugate gradients: the system is not in the node-block layout");
+  if (!hasNodeRowLengths(A))  // the full check is left to the multigrid's first setup
+    throw Error("conjugate gradients: the system is not in the node-block layout");
   const double bNorm = b.norm();
   if (x.size() != b.size()) x.setZero(b.size());
   if (bNorm == 0) {
