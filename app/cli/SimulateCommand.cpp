@@ -26,7 +26,7 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface;
   int steps = 120, level = -1, every = 1;
-  std::string scenario = "wobble", solver = "multigrid";
+  std::string scenario = "wobble", solver = "multigrid", coarseOperators = "galerkin";
   SimulationOptions options;
   bool quiet = false;
 };
@@ -35,6 +35,8 @@ void run(SimulateArgs& a) {
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);
   a.options.solver = a.solver == "cg" ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+  a.options.coarseOperators =
+      a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
   const SimulationOptions options =
       scenarioOptions(a.scenario, a.options, extractLevel(dataset.mesh, level));
   std::unique_ptr<Scenario> scenario = makeScenario(a.scenario);
@@ -84,10 +86,12 @@ void run(SimulateArgs& a) {
     progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
   }
   const Energies e = sim.energies();
-  std::printf("simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s\n",
-              a.steps, options.timeStep, level,
-              static_cast<long long>(sim.restMesh().elementCount()), scenario->name(),
-              toString(options.solver));
+  std::printf(
+      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s\n",
+      a.steps, options.timeStep, level, static_cast<long long>(sim.restMesh().elementCount()),
+      scenario->name(), toString(options.solver),
+      options.solver == SolverKind::Multigrid ? ", " : "",
+      options.solver == SolverKind::Multigrid ? toString(options.coarseOperators) : "");
   std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
               a.steps / std::max(stepSeconds, 1e-12),
               static_cast<double>(iterations) / std::max(a.steps, 1));
@@ -127,6 +131,10 @@ void addSimulateCommand(CLI::App& app) {
                   "multigrid: rebuild the coarse operators every N steps (solves stay exact)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--coarse-operators", a->coarseOperators,
+                  "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"galerkin", "rediscretized"}));
   cmd->add_option("--young", a->options.material.youngsModulus, "Young's modulus (Pa)")
       ->capture_default_str();
   cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio")

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "Shapes.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/simulation/CorotatedFem.h"
 
 namespace tetskin {
@@ -90,7 +91,8 @@ TEST(CorotatedFem, RigidMotionProducesNoElasticForce) {
   EXPECT_LT(f.norm(), 1e-9);
   // Round-off only: a 1% strain of this block stores about 0.6.
   EXPECT_LT(fem.elasticEnergy(x), 1e-9);
-  for (const Eigen::Matrix3d& Re : fem.rotations()) EXPECT_TRUE(Re.isApprox(R, 1e-10));
+  for (Index e = 0; e < mesh.elementCount(); ++e)
+    EXPECT_TRUE(fem.elementRotation(e).isApprox(R, 1e-10));
 }
 
 TEST(CorotatedFem, ForcesRotateWithTheBody) {
@@ -151,7 +153,7 @@ TEST(CorotatedFem, AssemblyEqualsTheSumOfRotatedElementMatrices) {
   Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(fem.dofCount(), fem.dofCount());
   Eigen::VectorXd referenceForce = Eigen::VectorXd::Zero(fem.dofCount());
   for (Index e = 0; e < mesh.elementCount(); ++e) {
-    const Eigen::Matrix3d& R = fem.rotations()[static_cast<std::size_t>(e)];
+    const Eigen::Matrix3d& R = fem.elementRotation(e);
     Eigen::Matrix<double, 12, 12> rotation = Eigen::Matrix<double, 12, 12>::Zero();
     Eigen::Matrix<double, 12, 1> xe, Xe;
     for (int k = 0; k < 4; ++k) {
@@ -173,6 +175,38 @@ TEST(CorotatedFem, AssemblyEqualsTheSumOfRotatedElementMatrices) {
   EXPECT_LT((assembled - reference).norm(), 1e-10 * reference.norm());
   EXPECT_LT((f - referenceForce).norm(), 1e-10 * referenceForce.norm());
   EXPECT_GT(referenceForce.norm(), 1.0);  // the state is really deformed
+}
+
+// The implicit step's terms assembled in the element pass: s K + D and
+// f_el - w K v equal the same built from the plain stiffness and force.
+TEST(CorotatedFem, SystemTermsEqualScaledStiffnessPlusDiagonalAndDampedForce) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0, 0.1);
+  Eigen::VectorXd x = fem.restPositions(), v(fem.dofCount()), D(fem.dofCount());
+  for (Index i = 0; i < x.size(); ++i) {
+    x[i] += noise(rng);
+    v[i] = noise(rng);
+    D[i] = 1 + std::abs(noise(rng));
+  }
+  Eigen::VectorXd f, fTerms;
+  SparseMatrix K = fem.pattern(), A = fem.pattern();
+  fem.update(x, f, K);
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 0.3;
+  terms.diagonal = &D;
+  terms.velocity = &v;
+  terms.velocityWeight = 0.7;
+  fem.update(x, fTerms, A, terms);
+  const Eigen::MatrixXd expected = 0.3 * Eigen::MatrixXd(K) + Eigen::MatrixXd(D.asDiagonal());
+  EXPECT_LT((Eigen::MatrixXd(A) - expected).norm(), 1e-12 * expected.norm());
+  const Eigen::VectorXd expectedForce = f - 0.7 * (K * v);
+  EXPECT_LT((fTerms - expectedForce).norm(), 1e-12 * expectedForce.norm());
+  EXPECT_GT((expectedForce - f).norm(), 0.1 * f.norm());  // the velocity term counts
+  Eigen::VectorXd wrong(3);
+  terms.velocity = &wrong;
+  EXPECT_THROW(fem.update(x, fTerms, A, terms), Error);
 }
 
 TEST(CorotatedFem, LumpedMassSumsToTotalMass) {

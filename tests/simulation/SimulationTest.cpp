@@ -192,6 +192,81 @@ TEST(Simulation, WobbleMovesTheTopBackAndForth) {
   }
 }
 
+// The three solvers follow the same trajectory when each solve is tight:
+// the multigrid variants differ only in their preconditioner. Drop, on the
+// finest level with a floor, exercises the contact springs that the
+// rediscretized coarse levels take over lumped.
+TEST(Simulation, CgAndBothMultigridVariantsFollowTheSameTrajectory) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  for (const char* name : {"wobble", "drop"}) {
+    std::vector<Points3> ends;
+    std::vector<int> contacts;
+    for (int variant = 0; variant < 3; ++variant) {
+      SimulationOptions options =
+          scenarioOptions(name, SimulationOptions{}, extractLevel(d.mesh, d.mesh.finestLevel()));
+      options.tolerance = 1e-10;
+      options.solver = variant == 0 ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+      options.coarseOperators =
+          variant == 1 ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
+      options.coarseReuse = variant == 2 ? 3 : 1;
+      Simulation sim(d.mesh, -1, options);
+      auto scenario = makeScenario(name);
+      scenario->setUp(sim);
+      if (std::string(name) == "drop") {  // start just above the floor: contact within 20 steps
+        Points3 low = sim.restMesh().nodes;
+        low.col(1).array() += *options.floorHeight + 0.02 - low.col(1).minCoeff();
+        sim.setPositions(low);
+      }
+      int touching = 0;
+      for (int i = 0; i < 20; ++i) {
+        scenario->beforeStep(sim, sim.state().time);
+        const StepStats stats = sim.step();
+        EXPECT_LE(stats.residual, 1e-10) << name << " variant " << variant;
+        touching = std::max(touching, stats.contacts);
+      }
+      ends.push_back(sim.state().positions);
+      contacts.push_back(touching);
+    }
+    const double size = (ends[0].colwise().maxCoeff() - ends[0].colwise().minCoeff()).norm();
+    for (int variant = 1; variant < 3; ++variant)
+      EXPECT_LT((ends[variant] - ends[0]).cwiseAbs().maxCoeff(), 1e-6 * size)
+          << name << " variant " << variant;
+    if (std::string(name) == "drop") {
+      EXPECT_GT(contacts[2], 0);
+    }
+  }
+}
+
+// Inside, nodes are renumbered breadth first; everything the caller sees
+// uses the level's own numbering.
+TEST(Simulation, CallersSeeTheLevelsNodeNumbering) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  Simulation sim(d.mesh, 1, SimulationOptions{});
+  const TetMesh& rest = sim.restMesh();
+  const TetMesh level = extractLevel(d.mesh, 1);
+  EXPECT_EQ(rest.nodes, level.nodes);
+  EXPECT_EQ(rest.elements, level.elements);
+  const CorotatedFem reference(level, SimulationOptions{}.material);
+  for (Index v = 0; v < rest.nodeCount(); ++v)
+    EXPECT_DOUBLE_EQ(sim.nodeMasses()[v], reference.lumpedMass()[3 * v]);
+  EXPECT_EQ(sim.state().positions, rest.nodes);
+  Points3 moved = rest.nodes;
+  moved.row(7) += Eigen::RowVector3d(0.1, 0.2, 0.3);
+  sim.setPositions(moved);
+  EXPECT_EQ(sim.state().positions, moved);
+  Points3 forces = Points3::Zero(rest.nodeCount(), 3);
+  forces(11, 2) = 5;
+  sim.setExternalForces(forces);
+  EXPECT_EQ(sim.externalForces(), forces);
+  // Node 7 (level numbering) held in place, the others fall.
+  sim.setPositions(rest.nodes);
+  sim.setFixedNodes({7});
+  sim.step();
+  const Points3 after = sim.state().positions;
+  EXPECT_EQ(after.row(7), rest.nodes.row(7));
+  EXPECT_LT(after(0, 1), rest.nodes(0, 1));
+}
+
 TEST(Simulation, StateCanBeReadWhileAnotherThreadSteps) {
   const Dataset d = loadDataset(kData + "bunny.json");
   Simulation sim(d.mesh, 0, SimulationOptions{});

@@ -105,11 +105,24 @@ Eigen::Matrix3d CorotatedFem::rotation(const Eigen::Matrix3d& F, Eigen::Quaterni
     const Eigen::Vector3d gradient(S(2, 1) - S(1, 2), S(0, 2) - S(2, 0), S(1, 0) - S(0, 1));
     const Eigen::Matrix3d symmetric = 0.5 * (S + S.transpose());
     const Eigen::Matrix3d hessian = symmetric.trace() * Eigen::Matrix3d::Identity() - symmetric;
-    const Eigen::LLT<Eigen::Matrix3d> llt(hessian);
-    const bool newton = llt.info() == Eigen::Success && hessian.diagonal().minCoeff() > 1e-3;
-    Eigen::Vector3d step = newton
-                               ? Eigen::Vector3d(llt.solve(gradient))
-                               : Eigen::Vector3d(gradient / (std::abs(symmetric.trace()) + 1e-9));
+    // H is symmetric: its inverse from cofactors; positive definite when
+    // the leading minors are (Sylvester).
+    const double c00 = hessian(1, 1) * hessian(2, 2) - hessian(1, 2) * hessian(1, 2);
+    const double c01 = hessian(0, 2) * hessian(1, 2) - hessian(0, 1) * hessian(2, 2);
+    const double c02 = hessian(0, 1) * hessian(1, 2) - hessian(0, 2) * hessian(1, 1);
+    const double c11 = hessian(0, 0) * hessian(2, 2) - hessian(0, 2) * hessian(0, 2);
+    const double c12 = hessian(0, 1) * hessian(0, 2) - hessian(0, 0) * hessian(1, 2);
+    const double c22 = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(0, 1);
+    const double det = hessian(0, 0) * c00 + hessian(0, 1) * c01 + hessian(0, 2) * c02;
+    const bool newton =
+        hessian(0, 0) > 0 && c22 > 0 && det > 0 && hessian.diagonal().minCoeff() > 1e-3;
+    Eigen::Vector3d step =
+        newton ? Eigen::Vector3d(
+                     Eigen::Vector3d(c00 * gradient.x() + c01 * gradient.y() + c02 * gradient.z(),
+                                     c01 * gradient.x() + c11 * gradient.y() + c12 * gradient.z(),
+                                     c02 * gradient.x() + c12 * gradient.y() + c22 * gradient.z()) /
+                     det)
+               : Eigen::Vector3d(gradient / (std::abs(symmetric.trace()) + 1e-9));
     const double angle = step.norm();
     if (angle < 1e-14) return R;
     if (angle > 1.0) step /= angle;  // trust region: at most a radian per step
@@ -119,8 +132,8 @@ Eigen::Matrix3d CorotatedFem::rotation(const Eigen::Matrix3d& F, Eigen::Quaterni
                           : Eigen::Quaterniond(Eigen::AngleAxisd(step.norm(), step.normalized())));
     q.normalize();
     // Newton converges quadratically: after a step this small the error is
-    // of the order of angle^2, at round-off, so no confirming iteration.
-    if (newton && angle < 1e-7) return q.toRotationMatrix();
+    // of the order of angle^2 (1e-12), so no confirming iteration.
+    if (newton && angle < 1e-6) return q.toRotationMatrix();
   }
   // Not converged (a near-degenerate F): the SVD decides.
   const Eigen::Matrix3d R = rotation(F);
@@ -185,6 +198,10 @@ CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
             static_cast<int>(std::lower_bound(begin, end, 3 * el.nodes[j]) - inner);
       }
     }
+  diagonalSlots_.assign(static_cast<std::size_t>(n), -1);  // -1: in no element
+  for (const Element& el : elements_)
+    for (int k = 0; k < 4; ++k)
+      diagonalSlots_[static_cast<std::size_t>(el.nodes[k])] = el.slots[k * 4 + k];
   rotations_.assign(elements_.size(), Eigen::Matrix3d::Identity());
   estimates_.assign(elements_.size(), Eigen::Quaterniond::Identity());
   colors_ = colourChunks(elements_, n);
@@ -229,15 +246,29 @@ Eigen::Matrix<double, 12, 12> CorotatedFem::elementStiffness(Index e) const {
   return K;
 }
 
-void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force,
-                          SparseMatrix& stiffness) {
+void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& matrix,
+                          const SystemTerms& terms) {
   if (x.size() != dofCount()) throw Error("state size does not match the mesh");
+  if ((terms.diagonal && terms.diagonal->size() != dofCount()) ||
+      (terms.velocity && terms.velocity->size() != dofCount()))
+    throw Error("system terms do not match the mesh");
   if (force.size() != dofCount()) force.resize(dofCount());
-  force.setZero();
-  if (stiffness.nonZeros() != pattern_.nonZeros()) stiffness = pattern_;
-  double* values = stiffness.valuePtr();
-  std::fill(values, values + stiffness.nonZeros(), 0.0);
-  const double lambda = material_.lameLambda(), mu = material_.lameMu();
+  if (matrix.nonZeros() != pattern_.nonZeros()) matrix = pattern_;
+  double* values = matrix.valuePtr();
+  const int* outer = matrix.outerIndexPtr();
+  // Clear each node's three rows and force, then put D on the diagonal.
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 512), [&](const auto& nodes) {
+    for (Index v = nodes.begin(); v != nodes.end(); ++v) {
+      std::fill(values + outer[3 * v], values + outer[3 * v + 3], 0.0);
+      force.segment<3>(3 * v).setZero();
+      if (!terms.diagonal || diagonalSlots_[static_cast<std::size_t>(v)] < 0) continue;
+      const int slot = diagonalSlots_[static_cast<std::size_t>(v)];
+      const int length = outer[3 * v + 1] - outer[3 * v];
+      for (int a = 0; a < 3; ++a) values[slot + a * length + a] = (*terms.diagonal)[3 * v + a];
+    }
+  });
+  const double lambda = terms.stiffnessScale * material_.lameLambda();
+  const double mu = terms.stiffnessScale * material_.lameMu();
   for (const std::vector<int>& colour : colors_) {
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, colour.size(), 1), [&](const auto& chunks) {
@@ -248,10 +279,16 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force,
               const Element& el = elements_[e];
               const Eigen::Matrix3d F = deformationGradient(el, x);
               const Eigen::Matrix3d R = rotation(F, estimates_[e]);
-              rotations_[static_cast<std::size_t>(el.id)] = R;
-              // f_i = -V R sigma g_i.
-              const Eigen::Matrix3d rotatedStress =
-                  el.volume * (R * linearStress(rotatedFrameStrain(R, F)));
+              rotations_[e] = R;
+              // f_i = -V R sigma g_i, sigma the stress of the rotated-frame
+              // strain plus w times the rotated-frame velocity gradient's
+              // (K_e applied to R^T v_e, by linearity).
+              Eigen::Matrix3d strain = rotatedFrameStrain(R, F);
+              if (terms.velocity) {
+                const Eigen::Matrix3d G = R.transpose() * deformationGradient(el, *terms.velocity);
+                strain += (0.5 * terms.velocityWeight) * (G + G.transpose());
+              }
+              const Eigen::Matrix3d rotatedStress = el.volume * (R * linearStress(strain));
               std::array<Eigen::Vector3d, 4> r;  // rotated gradients
               for (int k = 0; k < 4; ++k) {
                 force.segment<3>(3 * el.nodes[k]).noalias() -= rotatedStress * el.gradients[k];

@@ -105,15 +105,17 @@ Eigen::Matrix3d diagonalBlock(const SparseMatrix& A, Index node) {
   return block;
 }
 
-// The order of a Gauss-Seidel sweep: nodes in breadth-first order of A's
-// graph, cut into chunks of consecutive (so mostly neighbouring) nodes, and
-// the chunks coloured so that no two chunks of one colour are coupled in A.
-// A sweep relaxes the colours one after another, the chunks of a colour in
-// parallel and the nodes of a chunk in order: deterministic, and each chunk
-// works on a few nearby rows that stay in cache.
+// The order of a Gauss-Seidel sweep: the matrix's own node order, cut into
+// chunks of consecutive nodes, and the chunks coloured so that no two chunks
+// of one colour are coupled in A. A sweep relaxes the colours one after
+// another, the chunks of a colour in parallel and the nodes of a chunk in
+// order: deterministic, and each chunk reads a few consecutive rows. The
+// caller numbers the nodes for locality (Simulation numbers every level
+// breadth first, NodeOrder.h): a sweep in memory order runs about twice as
+// fast as one in a breadth-first order of its own over scattered rows
+// (measured on the 109k-element bunny: 2.1 against 4.5 ms).
 struct SweepOrder {
-  std::vector<int> nodes;                 // breadth-first order
-  std::vector<std::vector<int>> colours;  // per colour: first positions of its chunks in `nodes`
+  std::vector<std::vector<int>> colours;  // per colour: the first nodes of its chunks
 };
 
 constexpr int kSweepChunk = 32;
@@ -126,21 +128,6 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
     for (int k = outer[3 * v]; k < outer[3 * v + 1]; k += 3) visit(inner[k] / 3);
   };
   SweepOrder order;
-  order.nodes.reserve(static_cast<std::size_t>(count));
-  std::vector<char> seen(static_cast<std::size_t>(count), 0);
-  for (int start = 0; start < count; ++start) {  // every connected component
-    if (seen[static_cast<std::size_t>(start)]) continue;
-    seen[static_cast<std::size_t>(start)] = 1;
-    std::size_t next = order.nodes.size();  // the queue is the tail of order.nodes
-    order.nodes.push_back(start);
-    for (; next < order.nodes.size(); ++next)
-      forNeighbours(order.nodes[next], [&](int u) {
-        if (!seen[static_cast<std::size_t>(u)]) {
-          seen[static_cast<std::size_t>(u)] = 1;
-          order.nodes.push_back(u);
-        }
-      });
-  }
   // A chunk may join a colour if none of its nodes is in or next to a chunk
   // of that colour already.
   std::vector<std::vector<char>> covered;  // per colour, per node
@@ -153,14 +140,12 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
         order.colours.emplace_back();
       }
       bool free = true;
-      for (int i = first; free && i < last; ++i)
-        free = !covered[c][static_cast<std::size_t>(order.nodes[static_cast<std::size_t>(i)])];
+      for (int v = first; free && v < last; ++v) free = !covered[c][static_cast<std::size_t>(v)];
       if (free) break;
     }
     order.colours[c].push_back(first);
-    for (int i = first; i < last; ++i)
-      forNeighbours(order.nodes[static_cast<std::size_t>(i)],
-                    [&](int u) { covered[c][static_cast<std::size_t>(u)] = 1; });
+    for (int v = first; v < last; ++v)
+      forNeighbours(v, [&](int u) { covered[c][static_cast<std::size_t>(u)] = 1; });
   }
   return order;
 }
@@ -193,13 +178,13 @@ void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>&
     x.segment<3>(3 * v) =
         inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Vector3d(s0, s1, s2);
   };
-  const int count = static_cast<int>(order.nodes.size());
+  const int count = static_cast<int>(A.rows() / 3);
   auto sweepChunk = [&](int first) {
     const int last = std::min(count, first + kSweepChunk);
     if (forward)
-      for (int i = first; i < last; ++i) relax(order.nodes[static_cast<std::size_t>(i)]);
+      for (int v = first; v < last; ++v) relax(v);
     else
-      for (int i = last; i-- > first;) relax(order.nodes[static_cast<std::size_t>(i)]);
+      for (int v = last; v-- > first;) relax(v);
   };
   for (std::size_t i = 0; i < order.colours.size(); ++i) {
     const std::vector<int>& chunks = order.colours[forward ? i : order.colours.size() - 1 - i];
@@ -240,10 +225,9 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
 }
 
 struct MultigridPreconditioner::Impl {
-  std::vector<GalerkinStream> streams;  // built on the first setup() after a change
+  std::vector<GalerkinStream> streams;  // built on the first Galerkin setup() after a change
   std::vector<std::vector<Eigen::Matrix3d>> inverseDiagonals;  // per level
-  std::vector<SweepOrder> sweeps;                              // per level, with the streams
-  const SparseMatrix* fine = nullptr;                          // the system of the last setup
+  std::vector<SweepOrder> sweeps;                              // per level, once per pattern
   int setupsSinceCoarse = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest;
   // Scratch per level: right-hand side, solution, residual.
@@ -255,19 +239,25 @@ MultigridPreconditioner::MultigridPreconditioner(std::vector<SparseMatrix> nodal
     : prolongations_(std::move(nodalProlongations)),
       sweeps_(smoothingSweeps),
       impl_(std::make_shared<Impl>()) {
-  setFixedNodes({});
+  setFixedNodesPerLevel({});
 }
 
 MultigridPreconditioner::~MultigridPreconditioner() = default;
 
-void MultigridPreconditioner::setFixedNodes(const std::vector<char>& fixedNodes) {
+void MultigridPreconditioner::setFixedNodesPerLevel(
+    const std::vector<std::vector<char>>& fixedPerLevel) {
+  auto fixed = [&](std::size_t level, int node) {
+    return level < fixedPerLevel.size() && !fixedPerLevel[level].empty() &&
+           fixedPerLevel[level][static_cast<std::size_t>(node)];
+  };
   nodal_ = prolongations_;
-  if (!nodal_.empty() && !fixedNodes.empty()) {
-    // Fixed fine nodes must not receive coarse corrections.
-    SparseMatrix& P = nodal_[0];
+  for (std::size_t l = 0; l < nodal_.size(); ++l) {
+    // Fixed fine nodes must not receive coarse corrections, nor fixed coarse
+    // nodes pass any on.
+    SparseMatrix& P = nodal_[l];
     for (int row = 0; row < P.outerSize(); ++row)
-      if (fixedNodes[static_cast<std::size_t>(row)])
-        for (SparseMatrix::InnerIterator it(P, row); it; ++it) it.valueRef() = 0;
+      for (SparseMatrix::InnerIterator it(P, row); it; ++it)
+        if (fixed(l, row) || fixed(l + 1, static_cast<int>(it.col()))) it.valueRef() = 0;
     P.prune(0.0);
   }
   restrictions_.clear();
@@ -282,53 +272,71 @@ void MultigridPreconditioner::setCoarseReuse(int setups) {
 
 void MultigridPreconditioner::setup(const SparseMatrix& A) {
   // Level 0 is A itself (not copied: the caller keeps it alive while solving).
-  impl_->fine = &A;
+  levels_.resize(nodal_.size() + 1);
+  levels_[0] = &A;
   const bool build = impl_->streams.empty();  // first setup for this pattern
   if (!build && ++impl_->setupsSinceCoarse < reuse_) {
     // Coarse operators from an earlier system: still an SPD preconditioner
     // of this one, and CG still solves this system to the tolerance.
-    invertDiagonalBlocks(A, impl_->inverseDiagonals[0]);
+    prepareLevels(levels_.size(), false);
     return;
   }
   impl_->setupsSinceCoarse = 0;
-  operators_.resize(nodal_.size() + 1);
-  if (build) {
-    if (!hasNodeBlocks(A)) throw Error("multigrid: the system is not in the node-block layout");
-    impl_->sweeps.assign(1, sweepOrder(A));
-  }
+  if (build && !hasNodeBlocks(A))  // the streams read blocks
+    throw Error("multigrid: the system is not in the node-block layout");
+  galerkin_.resize(nodal_.size());
   for (std::size_t l = 0; l < nodal_.size(); ++l) {
-    if (build) {
-      impl_->streams.emplace_back(level(l), nodal_[l]);
-      impl_->sweeps.push_back(sweepOrder(impl_->streams.back().pattern()));
-    }
-    impl_->streams[l].compute(level(l), operators_[l + 1]);
+    if (build) impl_->streams.emplace_back(level(l), nodal_[l]);
+    impl_->streams[l].compute(level(l), galerkin_[l]);
+    levels_[l + 1] = &galerkin_[l];
   }
-  impl_->inverseDiagonals.resize(operators_.size());
-  for (std::size_t l = 0; l < operators_.size(); ++l)
+  prepareLevels(1, build);
+}
+
+void MultigridPreconditioner::setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse,
+                                    bool coarseChanged) {
+  if (coarse.size() != nodal_.size())
+    throw Error("multigrid: one coarse operator per coarse level is needed");
+  levels_.resize(nodal_.size() + 1);
+  levels_[0] = &A;
+  for (std::size_t l = 0; l < coarse.size(); ++l) levels_[l + 1] = &coarse[l];
+  const bool build = impl_->sweeps.empty();
+  prepareLevels(coarseChanged || build ? 1 : levels_.size(), build);
+}
+
+void MultigridPreconditioner::prepareLevels(std::size_t firstChanged, bool build) {
+  if (build) {
+    impl_->sweeps.clear();
+    for (const SparseMatrix* A : levels_) {
+      if (!hasNodeBlocks(*A)) throw Error("multigrid: a level is not in the node-block layout");
+      impl_->sweeps.push_back(sweepOrder(*A));
+    }
+    impl_->b.resize(levels_.size());
+    impl_->x.resize(levels_.size());
+    impl_->r.resize(levels_.size());
+  }
+  impl_->inverseDiagonals.resize(levels_.size());
+  invertDiagonalBlocks(level(0), impl_->inverseDiagonals[0]);
+  // (With one level the coarsest is the system itself: always new.)
+  if (firstChanged >= levels_.size() && levels_.size() > 1) return;
+  for (std::size_t l = std::max<std::size_t>(firstChanged, 1); l < levels_.size(); ++l)
     invertDiagonalBlocks(level(l), impl_->inverseDiagonals[l]);
   // With Dirichlet rows removed from P, columns of P can become linearly
   // dependent and the coarsest operator singular. Its null vectors v have
   // P v = 0 and never reach the fine grid, so a tiny shift that makes the
   // factorization possible changes nothing that matters.
-  const SparseMatrix& coarsest = level(operators_.size() - 1);
+  const SparseMatrix& coarsest = level(levels_.size() - 1);
   impl_->coarsest.setShift(1e-12 * coarsest.diagonal().cwiseAbs().maxCoeff());
   const Eigen::SparseMatrix<double> columnMajor(coarsest);
   if (build) impl_->coarsest.analyzePattern(columnMajor);  // the ordering, once per pattern
   impl_->coarsest.factorize(columnMajor);
   if (impl_->coarsest.info() != Eigen::Success)
     throw Error("multigrid: the coarsest operator could not be factorized");
-  impl_->b.resize(operators_.size());
-  impl_->x.resize(operators_.size());
-  impl_->r.resize(operators_.size());
-}
-
-const SparseMatrix& MultigridPreconditioner::level(std::size_t l) const {
-  return l == 0 ? *impl_->fine : operators_[l];
 }
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   Impl& s = *impl_;
-  const std::size_t last = operators_.size() - 1;
+  const std::size_t last = levels_.size() - 1;
   s.b[0] = r;
   // Down: pre-smooth from zero, restrict the residual.
   for (std::size_t l = 0; l < last; ++l) {

@@ -38,12 +38,12 @@ class Wobble : public Sag {
   void setUp(Simulation& sim) override {
     Sag::setUp(sim);
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
-    const Eigen::VectorXd& mass = sim.fem().lumpedMass();
+    const Eigen::VectorXd mass = sim.nodeMasses();
     pushed_ = Points3::Zero(sim.restMesh().nodeCount(), 3);
     // The upper 40%, weighted by height so the push bends rather than shears.
     for (Index v = 0; v < pushed_.rows(); ++v) {
       const double t = (sim.restMesh().nodes(v, 1) - box.min.y()) / box.extent().y();
-      if (t > 0.6) pushed_(v, 0) = mass[3 * v] * p_.pushAcceleration * (t - 0.6) / 0.4;
+      if (t > 0.6) pushed_(v, 0) = mass[v] * p_.pushAcceleration * (t - 0.6) / 0.4;
     }
   }
   void beforeStep(Simulation& sim, double time) override {

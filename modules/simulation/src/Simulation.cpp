@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "DirichletRows.h"
+#include "NodeOrder.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/simulation/Prolongation.h"
 
@@ -15,24 +17,103 @@ const char* toString(SolverKind kind) {
   return kind == SolverKind::ConjugateGradient ? "cg" : "multigrid";
 }
 
-namespace {
-
-Eigen::VectorXd flatten(const Points3& p) {
-  return Eigen::Map<const Eigen::VectorXd>(p.data(), p.size());
+const char* toString(CoarseOperators kind) {
+  return kind == CoarseOperators::Galerkin ? "galerkin" : "rediscretized";
 }
 
-Points3 unflatten(const Eigen::VectorXd& x) {
-  return Eigen::Map<const Points3>(x.data(), x.size() / 3, 3);
+// A coarser level of the rediscretized multigrid: its own corotated FEM at
+// positions interpolated from the next finer level's.
+struct Simulation::CoarseLevel {
+  CoarseLevel(TetMesh coarseMesh, const ElasticMaterial& material, const TetMesh& finer)
+      : mesh(std::move(coarseMesh)),
+        fem(mesh, material),
+        positionsFromFiner(nodalProlongation(finer, mesh.nodes)) {}
+  TetMesh mesh;
+  CorotatedFem fem;
+  SparseMatrix
+      positionsFromFiner;  // coarse nodes x finer nodes (coarse nodes located in the finer mesh)
+  Eigen::VectorXd x, force, dampedMass, contactDiagonal, diagonal;
+  std::vector<char> fixedNodes;
+  DirichletRows dirichlet;
+};
+
+namespace {
+
+// The mesh's nodes breadth first along its edges (internal -> mesh id).
+std::vector<int> meshNodeOrder(const TetMesh& mesh) {
+  validateTetMesh(mesh, "simulation mesh", /*requirePositiveVolume=*/true);
+  const auto n = static_cast<std::size_t>(mesh.nodeCount());
+  std::vector<std::vector<int>> neighbours(n);
+  for (Index e = 0; e < mesh.elementCount(); ++e)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (i != j)
+          neighbours[static_cast<std::size_t>(mesh.elements(e, i))].push_back(mesh.elements(e, j));
+  for (std::vector<int>& list : neighbours) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return breadthFirstOrder(static_cast<int>(n), [&](int v, auto&& visit) {
+    for (int u : neighbours[static_cast<std::size_t>(v)]) visit(u);
+  });
+}
+
+std::vector<int> inverse(const std::vector<int>& order) {
+  std::vector<int> rank(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    rank[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+  return rank;
+}
+
+TetMesh renumbered(const TetMesh& mesh, const std::vector<int>& order) {
+  const std::vector<int> rank = inverse(order);
+  TetMesh result;
+  result.nodes.resize(mesh.nodeCount(), 3);
+  for (Index i = 0; i < mesh.nodeCount(); ++i)
+    result.nodes.row(i) = mesh.nodes.row(order[static_cast<std::size_t>(i)]);
+  result.elements.resize(mesh.elementCount(), 4);
+  for (Index e = 0; e < mesh.elementCount(); ++e)
+    for (int k = 0; k < 4; ++k)
+      result.elements(e, k) = rank[static_cast<std::size_t>(mesh.elements(e, k))];
+  return result;
+}
+
+// A level's mesh renumbered breadth first.
+TetMesh renumbered(const TetMesh& mesh) {
+  return renumbered(mesh, meshNodeOrder(mesh));
 }
 
 }  // namespace
+
+Eigen::VectorXd Simulation::toInternal(const Points3& perNode) const {
+  Eigen::VectorXd result(3 * perNode.rows());
+  for (std::size_t i = 0; i < order_.size(); ++i)
+    result.segment<3>(3 * static_cast<Index>(i)) = perNode.row(order_[i]).transpose();
+  return result;
+}
+
+Points3 Simulation::toOutside(const Eigen::VectorXd& internal) const {
+  Points3 result(static_cast<Index>(order_.size()), 3);
+  for (std::size_t i = 0; i < order_.size(); ++i)
+    result.row(order_[i]) = internal.segment<3>(3 * static_cast<Index>(i)).transpose();
+  return result;
+}
+
+Eigen::VectorXd Simulation::nodeMasses() const {
+  Eigen::VectorXd masses(rest_.nodeCount());
+  for (std::size_t i = 0; i < order_.size(); ++i)
+    masses[order_[i]] = fem_.lumpedMass()[3 * static_cast<Index>(i)];
+  return masses;
+}
 
 Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
                        const SimulationOptions& options)
     : level_(level < 0 ? dataset.finestLevel() : level),
       rest_(extractLevel(dataset, level_)),
+      order_(meshNodeOrder(rest_)),
+      rank_(inverse(order_)),
       options_(options),
-      fem_(rest_, options.material) {
+      fem_(renumbered(rest_, order_), options.material) {
   if (!(options.timeStep > 0)) throw Error("the time step must be positive");
   if (options.coarseReuse < 1) throw Error("the coarse-operator reuse must be at least 1 step");
   x_ = fem_.restPositions();
@@ -41,8 +122,8 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   dv_.setZero(fem_.dofCount());
   prescribedDv_.setZero(fem_.dofCount());
   fixedDofs_.assign(static_cast<std::size_t>(fem_.dofCount()), 0);
-  stiffness_ = fem_.pattern();
   system_ = fem_.pattern();
+  dampedMass_ = (1 + options.timeStep * options.material.massDamping) * fem_.lumpedMass();
   diagonalSlot_.resize(static_cast<std::size_t>(fem_.dofCount()));
   for (int row = 0; row < system_.rows(); ++row) {
     const int* begin = system_.innerIndexPtr() + system_.outerIndexPtr()[row];
@@ -50,15 +131,24 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
     diagonalSlot_[static_cast<std::size_t>(row)] =
         static_cast<int>(std::lower_bound(begin, end, row) - system_.innerIndexPtr());
   }
+  dirichlet_ = std::make_unique<DirichletRows>();
   if (options.solver == SolverKind::Multigrid) {
-    std::vector<SparseMatrix> prolongations;
-    Points3 fine = rest_.nodes;
+    // This level, then the coarser ones, each renumbered breadth first.
+    std::vector<TetMesh> meshes{renumbered(rest_, order_)};
     for (int coarse = level_ - 1; coarse >= 0; --coarse) {
-      const TetMesh coarseMesh = extractLevel(dataset, coarse);
-      prolongations.push_back(nodalProlongation(coarseMesh, fine));
-      fine = coarseMesh.nodes;
+      meshes.push_back(renumbered(extractLevel(dataset, coarse)));
+      prolongations_.push_back(nodalProlongation(meshes.back(), meshes[meshes.size() - 2].nodes));
     }
-    auto mg = std::make_unique<MultigridPreconditioner>(std::move(prolongations));
+    if (options.coarseOperators == CoarseOperators::Rediscretized) {
+      coarse_.reserve(meshes.size() - 1);
+      for (std::size_t l = 1; l < meshes.size(); ++l) {
+        CoarseLevel& coarseLevel = coarse_.emplace_back(meshes[l], options.material, meshes[l - 1]);
+        coarseLevel.dampedMass =
+            (1 + options.timeStep * options.material.massDamping) * coarseLevel.fem.lumpedMass();
+        coarseSystems_.push_back(coarseLevel.fem.pattern());
+      }
+    }
+    auto mg = std::make_unique<MultigridPreconditioner>(prolongations_);
     mg->setCoarseReuse(options.coarseReuse);
     multigrid_ = mg.get();
     preconditioner_ = std::move(mg);
@@ -70,60 +160,90 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   floorStiffness_ = options.floorStiffness;
   if (options.floorHeight && !(floorStiffness_ > 0)) {
     Eigen::VectorXd force;
-    fem_.update(x_, force, stiffness_);
-    floorStiffness_ = 100.0 * stiffness_.diagonal().maxCoeff();
+    SparseMatrix stiffness = fem_.pattern();
+    fem_.update(x_, force, stiffness);
+    floorStiffness_ = 100.0 * stiffness.diagonal().maxCoeff();
   }
 }
 
 Simulation::~Simulation() = default;
 
 void Simulation::setFixedNodes(const std::vector<int>& nodes) {
-  fixedNodes_ = nodes;
-  std::fill(fixedDofs_.begin(), fixedDofs_.end(), 0);
-  for (int v : nodes) {
+  for (int v : nodes)
     if (v < 0 || v >= rest_.nodeCount())
       throw Error("fixed node " + std::to_string(v) + " does not exist");
-    for (int a = 0; a < 3; ++a) fixedDofs_[static_cast<std::size_t>(3 * v + a)] = 1;
-  }
-  if (multigrid_) {
-    std::vector<char> fixedNodes(static_cast<std::size_t>(rest_.nodeCount()), 0);
-    for (int v : nodes) fixedNodes[static_cast<std::size_t>(v)] = 1;
-    multigrid_->setFixedNodes(fixedNodes);
-  }
+  fixedNodes_ = nodes;
+  std::vector<char> fixedNodes(static_cast<std::size_t>(rest_.nodeCount()), 0);
+  for (int v : nodes) fixedNodes[static_cast<std::size_t>(rank_[static_cast<std::size_t>(v)])] = 1;
+  auto dofsOf = [](const std::vector<char>& fixed) {
+    std::vector<char> dofs(3 * fixed.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) dofs[i] = fixed[i / 3];
+    return dofs;
+  };
+  fixedDofs_ = dofsOf(fixedNodes);
+  *dirichlet_ = DirichletRows(system_, fixedDofs_);
   kinematicNodes_.clear();
+  if (!multigrid_) return;
+  // Rediscretized levels: a coarse node is held still where most of the
+  // weight it spreads to the finer level lands on fixed nodes there (e.g.
+  // the coarse nodes of a clamped base); a free coarse operator next to a
+  // clamped fine one would send near-rigid corrections the fine grid cannot
+  // take. Galerkin operators inherit the constraint through P instead.
+  std::vector<std::vector<char>> perLevel{fixedNodes};
+  for (std::size_t l = 0; l < coarse_.size(); ++l) {
+    const SparseMatrix& P = prolongations_[l];  // finer x coarse
+    Eigen::VectorXd fixedWeight = Eigen::VectorXd::Zero(P.cols()), weight = fixedWeight;
+    for (int row = 0; row < P.outerSize(); ++row)
+      for (SparseMatrix::InnerIterator it(P, row); it; ++it) {
+        weight[it.col()] += std::abs(it.value());
+        if (perLevel[l][static_cast<std::size_t>(row)])
+          fixedWeight[it.col()] += std::abs(it.value());
+      }
+    std::vector<char> coarseFixed(static_cast<std::size_t>(P.cols()), 0);
+    for (Index c = 0; c < P.cols(); ++c)
+      coarseFixed[static_cast<std::size_t>(c)] = weight[c] > 0 && fixedWeight[c] >= 0.5 * weight[c];
+    coarse_[l].fixedNodes = coarseFixed;
+    coarse_[l].dirichlet = DirichletRows(coarseSystems_[l], dofsOf(coarseFixed));
+    perLevel.push_back(std::move(coarseFixed));
+  }
+  multigrid_->setFixedNodesPerLevel(perLevel);
 }
 
 void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points3& targets) {
   if (static_cast<Index>(nodes.size()) != targets.rows())
     throw Error("one target per kinematic node");
-  for (int v : nodes)
-    if (!fixedDofs_[static_cast<std::size_t>(3 * v)])
+  std::vector<int> internal;
+  for (int v : nodes) {
+    if (v < 0 || v >= rest_.nodeCount() ||
+        !fixedDofs_[3 * static_cast<std::size_t>(rank_[static_cast<std::size_t>(v)])])
       throw Error("kinematic node " + std::to_string(v) + " must be a fixed node");
-  kinematicNodes_ = nodes;
+    internal.push_back(rank_[static_cast<std::size_t>(v)]);
+  }
+  kinematicNodes_ = std::move(internal);
   kinematicTargets_ = targets;
 }
 
 void Simulation::setExternalForces(const Points3& forces) {
   if (forces.rows() != rest_.nodeCount()) throw Error("one external force per node");
   std::lock_guard lock(mutex_);
-  external_ = flatten(forces);
+  external_ = toInternal(forces);
 }
 
 Points3 Simulation::externalForces() const {
   std::lock_guard lock(mutex_);
-  return unflatten(external_);
+  return toOutside(external_);
 }
 
 void Simulation::setPositions(const Points3& positions) {
   if (positions.rows() != rest_.nodeCount()) throw Error("one position per node");
   std::lock_guard lock(mutex_);
-  x_ = flatten(positions);
+  x_ = toInternal(positions);
 }
 
 void Simulation::setVelocities(const Points3& velocities) {
   if (velocities.rows() != rest_.nodeCount()) throw Error("one velocity per node");
   std::lock_guard lock(mutex_);
-  v_ = flatten(velocities);
+  v_ = toInternal(velocities);
 }
 
 void Simulation::buildSystem(double h, StepStats& stats) {
@@ -134,33 +254,35 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     std::lock_guard lock(mutex_);
     external = external_;
   }
+  // A = (1 + h alpha) M + (h beta + h^2) K and f_el - (beta + h) K v, in one
+  // element pass; then b = h (f_el - (beta + h) K v + M g + f_ext - alpha M v).
   auto start = std::chrono::steady_clock::now();
-  fem_.update(x_, force_, stiffness_);
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = h * m.stiffnessDamping + h * h;
+  terms.diagonal = &dampedMass_;
+  terms.velocity = &v_;
+  terms.velocityWeight = m.stiffnessDamping + h;
+  fem_.update(x_, force_, system_, terms);
   stats.assemblySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // f = f_el + M g + f_ext
+  rhs_.resize(force_.size());
   for (Index v = 0; v < rest_.nodeCount(); ++v)
-    force_.segment<3>(3 * v) +=
-        mass.segment<3>(3 * v).cwiseProduct(options_.gravity) + external.segment<3>(3 * v);
-  // A = (1 + h alpha) M + (h beta + h^2) K;  b = h (f - alpha M v - (beta + h) K v)
-  multiply(stiffness_, v_, scratch_);
-  rhs_ = h * (force_ - m.massDamping * mass.cwiseProduct(v_) - (m.stiffnessDamping + h) * scratch_);
-  const double kScale = h * m.stiffnessDamping + h * h;
-  const double* k = stiffness_.valuePtr();
+    rhs_.segment<3>(3 * v) = h * (force_.segment<3>(3 * v) + external.segment<3>(3 * v) +
+                                  mass.segment<3>(3 * v).cwiseProduct(
+                                      options_.gravity - m.massDamping * v_.segment<3>(3 * v)));
   double* a = system_.valuePtr();
-  for (Index i = 0; i < system_.nonZeros(); ++i) a[i] = kScale * k[i];
-  for (Index r = 0; r < system_.rows(); ++r)
-    a[diagonalSlot_[static_cast<std::size_t>(r)]] += (1 + h * m.massDamping) * mass[r];
 
   // Floor contact: a penalty spring on every node below the plane.
   stats.contacts = 0;
   if (options_.floorHeight) {
+    contactDiagonal_.setZero(fem_.dofCount());
     for (Index v = 0; v < rest_.nodeCount(); ++v) {
       const Index dof = 3 * v + 1;
       const double depth = *options_.floorHeight - x_[dof];
       if (depth < 0) continue;  // touching counts: the penalty keeps it from sinking
       ++stats.contacts;
       a[diagonalSlot_[static_cast<std::size_t>(dof)]] += h * h * floorStiffness_;
+      contactDiagonal_[dof] = h * h * floorStiffness_;
       rhs_[dof] += h * (floorStiffness_ * depth - h * floorStiffness_ * v_[dof]);
     }
   }
@@ -175,24 +297,35 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     const Eigen::Vector3d target = kinematicTargets_.row(static_cast<Index>(i)).transpose();
     prescribedDv_.segment<3>(3 * v) = (target - x_.segment<3>(3 * v)) / h - v_.segment<3>(3 * v);
   }
-  const int* outer = system_.outerIndexPtr();
-  const int* inner = system_.innerIndexPtr();
-  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(system_.rows()), 1024),
-                    [&](const auto& range) {
-                      for (int row = range.begin(); row != range.end(); ++row) {
-                        if (fixedDofs_[static_cast<std::size_t>(row)]) {
-                          for (int s = outer[row]; s < outer[row + 1]; ++s)
-                            a[s] = inner[s] == row ? 1.0 : 0.0;
-                          rhs_[row] = prescribedDv_[row];
-                          continue;
-                        }
-                        for (int s = outer[row]; s < outer[row + 1]; ++s)
-                          if (fixedDofs_[static_cast<std::size_t>(inner[s])]) {
-                            rhs_[row] -= a[s] * prescribedDv_[inner[s]];
-                            a[s] = 0.0;
-                          }
-                      }
-                    });
+  dirichlet_->apply(system_, &rhs_, &prescribedDv_);
+}
+
+void Simulation::buildCoarseSystems(double h) {
+  const ElasticMaterial& m = options_.material;
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = h * m.stiffnessDamping + h * h;
+  const Eigen::VectorXd* finer = &x_;
+  const Eigen::VectorXd* finerContact = options_.floorHeight ? &contactDiagonal_ : nullptr;
+  for (std::size_t l = 0; l < coarse_.size(); ++l) {
+    CoarseLevel& level = coarse_[l];
+    multiplyNodal(level.positionsFromFiner, *finer, level.x);
+    terms.diagonal = &level.dampedMass;
+    if (finerContact) {
+      // The floor's penalty springs, lumped onto the coarse nodes (P^T D 1).
+      Eigen::VectorXd contact = Eigen::VectorXd::Zero(level.fem.dofCount());
+      const SparseMatrix& P = prolongations_[l];
+      for (int row = 0; row < P.outerSize(); ++row)
+        for (SparseMatrix::InnerIterator it(P, row); it; ++it)
+          contact.segment<3>(3 * it.col()) += it.value() * finerContact->segment<3>(3 * row);
+      level.contactDiagonal = contact;
+      level.diagonal = level.dampedMass + contact;
+      terms.diagonal = &level.diagonal;
+      finerContact = &level.contactDiagonal;
+    }
+    level.fem.update(level.x, level.force, coarseSystems_[l], terms);
+    level.dirichlet.apply(coarseSystems_[l]);
+    finer = &level.x;
+  }
 }
 
 StepStats Simulation::step() {
@@ -200,7 +333,15 @@ StepStats Simulation::step() {
   const double h = options_.timeStep;
   buildSystem(h, stats);
   auto start = std::chrono::steady_clock::now();
-  preconditioner_->setup(system_);
+  if (coarse_.empty()) {
+    preconditioner_->setup(system_);
+  } else {
+    // Rediscretized multigrid: new coarse systems every coarseReuse steps.
+    const bool rebuild = stepsSinceCoarse_ == 0;
+    if (rebuild) buildCoarseSystems(h);
+    stepsSinceCoarse_ = (stepsSinceCoarse_ + 1) % options_.coarseReuse;
+    multigrid_->setup(system_, coarseSystems_, rebuild);
+  }
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   start = std::chrono::steady_clock::now();
@@ -234,7 +375,7 @@ StepStats Simulation::step() {
 
 SimulationState Simulation::state() const {
   std::lock_guard lock(mutex_);
-  return {unflatten(x_), unflatten(v_), time_, steps_};
+  return {toOutside(x_), toOutside(v_), time_, steps_};
 }
 
 Energies Simulation::energies() const {

@@ -44,10 +44,27 @@ class CorotatedFem {
   // build systems of the same shape.
   const SparseMatrix& pattern() const { return pattern_; }
 
+  // What update() assembles besides the elastic force: an implicit step
+  // needs A = s K + D (D diagonal, e.g. the damped mass) and the force
+  // f_el - w K v, both in the same element pass (no separate K v product,
+  // no second pass over the matrix).
+  struct SystemTerms {
+    double stiffnessScale = 1;                  // s
+    const Eigen::VectorXd* diagonal = nullptr;  // D per dof; none = 0
+    const Eigen::VectorXd* velocity = nullptr;  // v per dof; none = 0
+    double velocityWeight = 0;                  // w
+  };
+
   // For positions x (3n): rotations, elastic forces (3n) and the stiffness
   // R K R^T assembled into `stiffness` (given the pattern's shape; values
   // overwritten). Elements are processed in parallel.
-  void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& stiffness);
+  void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& stiffness) {
+    update(x, force, stiffness, SystemTerms{});
+  }
+  // The same with the terms above: `force` = f_el(x) - w K v and `matrix` =
+  // s K + D, K the corotated stiffness at x.
+  void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& matrix,
+              const SystemTerms& terms);
 
   // Elastic energy sum 1/2 z^T K_e z, z = R^T x_e - X_e, R from x.
   double elasticEnergy(const Eigen::VectorXd& x) const;
@@ -68,7 +85,10 @@ class CorotatedFem {
 
   // Rest stiffness of element e (12 x 12, node-major xyz).
   Eigen::Matrix<double, 12, 12> elementStiffness(Index e) const;
-  const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
+  // The rotation of element e (mesh numbering) at the last update().
+  const Eigen::Matrix3d& elementRotation(Index e) const {
+    return rotations_[static_cast<std::size_t>(storedAt_[static_cast<std::size_t>(e)])];
+  }
 
  private:
   struct Element {
@@ -90,7 +110,8 @@ class CorotatedFem {
   Eigen::VectorXd restPositions_;
   Eigen::VectorXd mass_;
   SparseMatrix pattern_;
-  std::vector<Eigen::Matrix3d> rotations_;
+  std::vector<int> diagonalSlots_;             // per node: value index of entry (3v, 3v)
+  std::vector<Eigen::Matrix3d> rotations_;     // per stored element
   std::vector<Eigen::Quaterniond> estimates_;  // warm starts, per stored element
   // Chunks of consecutive stored elements (their first index), grouped so
   // that no two chunks of a group share a node: each group is assembled in

@@ -52,38 +52,57 @@ class BlockJacobi : public Preconditioner {
 
 // Multigrid V-cycle on non-nested levels: `nodalProlongations[l]` maps the
 // nodes of level l+1 (coarser) to those of level l (level 0 is the system's
-// own). Coarse operators are Galerkin products P^T A P, rebuilt in setup() by precomputed streams
-// (GalerkinStream.h); block (3x3 per node) Gauss-Seidel smoothing over coloured chunks of
-// neighbouring nodes (chunks of a colour relax in parallel), forward before
-// and exactly backward after (the cycle is a symmetric preconditioner); an
-// exact Cholesky solve on the coarsest level. Fixed nodes (Dirichlet)
-// receive no coarse correction.
+// own). The coarse operators are either Galerkin products P^T A P, rebuilt in
+// setup(A) by precomputed streams (GalerkinStream.h), or given by the caller
+// (setup(A, coarse): e.g. the coarse meshes' own discretization, as sparse as
+// the fine one). Block (3x3 per node) Gauss-Seidel smoothing over coloured
+// chunks of neighbouring nodes (chunks of a colour relax in parallel),
+// forward before and exactly backward after (the cycle is a symmetric
+// preconditioner); an exact Cholesky solve on the coarsest level. Fixed
+// nodes (Dirichlet) receive no coarse correction.
 class MultigridPreconditioner : public Preconditioner {
  public:
   explicit MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,
                                    int smoothingSweeps = 1);
   ~MultigridPreconditioner() override;
   // 1 per fixed node of the finest level.
-  void setFixedNodes(const std::vector<char>& fixedNodes);
-  // Rebuild the coarse operators (Galerkin products, coarsest factorization)
-  // on every `setups`-th setup only; the finest level is always the current
+  void setFixedNodes(const std::vector<char>& fixedNodes) {
+    setFixedNodesPerLevel(std::vector<std::vector<char>>{fixedNodes});
+  }
+  // The same per level (level 0 first; missing or empty levels: none fixed).
+  // A fixed coarse node is one the caller's coarse operator holds still
+  // (identity row): it neither gives nor takes corrections.
+  void setFixedNodesPerLevel(const std::vector<std::vector<char>>& fixedPerLevel);
+  // Rebuild the Galerkin operators (and the coarsest factorization) on every
+  // `setups`-th setup(A) only; the finest level is always the current
   // system. 1 (the default) rebuilds every time.
   void setCoarseReuse(int setups);
+  // Galerkin coarse operators.
   void setup(const SparseMatrix& A) override;
+  // Coarse operators from the caller: coarse[l] is level l+1's, in the
+  // node-block layout, with the same pattern on every call; `coarseChanged`
+  // false keeps the last call's factorization. Both A and `coarse` must
+  // outlive apply().
+  void setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse, bool coarseChanged);
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
   int levelCount() const { return static_cast<int>(nodal_.size()) + 1; }
-  // Level 0 is the system of the last setup(), which must outlive apply().
+  // Level 0 is the system of the last setup().
   const SparseMatrix& coarseOperator(int level) const {
     return this->level(static_cast<std::size_t>(level));
   }
 
  private:
-  const SparseMatrix& level(std::size_t l) const;
+  const SparseMatrix& level(std::size_t l) const { return *levels_[l]; }
+  // Sweep orders and the layout check on the first setup for a pattern;
+  // smoother diagonals of the levels from `firstChanged` on; the coarsest
+  // factorization if it changed.
+  void prepareLevels(std::size_t firstChanged, bool build);
   struct Impl;
   std::vector<SparseMatrix> prolongations_;  // nodal, as given
-  std::vector<SparseMatrix> nodal_;          // with fixed rows removed
+  std::vector<SparseMatrix> nodal_;          // with fixed rows and columns removed
   std::vector<SparseMatrix> restrictions_;   // nodal_ transposed
-  std::vector<SparseMatrix> operators_;      // [0] unused: level 0 is the caller's A
+  std::vector<SparseMatrix> galerkin_;       // Galerkin operators of levels 1.. (setup(A))
+  std::vector<const SparseMatrix*> levels_;  // the operator of each level
   int sweeps_;
   int reuse_ = 1;
   std::shared_ptr<Impl> impl_;

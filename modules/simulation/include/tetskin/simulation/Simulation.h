@@ -22,8 +22,16 @@
 
 namespace tetskin {
 
+class DirichletRows;
+
 enum class SolverKind { ConjugateGradient, Multigrid };
 const char* toString(SolverKind kind);
+
+// Multigrid coarse operators: Galerkin products P^T A P of the system, or the
+// coarse meshes' own corotated FEM (rediscretized) at positions interpolated
+// from the finer level, as sparse as the fine system.
+enum class CoarseOperators { Galerkin, Rediscretized };
+const char* toString(CoarseOperators kind);
 
 struct SimulationOptions {
   ElasticMaterial material;
@@ -37,6 +45,7 @@ struct SimulationOptions {
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
   // step); the solve stays exact to `tolerance` either way.
   int coarseReuse = 1;
+  CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   int maxIterations = 2000;
 };
 
@@ -68,10 +77,13 @@ class Simulation {
   Simulation(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options);
   ~Simulation();
 
+  // Node ids here and in every call below are the dataset level's.
+  // (Inside, nodes are renumbered breadth first for memory locality.)
   int level() const { return level_; }
   const TetMesh& restMesh() const { return rest_; }
   const SimulationOptions& options() const { return options_; }
-  const CorotatedFem& fem() const { return fem_; }
+  // Lumped mass per node.
+  Eigen::VectorXd nodeMasses() const;
 
   // Dirichlet nodes (level-local ids): they keep their position unless given
   // a kinematic target.
@@ -93,10 +105,17 @@ class Simulation {
 
  private:
   void buildSystem(double h, StepStats& stats);
+  // Rediscretized multigrid: the coarse systems at the current positions.
+  void buildCoarseSystems(double h);
+  // Between the level's node numbering (outside) and the internal one.
+  Eigen::VectorXd toInternal(const Points3& perNode) const;
+  Points3 toOutside(const Eigen::VectorXd& internal) const;
   int level_;
-  TetMesh rest_;
+  TetMesh rest_;            // the level's own numbering
+  std::vector<int> order_;  // internal node -> level node
+  std::vector<int> rank_;   // level node -> internal node
   SimulationOptions options_;
-  CorotatedFem fem_;
+  CorotatedFem fem_;  // on the renumbered mesh
   std::unique_ptr<Preconditioner> preconditioner_;
   MultigridPreconditioner* multigrid_ = nullptr;
 
@@ -105,16 +124,25 @@ class Simulation {
   double time_ = 0;
   Index steps_ = 0;
 
-  std::vector<int> fixedNodes_;
+  std::vector<int> fixedNodes_;  // level numbering
   std::vector<char> fixedDofs_;
-  Eigen::VectorXd prescribedDv_;  // for fixed dofs
-  std::vector<int> kinematicNodes_;
+  Eigen::VectorXd prescribedDv_;     // for fixed dofs
+  std::vector<int> kinematicNodes_;  // internal numbering
   Points3 kinematicTargets_;
 
+  std::unique_ptr<DirichletRows> dirichlet_;
+  struct CoarseLevel;                // rediscretized multigrid: one per coarser level
+  std::vector<CoarseLevel> coarse_;  // the next coarser first
+  std::vector<SparseMatrix> coarseSystems_;
+  std::vector<SparseMatrix> prolongations_;  // nodal, level l+1 to level l (l = 0: this one)
+  Eigen::VectorXd contactDiagonal_;          // floor penalty per dof, this step
+  int stepsSinceCoarse_ = 0;
+
   // Per-step work arrays, allocated once.
-  SparseMatrix stiffness_, system_;
+  Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
+  SparseMatrix system_;
   std::vector<int> diagonalSlot_;
-  Eigen::VectorXd force_, rhs_, dv_, scratch_;
+  Eigen::VectorXd force_, rhs_, dv_;
   double floorStiffness_ = 0;
 };
 
