@@ -34,12 +34,15 @@ struct Solver {
   SolverKind kind = SolverKind::ConjugateGradient;
   CoarseOperators coarse = CoarseOperators::Rediscretized;
   int coarseReuse = 1;
+  bool singlePrecisionCycle = true;
   std::string name() const {
     const char* base = kind == SolverKind::ConjugateGradient ? "cg"
                        : coarse == CoarseOperators::Galerkin ? "mg-galerkin"
                                                              : "mg";
     char text[48];  // (snprintf: GCC's -Wrestrict misfires on string concatenation)
-    std::snprintf(text, sizeof text, coarseReuse > 1 ? "%s/%d" : "%s", base, coarseReuse);
+    char reuse[16] = "";
+    if (coarseReuse > 1) std::snprintf(reuse, sizeof reuse, "/%d", coarseReuse);
+    std::snprintf(text, sizeof text, "%s%s%s", base, reuse, singlePrecisionCycle ? "" : " double");
     return text;
   }
 };
@@ -51,6 +54,7 @@ Wobble wobble(const MultiLevelTetMesh& mesh, int level, const Solver& solver, do
   options.solver = solver.kind;
   options.coarseOperators = solver.coarse;
   options.coarseReuse = solver.coarseReuse;
+  options.singlePrecisionCycle = solver.singlePrecisionCycle;
   options.tolerance = tolerance;
   Wobble run{std::make_unique<Simulation>(mesh, level, options), makeScenario("wobble")};
   run.scenario->setUp(*run.sim);
@@ -75,7 +79,7 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, const Solve
   }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%-22s %8lld  %-14s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
+  std::printf("%-22s %8lld  %-20s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
               static_cast<long long>(sim.restMesh().elementCount()), solver.name().c_str(),
               steps / total, static_cast<double>(iterations) / steps, 1e3 * total / steps,
               1e3 * assembly / steps, 1e3 * setup / steps, 1e3 * solve / steps);
@@ -146,20 +150,21 @@ int main(int argc, char** argv) {
   rotations();
   std::printf(
       "(mg: rediscretized coarse operators, mg-galerkin: Galerkin products; /N: coarse "
-      "operators rebuilt every N steps)\n");
+      "operators rebuilt every N steps; V-cycles in single precision unless 'double')\n");
   const Solver cg;
   const Solver mg{SolverKind::Multigrid, CoarseOperators::Rediscretized, 1};
   const Solver mg4{SolverKind::Multigrid, CoarseOperators::Rediscretized, 4};
   const Solver galerkin{SolverKind::Multigrid, CoarseOperators::Galerkin, 1};
   const Solver galerkin4{SolverKind::Multigrid, CoarseOperators::Galerkin, 4};
+  const Solver galerkin4double{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, false};
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
   for (const Solver& solver : {cg, mg, mg4, galerkin4})
     toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
-  std::printf("%-22s %8s  %-14s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
+  std::printf("%-22s %8s  %-20s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
   for (int level : {0, 2}) {
     const std::string name = "bunny level " + std::to_string(level);
-    for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4})
+    for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4, galerkin4double})
       if (level > 0 || solver.coarseReuse == 1)
         row(name.c_str(), sample.mesh, level, solver, steps);
   }
@@ -172,7 +177,7 @@ int main(int argc, char** argv) {
   options.maxElements = 100000;
   options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const BuildResult big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
-  for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4})
+  for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4, galerkin4double})
     row("bunny 4 levels, finest", big.dataset.mesh, 3, solver, std::max(3, steps / 5));
   // Stiffer bodies: CG's iterations grow with the square root of the
   // condition number, the multigrid's hardly.

@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <type_traits>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/simulation/GalerkinStream.h"
@@ -49,24 +50,25 @@ bool hasNodeBlocks(const SparseMatrix& A) {
   return true;
 }
 
-void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
-  if (y.size() != A.rows()) y.resize(A.rows());
+namespace {
+
+// y = A x over A's node-block pattern with `values` in Scalar (A's own, or a
+// single-precision copy for the multigrid cycle).
+template <typename Scalar>
+void multiplyBlocks(const SparseMatrix& A, const Scalar* values, const Scalar* in, Scalar* out) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  const double* values = A.valuePtr();
-  const double* in = x.data();
-  double* out = y.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(A.rows() / 3), 256),
                     [&](const auto& r) {
                       for (int v = r.begin(); v != r.end(); ++v) {
                         const int start = outer[3 * v], length = outer[3 * v + 1] - start;
                         const int* columns = inner + start;
-                        const double* row0 = values + start;
-                        const double* row1 = values + outer[3 * v + 1];
-                        const double* row2 = values + outer[3 * v + 2];
-                        double s0 = 0, s1 = 0, s2 = 0;
+                        const Scalar* row0 = values + start;
+                        const Scalar* row1 = values + outer[3 * v + 1];
+                        const Scalar* row2 = values + outer[3 * v + 2];
+                        Scalar s0 = 0, s1 = 0, s2 = 0;
                         for (int k = 0; k < length; k += 3) {
-                          const double* xc = in + columns[k];
+                          const Scalar* xc = in + columns[k];
                           s0 += row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
                           s1 += row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
                           s2 += row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
@@ -78,20 +80,40 @@ void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& 
                     });
 }
 
-void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
-  if (y.size() != 3 * P.rows()) y.resize(3 * P.rows());
+// y = P x for a nodal P on xyz vectors of Scalar.
+template <typename Scalar>
+void multiplyNodalBlocks(const SparseMatrix& P, const Scalar* in, Scalar* out) {
   const int* outer = P.outerIndexPtr();
   const int* inner = P.innerIndexPtr();
   const double* values = P.valuePtr();
   tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(P.rows()), 512),
                     [&](const auto& r) {
                       for (int i = r.begin(); i != r.end(); ++i) {
-                        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-                        for (int k = outer[i]; k < outer[i + 1]; ++k)
-                          sum += values[k] * x.segment<3>(3 * inner[k]);
-                        y.segment<3>(3 * i) = sum;
+                        Scalar s0 = 0, s1 = 0, s2 = 0;
+                        for (int k = outer[i]; k < outer[i + 1]; ++k) {
+                          const auto w = static_cast<Scalar>(values[k]);
+                          const Scalar* xc = in + 3 * inner[k];
+                          s0 += w * xc[0];
+                          s1 += w * xc[1];
+                          s2 += w * xc[2];
+                        }
+                        out[3 * i] = s0;
+                        out[3 * i + 1] = s1;
+                        out[3 * i + 2] = s2;
                       }
                     });
+}
+
+}  // namespace
+
+void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+  if (y.size() != A.rows()) y.resize(A.rows());
+  multiplyBlocks(A, A.valuePtr(), x.data(), y.data());
+}
+
+void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+  if (y.size() != 3 * P.rows()) y.resize(3 * P.rows());
+  multiplyNodalBlocks(P, x.data(), y.data());
 }
 
 namespace {
@@ -154,29 +176,29 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
 // (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)) in the sweep order; `forward`
 // false runs it exactly backwards (colours, and nodes within each chunk), so
 // a forward and a backward sweep make a symmetric smoother.
-void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>& inverseDiagonal,
-                      const SweepOrder& order, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                      bool forward) {
+template <typename Scalar>
+void blockGaussSeidel(const SparseMatrix& A, const Scalar* values,
+                      const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal,
+                      const SweepOrder& order, const Scalar* b, Scalar* x, bool forward) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  const double* values = A.valuePtr();
   auto relax = [&](int v) {
     // b_v - sum_{u != v} A_vu x_u, block by block (node-block layout).
     const int start = outer[3 * v], length = outer[3 * v + 1] - start;
     const int* columns = inner + start;
-    const double* row0 = values + start;
-    const double* row1 = values + outer[3 * v + 1];
-    const double* row2 = values + outer[3 * v + 2];
-    double s0 = b[3 * v], s1 = b[3 * v + 1], s2 = b[3 * v + 2];
+    const Scalar* row0 = values + start;
+    const Scalar* row1 = values + outer[3 * v + 1];
+    const Scalar* row2 = values + outer[3 * v + 2];
+    Scalar s0 = b[3 * v], s1 = b[3 * v + 1], s2 = b[3 * v + 2];
     for (int k = 0; k < length; k += 3) {
       if (columns[k] == 3 * v) continue;
-      const double* xc = x.data() + columns[k];
+      const Scalar* xc = x + columns[k];
       s0 -= row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
       s1 -= row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
       s2 -= row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
     }
-    x.segment<3>(3 * v) =
-        inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Vector3d(s0, s1, s2);
+    Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(x + 3 * v) =
+        inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Matrix<Scalar, 3, 1>(s0, s1, s2);
   };
   const int count = static_cast<int>(A.rows() / 3);
   auto sweepChunk = [&](int first) {
@@ -199,7 +221,10 @@ void blockGaussSeidel(const SparseMatrix& A, const std::vector<Eigen::Matrix3d>&
 }
 
 // Inverse 3x3 diagonal blocks (identity where a block is singular).
-void invertDiagonalBlocks(const SparseMatrix& A, std::vector<Eigen::Matrix3d>& inverse) {
+// (Inverted in double, stored in Scalar.)
+template <typename Scalar>
+void invertDiagonalBlocks(const SparseMatrix& A,
+                          std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverse) {
   const Index nodes = A.rows() / 3;
   inverse.resize(static_cast<std::size_t>(nodes));
   tbb::parallel_for(Index(0), nodes, [&](Index v) {
@@ -207,9 +232,50 @@ void invertDiagonalBlocks(const SparseMatrix& A, std::vector<Eigen::Matrix3d>& i
     Eigen::Matrix3d result;
     bool invertible = false;
     block.computeInverseWithCheck(result, invertible);
-    inverse[static_cast<std::size_t>(v)] = invertible ? result : Eigen::Matrix3d::Identity();
+    inverse[static_cast<std::size_t>(v)] =
+        (invertible ? result : Eigen::Matrix3d::Identity()).cast<Scalar>();
   });
 }
+
+// The per-level data of a V-cycle in Scalar: for float, copies of the level
+// matrices' values (the index arrays are shared with the double matrices),
+// which halves the memory traffic of the sweeps and products that bound the
+// cycle; for double, the matrices' own values.
+template <typename Scalar>
+struct Cycle {
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  std::vector<std::vector<Scalar>> values;                                 // per level (float only)
+  std::vector<std::vector<Eigen::Matrix<Scalar, 3, 3>>> inverseDiagonals;  // per level
+  std::vector<Vector> b, x, r;  // scratch per level: right-hand side, solution, residual
+
+  void resize(std::size_t levels) {
+    values.resize(levels);
+    inverseDiagonals.resize(levels);
+    b.resize(levels);
+    x.resize(levels);
+    r.resize(levels);
+  }
+  // After level l's matrix changed.
+  void prepare(const SparseMatrix& A, std::size_t l) {
+    invertDiagonalBlocks(A, inverseDiagonals[l]);
+    if constexpr (!std::is_same_v<Scalar, double>) {
+      std::vector<Scalar>& copy = values[l];
+      copy.resize(static_cast<std::size_t>(A.nonZeros()));
+      const double* source = A.valuePtr();
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, copy.size(), 16384),
+                        [&](const auto& range) {
+                          for (std::size_t i = range.begin(); i != range.end(); ++i)
+                            copy[i] = static_cast<Scalar>(source[i]);
+                        });
+    }
+  }
+  const Scalar* valuesOf(const SparseMatrix& A, std::size_t l) const {
+    if constexpr (std::is_same_v<Scalar, double>)
+      return A.valuePtr();
+    else
+      return values[l].data();
+  }
+};
 
 }  // namespace
 
@@ -226,13 +292,60 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
 
 struct MultigridPreconditioner::Impl {
   std::vector<GalerkinStream> streams;  // built on the first Galerkin setup() after a change
-  std::vector<std::vector<Eigen::Matrix3d>> inverseDiagonals;  // per level
-  std::vector<SweepOrder> sweeps;                              // per level, once per pattern
+  std::vector<SweepOrder> sweeps;       // per level, once per pattern
   int setupsSinceCoarse = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest;
-  // Scratch per level: right-hand side, solution, residual.
-  mutable std::vector<Eigen::VectorXd> b, x, r;
+  // One of the two is used (setSinglePrecision); apply() writes its scratch.
+  mutable Cycle<float> single;
+  mutable Cycle<double> twin;
+
+  template <typename Scalar>
+  Cycle<Scalar>& cycle() const {
+    if constexpr (std::is_same_v<Scalar, float>)
+      return single;
+    else
+      return twin;
+  }
 };
+
+namespace {
+
+// One V-cycle z = M^-1 r in Scalar (see the class comment).
+template <typename Scalar>
+void vCycle(Cycle<Scalar>& s, const std::vector<const SparseMatrix*>& levels,
+            const std::vector<SparseMatrix>& nodal, const std::vector<SparseMatrix>& restrictions,
+            const std::vector<SweepOrder>& sweeps, int sweepCount,
+            const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& coarsest,
+            const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+  const std::size_t last = levels.size() - 1;
+  s.b[0] = r.cast<Scalar>();
+  // Down: pre-smooth from zero, restrict the residual.
+  for (std::size_t l = 0; l < last; ++l) {
+    const SparseMatrix& A = *levels[l];
+    s.x[l].setZero(s.b[l].size());
+    s.r[l].resize(s.b[l].size());
+    s.b[l + 1].resize(3 * restrictions[l].rows());
+    for (int i = 0; i < sweepCount; ++i)
+      blockGaussSeidel(A, s.valuesOf(A, l), s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
+                       s.x[l].data(), true);
+    multiplyBlocks(A, s.valuesOf(A, l), s.x[l].data(), s.r[l].data());
+    s.r[l] = s.b[l] - s.r[l];
+    multiplyNodalBlocks(restrictions[l], s.r[l].data(), s.b[l + 1].data());
+  }
+  s.x[last] = coarsest.solve(s.b[last].template cast<double>()).template cast<Scalar>();
+  // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
+  for (std::size_t l = last; l-- > 0;) {
+    const SparseMatrix& A = *levels[l];
+    multiplyNodalBlocks(nodal[l], s.x[l + 1].data(), s.r[l].data());
+    s.x[l] += s.r[l];
+    for (int i = 0; i < sweepCount; ++i)
+      blockGaussSeidel(A, s.valuesOf(A, l), s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
+                       s.x[l].data(), false);
+  }
+  z = s.x[0].template cast<double>();
+}
+
+}  // namespace
 
 MultigridPreconditioner::MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,
                                                  int smoothingSweeps)
@@ -304,6 +417,12 @@ void MultigridPreconditioner::setup(const SparseMatrix& A, const std::vector<Spa
   prepareLevels(coarseChanged || build ? 1 : levels_.size(), build);
 }
 
+void MultigridPreconditioner::setSinglePrecision(bool single) {
+  single_ = single;
+  impl_->sweeps.clear();  // the next setup prepares the chosen cycle from scratch
+  impl_->streams.clear();
+}
+
 void MultigridPreconditioner::prepareLevels(std::size_t firstChanged, bool build) {
   if (build) {
     impl_->sweeps.clear();
@@ -311,16 +430,19 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged, bool build
       if (!hasNodeBlocks(*A)) throw Error("multigrid: a level is not in the node-block layout");
       impl_->sweeps.push_back(sweepOrder(*A));
     }
-    impl_->b.resize(levels_.size());
-    impl_->x.resize(levels_.size());
-    impl_->r.resize(levels_.size());
+    impl_->single.resize(single_ ? levels_.size() : 0);
+    impl_->twin.resize(single_ ? 0 : levels_.size());
   }
-  impl_->inverseDiagonals.resize(levels_.size());
-  invertDiagonalBlocks(level(0), impl_->inverseDiagonals[0]);
+  auto prepare = [&](std::size_t l) {
+    if (single_)
+      impl_->single.prepare(level(l), l);
+    else
+      impl_->twin.prepare(level(l), l);
+  };
+  prepare(0);
   // (With one level the coarsest is the system itself: always new.)
   if (firstChanged >= levels_.size() && levels_.size() > 1) return;
-  for (std::size_t l = std::max<std::size_t>(firstChanged, 1); l < levels_.size(); ++l)
-    invertDiagonalBlocks(level(l), impl_->inverseDiagonals[l]);
+  for (std::size_t l = std::max<std::size_t>(firstChanged, 1); l < levels_.size(); ++l) prepare(l);
   // With Dirichlet rows removed from P, columns of P can become linearly
   // dependent and the coarsest operator singular. Its null vectors v have
   // P v = 0 and never reach the fine grid, so a tiny shift that makes the
@@ -335,27 +457,12 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged, bool build
 }
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  Impl& s = *impl_;
-  const std::size_t last = levels_.size() - 1;
-  s.b[0] = r;
-  // Down: pre-smooth from zero, restrict the residual.
-  for (std::size_t l = 0; l < last; ++l) {
-    s.x[l].setZero(s.b[l].size());
-    for (int i = 0; i < sweeps_; ++i)
-      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.sweeps[l], s.b[l], s.x[l], true);
-    multiply(level(l), s.x[l], s.r[l]);
-    s.r[l] = s.b[l] - s.r[l];
-    multiplyNodal(restrictions_[l], s.r[l], s.b[l + 1]);
-  }
-  s.x[last] = s.coarsest.solve(s.b[last]);
-  // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
-  for (std::size_t l = last; l-- > 0;) {
-    multiplyNodal(nodal_[l], s.x[l + 1], s.r[l]);
-    s.x[l] += s.r[l];
-    for (int i = 0; i < sweeps_; ++i)
-      blockGaussSeidel(level(l), s.inverseDiagonals[l], s.sweeps[l], s.b[l], s.x[l], false);
-  }
-  z = s.x[0];
+  if (single_)
+    vCycle(impl_->single, levels_, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest,
+           r, z);
+  else
+    vCycle(impl_->twin, levels_, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r,
+           z);
 }
 
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -378,6 +485,7 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
   preconditioner.apply(r, z);
   p = z;
   double rz = r.dot(z);
+  Eigen::VectorXd zOld(b.size());
   for (stats.iterations = 1; stats.iterations <= maxIterations; ++stats.iterations) {
     multiply(A, p, Ap);
     const double pAp = p.dot(Ap);
@@ -387,9 +495,14 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
     r -= alpha * Ap;
     stats.relativeResidual = r.norm() / bNorm;
     if (stats.relativeResidual <= tolerance) break;
+    zOld.swap(z);
     preconditioner.apply(r, z);
     const double rzNew = r.dot(z);
-    p = z + (rzNew / rz) * p;
+    // Polak-Ribiere beta, r.(z - z_old) / r_old.z_old: the same as the usual
+    // r.z / r_old.z_old for an exactly symmetric preconditioner, and keeps
+    // CG converging when the preconditioner is only nearly so (a V-cycle in
+    // single precision).
+    p = z + ((rzNew - r.dot(zOld)) / rz) * p;
     rz = rzNew;
   }
   stats.iterations = std::min(stats.iterations, maxIterations);

@@ -33,7 +33,6 @@ struct Simulation::CoarseLevel {
   SparseMatrix
       positionsFromFiner;  // coarse nodes x finer nodes (coarse nodes located in the finer mesh)
   Eigen::VectorXd x, force, dampedMass, contactDiagonal, diagonal;
-  std::vector<char> fixedNodes;
   DirichletRows dirichlet;
 };
 
@@ -150,6 +149,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
     }
     auto mg = std::make_unique<MultigridPreconditioner>(prolongations_);
     mg->setCoarseReuse(options.coarseReuse);
+    mg->setSinglePrecision(options.singlePrecisionCycle);
     multigrid_ = mg.get();
     preconditioner_ = std::move(mg);
   } else {
@@ -202,11 +202,11 @@ void Simulation::setFixedNodes(const std::vector<int>& nodes) {
     std::vector<char> coarseFixed(static_cast<std::size_t>(P.cols()), 0);
     for (Index c = 0; c < P.cols(); ++c)
       coarseFixed[static_cast<std::size_t>(c)] = weight[c] > 0 && fixedWeight[c] >= 0.5 * weight[c];
-    coarse_[l].fixedNodes = coarseFixed;
     coarse_[l].dirichlet = DirichletRows(coarseSystems_[l], dofsOf(coarseFixed));
     perLevel.push_back(std::move(coarseFixed));
   }
   multigrid_->setFixedNodesPerLevel(perLevel);
+  stepsSinceCoarse_ = 0;  // the coarse systems' Dirichlet rows changed
 }
 
 void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points3& targets) {

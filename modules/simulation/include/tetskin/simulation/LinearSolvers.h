@@ -59,7 +59,9 @@ class BlockJacobi : public Preconditioner {
 // chunks of neighbouring nodes (chunks of a colour relax in parallel),
 // forward before and exactly backward after (the cycle is a symmetric
 // preconditioner); an exact Cholesky solve on the coarsest level. Fixed
-// nodes (Dirichlet) receive no coarse correction.
+// nodes (Dirichlet) receive no coarse correction. The cycle runs in single
+// precision by default (float copies of the level values: the sweeps and
+// products are bound by memory traffic).
 class MultigridPreconditioner : public Preconditioner {
  public:
   explicit MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,
@@ -77,6 +79,10 @@ class MultigridPreconditioner : public Preconditioner {
   // `setups`-th setup(A) only; the finest level is always the current
   // system. 1 (the default) rebuilds every time.
   void setCoarseReuse(int setups);
+  // Run the cycle in single precision (the default) or double. The cycle
+  // only preconditions: CG's iterates, products and residuals stay double,
+  // so the solve reaches its tolerance either way.
+  void setSinglePrecision(bool single);
   // Galerkin coarse operators.
   void setup(const SparseMatrix& A) override;
   // Coarse operators from the caller: coarse[l] is level l+1's, in the
@@ -105,10 +111,13 @@ class MultigridPreconditioner : public Preconditioner {
   std::vector<const SparseMatrix*> levels_;  // the operator of each level
   int sweeps_;
   int reuse_ = 1;
+  bool single_ = true;
   std::shared_ptr<Impl> impl_;
 };
 
-// Preconditioned CG to `tolerance` (relative residual) or `maxIterations`.
+// Preconditioned CG to `tolerance` (relative residual) or `maxIterations`,
+// with the Polak-Ribiere beta so that a preconditioner that is symmetric
+// only up to rounding (a float V-cycle) does not stall it.
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations);

@@ -46,6 +46,7 @@ struct SimulationOptions {
   // step); the solve stays exact to `tolerance` either way.
   int coarseReuse = 1;
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
+  bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = 2000;
 };
 
