@@ -391,7 +391,7 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   if (!build && ++impl_->setupsSinceCoarse < reuse_) {
     // Coarse operators from an earlier system: still an SPD preconditioner
     // of this one, and CG still solves this system to the tolerance.
-    prepareLevels(levels_.size(), false);
+    prepareLevels(levels_.size());
     return;
   }
   impl_->setupsSinceCoarse = 0;
@@ -403,7 +403,7 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
     impl_->streams[l].compute(level(l), galerkin_[l]);
     levels_[l + 1] = &galerkin_[l];
   }
-  prepareLevels(1, build);
+  prepareLevels(1);
 }
 
 void MultigridPreconditioner::setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse,
@@ -413,19 +413,18 @@ void MultigridPreconditioner::setup(const SparseMatrix& A, const std::vector<Spa
   levels_.resize(nodal_.size() + 1);
   levels_[0] = &A;
   for (std::size_t l = 0; l < coarse.size(); ++l) levels_[l + 1] = &coarse[l];
-  const bool build = impl_->sweeps.empty();
-  prepareLevels(coarseChanged || build ? 1 : levels_.size(), build);
+  prepareLevels(coarseChanged ? 1 : levels_.size());
 }
 
 void MultigridPreconditioner::setSinglePrecision(bool single) {
   single_ = single;
   impl_->sweeps.clear();  // the next setup prepares the chosen cycle from scratch
-  impl_->streams.clear();
 }
 
-void MultigridPreconditioner::prepareLevels(std::size_t firstChanged, bool build) {
+void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
+  const bool build = impl_->sweeps.empty();  // first setup for these patterns and precision
   if (build) {
-    impl_->sweeps.clear();
+    firstChanged = 1;  // every level is new to the cycle
     for (const SparseMatrix* A : levels_) {
       if (!hasNodeBlocks(*A)) throw Error("multigrid: a level is not in the node-block layout");
       impl_->sweeps.push_back(sweepOrder(*A));

@@ -111,8 +111,9 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       rest_(extractLevel(dataset, level_)),
       order_(meshNodeOrder(rest_)),
       rank_(inverse(order_)),
+      internal_(renumbered(rest_, order_)),
       options_(options),
-      fem_(renumbered(rest_, order_), options.material) {
+      fem_(internal_, options.material) {
   if (!(options.timeStep > 0)) throw Error("the time step must be positive");
   if (options.coarseReuse < 1) throw Error("the coarse-operator reuse must be at least 1 step");
   x_ = fem_.restPositions();
@@ -133,7 +134,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   dirichlet_ = std::make_unique<DirichletRows>();
   if (options.solver == SolverKind::Multigrid) {
     // This level, then the coarser ones, each renumbered breadth first.
-    std::vector<TetMesh> meshes{renumbered(rest_, order_)};
+    std::vector<TetMesh> meshes{internal_};
     for (int coarse = level_ - 1; coarse >= 0; --coarse) {
       meshes.push_back(renumbered(extractLevel(dataset, coarse)));
       prolongations_.push_back(nodalProlongation(meshes.back(), meshes[meshes.size() - 2].nodes));

@@ -99,10 +99,11 @@ class MultigridPreconditioner : public Preconditioner {
 
  private:
   const SparseMatrix& level(std::size_t l) const { return *levels_[l]; }
-  // Sweep orders and the layout check on the first setup for a pattern;
-  // smoother diagonals of the levels from `firstChanged` on; the coarsest
-  // factorization if it changed.
-  void prepareLevels(std::size_t firstChanged, bool build);
+  // Sweep orders, the layout check and the cycle's buffers when the sweep
+  // orders are gone (a new pattern or precision: then every level counts as
+  // changed); the cycle's data of level 0 and of the levels from
+  // `firstChanged` on; the coarsest factorization if it changed.
+  void prepareLevels(std::size_t firstChanged);
   struct Impl;
   std::vector<SparseMatrix> prolongations_;  // nodal, as given
   std::vector<SparseMatrix> nodal_;          // with fixed rows and columns removed

@@ -115,8 +115,9 @@ class Simulation {
   TetMesh rest_;            // the level's own numbering
   std::vector<int> order_;  // internal node -> level node
   std::vector<int> rank_;   // level node -> internal node
+  TetMesh internal_;        // rest_ renumbered
   SimulationOptions options_;
-  CorotatedFem fem_;  // on the renumbered mesh
+  CorotatedFem fem_;  // on internal_
   std::unique_ptr<Preconditioner> preconditioner_;
   MultigridPreconditioner* multigrid_ = nullptr;
 
