@@ -30,8 +30,9 @@ struct Simulation::CoarseLevel {
         positionsFromFiner(nodalProlongation(finer, mesh.nodes)) {}
   TetMesh mesh;
   CorotatedFem fem;
-  SparseMatrix
-      positionsFromFiner;  // coarse nodes x finer nodes (coarse nodes located in the finer mesh)
+  // Coarse nodes x finer nodes: the coarse nodes located in the finer mesh.
+  SparseMatrix positionsFromFiner;
+  SparseMatrix restrictionToCoarse;  // P^T of the prolongation from this level
   Eigen::VectorXd x, force, dampedMass, contactDiagonal, diagonal;
   DirichletRows dirichlet;
 };
@@ -124,13 +125,6 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   fixedDofs_.assign(static_cast<std::size_t>(fem_.dofCount()), 0);
   system_ = fem_.pattern();
   dampedMass_ = (1 + options.timeStep * options.material.massDamping) * fem_.lumpedMass();
-  diagonalSlot_.resize(static_cast<std::size_t>(fem_.dofCount()));
-  for (int row = 0; row < system_.rows(); ++row) {
-    const int* begin = system_.innerIndexPtr() + system_.outerIndexPtr()[row];
-    const int* end = system_.innerIndexPtr() + system_.outerIndexPtr()[row + 1];
-    diagonalSlot_[static_cast<std::size_t>(row)] =
-        static_cast<int>(std::lower_bound(begin, end, row) - system_.innerIndexPtr());
-  }
   dirichlet_ = std::make_unique<DirichletRows>();
   if (options.solver == SolverKind::Multigrid) {
     // This level, then the coarser ones, each renumbered breadth first.
@@ -145,6 +139,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
         CoarseLevel& coarseLevel = coarse_.emplace_back(meshes[l], options.material, meshes[l - 1]);
         coarseLevel.dampedMass =
             (1 + options.timeStep * options.material.massDamping) * coarseLevel.fem.lumpedMass();
+        coarseLevel.restrictionToCoarse = prolongations_[l - 1].transpose();
         coarseSystems_.push_back(coarseLevel.fem.pattern());
       }
     }
@@ -255,12 +250,31 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     std::lock_guard lock(mutex_);
     external = external_;
   }
-  // A = (1 + h alpha) M + (h beta + h^2) K and f_el - (beta + h) K v, in one
-  // element pass; then b = h (f_el - (beta + h) K v + M g + f_ext - alpha M v).
+  // Floor contact: a penalty spring on every node below the plane, its
+  // stiffness on the system's diagonal like the mass.
+  stats.contacts = 0;
+  const Eigen::VectorXd* diagonal = &dampedMass_;
+  if (options_.floorHeight) {
+    contactDiagonal_.setZero(fem_.dofCount());
+    contactForce_.setZero(fem_.dofCount());
+    for (Index v = 0; v < rest_.nodeCount(); ++v) {
+      const Index dof = 3 * v + 1;
+      const double depth = *options_.floorHeight - x_[dof];
+      if (depth < 0) continue;  // touching counts: the penalty keeps it from sinking
+      ++stats.contacts;
+      contactDiagonal_[dof] = h * h * floorStiffness_;
+      contactForce_[dof] = floorStiffness_ * depth - h * floorStiffness_ * v_[dof];
+    }
+    systemDiagonal_ = dampedMass_ + contactDiagonal_;
+    diagonal = &systemDiagonal_;
+  }
+  // A = (1 + h alpha) M + (h beta + h^2) K (+ contact) and f_el - (beta + h)
+  // K v, in one element pass; then b = h (f_el - (beta + h) K v + M g + f_ext
+  // - alpha M v + f_contact).
   auto start = std::chrono::steady_clock::now();
   CorotatedFem::SystemTerms terms;
   terms.stiffnessScale = h * m.stiffnessDamping + h * h;
-  terms.diagonal = &dampedMass_;
+  terms.diagonal = diagonal;
   terms.velocity = &v_;
   terms.velocityWeight = m.stiffnessDamping + h;
   fem_.update(x_, force_, system_, terms);
@@ -271,22 +285,7 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     rhs_.segment<3>(3 * v) = h * (force_.segment<3>(3 * v) + external.segment<3>(3 * v) +
                                   mass.segment<3>(3 * v).cwiseProduct(
                                       options_.gravity - m.massDamping * v_.segment<3>(3 * v)));
-  double* a = system_.valuePtr();
-
-  // Floor contact: a penalty spring on every node below the plane.
-  stats.contacts = 0;
-  if (options_.floorHeight) {
-    contactDiagonal_.setZero(fem_.dofCount());
-    for (Index v = 0; v < rest_.nodeCount(); ++v) {
-      const Index dof = 3 * v + 1;
-      const double depth = *options_.floorHeight - x_[dof];
-      if (depth < 0) continue;  // touching counts: the penalty keeps it from sinking
-      ++stats.contacts;
-      a[diagonalSlot_[static_cast<std::size_t>(dof)]] += h * h * floorStiffness_;
-      contactDiagonal_[dof] = h * h * floorStiffness_;
-      rhs_[dof] += h * (floorStiffness_ * depth - h * floorStiffness_ * v_[dof]);
-    }
-  }
+  if (options_.floorHeight) rhs_ += h * contactForce_;
 
   // Dirichlet: prescribed dv for fixed dofs (to reach kinematic targets, or
   // to stop), moved to the right-hand side, then identity rows and columns.
@@ -313,13 +312,8 @@ void Simulation::buildCoarseSystems(double h) {
     terms.diagonal = &level.dampedMass;
     if (finerContact) {
       // The floor's penalty springs, lumped onto the coarse nodes (P^T D 1).
-      Eigen::VectorXd contact = Eigen::VectorXd::Zero(level.fem.dofCount());
-      const SparseMatrix& P = prolongations_[l];
-      for (int row = 0; row < P.outerSize(); ++row)
-        for (SparseMatrix::InnerIterator it(P, row); it; ++it)
-          contact.segment<3>(3 * it.col()) += it.value() * finerContact->segment<3>(3 * row);
-      level.contactDiagonal = contact;
-      level.diagonal = level.dampedMass + contact;
+      multiplyNodal(level.restrictionToCoarse, *finerContact, level.contactDiagonal);
+      level.diagonal = level.dampedMass + level.contactDiagonal;
       terms.diagonal = &level.diagonal;
       finerContact = &level.contactDiagonal;
     }

@@ -137,13 +137,14 @@ class Simulation {
   std::vector<CoarseLevel> coarse_;  // the next coarser first
   std::vector<SparseMatrix> coarseSystems_;
   std::vector<SparseMatrix> prolongations_;  // nodal, level l+1 to level l (l = 0: this one)
-  Eigen::VectorXd contactDiagonal_;          // floor penalty per dof, this step
+  // Floor penalty per dof this step: stiffness (h^2 k) and force.
+  Eigen::VectorXd contactDiagonal_, contactForce_;
+  Eigen::VectorXd systemDiagonal_;  // dampedMass_ + contactDiagonal_
   int stepsSinceCoarse_ = 0;
 
   // Per-step work arrays, allocated once.
   Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
   SparseMatrix system_;
-  std::vector<int> diagonalSlot_;
   Eigen::VectorXd force_, rhs_, dv_;
   double floorStiffness_ = 0;
 };
