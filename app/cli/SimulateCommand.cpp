@@ -127,6 +127,11 @@ void addSimulateCommand(CLI::App& app) {
       ->check(CLI::IsMember({"cg", "multigrid"}));
   cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
       ->capture_default_str();
+  cmd->add_option("--guess-solutions", a->options.guessSolutions,
+                  "start each solve from the best combination of the last N solutions "
+                  "(0: from the last one as it is)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, kMaxProductColumns));
   cmd->add_option("--coarse-reuse", a->options.coarseReuse,
                   "multigrid: rebuild the coarse operators every N steps (solves stay exact)")
       ->capture_default_str()

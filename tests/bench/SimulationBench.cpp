@@ -3,6 +3,7 @@
 // with multigrid-preconditioned CG, both to the same relative residual, in the
 // same run. Prints a table; asserts nothing.
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -35,6 +36,7 @@ struct Solver {
   CoarseOperators coarse = CoarseOperators::Rediscretized;
   int coarseReuse = 1;
   bool singlePrecisionCycle = true;
+  int guessSolutions = SimulationOptions{}.guessSolutions;
   std::string name() const {
     const char* base = kind == SolverKind::ConjugateGradient ? "cg"
                        : coarse == CoarseOperators::Galerkin ? "mg-galerkin"
@@ -42,7 +44,8 @@ struct Solver {
     char text[48];  // (snprintf: GCC's -Wrestrict misfires on string concatenation)
     char reuse[16] = "";
     if (coarseReuse > 1) std::snprintf(reuse, sizeof reuse, "/%d", coarseReuse);
-    std::snprintf(text, sizeof text, "%s%s%s", base, reuse, singlePrecisionCycle ? "" : " double");
+    std::snprintf(text, sizeof text, "%s%s%s%s", base, reuse, singlePrecisionCycle ? "" : " double",
+                  guessSolutions == 0 ? " plain" : "");
     return text;
   }
 };
@@ -55,6 +58,7 @@ Wobble wobble(const MultiLevelTetMesh& mesh, int level, const Solver& solver, do
   options.coarseOperators = solver.coarse;
   options.coarseReuse = solver.coarseReuse;
   options.singlePrecisionCycle = solver.singlePrecisionCycle;
+  options.guessSolutions = solver.guessSolutions;
   options.tolerance = tolerance;
   Wobble run{std::make_unique<Simulation>(mesh, level, options), makeScenario("wobble")};
   run.scenario->setUp(*run.sim);
@@ -65,8 +69,9 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, const Solve
          int steps, double youngsModulus = ElasticMaterial{}.youngsModulus) {
   Wobble run = wobble(mesh, level, solver, 1e-6, youngsModulus);
   const Simulation& sim = *run.sim;
-  // Warm up: one-time setup (e.g. Galerkin streams) is not timed.
-  for (int i = 0; i < 2; ++i) run.step();
+  // Warm up: one-time setup (e.g. Galerkin streams) and the first steps, in
+  // which the initial guess has fewer solutions to combine, are not timed.
+  for (int i = 0; i < std::max(2, solver.guessSolutions); ++i) run.step();
   double assembly = 0, setup = 0, solve = 0;
   long iterations = 0;
   const auto start = std::chrono::steady_clock::now();
@@ -150,21 +155,27 @@ int main(int argc, char** argv) {
   rotations();
   std::printf(
       "(mg: rediscretized coarse operators, mg-galerkin: Galerkin products; /N: coarse "
-      "operators rebuilt every N steps; V-cycles in single precision unless 'double')\n");
+      "operators rebuilt every N steps; V-cycles in single precision unless 'double'; each "
+      "solve starts from the projection onto the last %d solutions, 'plain': from the last "
+      "solution as it is)\n",
+      SimulationOptions{}.guessSolutions);
   const Solver cg;
   const Solver mg{SolverKind::Multigrid, CoarseOperators::Rediscretized, 1};
   const Solver mg4{SolverKind::Multigrid, CoarseOperators::Rediscretized, 4};
   const Solver galerkin{SolverKind::Multigrid, CoarseOperators::Galerkin, 1};
   const Solver galerkin4{SolverKind::Multigrid, CoarseOperators::Galerkin, 4};
   const Solver galerkin4double{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, false};
+  const Solver cgPlain{SolverKind::ConjugateGradient, CoarseOperators::Rediscretized, 1, true, 0};
+  const Solver galerkin4Plain{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, true, 0};
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
-  for (const Solver& solver : {cg, mg, mg4, galerkin4})
+  for (const Solver& solver : {cg, cgPlain, mg, mg4, galerkin4})
     toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
   std::printf("%-22s %8s  %-20s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
               "iter", "ms/step", "assembly", "setup", "solve");
   for (int level : {0, 2}) {
     const std::string name = "bunny level " + std::to_string(level);
-    for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4, galerkin4double})
+    for (const Solver& solver :
+         {cg, cgPlain, mg, mg4, galerkin, galerkin4, galerkin4Plain, galerkin4double})
       if (level > 0 || solver.coarseReuse == 1)
         row(name.c_str(), sample.mesh, level, solver, steps);
   }
@@ -177,7 +188,8 @@ int main(int argc, char** argv) {
   options.maxElements = 100000;
   options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const BuildResult big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
-  for (const Solver& solver : {cg, mg, mg4, galerkin, galerkin4, galerkin4double})
+  for (const Solver& solver :
+       {cg, cgPlain, mg, mg4, galerkin, galerkin4, galerkin4Plain, galerkin4double})
     row("bunny 4 levels, finest", big.dataset.mesh, 3, solver, std::max(3, steps / 5));
   // Stiffer bodies: CG's iterations grow with the square root of the
   // condition number, the multigrid's hardly.

@@ -114,7 +114,8 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       rank_(inverse(order_)),
       internal_(renumbered(rest_, order_)),
       options_(options),
-      fem_(internal_, options.material) {
+      fem_(internal_, options.material),
+      guess_(options.guessSolutions) {
   if (!(options.timeStep > 0)) throw Error("the time step must be positive");
   if (options.coarseReuse < 1) throw Error("the coarse-operator reuse must be at least 1 step");
   x_ = fem_.restPositions();
@@ -340,6 +341,7 @@ StepStats Simulation::step() {
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   start = std::chrono::steady_clock::now();
+  guess_.guess(system_, rhs_, dv_);  // (dv_ holds the last solution: the plain warm start)
   const SolveStats solve = conjugateGradient(system_, rhs_, dv_, *preconditioner_,
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds =
@@ -347,6 +349,7 @@ StepStats Simulation::step() {
   stats.iterations = solve.iterations;
   stats.residual = solve.relativeResidual;
   if (!dv_.allFinite()) throw Error("the simulation diverged (non-finite velocity update)");
+  guess_.remember(dv_);
   Eigen::VectorXd v = v_ + dv_;
   Eigen::VectorXd x = x_ + h * v;
   for (std::size_t i = 0; i < kinematicNodes_.size(); ++i)  // exact, free of round-off

@@ -27,6 +27,14 @@ bool hasNodeBlocks(const SparseMatrix& A);
 // y = A x for A in the node-block layout, nodes in parallel.
 void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
+// Several vectors side by side, one per column; row-major, so the values of
+// one dof are adjacent.
+using DenseRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+// Y = A X for up to kMaxProductColumns columns in one pass over A (the
+// product is bound by reading A, so k vectors cost little more than one).
+constexpr int kMaxProductColumns = 16;
+void multiply(const SparseMatrix& A, const DenseRows& X, DenseRows& Y);
+
 // y = P x for a nodal P (one weight per node pair) applied to xyz vectors:
 // y_i = sum_j P_ij x_j per coordinate.
 void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y);
@@ -40,7 +48,7 @@ class Preconditioner {
   virtual void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const = 0;
 };
 
-// Inverse of each node's 3x3 diagonal block.
+// Inverse of each node's 3x3 diagonal block (A in the node-block layout).
 class BlockJacobi : public Preconditioner {
  public:
   void setup(const SparseMatrix& A) override;

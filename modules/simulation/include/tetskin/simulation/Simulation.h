@@ -19,6 +19,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/simulation/LinearSolvers.h"
+#include "tetskin/simulation/ProjectedInitialGuess.h"
 
 namespace tetskin {
 
@@ -42,6 +43,10 @@ struct SimulationOptions {
   double friction = 0.3;              // share of tangential velocity lost in contact
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance = 1e-6;  // relative residual of the linear solve
+  // The solve starts from the combination of the last this many solutions
+  // that is closest to the new one in the system's energy norm
+  // (ProjectedInitialGuess.h); 0: from the last solution as it is.
+  int guessSolutions = 5;
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
   // step); the solve stays exact to `tolerance` either way.
   int coarseReuse = 1;
@@ -56,7 +61,7 @@ struct StepStats {
   int contacts = 0;
   double assemblySeconds = 0;  // element rotations, forces, stiffness
   double setupSeconds = 0;     // preconditioner (Galerkin products, factorization)
-  double solveSeconds = 0;     // CG iterations
+  double solveSeconds = 0;     // initial guess and CG iterations
 };
 
 struct SimulationState {
@@ -146,6 +151,7 @@ class Simulation {
   Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
   SparseMatrix system_;
   Eigen::VectorXd force_, rhs_, dv_;
+  ProjectedInitialGuess guess_;
   double floorStiffness_ = 0;
 };
 
