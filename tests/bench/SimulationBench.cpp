@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
@@ -74,9 +75,13 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, const Solve
   for (int i = 0; i < std::max(2, solver.guessSolutions); ++i) run.step();
   double assembly = 0, setup = 0, solve = 0;
   long iterations = 0;
+  std::vector<double> seconds;  // per step: the median shrugs off the VM's pauses
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < steps; ++i) {
+    const auto stepStart = std::chrono::steady_clock::now();
     const StepStats s = run.step();
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
     assembly += s.assemblySeconds;
     setup += s.setupSeconds;
     solve += s.solveSeconds;
@@ -84,10 +89,12 @@ void row(const char* name, const MultiLevelTetMesh& mesh, int level, const Solve
   }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%-22s %8lld  %-20s %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
+  std::nth_element(seconds.begin(), seconds.begin() + steps / 2, seconds.end());
+  std::printf("%-22s %8lld  %-20s %9.1f %9.1f %8.1f %10.2f %9.2f %9.2f %9.2f\n", name,
               static_cast<long long>(sim.restMesh().elementCount()), solver.name().c_str(),
-              steps / total, static_cast<double>(iterations) / steps, 1e3 * total / steps,
-              1e3 * assembly / steps, 1e3 * setup / steps, 1e3 * solve / steps);
+              steps / total, 1.0 / seconds[static_cast<std::size_t>(steps / 2)],
+              static_cast<double>(iterations) / steps, 1e3 * total / steps, 1e3 * assembly / steps,
+              1e3 * setup / steps, 1e3 * solve / steps);
 }
 
 // How far a looser solve tolerance moves the trajectory: the wobble run with
@@ -170,8 +177,8 @@ int main(int argc, char** argv) {
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
   for (const Solver& solver : {cg, cgPlain, mg, mg4, galerkin4})
     toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
-  std::printf("%-22s %8s  %-20s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver", "steps/s",
-              "iter", "ms/step", "assembly", "setup", "solve");
+  std::printf("%-22s %8s  %-20s %9s %9s %8s %10s %9s %9s %9s\n", "mesh", "tets", "solver",
+              "steps/s", "(median)", "iter", "ms/step", "assembly", "setup", "solve");
   for (int level : {0, 2}) {
     const std::string name = "bunny level " + std::to_string(level);
     for (const Solver& solver :

@@ -3,7 +3,8 @@
 // Solvers for the symmetric positive definite systems of the implicit step:
 // preconditioned conjugate gradients (block-Jacobi), and the same CG with a
 // multigrid V-cycle over the dataset's coarser levels as preconditioner.
-// Both start from the x passed in (warm start from the last step).
+// Both start from the x passed in (the stepper passes the projected guess of
+// ProjectedInitialGuess.h).
 
 #include <memory>
 #include <vector>

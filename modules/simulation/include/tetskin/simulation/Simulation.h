@@ -46,7 +46,7 @@ struct SimulationOptions {
   // The solve starts from the combination of the last this many solutions
   // that is closest to the new one in the system's energy norm
   // (ProjectedInitialGuess.h); 0: from the last solution as it is.
-  int guessSolutions = 5;
+  int guessSolutions = 6;
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
   // step); the solve stays exact to `tolerance` either way.
   int coarseReuse = 1;
