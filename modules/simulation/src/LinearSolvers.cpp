@@ -350,7 +350,6 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
 struct MultigridPreconditioner::Impl {
   std::vector<GalerkinStream> streams;  // built on the first Galerkin setup() after a change
   std::vector<SweepOrder> sweeps;       // per level, once per pattern
-  int setupsSinceCoarse = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest;
   // One of the two is used (setSinglePrecision); apply() writes its scratch.
   mutable Cycle<float> single;
@@ -434,10 +433,17 @@ void MultigridPreconditioner::setFixedNodesPerLevel(
   for (const SparseMatrix& P : nodal_) restrictions_.push_back(P.transpose());
   impl_->streams.clear();
   impl_->sweeps.clear();
+  setupsSinceCoarse_ = 0;
 }
 
 void MultigridPreconditioner::setCoarseReuse(int setups) {
   reuse_ = std::max(1, setups);
+}
+
+bool MultigridPreconditioner::takeCoarseTurn() {
+  const bool due = coarseDue();
+  setupsSinceCoarse_ = (setupsSinceCoarse_ + 1) % reuse_;
+  return due;
 }
 
 void MultigridPreconditioner::setup(const SparseMatrix& A) {
@@ -445,13 +451,12 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   levels_.resize(nodal_.size() + 1);
   levels_[0] = &A;
   const bool build = impl_->streams.empty();  // first setup for this pattern
-  if (!build && ++impl_->setupsSinceCoarse < reuse_) {
+  if (!takeCoarseTurn() && !build) {
     // Coarse operators from an earlier system: still an SPD preconditioner
     // of this one, and CG still solves this system to the tolerance.
     prepareLevels(levels_.size());
     return;
   }
-  impl_->setupsSinceCoarse = 0;
   if (build && !hasNodeBlocks(A))  // the streams read blocks
     throw Error("multigrid: the system is not in the node-block layout");
   galerkin_.resize(nodal_.size());
@@ -463,14 +468,14 @@ void MultigridPreconditioner::setup(const SparseMatrix& A) {
   prepareLevels(1);
 }
 
-void MultigridPreconditioner::setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse,
-                                    bool coarseChanged) {
+void MultigridPreconditioner::setup(const SparseMatrix& A,
+                                    const std::vector<SparseMatrix>& coarse) {
   if (coarse.size() != nodal_.size())
     throw Error("multigrid: one coarse operator per coarse level is needed");
   levels_.resize(nodal_.size() + 1);
   levels_[0] = &A;
   for (std::size_t l = 0; l < coarse.size(); ++l) levels_[l + 1] = &coarse[l];
-  prepareLevels(coarseChanged ? 1 : levels_.size());
+  prepareLevels(takeCoarseTurn() ? 1 : levels_.size());
 }
 
 void MultigridPreconditioner::setSinglePrecision(bool single) {

@@ -202,8 +202,9 @@ void Simulation::setFixedNodes(const std::vector<int>& nodes) {
     coarse_[l].dirichlet = DirichletRows(coarseSystems_[l], dofsOf(coarseFixed));
     perLevel.push_back(std::move(coarseFixed));
   }
+  // (The multigrid takes new coarse operators at its next setup: the
+  // coarse systems' Dirichlet rows changed.)
   multigrid_->setFixedNodesPerLevel(perLevel);
-  stepsSinceCoarse_ = 0;  // the coarse systems' Dirichlet rows changed
 }
 
 void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points3& targets) {
@@ -332,11 +333,10 @@ StepStats Simulation::step() {
   if (coarse_.empty()) {
     preconditioner_->setup(system_);
   } else {
-    // Rediscretized multigrid: new coarse systems every coarseReuse steps.
-    const bool rebuild = stepsSinceCoarse_ == 0;
-    if (rebuild) buildCoarseSystems(h);
-    stepsSinceCoarse_ = (stepsSinceCoarse_ + 1) % options_.coarseReuse;
-    multigrid_->setup(system_, coarseSystems_, rebuild);
+    // Rediscretized multigrid: new coarse systems when the multigrid takes
+    // them (every coarseReuse steps).
+    if (multigrid_->coarseDue()) buildCoarseSystems(h);
+    multigrid_->setup(system_, coarseSystems_);
   }
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -85,10 +85,14 @@ class MultigridPreconditioner : public Preconditioner {
   // A fixed coarse node is one the caller's coarse operator holds still
   // (identity row): it neither gives nor takes corrections.
   void setFixedNodesPerLevel(const std::vector<std::vector<char>>& fixedPerLevel);
-  // Rebuild the Galerkin operators (and the coarsest factorization) on every
-  // `setups`-th setup(A) only; the finest level is always the current
-  // system. 1 (the default) rebuilds every time.
+  // Rebuild the coarse operators (and the coarsest factorization) on every
+  // `setups`-th setup only, counted from the first after construction or
+  // new fixed nodes; the finest level is always the current system. 1 (the
+  // default) rebuilds every time.
   void setCoarseReuse(int setups);
+  // Whether the next setup takes new coarse operators (see setCoarseReuse):
+  // a caller with coarse operators of its own rebuilds them then.
+  bool coarseDue() const { return setupsSinceCoarse_ == 0; }
   // Run the cycle in single precision (the default) or double. The cycle
   // only preconditions: CG's iterates, products and residuals stay double,
   // so the solve reaches its tolerance either way.
@@ -96,10 +100,11 @@ class MultigridPreconditioner : public Preconditioner {
   // Galerkin coarse operators.
   void setup(const SparseMatrix& A) override;
   // Coarse operators from the caller: coarse[l] is level l+1's, in the
-  // node-block layout, with the same pattern on every call; `coarseChanged`
-  // false keeps the last call's factorization. Both A and `coarse` must
-  // outlive apply().
-  void setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse, bool coarseChanged);
+  // node-block layout, with the same pattern on every call. Their values are
+  // taken (and the coarsest factorized) when coarseDue() held before the
+  // call; otherwise the last ones stay. Both A and `coarse` must outlive
+  // apply().
+  void setup(const SparseMatrix& A, const std::vector<SparseMatrix>& coarse);
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
   int levelCount() const { return static_cast<int>(nodal_.size()) + 1; }
   // Level 0 is the system of the last setup().
@@ -122,6 +127,9 @@ class MultigridPreconditioner : public Preconditioner {
   std::vector<const SparseMatrix*> levels_;  // the operator of each level
   int sweeps_;
   int reuse_ = 1;
+  int setupsSinceCoarse_ = 0;  // 0: the next setup takes new coarse operators
+  // coarseDue(), and counts this setup.
+  bool takeCoarseTurn();
   bool single_ = true;
   std::shared_ptr<Impl> impl_;
 };

@@ -145,7 +145,6 @@ class Simulation {
   // Floor penalty per dof this step: stiffness (h^2 k) and force.
   Eigen::VectorXd contactDiagonal_, contactForce_;
   Eigen::VectorXd systemDiagonal_;  // dampedMass_ + contactDiagonal_
-  int stepsSinceCoarse_ = 0;
 
   // Per-step work arrays, allocated once.
   Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
