@@ -14,6 +14,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/simulation/NodeBlockMatrix.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
 
@@ -151,6 +152,49 @@ void rotations() {
       svd, fast, svd / fast, checksum);
 }
 
+// CG's product on one system of `level` (rest shape perturbed, the implicit
+// step's terms): the row-major SparseMatrix kernel against the block copy
+// CG multiplies with, and the copy itself (once per step), alternating.
+void products(const MultiLevelTetMesh& mesh, int level) {
+  CorotatedFem fem(extractLevel(mesh, level), ElasticMaterial{});
+  const Eigen::VectorXd x = fem.restPositions() + 1e-3 * Eigen::VectorXd::Random(fem.dofCount());
+  Eigen::VectorXd force, diagonal = fem.lumpedMass();
+  SparseMatrix A = fem.pattern();
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 1.0 / 3600;
+  terms.diagonal = &diagonal;
+  fem.update(x, force, A, terms);
+  NodeBlockMatrix blocks(A);
+  const Eigen::VectorXd in = Eigen::VectorXd::Random(A.rows());
+  Eigen::VectorXd out(A.rows());
+  constexpr int kRepeats = 1000;
+  auto time = [&](auto&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < kRepeats; ++i) work();
+    return 1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+           kRepeats;
+  };
+  std::vector<double> sparse, block, baseline, copy;
+  for (int round = 0; round < 5; ++round) {
+    sparse.push_back(time([&] { multiply(A, in, out); }));
+    block.push_back(time([&] { multiply(blocks, in, out); }));
+    baseline.push_back(time([&] { multiply(blocks, in, out, BlockProduct::Baseline); }));
+    copy.push_back(time([&] { blocks.assign(A); }));
+  }
+  auto median = [](std::vector<double> values) {
+    std::nth_element(values.begin(), values.begin() + 2, values.end());
+    return values[2];
+  };
+  std::printf(
+      "CG product, bunny level %d (%lld dofs, %lld entries), median of 5 x %d: "
+      "SparseMatrix %.1f us; NodeBlockMatrix %.1f us (%.2fx, %s kernel), baseline kernel "
+      "%.1f us (%.2fx); block copy %.1f us\n",
+      level, static_cast<long long>(A.rows()), static_cast<long long>(A.nonZeros()), kRepeats,
+      median(sparse), median(block), median(sparse) / median(block),
+      usesAvx2Product() ? "AVX2" : "baseline", median(baseline), median(sparse) / median(baseline),
+      median(copy));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -160,6 +204,7 @@ int main(int argc, char** argv) {
   std::printf("wobble scenario, dt 1/60 s, relative residual 1e-6, %u hardware threads, %d steps\n",
               std::thread::hardware_concurrency(), steps);
   rotations();
+  products(sample.mesh, 2);
   std::printf(
       "(mg: rediscretized coarse operators, mg-galerkin: Galerkin products; /N: coarse "
       "operators rebuilt every N steps; V-cycles in single precision unless 'double'; each "

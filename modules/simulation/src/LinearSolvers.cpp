@@ -529,9 +529,16 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations) {
+  // (The full layout check is left to the multigrid's first setup; the copy
+  // checks the row lengths.)
+  return conjugateGradient(NodeBlockMatrix(A), b, x, preconditioner, tolerance, maxIterations);
+}
+
+SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                             const Preconditioner& preconditioner, double tolerance,
+                             int maxIterations) {
   SolveStats stats;
-  if (!hasNodeRowLengths(A))  // the full check is left to the multigrid's first setup
-    throw Error("conjugate gradients: the system is not in the node-block layout");
+  if (b.size() != A.rows()) throw Error("conjugate gradients: the right-hand side does not fit");
   const double bNorm = b.norm();
   if (x.size() != b.size()) x.setZero(b.size());
   if (bNorm == 0) {

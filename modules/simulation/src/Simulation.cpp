@@ -338,11 +338,12 @@ StepStats Simulation::step() {
     if (multigrid_->coarseDue()) buildCoarseSystems(h);
     multigrid_->setup(system_, coarseSystems_);
   }
+  blockSystem_.assign(system_);
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   start = std::chrono::steady_clock::now();
   guess_.guess(system_, rhs_, dv_);  // (dv_ holds the last solution: the plain warm start)
-  const SolveStats solve = conjugateGradient(system_, rhs_, dv_, *preconditioner_,
+  const SolveStats solve = conjugateGradient(blockSystem_, rhs_, dv_, *preconditioner_,
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

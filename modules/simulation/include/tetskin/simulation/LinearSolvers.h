@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/NodeBlockMatrix.h"
 
 namespace tetskin {
 
@@ -137,6 +138,12 @@ class MultigridPreconditioner : public Preconditioner {
 // Preconditioned CG to `tolerance` (relative residual) or `maxIterations`,
 // with the Polak-Ribiere beta so that a preconditioner that is symmetric
 // only up to rounding (a float V-cycle) does not stall it.
+// Its products use A's block copy (NodeBlockMatrix.h): a caller that
+// solves with the same A repeatedly, or keeps the copy's storage from step
+// to step, passes that copy instead.
+SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                             const Preconditioner& preconditioner, double tolerance,
+                             int maxIterations);
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations);

@@ -149,6 +149,7 @@ class Simulation {
   // Per-step work arrays, allocated once.
   Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
   SparseMatrix system_;
+  NodeBlockMatrix blockSystem_;  // system_'s copy for CG's products
   Eigen::VectorXd force_, rhs_, dv_;
   ProjectedInitialGuess guess_;
   double floorStiffness_ = 0;
