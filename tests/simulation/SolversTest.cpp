@@ -142,7 +142,8 @@ TEST(Solvers, NodeBlockProductEqualsTheSparseProduct) {
 }
 
 // The block copy CG multiplies with holds A's entries: its product equals
-// Eigen's (the baseline kernel, and the AVX2 one where the CPU has it), a copy into
+// Eigen's (the baseline kernel, and the AVX2 one where the CPU has it; the
+// float copy to float rounding), a row can leave out its diagonal block, a copy into
 // storage of another shape equals a fresh one, and matrices that are not in
 // the node-block layout or vectors of the wrong size are refused.
 TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
@@ -170,6 +171,22 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
     Eigen::VectorXd fresh;
     multiply(NodeBlockMatrix(A), v, fresh);
     EXPECT_EQ(fresh, y);
+    // The float copy the V-cycle sweeps: the same product to float rounding.
+    const FloatNodeBlockMatrix single(A);
+    Eigen::VectorXf singleY;
+    multiply(single, v.cast<float>(), singleY);
+    EXPECT_LT((singleY.cast<double>() - expected).norm(), 1e-5 * expected.norm());
+    // A row without its diagonal block (Gauss-Seidel's sum) is the row of
+    // A - D, D the diagonal blocks.
+    for (Index node : {Index(0), blocks.nodeCount() / 2, blocks.nodeCount() - 1}) {
+      double sums[3];
+      blockRowSum(blocks, node, v.data(), static_cast<int>(3 * node), sums);
+      const Eigen::Vector3d withoutDiagonal =
+          expected.segment<3>(3 * node) -
+          Eigen::Matrix3d(A.block(3 * node, 3 * node, 3, 3).toDense()) * v.segment<3>(3 * node);
+      EXPECT_LT((Eigen::Map<Eigen::Vector3d>(sums) - withoutDiagonal).norm(),
+                1e-12 * expected.norm());
+    }
     // Padding entries are zero, so a non-finite x touches only its own dofs'
     // products through real entries.
     for (std::size_t k = 0; k < blocks.values().size(); k += 4)

@@ -54,23 +54,22 @@ bool hasNodeBlocks(const SparseMatrix& A) {
 
 namespace {
 
-// y = A x over A's node-block pattern with `values` in Scalar (A's own, or a
-// single-precision copy for the multigrid cycle).
-template <typename Scalar>
-void multiplyBlocks(const SparseMatrix& A, const Scalar* values, const Scalar* in, Scalar* out) {
+// y = A x over A's node-block pattern.
+void multiplyBlocks(const SparseMatrix& A, const double* in, double* out) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
+  const double* values = A.valuePtr();
   tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(A.rows() / 3), 256),
                     [&](const auto& r) {
                       for (int v = r.begin(); v != r.end(); ++v) {
                         const int start = outer[3 * v], length = outer[3 * v + 1] - start;
                         const int* columns = inner + start;
-                        const Scalar* row0 = values + start;
-                        const Scalar* row1 = values + outer[3 * v + 1];
-                        const Scalar* row2 = values + outer[3 * v + 2];
-                        Scalar s0 = 0, s1 = 0, s2 = 0;
+                        const double* row0 = values + start;
+                        const double* row1 = values + outer[3 * v + 1];
+                        const double* row2 = values + outer[3 * v + 2];
+                        double s0 = 0, s1 = 0, s2 = 0;
                         for (int k = 0; k < length; k += 3) {
-                          const Scalar* xc = in + columns[k];
+                          const double* xc = in + columns[k];
                           s0 += row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
                           s1 += row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
                           s2 += row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
@@ -110,7 +109,7 @@ void multiplyNodalBlocks(const SparseMatrix& P, const Scalar* in, Scalar* out) {
 
 void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   if (y.size() != A.rows()) y.resize(A.rows());
-  multiplyBlocks(A, A.valuePtr(), x.data(), y.data());
+  multiplyBlocks(A, x.data(), y.data());
 }
 
 namespace {
@@ -234,30 +233,18 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
 // false runs it exactly backwards (colours, and nodes within each chunk), so
 // a forward and a backward sweep make a symmetric smoother.
 template <typename Scalar>
-void blockGaussSeidel(const SparseMatrix& A, const Scalar* values,
+void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
                       const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal,
                       const SweepOrder& order, const Scalar* b, Scalar* x, bool forward) {
-  const int* outer = A.outerIndexPtr();
-  const int* inner = A.innerIndexPtr();
   auto relax = [&](int v) {
-    // b_v - sum_{u != v} A_vu x_u, block by block (node-block layout).
-    const int start = outer[3 * v], length = outer[3 * v + 1] - start;
-    const int* columns = inner + start;
-    const Scalar* row0 = values + start;
-    const Scalar* row1 = values + outer[3 * v + 1];
-    const Scalar* row2 = values + outer[3 * v + 2];
-    Scalar s0 = b[3 * v], s1 = b[3 * v + 1], s2 = b[3 * v + 2];
-    for (int k = 0; k < length; k += 3) {
-      if (columns[k] == 3 * v) continue;
-      const Scalar* xc = x + columns[k];
-      s0 -= row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
-      s1 -= row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
-      s2 -= row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
-    }
+    Scalar sums[3];  // sum_{u != v} A_vu x_u
+    blockRowSum(A, v, x, 3 * v, sums);
     Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(x + 3 * v) =
-        inverseDiagonal[static_cast<std::size_t>(v)] * Eigen::Matrix<Scalar, 3, 1>(s0, s1, s2);
+        inverseDiagonal[static_cast<std::size_t>(v)] *
+        Eigen::Matrix<Scalar, 3, 1>(b[3 * v] - sums[0], b[3 * v + 1] - sums[1],
+                                    b[3 * v + 2] - sums[2]);
   };
-  const int count = static_cast<int>(A.rows() / 3);
+  const auto count = static_cast<int>(A.nodeCount());
   auto sweepChunk = [&](int first) {
     const int last = std::min(count, first + kSweepChunk);
     if (forward)
@@ -294,19 +281,19 @@ void invertDiagonalBlocks(const SparseMatrix& A,
   });
 }
 
-// The per-level data of a V-cycle in Scalar: for float, copies of the level
-// matrices' values (the index arrays are shared with the double matrices),
-// which halves the memory traffic of the sweeps and products that bound the
-// cycle; for double, the matrices' own values.
+// The per-level data of a V-cycle in Scalar: the level matrices copied into
+// padded 3x3 blocks (NodeBlockMatrix.h; in float by default, which also
+// halves the memory traffic of the sweeps and products that bound the
+// cycle) and their inverse diagonal blocks.
 template <typename Scalar>
 struct Cycle {
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
-  std::vector<std::vector<Scalar>> values;                                 // per level (float only)
+  std::vector<BasicNodeBlockMatrix<Scalar>> blocks;                        // per level
   std::vector<std::vector<Eigen::Matrix<Scalar, 3, 3>>> inverseDiagonals;  // per level
   std::vector<Vector> b, x, r;  // scratch per level: right-hand side, solution, residual
 
   void resize(std::size_t levels) {
-    values.resize(levels);
+    blocks.resize(levels);
     inverseDiagonals.resize(levels);
     b.resize(levels);
     x.resize(levels);
@@ -315,22 +302,7 @@ struct Cycle {
   // After level l's matrix changed.
   void prepare(const SparseMatrix& A, std::size_t l) {
     invertDiagonalBlocks(A, inverseDiagonals[l]);
-    if constexpr (!std::is_same_v<Scalar, double>) {
-      std::vector<Scalar>& copy = values[l];
-      copy.resize(static_cast<std::size_t>(A.nonZeros()));
-      const double* source = A.valuePtr();
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, copy.size(), 16384),
-                        [&](const auto& range) {
-                          for (std::size_t i = range.begin(); i != range.end(); ++i)
-                            copy[i] = static_cast<Scalar>(source[i]);
-                        });
-    }
-  }
-  const Scalar* valuesOf(const SparseMatrix& A, std::size_t l) const {
-    if constexpr (std::is_same_v<Scalar, double>)
-      return A.valuePtr();
-    else
-      return values[l].data();
+    blocks[l].assign(A);
   }
 };
 
@@ -368,35 +340,32 @@ namespace {
 
 // One V-cycle z = M^-1 r in Scalar (see the class comment).
 template <typename Scalar>
-void vCycle(Cycle<Scalar>& s, const std::vector<const SparseMatrix*>& levels,
-            const std::vector<SparseMatrix>& nodal, const std::vector<SparseMatrix>& restrictions,
-            const std::vector<SweepOrder>& sweeps, int sweepCount,
-            const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& coarsest,
+void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
+            const std::vector<SparseMatrix>& restrictions, const std::vector<SweepOrder>& sweeps,
+            int sweepCount, const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& coarsest,
             const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-  const std::size_t last = levels.size() - 1;
+  const std::size_t last = s.blocks.size() - 1;
   s.b[0] = r.cast<Scalar>();
   // Down: pre-smooth from zero, restrict the residual.
   for (std::size_t l = 0; l < last; ++l) {
-    const SparseMatrix& A = *levels[l];
     s.x[l].setZero(s.b[l].size());
     s.r[l].resize(s.b[l].size());
     s.b[l + 1].resize(3 * restrictions[l].rows());
     for (int i = 0; i < sweepCount; ++i)
-      blockGaussSeidel(A, s.valuesOf(A, l), s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
-                       s.x[l].data(), true);
-    multiplyBlocks(A, s.valuesOf(A, l), s.x[l].data(), s.r[l].data());
+      blockGaussSeidel(s.blocks[l], s.inverseDiagonals[l], sweeps[l], s.b[l].data(), s.x[l].data(),
+                       true);
+    multiply(s.blocks[l], s.x[l], s.r[l]);
     s.r[l] = s.b[l] - s.r[l];
     multiplyNodalBlocks(restrictions[l], s.r[l].data(), s.b[l + 1].data());
   }
   s.x[last] = coarsest.solve(s.b[last].template cast<double>()).template cast<Scalar>();
   // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
   for (std::size_t l = last; l-- > 0;) {
-    const SparseMatrix& A = *levels[l];
     multiplyNodalBlocks(nodal[l], s.x[l + 1].data(), s.r[l].data());
     s.x[l] += s.r[l];
     for (int i = 0; i < sweepCount; ++i)
-      blockGaussSeidel(A, s.valuesOf(A, l), s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
-                       s.x[l].data(), false);
+      blockGaussSeidel(s.blocks[l], s.inverseDiagonals[l], sweeps[l], s.b[l].data(), s.x[l].data(),
+                       false);
   }
   z = s.x[0].template cast<double>();
 }
@@ -519,11 +488,9 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (single_)
-    vCycle(impl_->single, levels_, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest,
-           r, z);
+    vCycle(impl_->single, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
   else
-    vCycle(impl_->twin, levels_, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r,
-           z);
+    vCycle(impl_->twin, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
 }
 
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,

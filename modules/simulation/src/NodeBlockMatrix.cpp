@@ -19,7 +19,8 @@
 
 namespace tetskin {
 
-void NodeBlockMatrix::assign(const SparseMatrix& A) {
+template <typename Scalar>
+void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
   if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed())
     throw Error("node-block matrix: the system is not square, compressed and 3 dofs per node");
   const Index nodes = A.rows() / 3;
@@ -47,31 +48,26 @@ void NodeBlockMatrix::assign(const SparseMatrix& A) {
       const int count = blockStarts_[static_cast<std::size_t>(v) + 1] - first;
       for (int b = 0; b < count; ++b) {
         columns_[static_cast<std::size_t>(first + b)] = inner[start + 3 * b];
-        double* block = values_.data() + 12 * static_cast<std::size_t>(first + b);
+        Scalar* block = values_.data() + 12 * static_cast<std::size_t>(first + b);
         for (int c = 0; c < 3; ++c) {
-          for (int a = 0; a < 3; ++a) block[4 * c + a] = entries[outer[3 * v + a] + 3 * b + c];
-          block[4 * c + 3] = 0.0;
+          for (int a = 0; a < 3; ++a)
+            block[4 * c + a] = static_cast<Scalar>(entries[outer[3 * v + a] + 3 * b + c]);
+          block[4 * c + 3] = 0;
         }
       }
     }
   });
 }
 
+template class BasicNodeBlockMatrix<double>;
+template class BasicNodeBlockMatrix<float>;
+
 namespace {
 
-// Baseline: the compiler vectorizes the loop over the four rows (SSE2).
-void multiplyNodesBaseline(const int* blockStarts, const int* columns, const double* values,
-                           const double* x, double* y, Index firstNode, Index lastNode) {
-  for (Index v = firstNode; v != lastNode; ++v) {
-    double sums[4] = {0, 0, 0, 0};
-    for (int k = blockStarts[v]; k < blockStarts[v + 1]; ++k) {
-      const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
-      const double* xc = x + columns[k];
-      for (int a = 0; a < 4; ++a)
-        sums[a] += block[a] * xc[0] + block[4 + a] * xc[1] + block[8 + a] * xc[2];
-    }
-    for (int a = 0; a < 3; ++a) y[3 * v + a] = sums[a];
-  }
+// Baseline: blockRowSum's loop (SSE2).
+void multiplyNodesBaseline(const NodeBlockMatrix& A, const double* x, double* y, Index firstNode,
+                           Index lastNode) {
+  for (Index v = firstNode; v != lastNode; ++v) blockRowSum(A, v, x, -1, y + 3 * v);
 }
 
 #if TETSKIN_AVX2_PRODUCT
@@ -79,10 +75,12 @@ void multiplyNodesBaseline(const int* blockStarts, const int* columns, const dou
 // extension): the compiler, left to itself, splits the rows into 2 + 1.
 using Double4 = double __attribute__((vector_size(32)));
 
-__attribute__((target("avx2,fma"))) void multiplyNodesAvx2(const int* blockStarts,
-                                                           const int* columns, const double* values,
+__attribute__((target("avx2,fma"))) void multiplyNodesAvx2(const NodeBlockMatrix& A,
                                                            const double* x, double* y,
                                                            Index firstNode, Index lastNode) {
+  const int* blockStarts = A.blockStarts().data();
+  const int* columns = A.columns().data();
+  const double* values = A.values().data();
   for (Index v = firstNode; v != lastNode; ++v) {
     Double4 sums = {0, 0, 0, 0};
     for (int k = blockStarts[v]; k < blockStarts[v + 1]; ++k) {
@@ -117,8 +115,7 @@ bool usesAvx2Product() {
 
 namespace {
 
-using RowsKernel = void (*)(const int*, const int*, const double*, const double*, double*, Index,
-                            Index);
+using RowsKernel = void (*)(const NodeBlockMatrix&, const double*, double*, Index, Index);
 
 RowsKernel rowsKernel(BlockProduct kernel) {
 #if TETSKIN_AVX2_PRODUCT
@@ -129,16 +126,29 @@ RowsKernel rowsKernel(BlockProduct kernel) {
   return multiplyNodesBaseline;
 }
 
+template <typename Scalar>
+void checkSizes(const BasicNodeBlockMatrix<Scalar>& A, const Eigen::Matrix<Scalar, -1, 1>& x,
+                Eigen::Matrix<Scalar, -1, 1>& y) {
+  if (x.size() != A.rows()) throw Error("node-block matrix: the vector does not fit the matrix");
+  if (y.size() != A.rows()) y.resize(A.rows());
+}
+
 }  // namespace
 
 void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y,
               BlockProduct kernel) {
-  if (x.size() != A.rows()) throw Error("node-block matrix: the vector does not fit the matrix");
-  if (y.size() != A.rows()) y.resize(A.rows());
+  checkSizes(A, x, y);
   const RowsKernel rows = rowsKernel(kernel);
   tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
-    rows(A.blockStarts().data(), A.columns().data(), A.values().data(), x.data(), y.data(),
-         range.begin(), range.end());
+    rows(A, x.data(), y.data(), range.begin(), range.end());
+  });
+}
+
+void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y) {
+  checkSizes(A, x, y);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
+    for (Index v = range.begin(); v != range.end(); ++v)
+      blockRowSum(A, v, x.data(), -1, y.data() + 3 * v);
   });
 }
 

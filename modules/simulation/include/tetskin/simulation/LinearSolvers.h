@@ -70,9 +70,10 @@ class BlockJacobi : public Preconditioner {
 // chunks of neighbouring nodes (chunks of a colour relax in parallel),
 // forward before and exactly backward after (the cycle is a symmetric
 // preconditioner); an exact Cholesky solve on the coarsest level. Fixed
-// nodes (Dirichlet) receive no coarse correction. The cycle runs in single
-// precision by default (float copies of the level values: the sweeps and
-// products are bound by memory traffic).
+// nodes (Dirichlet) receive no coarse correction. The sweeps and residuals
+// run on copies of the level matrices in padded 3x3 blocks
+// (NodeBlockMatrix.h), in single precision by default (half the memory
+// traffic, and a block column is one 4-wide SSE operation).
 class MultigridPreconditioner : public Preconditioner {
  public:
   explicit MultigridPreconditioner(std::vector<SparseMatrix> nodalProlongations,

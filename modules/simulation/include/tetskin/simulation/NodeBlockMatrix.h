@@ -9,7 +9,8 @@
 // chosen at run time), two SSE2 ones in the baseline kernel. On the
 // 12.7k-element level the AVX2 product takes about 0.6 of the SparseMatrix
 // one and the copy, once per step, about 1.5 products (simulation_bench
-// prints both in one run).
+// prints both in one run). The multigrid's V-cycle keeps float copies in the
+// same layout: there a block column is one 4-wide SSE operation everywhere.
 
 #include <vector>
 
@@ -17,33 +18,38 @@
 
 namespace tetskin {
 
-class NodeBlockMatrix {
+// Scalar double for CG's product, float for the multigrid's V-cycle.
+template <typename Scalar>
+class BasicNodeBlockMatrix {
  public:
-  NodeBlockMatrix() = default;
-  explicit NodeBlockMatrix(const SparseMatrix& A) { assign(A); }
-  // Copies A, which must be square, compressed and in the node-block layout
-  // (its row lengths are checked here; the column triples, which a
-  // CorotatedFem pattern always has, are not). Reuses the storage when the
-  // shape is unchanged.
+  BasicNodeBlockMatrix() = default;
+  explicit BasicNodeBlockMatrix(const SparseMatrix& A) { assign(A); }
+  // Copies A (rounded to Scalar), which must be square, compressed and in
+  // the node-block layout (its row lengths are checked here; the column
+  // triples, which a CorotatedFem pattern always has, are not). Reuses the
+  // storage when the shape is unchanged.
   void assign(const SparseMatrix& A);
 
   Index rows() const { return 3 * nodeCount(); }
   Index nodeCount() const { return static_cast<Index>(blockStarts_.size()) - 1; }
   Index blockCount() const { return static_cast<Index>(columns_.size()); }
 
-  // Storage, for the product kernel: node v's blocks are
+  // Storage, for the kernels: node v's blocks are
   // blockStarts()[v] .. blockStarts()[v+1]-1; block k's first column is
   // columns()[k] and its entries are values()[12 k + 4 c + a] = A(3v+a, columns()[k]+c)
   // for a, c < 3 (entry 4 c + 3 is zero).
   const std::vector<int>& blockStarts() const { return blockStarts_; }
   const std::vector<int>& columns() const { return columns_; }
-  const std::vector<double>& values() const { return values_; }
+  const std::vector<Scalar>& values() const { return values_; }
 
  private:
   std::vector<int> blockStarts_{0};
   std::vector<int> columns_;
-  std::vector<double> values_;
+  std::vector<Scalar> values_;
 };
+
+using NodeBlockMatrix = BasicNodeBlockMatrix<double>;
+using FloatNodeBlockMatrix = BasicNodeBlockMatrix<float>;
 
 // Which kernel multiplies: the fastest this CPU runs (AVX2 where it has
 // AVX2 and FMA, see usesAvx2Product()) or the baseline one, which runs on
@@ -51,8 +57,52 @@ class NodeBlockMatrix {
 enum class BlockProduct { Fastest, Baseline };
 bool usesAvx2Product();
 
-// y = A x, nodes in parallel.
+// y = A x, nodes in parallel (double: the kernel as chosen; float: one
+// 4-wide SSE kernel, for every CPU).
 void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y,
               BlockProduct kernel = BlockProduct::Fastest);
+void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y);
+
+// sums = sum of A_vu x_u over node v's blocks, leaving out column
+// `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none):
+// the row kernel of the baseline product, inline for callers with their own
+// loop over nodes.
+inline void blockRowSum(const FloatNodeBlockMatrix& A, Index v, const float* x, int skipColumn,
+                        float sums[3]) {
+  // Each block column one 4-wide vector (GCC's vector extension): left to
+  // itself the compiler computes the three rows as 2 + 1 lanes.
+  using Float4 = float __attribute__((vector_size(16)));
+  Float4 total = {0, 0, 0, 0};
+  const int* columns = A.columns().data();
+  const float* values = A.values().data();
+  for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
+       k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
+    if (columns[k] == skipColumn) continue;
+    const float* block = values + 12 * static_cast<std::ptrdiff_t>(k);
+    const float* xc = x + columns[k];
+    Float4 c0, c1, c2;  // (memcpy: unaligned loads)
+    __builtin_memcpy(&c0, block, sizeof c0);
+    __builtin_memcpy(&c1, block + 4, sizeof c1);
+    __builtin_memcpy(&c2, block + 8, sizeof c2);
+    total += c0 * xc[0] + c1 * xc[1] + c2 * xc[2];
+  }
+  for (int a = 0; a < 3; ++a) sums[a] = total[a];
+}
+
+inline void blockRowSum(const NodeBlockMatrix& A, Index v, const double* x, int skipColumn,
+                        double sums[3]) {
+  double total[4] = {0, 0, 0, 0};  // (the compiler vectorizes the loop over a)
+  const int* columns = A.columns().data();
+  const double* values = A.values().data();
+  for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
+       k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
+    if (columns[k] == skipColumn) continue;
+    const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
+    const double* xc = x + columns[k];
+    for (int a = 0; a < 4; ++a)
+      total[a] += block[a] * xc[0] + block[4 + a] * xc[1] + block[8 + a] * xc[2];
+  }
+  for (int a = 0; a < 3; ++a) sums[a] = total[a];
+}
 
 }  // namespace tetskin
