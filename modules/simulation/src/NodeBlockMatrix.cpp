@@ -3,7 +3,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include <cstring>
 #include <string>
 
 #include "tetskin/core/Error.h"
@@ -71,29 +70,11 @@ void multiplyNodesBaseline(const NodeBlockMatrix& A, const double* x, double* y,
 }
 
 #if TETSKIN_AVX2_PRODUCT
-// The same with each block column one 4-wide vector (GCC's vector
-// extension): the compiler, left to itself, splits the rows into 2 + 1.
-using Double4 = double __attribute__((vector_size(32)));
-
 __attribute__((target("avx2,fma"))) void multiplyNodesAvx2(const NodeBlockMatrix& A,
                                                            const double* x, double* y,
                                                            Index firstNode, Index lastNode) {
-  const int* blockStarts = A.blockStarts().data();
-  const int* columns = A.columns().data();
-  const double* values = A.values().data();
-  for (Index v = firstNode; v != lastNode; ++v) {
-    Double4 sums = {0, 0, 0, 0};
-    for (int k = blockStarts[v]; k < blockStarts[v + 1]; ++k) {
-      const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
-      const double* xc = x + columns[k];
-      Double4 c0, c1, c2;  // (memcpy: unaligned loads)
-      std::memcpy(&c0, block, sizeof c0);
-      std::memcpy(&c1, block + 4, sizeof c1);
-      std::memcpy(&c2, block + 8, sizeof c2);
-      sums += c0 * xc[0] + c1 * xc[1] + c2 * xc[2];
-    }
-    for (int a = 0; a < 3; ++a) y[3 * v + a] = sums[a];
-  }
+  using Double4 = double __attribute__((vector_size(32)));
+  for (Index v = firstNode; v != lastNode; ++v) blockRowSumLanes<Double4>(A, v, x, -1, y + 3 * v);
 }
 
 bool hasAvx2() {

@@ -64,23 +64,24 @@ void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorX
 void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y);
 
 // sums = sum of A_vu x_u over node v's blocks, leaving out column
-// `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none):
-// the row kernel of the baseline product, inline for callers with their own
-// loop over nodes.
-inline void blockRowSum(const FloatNodeBlockMatrix& A, Index v, const float* x, int skipColumn,
-                        float sums[3]) {
-  // Each block column one 4-wide vector (GCC's vector extension): left to
-  // itself the compiler computes the three rows as 2 + 1 lanes.
-  using Float4 = float __attribute__((vector_size(16)));
-  Float4 total = {0, 0, 0, 0};
+// `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none),
+// with each block column one `Lanes` vector of four Scalar (GCC's vector
+// extension: left to itself the compiler computes the three rows as 2 + 1
+// lanes). Inline for callers with their own loop over nodes; always
+// inlined, so that in a caller compiled for AVX2 it is AVX2 code.
+template <typename Lanes, typename Scalar>
+[[gnu::always_inline]] inline void blockRowSumLanes(const BasicNodeBlockMatrix<Scalar>& A, Index v,
+                                                    const Scalar* x, int skipColumn,
+                                                    Scalar sums[3]) {
+  Lanes total = {0, 0, 0, 0};
   const int* columns = A.columns().data();
-  const float* values = A.values().data();
+  const Scalar* values = A.values().data();
   for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
        k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
     if (columns[k] == skipColumn) continue;
-    const float* block = values + 12 * static_cast<std::ptrdiff_t>(k);
-    const float* xc = x + columns[k];
-    Float4 c0, c1, c2;  // (memcpy: unaligned loads)
+    const Scalar* block = values + 12 * static_cast<std::ptrdiff_t>(k);
+    const Scalar* xc = x + columns[k];
+    Lanes c0, c1, c2;  // (memcpy: unaligned loads)
     __builtin_memcpy(&c0, block, sizeof c0);
     __builtin_memcpy(&c1, block + 4, sizeof c1);
     __builtin_memcpy(&c2, block + 8, sizeof c2);
@@ -89,9 +90,20 @@ inline void blockRowSum(const FloatNodeBlockMatrix& A, Index v, const float* x, 
   for (int a = 0; a < 3; ++a) sums[a] = total[a];
 }
 
+// The row kernels of the products below. Float: four lanes are one SSE
+// register on every x86-64 CPU.
+inline void blockRowSum(const FloatNodeBlockMatrix& A, Index v, const float* x, int skipColumn,
+                        float sums[3]) {
+  using Float4 = float __attribute__((vector_size(16)));
+  blockRowSumLanes<Float4>(A, v, x, skipColumn, sums);
+}
+
+// Double, baseline: four double lanes would be two SSE2 registers, which
+// measured slower than the compiler's own vectorization of this loop (the
+// AVX2 product uses blockRowSumLanes with one AVX register).
 inline void blockRowSum(const NodeBlockMatrix& A, Index v, const double* x, int skipColumn,
                         double sums[3]) {
-  double total[4] = {0, 0, 0, 0};  // (the compiler vectorizes the loop over a)
+  double total[4] = {0, 0, 0, 0};
   const int* columns = A.columns().data();
   const double* values = A.values().data();
   for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
