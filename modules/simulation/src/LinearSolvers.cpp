@@ -464,6 +464,7 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
     impl_->twin.resize(single_ ? 0 : levels_.size());
   }
   auto prepare = [&](std::size_t l) {
+    if (l + 1 == levels_.size()) return;  // the coarsest is factorized below instead
     if (single_)
       impl_->single.prepare(level(l), l);
     else
