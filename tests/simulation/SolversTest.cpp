@@ -196,6 +196,14 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
   SparseMatrix scalar(6, 6);
   scalar.setIdentity();
   EXPECT_THROW(blocks.assign(scalar), Error);  // one entry per row, no 3x3 blocks
+  try {
+    blocks.assign(scalar);
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("node 0"), std::string::npos) << error.what();
+  }
+  Index badNode = 7;
+  EXPECT_FALSE(hasNodeRowLengths(scalar, &badNode));
+  EXPECT_EQ(badNode, 0);
   SparseMatrix rectangular(6, 9);
   EXPECT_THROW(blocks.assign(rectangular), Error);
 }

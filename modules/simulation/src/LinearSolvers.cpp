@@ -18,24 +18,6 @@ namespace tetskin {
 // The node-block layout (CorotatedFem::pattern()): rows 3v, 3v+1, 3v+2 share
 // one sorted column list made of whole triples 3c, 3c+1, 3c+2. The kernels
 // below read one column index per 3x3 block instead of one per entry.
-namespace {
-
-// The cheap half of the layout check, O(rows): square, compressed, and the
-// three rows of every node equally long, a whole number of blocks.
-bool hasNodeRowLengths(const SparseMatrix& A) {
-  if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed()) return false;
-  const int* outer = A.outerIndexPtr();
-  for (Index v = 0; v < A.rows() / 3; ++v) {
-    const int length = outer[3 * v + 1] - outer[3 * v];
-    if (length % 3 != 0) return false;
-    for (int a = 1; a < 3; ++a)
-      if (outer[3 * v + a + 1] - outer[3 * v + a] != length) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 bool hasNodeBlocks(const SparseMatrix& A) {
   if (!hasNodeRowLengths(A)) return false;
   const int* outer = A.outerIndexPtr();

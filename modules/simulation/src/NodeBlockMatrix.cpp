@@ -18,23 +18,36 @@
 
 namespace tetskin {
 
+bool hasNodeRowLengths(const SparseMatrix& A, Index* badNode) {
+  if (badNode) *badNode = -1;
+  if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed()) return false;
+  const int* outer = A.outerIndexPtr();
+  for (Index v = 0; v < A.rows() / 3; ++v) {
+    const int length = outer[3 * v + 1] - outer[3 * v];
+    if (length % 3 != 0 || outer[3 * v + 2] - outer[3 * v + 1] != length ||
+        outer[3 * v + 3] - outer[3 * v + 2] != length) {
+      if (badNode) *badNode = v;
+      return false;
+    }
+  }
+  return true;
+}
+
 template <typename Scalar>
 void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
-  if (A.rows() != A.cols() || A.rows() % 3 != 0 || !A.isCompressed())
-    throw Error("node-block matrix: the system is not square, compressed and 3 dofs per node");
+  Index badNode = -1;
+  if (!hasNodeRowLengths(A, &badNode))
+    throw Error(badNode < 0 ? "node-block matrix: the system is not square, compressed and 3 "
+                              "dofs per node"
+                            : "node-block matrix: the rows of node " + std::to_string(badNode) +
+                                  " are not in the node-block layout");
   const Index nodes = A.rows() / 3;
   const int* outer = A.outerIndexPtr();
   blockStarts_.resize(static_cast<std::size_t>(nodes) + 1);
   blockStarts_[0] = 0;
-  for (Index v = 0; v < nodes; ++v) {
-    const int length = outer[3 * v + 1] - outer[3 * v];
-    if (length % 3 != 0 || outer[3 * v + 2] - outer[3 * v + 1] != length ||
-        outer[3 * v + 3] - outer[3 * v + 2] != length)
-      throw Error("node-block matrix: the rows of node " + std::to_string(v) +
-                  " are not in the node-block layout");
+  for (Index v = 0; v < nodes; ++v)
     blockStarts_[static_cast<std::size_t>(v) + 1] =
-        blockStarts_[static_cast<std::size_t>(v)] + length / 3;
-  }
+        blockStarts_[static_cast<std::size_t>(v)] + (outer[3 * v + 1] - outer[3 * v]) / 3;
   const auto blocks = static_cast<std::size_t>(blockStarts_.back());
   columns_.resize(blocks);
   values_.resize(12 * blocks);

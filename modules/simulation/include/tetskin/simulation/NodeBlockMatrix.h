@@ -18,6 +18,13 @@
 
 namespace tetskin {
 
+// The cheap half of the node-block layout check (hasNodeBlocks() in
+// LinearSolvers.h), O(rows): A square, compressed, 3 dofs per node, and the
+// three rows of every node equally long, a whole number of blocks. When it
+// fails, *badNode (if given) is the first node whose rows are not, or -1
+// when the shape is wrong.
+bool hasNodeRowLengths(const SparseMatrix& A, Index* badNode = nullptr);
+
 // Scalar double for CG's product, float for the multigrid's V-cycle.
 template <typename Scalar>
 class BasicNodeBlockMatrix {
