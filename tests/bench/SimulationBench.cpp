@@ -152,6 +152,48 @@ void rotations() {
       svd, fast, svd / fast, checksum);
 }
 
+// The element pass (rotations, forces and the implicit step's matrix) on
+// `level`, with the vector kernel this CPU runs fastest against the baseline
+// kernel, alternating; the state drifts a little from call to call, as
+// between time steps, so the rotations take their usual Newton steps.
+void elementPasses(const MultiLevelTetMesh& mesh, int level) {
+  const TetMesh rest = extractLevel(mesh, level);
+  CorotatedFem fastest(rest, ElasticMaterial{}), baseline(rest, ElasticMaterial{});
+  baseline.setKernel(SimdKernel::Baseline);
+  const Eigen::VectorXd drift = 1e-4 * Eigen::VectorXd::Random(fastest.dofCount());
+  Eigen::VectorXd x = fastest.restPositions() + 1e-2 * Eigen::VectorXd::Random(fastest.dofCount());
+  Eigen::VectorXd force, diagonal = fastest.lumpedMass(),
+                         velocity = Eigen::VectorXd::Random(fastest.dofCount());
+  SparseMatrix A = fastest.pattern();
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 1.0 / 3600;
+  terms.diagonal = &diagonal;
+  terms.velocity = &velocity;
+  terms.velocityWeight = 1.0 / 60;
+  constexpr int kRepeats = 50;
+  auto time = [&](CorotatedFem& fem) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < kRepeats; ++i) {
+      x += (i % 2 ? -1.0 : 1.0) * drift;
+      fem.update(x, force, A, terms);
+    }
+    return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+           kRepeats;
+  };
+  std::vector<double> vector, scalar;
+  for (int round = 0; round < 5; ++round) {
+    vector.push_back(time(fastest));
+    scalar.push_back(time(baseline));
+  }
+  std::nth_element(vector.begin(), vector.begin() + 2, vector.end());
+  std::nth_element(scalar.begin(), scalar.begin() + 2, scalar.end());
+  std::printf(
+      "element pass, bunny level %d (%lld elements), median of 5 x %d: %s kernel %.2f ms, "
+      "baseline kernel %.2f ms (%.2fx)\n",
+      level, static_cast<long long>(fastest.elementCount()), kRepeats,
+      usesAvx2Kernels() ? "AVX2" : "baseline", vector[2], scalar[2], scalar[2] / vector[2]);
+}
+
 // CG's product on one system of `level` (rest shape perturbed, the implicit
 // step's terms): the row-major SparseMatrix kernel against the block copy
 // CG multiplies with, and the copy itself (once per step), alternating.
@@ -181,7 +223,7 @@ void products(const MultiLevelTetMesh& mesh, int level) {
   for (int round = 0; round < 5; ++round) {
     sparse.push_back(time([&] { multiply(A, in, out); }));
     block.push_back(time([&] { multiply(blocks, in, out); }));
-    baseline.push_back(time([&] { multiply(blocks, in, out, BlockProduct::Baseline); }));
+    baseline.push_back(time([&] { multiply(blocks, in, out, SimdKernel::Baseline); }));
     single.push_back(time([&] { multiply(floatBlocks, floatIn, floatOut); }));
     copy.push_back(time([&] { blocks.assign(A); }));
   }
@@ -195,7 +237,7 @@ void products(const MultiLevelTetMesh& mesh, int level) {
       "%.1f us (%.2fx); float blocks (V-cycle) %.1f us (%.2fx); block copy %.1f us\n",
       level, static_cast<long long>(A.rows()), static_cast<long long>(A.nonZeros()), kRepeats,
       median(sparse), median(block), median(sparse) / median(block),
-      usesAvx2Product() ? "AVX2" : "baseline", median(baseline), median(sparse) / median(baseline),
+      usesAvx2Kernels() ? "AVX2" : "baseline", median(baseline), median(sparse) / median(baseline),
       median(single), median(sparse) / median(single), median(copy));
 }
 
@@ -208,6 +250,7 @@ int main(int argc, char** argv) {
   std::printf("wobble scenario, dt 1/60 s, relative residual 1e-6, %u hardware threads, %d steps\n",
               std::thread::hardware_concurrency(), steps);
   rotations();
+  elementPasses(sample.mesh, 2);
   products(sample.mesh, 2);
   std::printf(
       "(mg: rediscretized coarse operators, mg-galerkin: Galerkin products; /N: coarse "

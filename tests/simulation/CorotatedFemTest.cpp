@@ -177,6 +177,60 @@ TEST(CorotatedFem, AssemblyEqualsTheSumOfRotatedElementMatrices) {
   EXPECT_GT(referenceForce.norm(), 1.0);  // the state is really deformed
 }
 
+// The element pass runs four elements at a time in vector lanes (AVX2 where
+// the CPU has it) and hands lanes that need more than small Newton steps to
+// the scalar rotation. Both kernels, cold (large rotations: the scalar
+// fallback) and warm (small changes: the vector steps), on a mesh whose
+// element count leaves the last group of four part empty, give the SVD's
+// rotation of every element and the same forces and matrix to rounding.
+TEST(CorotatedFem, VectorAndBaselineKernelsAgreeWithTheSvdRotations) {
+  const TetMesh mesh = test::tetGrid(3, 1, 1, {3, 1, 1});
+  ASSERT_NE(mesh.elementCount() % 4, 0);
+  CorotatedFem fastest(mesh, material()), baseline(mesh, material());
+  baseline.setKernel(SimdKernel::Baseline);
+  std::mt19937 rng(17);
+  std::normal_distribution<double> noise(0, 1);
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.2, 1, 0.4).normalized()).toRotationMatrix();
+  Eigen::VectorXd x(fastest.dofCount()), v(fastest.dofCount()), D(fastest.dofCount());
+  for (Index n = 0; n < fastest.nodeCount(); ++n)
+    x.segment<3>(3 * n) = Q * fastest.restPositions().segment<3>(3 * n);
+  for (Index i = 0; i < x.size(); ++i) {
+    x[i] += 0.1 * noise(rng);
+    v[i] = noise(rng);
+    D[i] = 2 + std::abs(noise(rng));
+  }
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 0.01;
+  terms.diagonal = &D;
+  terms.velocity = &v;
+  terms.velocityWeight = 0.2;
+  for (const double change : {0.0, 1e-3, 1e-5, 1e-8}) {  // cold, then warm steps
+    for (Index i = 0; i < x.size(); ++i) x[i] += change * noise(rng);
+    Eigen::VectorXd f, fBaseline;
+    SparseMatrix A = fastest.pattern(), ABaseline = baseline.pattern();
+    fastest.update(x, f, A, terms);
+    baseline.update(x, fBaseline, ABaseline, terms);
+    EXPECT_LT((f - fBaseline).norm(), 1e-12 * f.norm()) << "change " << change;
+    EXPECT_LT((Eigen::MatrixXd(A) - Eigen::MatrixXd(ABaseline)).norm(),
+              1e-12 * Eigen::MatrixXd(A).norm())
+        << "change " << change;
+    for (Index e = 0; e < mesh.elementCount(); ++e) {
+      Eigen::Matrix3d deformed, rest;
+      for (int k = 0; k < 3; ++k) {
+        deformed.col(k) =
+            x.segment<3>(3 * mesh.elements(e, k + 1)) - x.segment<3>(3 * mesh.elements(e, 0));
+        rest.col(k) =
+            (mesh.nodes.row(mesh.elements(e, k + 1)) - mesh.nodes.row(mesh.elements(e, 0)))
+                .transpose();
+      }
+      const Eigen::Matrix3d svd = CorotatedFem::rotation(deformed * rest.inverse());
+      EXPECT_TRUE(fastest.elementRotation(e).isApprox(svd, 1e-10)) << "element " << e;
+      EXPECT_TRUE(baseline.elementRotation(e).isApprox(svd, 1e-10)) << "element " << e;
+    }
+  }
+}
+
 // The implicit step's terms assembled in the element pass: s K + D and
 // f_el - w K v equal the same built from the plain stiffness and force.
 TEST(CorotatedFem, SystemTermsEqualScaledStiffnessPlusDiagonalAndDampedForce) {

@@ -166,7 +166,7 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
     Eigen::VectorXd y, baseline;
     multiply(blocks, v, y);
     EXPECT_LT((y - expected).norm(), 1e-13 * expected.norm());
-    multiply(blocks, v, baseline, BlockProduct::Baseline);
+    multiply(blocks, v, baseline, SimdKernel::Baseline);
     EXPECT_LT((baseline - expected).norm(), 1e-13 * expected.norm());
     Eigen::VectorXd fresh;
     multiply(NodeBlockMatrix(A), v, fresh);

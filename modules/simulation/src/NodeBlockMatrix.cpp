@@ -5,16 +5,8 @@
 
 #include <string>
 
+#include "SimdTarget.h"
 #include "tetskin/core/Error.h"
-
-// On x86-64 with GCC or Clang the product also exists in an AVX2 version,
-// chosen at run time where the CPU has AVX2 and FMA: one binary for every
-// x86-64 CPU.
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
-#define TETSKIN_AVX2_PRODUCT 1
-#else
-#define TETSKIN_AVX2_PRODUCT 0
-#endif
 
 namespace tetskin {
 
@@ -82,38 +74,19 @@ void multiplyNodesBaseline(const NodeBlockMatrix& A, const double* x, double* y,
   for (Index v = firstNode; v != lastNode; ++v) blockRowSum(A, v, x, -1, y + 3 * v);
 }
 
-#if TETSKIN_AVX2_PRODUCT
-__attribute__((target("avx2,fma"))) void multiplyNodesAvx2(const NodeBlockMatrix& A,
-                                                           const double* x, double* y,
-                                                           Index firstNode, Index lastNode) {
+#if TETSKIN_AVX2_KERNELS
+TETSKIN_AVX2_TARGET void multiplyNodesAvx2(const NodeBlockMatrix& A, const double* x, double* y,
+                                           Index firstNode, Index lastNode) {
   using Double4 = double __attribute__((vector_size(32)));
   for (Index v = firstNode; v != lastNode; ++v) blockRowSumLanes<Double4>(A, v, x, -1, y + 3 * v);
 }
-
-bool hasAvx2() {
-  __builtin_cpu_init();  // (needed where this runs before the other constructors)
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-}
 #endif
-
-}  // namespace
-
-bool usesAvx2Product() {
-#if TETSKIN_AVX2_PRODUCT
-  static const bool avx2 = hasAvx2();
-  return avx2;
-#else
-  return false;
-#endif
-}
-
-namespace {
 
 using RowsKernel = void (*)(const NodeBlockMatrix&, const double*, double*, Index, Index);
 
-RowsKernel rowsKernel(BlockProduct kernel) {
-#if TETSKIN_AVX2_PRODUCT
-  if (kernel == BlockProduct::Fastest && usesAvx2Product()) return multiplyNodesAvx2;
+RowsKernel rowsKernel(SimdKernel kernel) {
+#if TETSKIN_AVX2_KERNELS
+  if (kernel == SimdKernel::Fastest && usesAvx2Kernels()) return multiplyNodesAvx2;
 #else
   (void)kernel;
 #endif
@@ -130,7 +103,7 @@ void checkSizes(const BasicNodeBlockMatrix<Scalar>& A, const Eigen::Matrix<Scala
 }  // namespace
 
 void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y,
-              BlockProduct kernel) {
+              SimdKernel kernel) {
   checkSizes(A, x, y);
   const RowsKernel rows = rowsKernel(kernel);
   tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {

@@ -14,7 +14,10 @@
 // are a few dozen flops per block, against two 3x3 products for R K_ij R^T.
 // Assembly runs in parallel over chunks of spatially close elements (Morton
 // order), coloured once in the constructor so that the chunks of a colour
-// share no node.
+// share no node. Within a chunk, four elements at a time go through one
+// vector kernel (rotation, strain, stress, forces and blocks in the lanes of
+// four-double vectors; AVX2 where the CPU has it, SimdKernel.h), and their
+// results are added into the matrix one element after the other.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -24,8 +27,29 @@
 
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/simulation/ElasticMaterial.h"
+#include "tetskin/simulation/SimdKernel.h"
 
 namespace tetskin {
+
+// The element pass's storage, in the layout of its vector kernel (lane l of
+// group g is stored element 4 g + l). Internal to CorotatedFem; declared
+// here because it holds them.
+namespace corotated {
+struct alignas(32) ElementGroup {  // what the rest shape fixes
+  double gradients[4][3][4];       // [node k][axis][lane]: shape-function gradient g_k
+  double volume[4];
+  double gradientDots[10][4];  // V g_i . g_j for the pairs i <= j, in row order
+  int nodes[4][4];             // [node k][lane]
+};
+struct alignas(32) RotationEstimates {  // the last rotations, as unit quaternions
+  double w[4], x[4], y[4], z[4];
+};
+struct ElementScatter {           // where an element's blocks go
+  int id;                         // in the mesh (elements are stored in Morton order)
+  std::array<int, 16> slots;      // value index of entry (3 n_i, 3 n_j) per (i, j)
+  std::array<int, 4> rowLengths;  // of node i's rows: row 3 n_i + a starts a lengths on
+};
+}  // namespace corotated
 
 // Row-major so rows can be processed in parallel (SpMV, Dirichlet rows).
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
@@ -36,7 +60,7 @@ class CorotatedFem {
 
   Index nodeCount() const { return restPositions_.size() / 3; }
   Index dofCount() const { return restPositions_.size(); }
-  Index elementCount() const { return static_cast<Index>(elements_.size()); }
+  Index elementCount() const { return static_cast<Index>(scatter_.size()); }
   const Eigen::VectorXd& restPositions() const { return restPositions_; }  // xyz per node
   const Eigen::VectorXd& lumpedMass() const { return mass_; }              // per dof
   const ElasticMaterial& material() const { return material_; }
@@ -65,6 +89,9 @@ class CorotatedFem {
   // s K + D, K the corotated stiffness at x.
   void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& matrix,
               const SystemTerms& terms);
+  // Which version of the element pass's kernel update() runs (the same
+  // results to rounding).
+  void setKernel(SimdKernel kernel) { kernel_ = kernel; }
 
   // Elastic energy sum 1/2 z^T K_e z, z = R^T x_e - X_e, R from x.
   double elasticEnergy(const Eigen::VectorXd& x) const;
@@ -91,28 +118,29 @@ class CorotatedFem {
   }
 
  private:
-  struct Element {
-    int id;  // in the mesh (elements are stored in Morton order)
-    std::array<int, 4> nodes;
-    std::array<Eigen::Vector3d, 4> gradients;  // shape-function gradients
-    double volume;
-    std::array<int, 16> slots;      // value index of entry (3 n_i, 3 n_j) per (i, j)
-    std::array<int, 4> rowLengths;  // of node i's rows: row 3 n_i + a starts a lengths on
-  };
-  static Eigen::Matrix3d deformationGradient(const Element& el, const Eigen::VectorXd& x);
+  // Stored element e's rest-shape constants and the deformation gradient
+  // F = sum_k x_k g_k^T (the gradients sum to zero, so no origin is needed).
+  int node(std::size_t e, int k) const { return groups_[e / 4].nodes[k][e % 4]; }
+  double volume(std::size_t e) const { return groups_[e / 4].volume[e % 4]; }
+  Eigen::Vector3d gradient(std::size_t e, int k) const;
+  Eigen::Matrix3d deformationGradient(std::size_t e, const Eigen::VectorXd& x) const;
   // The element's strain in its rotated frame, sym(R^T F) - I, and the
   // linear (Hooke) stress of a strain.
   static Eigen::Matrix3d rotatedFrameStrain(const Eigen::Matrix3d& R, const Eigen::Matrix3d& F);
   Eigen::Matrix3d linearStress(const Eigen::Matrix3d& strain) const;
   ElasticMaterial material_;
-  std::vector<Element> elements_;  // Morton order of the centroids
-  std::vector<int> storedAt_;      // per mesh element: its index in elements_
+  // Per stored element (Morton order of the centroids; groups padded to
+  // four with copies of the last element).
+  std::vector<corotated::ElementGroup> groups_;
+  std::vector<corotated::ElementScatter> scatter_;
+  std::vector<int> storedAt_;  // per mesh element: its stored index
   Eigen::VectorXd restPositions_;
   Eigen::VectorXd mass_;
   SparseMatrix pattern_;
-  std::vector<int> diagonalSlots_;             // per node: value index of entry (3v, 3v)
-  std::vector<Eigen::Matrix3d> rotations_;     // per stored element
-  std::vector<Eigen::Quaterniond> estimates_;  // warm starts, per stored element
+  std::vector<int> diagonalSlots_;                       // per node: value index of entry (3v, 3v)
+  std::vector<Eigen::Matrix3d> rotations_;               // per stored element
+  std::vector<corotated::RotationEstimates> estimates_;  // warm starts, per group
+  SimdKernel kernel_ = SimdKernel::Fastest;
   // Chunks of consecutive stored elements (their first index), grouped so
   // that no two chunks of a group share a node: each group is assembled in
   // parallel without locks or atomics.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/SimdKernel.h"
 
 namespace tetskin {
 
@@ -58,16 +59,10 @@ class BasicNodeBlockMatrix {
 using NodeBlockMatrix = BasicNodeBlockMatrix<double>;
 using FloatNodeBlockMatrix = BasicNodeBlockMatrix<float>;
 
-// Which kernel multiplies: the fastest this CPU runs (AVX2 where it has
-// AVX2 and FMA, see usesAvx2Product()) or the baseline one, which runs on
-// every CPU (for tests and benchmarks of both on one machine).
-enum class BlockProduct { Fastest, Baseline };
-bool usesAvx2Product();
-
 // y = A x, nodes in parallel (double: the kernel as chosen; float: one
 // 4-wide SSE kernel, for every CPU).
 void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y,
-              BlockProduct kernel = BlockProduct::Fastest);
+              SimdKernel kernel = SimdKernel::Fastest);
 void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y);
 
 // sums = sum of A_vu x_u over node v's blocks, leaving out column

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "CorotatedElementPass.h"
+
+#include <algorithm>
+
+#include "CorotatedLanes.h"
+#include "SimdTarget.h"
+
+// Four-double vectors passed by value change the ABI between AVX and
+// baseline code, which GCC warns of; the helpers here that take or return
+// them are always inlined, so no call passes one.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace tetskin::corotated {
+
+using lanes::Double4;
+
+namespace {
+
+// Vector Newton steps per group before its remaining lanes go to the scalar
+// iteration: warm-started from the last step, an element needs one step
+// and, unless that step was already below kFinalStep, one or two more.
+constexpr int kVectorRotationSteps = 4;
+
+TETSKIN_LANES_INLINE Double4 load(const double* p) {
+  Double4 v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// F = sum_k x_k g_k^T in each lane (row-major), x gathered by node.
+TETSKIN_LANES_INLINE void deformationGradients(const ElementGroup& group, const double* x,
+                                               Double4 F[9]) {
+  for (int k = 0; k < 9; ++k) F[k] = Double4{};
+  for (int k = 0; k < 4; ++k) {
+    const int* nodes = group.nodes[k];
+    for (int a = 0; a < 3; ++a) {
+      const Double4 xka{x[3 * nodes[0] + a], x[3 * nodes[1] + a], x[3 * nodes[2] + a],
+                        x[3 * nodes[3] + a]};
+      for (int b = 0; b < 3; ++b) F[3 * a + b] += xka * load(group.gradients[k][b]);
+    }
+  }
+}
+
+// sym(R^T M), row-major.
+TETSKIN_LANES_INLINE void symmetricRotatedFrame(const Double4 R[9], const Double4 M[9],
+                                                Double4 out[9]) {
+  Double4 G[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      G[3 * i + j] = R[i] * M[j] + R[3 + i] * M[3 + j] + R[6 + i] * M[6 + j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[3 * i + j] = 0.5 * (G[3 * i + j] + G[3 * j + i]);
+}
+
+// The scalar iteration for the lanes the vector steps left (rare: a large
+// rotation within one step, an inverted or degenerate element). F and R
+// row-major, q as w, x, y, z.
+[[gnu::noinline]] void scalarRotation(const double F[9], double q[4], double R[9]) {
+  Eigen::Quaterniond estimate(q[0], q[1], q[2], q[3]);
+  const Eigen::Matrix3d rotation = CorotatedFem::rotation(
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(F), estimate);
+  q[0] = estimate.w();
+  q[1] = estimate.x();
+  q[2] = estimate.y();
+  q[3] = estimate.z();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) R[3 * i + j] = rotation(i, j);
+}
+
+// One group of four elements: rotations (warm-started), forces
+// f_k = -V R sigma g_k and the ten blocks (i, j >= i) of R K_e R^T, each
+// V (lambda r_i r_j^T + mu r_j r_i^T + mu (g_i . g_j) I) with r_k = R g_k;
+// sigma is the stress of the rotated-frame strain plus w times the
+// rotated-frame velocity gradient's (K_e applied to R^T v_e, by linearity).
+// Then each element's results are added in, one element after the other.
+TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
+  const ElementGroup& group = args.groups[g];
+  RotationEstimates& estimate = args.estimates[g];
+  const int elements = static_cast<int>(std::min<std::size_t>(4, args.elementCount - 4 * g));
+  Double4 F[9];
+  deformationGradients(group, args.x, F);
+  lanes::Quaternion<Double4> q{load(estimate.w), load(estimate.x), load(estimate.y),
+                               load(estimate.z)};
+  Double4 R[9] = {};
+  const lanes::Mask4 done = lanes::polarRotationSmallSteps(F, q, R, kVectorRotationSteps);
+  for (int l = 0; l < elements; ++l) {
+    if (done[l]) continue;
+    double lane[9], quaternion[4] = {q.w[l], q.x[l], q.y[l], q.z[l]}, rotation[9];
+    for (int k = 0; k < 9; ++k) lane[k] = F[k][l];
+    scalarRotation(lane, quaternion, rotation);
+    q.w[l] = quaternion[0];
+    q.x[l] = quaternion[1];
+    q.y[l] = quaternion[2];
+    q.z[l] = quaternion[3];
+    for (int k = 0; k < 9; ++k) R[k][l] = rotation[k];
+  }
+  __builtin_memcpy(estimate.w, &q.w, sizeof q.w);
+  __builtin_memcpy(estimate.x, &q.x, sizeof q.x);
+  __builtin_memcpy(estimate.y, &q.y, sizeof q.y);
+  __builtin_memcpy(estimate.z, &q.z, sizeof q.z);
+
+  Double4 strain[9];
+  symmetricRotatedFrame(R, F, strain);
+  strain[0] -= 1;
+  strain[4] -= 1;
+  strain[8] -= 1;
+  if (args.velocity) {
+    Double4 V[9], rate[9];
+    deformationGradients(group, args.velocity, V);
+    symmetricRotatedFrame(R, V, rate);
+    for (int k = 0; k < 9; ++k) strain[k] += args.velocityWeight * rate[k];
+  }
+  const Double4 volume = load(group.volume);
+  const Double4 lambdaTrace = args.lambda * (strain[0] + strain[4] + strain[8]);
+  Double4 sigma[9];
+  for (int k = 0; k < 9; ++k) sigma[k] = (2 * args.mu) * strain[k];
+  sigma[0] += lambdaTrace;
+  sigma[4] += lambdaTrace;
+  sigma[8] += lambdaTrace;
+  Double4 P[9];  // V R sigma
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      P[3 * i + j] = volume * (R[3 * i] * sigma[j] + R[3 * i + 1] * sigma[3 + j] +
+                               R[3 * i + 2] * sigma[6 + j]);
+  Double4 f[4][3], r[4][3];
+  for (int k = 0; k < 4; ++k) {
+    const Double4 g0 = load(group.gradients[k][0]), g1 = load(group.gradients[k][1]),
+                  g2 = load(group.gradients[k][2]);
+    for (int a = 0; a < 3; ++a) {
+      f[k][a] = -(P[3 * a] * g0 + P[3 * a + 1] * g1 + P[3 * a + 2] * g2);
+      r[k][a] = R[3 * a] * g0 + R[3 * a + 1] * g1 + R[3 * a + 2] * g2;
+    }
+  }
+  Double4 blocks[10][9];
+  const double lambda = args.stiffnessScale * args.lambda, mu = args.stiffnessScale * args.mu;
+  const Double4 volumeLambda = volume * lambda, volumeMu = volume * mu;
+  for (int i = 0, pair = 0; i < 4; ++i)
+    for (int j = i; j < 4; ++j, ++pair) {
+      const Double4 isotropic = mu * load(group.gradientDots[pair]);
+      for (int a = 0; a < 3; ++a) {
+        const Double4 li = volumeLambda * r[i][a], mj = volumeMu * r[j][a];
+        for (int b = 0; b < 3; ++b)
+          blocks[pair][3 * a + b] = li * r[j][b] + mj * r[i][b] + (a == b ? isotropic : Double4{});
+      }
+    }
+
+  for (int l = 0; l < elements; ++l) {
+    const std::size_t e = 4 * g + static_cast<std::size_t>(l);
+    double* rotation = args.rotations + 9 * e;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rotation[3 * j + i] = R[3 * i + j][l];
+    for (int k = 0; k < 4; ++k)
+      for (int a = 0; a < 3; ++a) args.force[3 * group.nodes[k][l] + a] += f[k][a][l];
+    const ElementScatter& scatter = args.scatter[e];
+    for (int i = 0, pair = 0; i < 4; ++i)
+      for (int j = i; j < 4; ++j, ++pair) {
+        // Block (i, j); block (j, i) is its transpose.
+        double* upper = args.values + scatter.slots[i * 4 + j];
+        double* lower = args.values + scatter.slots[j * 4 + i];
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) {
+            const double entry = blocks[pair][3 * a + b][l];
+            upper[a * scatter.rowLengths[i] + b] += entry;
+            if (j != i) lower[b * scatter.rowLengths[j] + a] += entry;
+          }
+      }
+  }
+}
+
+// Baseline (SSE2: each four-lane operation is two instructions).
+void assembleGroupsBaseline(const PassArgs& args, std::size_t first, std::size_t last) {
+  for (std::size_t g = first; g < last; ++g) assembleGroup(args, g);
+}
+
+#if TETSKIN_AVX2_KERNELS
+TETSKIN_AVX2_TARGET void assembleGroupsAvx2(const PassArgs& args, std::size_t first,
+                                            std::size_t last) {
+  for (std::size_t g = first; g < last; ++g) assembleGroup(args, g);
+}
+#endif
+
+}  // namespace
+
+GroupsKernel groupsKernel(SimdKernel kernel) {
+#if TETSKIN_AVX2_KERNELS
+  if (kernel == SimdKernel::Fastest && usesAvx2Kernels()) return assembleGroupsAvx2;
+#else
+  (void)kernel;
+#endif
+  return assembleGroupsBaseline;
+}
+
+}  // namespace tetskin::corotated
