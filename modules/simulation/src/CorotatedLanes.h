@@ -30,20 +30,11 @@ TETSKIN_LANES_INLINE bool any(bool m) {
 TETSKIN_LANES_INLINE bool any(Mask4 m) {
   return (m[0] | m[1] | m[2] | m[3]) != 0;
 }
-TETSKIN_LANES_INLINE bool all(bool m) {
-  return m;
-}
-TETSKIN_LANES_INLINE bool all(Mask4 m) {
-  return (m[0] & m[1] & m[2] & m[3]) != 0;
-}
-TETSKIN_LANES_INLINE bool none() {
-  return false;
-}
 TETSKIN_LANES_INLINE double sqrtLanes(double v) {
   return std::sqrt(v);
 }
 TETSKIN_LANES_INLINE Double4 sqrtLanes(Double4 v) {
-  // A loop the compiler turns into one vector square root.
+  // Lane by lane (GCC has no generic vector square root; three per element).
   for (int l = 0; l < 4; ++l) v[l] = __builtin_sqrt(v[l]);
   return v;
 }
