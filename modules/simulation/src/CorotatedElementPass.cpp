@@ -173,22 +173,15 @@ void assembleGroupsBaseline(const PassArgs& args, std::size_t first, std::size_t
   for (std::size_t g = first; g < last; ++g) assembleGroup(args, g);
 }
 
-#if TETSKIN_AVX2_KERNELS
 TETSKIN_AVX2_TARGET void assembleGroupsAvx2(const PassArgs& args, std::size_t first,
                                             std::size_t last) {
   for (std::size_t g = first; g < last; ++g) assembleGroup(args, g);
 }
-#endif
 
 }  // namespace
 
 GroupsKernel groupsKernel(SimdKernel kernel) {
-#if TETSKIN_AVX2_KERNELS
-  if (kernel == SimdKernel::Fastest && usesAvx2Kernels()) return assembleGroupsAvx2;
-#else
-  (void)kernel;
-#endif
-  return assembleGroupsBaseline;
+  return chooseKernel<GroupsKernel>(kernel, assembleGroupsAvx2, assembleGroupsBaseline);
 }
 
 }  // namespace tetskin::corotated

@@ -74,23 +74,16 @@ void multiplyNodesBaseline(const NodeBlockMatrix& A, const double* x, double* y,
   for (Index v = firstNode; v != lastNode; ++v) blockRowSum(A, v, x, -1, y + 3 * v);
 }
 
-#if TETSKIN_AVX2_KERNELS
 TETSKIN_AVX2_TARGET void multiplyNodesAvx2(const NodeBlockMatrix& A, const double* x, double* y,
                                            Index firstNode, Index lastNode) {
   using Double4 = double __attribute__((vector_size(32)));
   for (Index v = firstNode; v != lastNode; ++v) blockRowSumLanes<Double4>(A, v, x, -1, y + 3 * v);
 }
-#endif
 
 using RowsKernel = void (*)(const NodeBlockMatrix&, const double*, double*, Index, Index);
 
 RowsKernel rowsKernel(SimdKernel kernel) {
-#if TETSKIN_AVX2_KERNELS
-  if (kernel == SimdKernel::Fastest && usesAvx2Kernels()) return multiplyNodesAvx2;
-#else
-  (void)kernel;
-#endif
-  return multiplyNodesBaseline;
+  return chooseKernel<RowsKernel>(kernel, multiplyNodesAvx2, multiplyNodesBaseline);
 }
 
 template <typename Scalar>
