@@ -294,11 +294,21 @@ void BlockJacobi::setup(const SparseMatrix& A) {
   invertDiagonalBlocks(A, inverse_);
 }
 
+void Preconditioner::applyToNodes(Index, Index, const double*, double*) const {
+  throw Error("preconditioner: applied node by node, but it does not act per node");
+}
+
+void BlockJacobi::applyToNodes(Index first, Index last, const double* r, double* z) const {
+  for (Index v = first; v != last; ++v)
+    Eigen::Map<Eigen::Vector3d>(z + 3 * v) =
+        inverse_[static_cast<std::size_t>(v)] * Eigen::Map<const Eigen::Vector3d>(r + 3 * v);
+}
+
 void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (z.size() != r.size()) z.resize(r.size());
-  tbb::parallel_for(std::size_t(0), inverse_.size(), [&](std::size_t v) {
-    z.segment<3>(3 * static_cast<Index>(v)) = inverse_[v] * r.segment<3>(3 * static_cast<Index>(v));
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<Index>(0, static_cast<Index>(inverse_.size()), 256),
+      [&](const auto& range) { applyToNodes(range.begin(), range.end(), r.data(), z.data()); });
 }
 
 struct MultigridPreconditioner::Impl {
@@ -474,57 +484,6 @@ void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z
     vCycle(impl_->single, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
   else
     vCycle(impl_->twin, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
-}
-
-SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                             const Preconditioner& preconditioner, double tolerance,
-                             int maxIterations) {
-  // (The full layout check is left to the multigrid's first setup; the copy
-  // checks the row lengths.)
-  return conjugateGradient(NodeBlockMatrix(A), b, x, preconditioner, tolerance, maxIterations);
-}
-
-SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                             const Preconditioner& preconditioner, double tolerance,
-                             int maxIterations) {
-  SolveStats stats;
-  if (b.size() != A.rows()) throw Error("conjugate gradients: the right-hand side does not fit");
-  const double bNorm = b.norm();
-  if (x.size() != b.size()) x.setZero(b.size());
-  if (bNorm == 0) {
-    x.setZero();
-    return stats;
-  }
-  Eigen::VectorXd r(b.size()), z(b.size()), p(b.size()), Ap(b.size());
-  multiply(A, x, Ap);
-  r = b - Ap;
-  stats.relativeResidual = r.norm() / bNorm;
-  if (stats.relativeResidual <= tolerance) return stats;
-  preconditioner.apply(r, z);
-  p = z;
-  double rz = r.dot(z);
-  Eigen::VectorXd zOld(b.size());
-  for (stats.iterations = 1; stats.iterations <= maxIterations; ++stats.iterations) {
-    multiply(A, p, Ap);
-    const double pAp = p.dot(Ap);
-    if (!(pAp > 0)) break;  // not positive definite along p (should not happen)
-    const double alpha = rz / pAp;
-    x += alpha * p;
-    r -= alpha * Ap;
-    stats.relativeResidual = r.norm() / bNorm;
-    if (stats.relativeResidual <= tolerance) break;
-    zOld.swap(z);
-    preconditioner.apply(r, z);
-    const double rzNew = r.dot(z);
-    // Polak-Ribiere beta, r.(z - z_old) / r_old.z_old: the same as the usual
-    // r.z / r_old.z_old for an exactly symmetric preconditioner, and keeps
-    // CG converging when the preconditioner is only nearly so (a V-cycle in
-    // single precision).
-    p = z + ((rzNew - r.dot(zOld)) / rz) * p;
-    rz = rzNew;
-  }
-  stats.iterations = std::min(stats.iterations, maxIterations);
-  return stats;
 }
 
 }  // namespace tetskin

@@ -49,6 +49,13 @@ class Preconditioner {
   // Called once per system (the matrix changes every step).
   virtual void setup(const SparseMatrix& A) = 0;
   virtual void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const = 0;
+  // A preconditioner that acts node by node (node v's three entries of z
+  // from node v's of r alone) says so and applies itself to a range of
+  // nodes: CG then runs it inside its own pass over the vectors, without a
+  // pass (and a hand-off between threads) of its own.
+  virtual bool actsPerNode() const { return false; }
+  // z = M^-1 r on the dofs of nodes [first, last) (only where actsPerNode()).
+  virtual void applyToNodes(Index first, Index last, const double* r, double* z) const;
 };
 
 // Inverse of each node's 3x3 diagonal block (A in the node-block layout).
@@ -56,6 +63,8 @@ class BlockJacobi : public Preconditioner {
  public:
   void setup(const SparseMatrix& A) override;
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
+  bool actsPerNode() const override { return true; }
+  void applyToNodes(Index first, Index last, const double* r, double* z) const override;
 
  private:
   std::vector<Eigen::Matrix3d> inverse_;
@@ -138,7 +147,12 @@ class MultigridPreconditioner : public Preconditioner {
 
 // Preconditioned CG to `tolerance` (relative residual) or `maxIterations`,
 // with the Polak-Ribiere beta so that a preconditioner that is symmetric
-// only up to rounding (a float V-cycle) does not stall it.
+// only up to rounding (a float V-cycle) does not stall it. An iteration is
+// two passes over the nodes in parallel (the product with the new search
+// direction's update fused in, then the vector updates with a per-node
+// preconditioner fused in); their dot products are summed over fixed
+// chunks of nodes in chunk order, so a solve gives the same bits on any
+// number of threads.
 // Its products use A's block copy (NodeBlockMatrix.h): a caller that
 // solves with the same A repeatedly, or keeps the copy's storage from step
 // to step, passes that copy instead.
