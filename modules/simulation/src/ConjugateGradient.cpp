@@ -12,50 +12,15 @@
 // and beta.
 #include <tbb/parallel_for.h>
 
-#include <array>
 #include <cmath>
-#include <vector>
 
+#include "NodeChunks.h"
 #include "SimdTarget.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/simulation/LinearSolvers.h"
 
 namespace tetskin {
 namespace {
-
-// Consecutive nodes per chunk: the unit of the parallel passes and of the
-// dot products' partial sums (a chunk's vectors, 3 KB each, stay in L1
-// between the two loops of the second pass).
-constexpr Index kChunkNodes = 128;
-
-// Sums over the nodes computed chunk by chunk in parallel and added in chunk
-// order: the same bits whichever thread runs which chunk.
-class NodeChunks {
- public:
-  explicit NodeChunks(Index nodes)
-      : nodes_(nodes),
-        partial_(static_cast<std::size_t>((nodes + kChunkNodes - 1) / kChunkNodes)) {}
-
-  // body(first, last) returns the chunk's sums.
-  template <typename Body>
-  std::array<double, 3> sum(const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, partial_.size(), 1),
-                      [&](const auto& range) {
-                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                          const Index first = static_cast<Index>(c) * kChunkNodes;
-                          partial_[c] = body(first, std::min(nodes_, first + kChunkNodes));
-                        }
-                      });
-    std::array<double, 3> total{};
-    for (const auto& sums : partial_)
-      for (std::size_t k = 0; k < total.size(); ++k) total[k] += sums[k];
-    return total;
-  }
-
- private:
-  Index nodes_;
-  std::vector<std::array<double, 3>> partial_;
-};
 
 // The first pass on nodes [first, last): p = z + beta p, q = A z + beta q
 // (q holds A p_old), and the sum of p.q over these nodes.
@@ -120,7 +85,7 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
   stats.relativeResidual = r.norm() / bNorm;
   if (stats.relativeResidual <= tolerance) return stats;
 
-  NodeChunks chunks(A.nodeCount());
+  NodeChunks<Eigen::Vector3d> chunks(A.nodeCount());
   const bool perNode = preconditioner.actsPerNode();
   const auto chunkDot = [&](Index first, Index last) {
     const Index count = 3 * (last - first);
@@ -129,10 +94,12 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
   // z = M^-1 r and r.z.
   const auto precondition = [&] {
     if (!perNode) preconditioner.apply(r, z);
-    return chunks.sum([&](Index first, Index last) {
-      if (perNode) preconditioner.applyToNodes(first, last, r.data(), z.data());
-      return std::array<double, 3>{chunkDot(first, last), 0, 0};
-    })[0];
+    return chunks.sum(
+        [&](Index first, Index last) {
+          if (perNode) preconditioner.applyToNodes(first, last, r.data(), z.data());
+          return Eigen::Vector3d(chunkDot(first, last), 0, 0);
+        },
+        Eigen::Vector3d::Zero())[0];
   };
   double rz = precondition();
 
@@ -141,27 +108,30 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
   Eigen::VectorXd p = Eigen::VectorXd::Zero(b.size()), q = Eigen::VectorXd::Zero(b.size());
   double beta = 0;
   for (stats.iterations = 1; stats.iterations <= maxIterations; ++stats.iterations) {
-    const double pq = chunks.sum([&](Index first, Index last) {
-      return std::array<double, 3>{search(A, first, last, beta, z.data(), p.data(), q.data()), 0,
-                                   0};
-    })[0];
+    const double pq = chunks.sum(
+        [&](Index first, Index last) {
+          return Eigen::Vector3d(search(A, first, last, beta, z.data(), p.data(), q.data()), 0, 0);
+        },
+        Eigen::Vector3d::Zero())[0];
     if (!(pq > 0)) break;  // not positive definite along p (should not happen)
     const double alpha = rz / pq;
     // r.r, r.z_old (for Polak-Ribiere), and r.z where z is updated here.
-    const std::array<double, 3> sums = chunks.sum([&](Index first, Index last) {
-      std::array<double, 3> s{};
-      for (Index i = 3 * first; i != 3 * last; ++i) {
-        x[i] += alpha * p[i];
-        r[i] -= alpha * q[i];
-        s[0] += r[i] * r[i];
-        s[1] += r[i] * z[i];
-      }
-      if (perNode) {
-        preconditioner.applyToNodes(first, last, r.data(), z.data());
-        s[2] = chunkDot(first, last);
-      }
-      return s;
-    });
+    const Eigen::Vector3d sums = chunks.sum(
+        [&](Index first, Index last) {
+          Eigen::Vector3d s = Eigen::Vector3d::Zero();
+          for (Index i = 3 * first; i != 3 * last; ++i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * q[i];
+            s[0] += r[i] * r[i];
+            s[1] += r[i] * z[i];
+          }
+          if (perNode) {
+            preconditioner.applyToNodes(first, last, r.data(), z.data());
+            s[2] = chunkDot(first, last);
+          }
+          return s;
+        },
+        Eigen::Vector3d::Zero());
     stats.relativeResidual = std::sqrt(sums[0]) / bNorm;
     if (stats.relativeResidual <= tolerance) break;
     const double rzNew = perNode ? sums[2] : precondition();

@@ -94,55 +94,6 @@ void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& 
   multiplyBlocks(A, x.data(), y.data());
 }
 
-namespace {
-
-// Y = A X with K columns (a compile-time count, so the loops over the
-// columns unroll and vectorize). The row walk is multiplyBlocks's; the two
-// stay apart because one template for both, measured on the 12.7k-element
-// level, made the single-vector product, CG's hot loop, about 10% slower.
-template <int K>
-void multiplyColumns(const SparseMatrix& A, const double* in, double* out) {
-  const int* outer = A.outerIndexPtr();
-  const int* inner = A.innerIndexPtr();
-  const double* values = A.valuePtr();
-  tbb::parallel_for(
-      tbb::blocked_range<int>(0, static_cast<int>(A.rows() / 3), 128), [&](const auto& r) {
-        for (int v = r.begin(); v != r.end(); ++v) {
-          const int start = outer[3 * v], length = outer[3 * v + 1] - start;
-          const int* columns = inner + start;
-          const double* rows[3] = {values + start, values + outer[3 * v + 1],
-                                   values + outer[3 * v + 2]};
-          double sums[3][K] = {};
-          for (int b = 0; b < length; b += 3)
-            for (int d = 0; d < 3; ++d) {
-              const double* x = in + static_cast<std::ptrdiff_t>(columns[b] + d) * K;
-              for (int a = 0; a < 3; ++a) {
-                const double w = rows[a][b + d];
-                for (int j = 0; j < K; ++j) sums[a][j] += w * x[j];
-              }
-            }
-          for (int a = 0; a < 3; ++a)
-            std::copy(sums[a], sums[a] + K, out + static_cast<std::ptrdiff_t>(3 * v + a) * K);
-        }
-      });
-}
-
-template <int... K>
-void multiplyColumns(const SparseMatrix& A, int k, const double* in, double* out,
-                     std::integer_sequence<int, K...>) {
-  ((k == K + 1 ? multiplyColumns<K + 1>(A, in, out) : void()), ...);
-}
-
-}  // namespace
-
-void multiply(const SparseMatrix& A, const DenseRows& X, DenseRows& Y) {
-  const int k = static_cast<int>(X.cols());
-  if (X.rows() != A.cols() || k > kMaxProductColumns)
-    throw Error("multiply: the vectors do not fit the matrix");
-  Y.resize(A.rows(), k);
-  multiplyColumns(A, k, X.data(), Y.data(), std::make_integer_sequence<int, kMaxProductColumns>());
-}
-
 void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   if (y.size() != 3 * P.rows()) y.resize(3 * P.rows());
   multiplyNodalBlocks(P, x.data(), y.data());

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <string>
+#include <utility>
 
 #include "SimdTarget.h"
 #include "tetskin/core/Error.h"
@@ -86,6 +87,52 @@ RowsKernel rowsKernel(SimdKernel kernel) {
   return chooseKernel<RowsKernel>(kernel, multiplyNodesAvx2, multiplyNodesBaseline);
 }
 
+// Y's rows of node v for K columns: per block column c and column j of X,
+// one multiply-add of the block column (four lanes, the fourth zero) with
+// X(3u + c, j).
+template <int K>
+[[gnu::always_inline]] inline void multiplyNodeColumns(const NodeBlockMatrix& A, Index v,
+                                                       const double* X, double* Y) {
+  using Double4 = double __attribute__((vector_size(32)));
+  Double4 sums[K] = {};
+  const int* columns = A.columns().data();
+  const double* values = A.values().data();
+  for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
+       k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
+    const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
+    Double4 c0, c1, c2;  // (memcpy: unaligned loads)
+    __builtin_memcpy(&c0, block, sizeof c0);
+    __builtin_memcpy(&c1, block + 4, sizeof c1);
+    __builtin_memcpy(&c2, block + 8, sizeof c2);
+    const double* x = X + static_cast<std::ptrdiff_t>(columns[k]) * K;  // rows 3u .. 3u+2
+    for (int j = 0; j < K; ++j) sums[j] += c0 * x[j] + c1 * x[K + j] + c2 * x[2 * K + j];
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int j = 0; j < K; ++j) Y[(3 * v + a) * K + j] = sums[j][a];
+}
+
+template <int K>
+void multiplyColumnsBaseline(const NodeBlockMatrix& A, const double* X, double* Y, Index firstNode,
+                             Index lastNode) {
+  for (Index v = firstNode; v != lastNode; ++v) multiplyNodeColumns<K>(A, v, X, Y);
+}
+
+template <int K>
+TETSKIN_AVX2_TARGET void multiplyColumnsAvx2(const NodeBlockMatrix& A, const double* X, double* Y,
+                                             Index firstNode, Index lastNode) {
+  for (Index v = firstNode; v != lastNode; ++v) multiplyNodeColumns<K>(A, v, X, Y);
+}
+
+using ColumnsKernel = void (*)(const NodeBlockMatrix&, const double*, double*, Index, Index);
+
+// The kernel for k = 1 .. kMaxProductColumns columns.
+template <int... K>
+ColumnsKernel columnsKernel(SimdKernel kernel, int k, std::integer_sequence<int, K...>) {
+  constexpr ColumnsKernel avx2[] = {multiplyColumnsAvx2<K + 1>...};
+  constexpr ColumnsKernel baseline[] = {multiplyColumnsBaseline<K + 1>...};
+  return chooseKernel(kernel, avx2[k - 1], baseline[k - 1]);
+}
+
 template <typename Scalar>
 void checkSizes(const BasicNodeBlockMatrix<Scalar>& A, const Eigen::Matrix<Scalar, -1, 1>& x,
                 Eigen::Matrix<Scalar, -1, 1>& y) {
@@ -109,6 +156,19 @@ void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::Ve
   tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v)
       blockRowSum(A, v, x.data(), -1, y.data() + 3 * v);
+  });
+}
+
+void multiply(const NodeBlockMatrix& A, const DenseRows& X, DenseRows& Y, SimdKernel kernel) {
+  const int k = static_cast<int>(X.cols());
+  if (X.rows() != A.rows() || k > kMaxProductColumns)
+    throw Error("node-block matrix: the vectors do not fit the matrix");
+  Y.resize(A.rows(), k);
+  if (k == 0) return;
+  const ColumnsKernel rows =
+      columnsKernel(kernel, k, std::make_integer_sequence<int, kMaxProductColumns>());
+  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 128), [&](const auto& range) {
+    rows(A, X.data(), Y.data(), range.begin(), range.end());
   });
 }
 

@@ -342,7 +342,7 @@ StepStats Simulation::step() {
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   start = std::chrono::steady_clock::now();
-  guess_.guess(system_, rhs_, dv_);  // (dv_ holds the last solution: the plain warm start)
+  guess_.guess(blockSystem_, rhs_, dv_);  // (dv_ holds the last solution: the plain warm start)
   const SolveStats solve = conjugateGradient(blockSystem_, rhs_, dv_, *preconditioner_,
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds =

@@ -29,15 +29,6 @@ bool hasNodeBlocks(const SparseMatrix& A);
 // y = A x for A in the node-block layout, nodes in parallel.
 void multiply(const SparseMatrix& A, const Eigen::VectorXd& x, Eigen::VectorXd& y);
 
-// Several vectors side by side, one per column; row-major, so the values of
-// one dof are adjacent.
-using DenseRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-// Y = A X for up to kMaxProductColumns columns in one pass over A: A is read
-// once for all k vectors (5 columns cost about 3 single products, profiled
-// on the 12.7k-element level).
-constexpr int kMaxProductColumns = 16;
-void multiply(const SparseMatrix& A, const DenseRows& X, DenseRows& Y);
-
 // y = P x for a nodal P (one weight per node pair) applied to xyz vectors:
 // y_i = sum_j P_ij x_j per coordinate.
 void multiplyNodal(const SparseMatrix& P, const Eigen::VectorXd& x, Eigen::VectorXd& y);

@@ -65,6 +65,16 @@ void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorX
               SimdKernel kernel = SimdKernel::Fastest);
 void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y);
 
+// Several vectors side by side, one per column; row-major, so the values of
+// one dof are adjacent.
+using DenseRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+// Y = A X for up to kMaxProductColumns columns in one pass over A: A is read
+// once for all of them, and each block column, one 4-wide vector, multiplies
+// the k values of one dof of X (the kernel chosen like the single product's).
+constexpr int kMaxProductColumns = 16;
+void multiply(const NodeBlockMatrix& A, const DenseRows& X, DenseRows& Y,
+              SimdKernel kernel = SimdKernel::Fastest);
+
 // sums = sum of A_vu x_u over node v's blocks, leaving out column
 // `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none),
 // with each block column one `Lanes` vector of four Scalar (GCC's vector

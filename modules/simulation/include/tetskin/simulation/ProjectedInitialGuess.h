@@ -12,10 +12,18 @@
 // combination. The projection is at least as close to the solution, in the
 // A-norm that CG's error is measured in, as each of them; a smooth motion is
 // predicted to a small part of its step (a falling body almost exactly), so
-// CG starts nearer and needs fewer iterations. It costs one pass over A for
-// all stored vectors together and O(n k^2) dense work.
+// CG starts nearer and needs fewer iterations.
+//
+// It costs one pass over A for all stored vectors together and three passes
+// over them (O(n k^2), in parallel): the basis of the span is found in k
+// dimensions, from the eigenvectors of the stored solutions' Gram matrix,
+// instead of by Gram-Schmidt over n. Directions in which the solutions vary
+// by less than kDependence of the largest one are left out: there the Gram
+// matrix's rounding (1e-16 of its largest eigenvalue) would no longer give
+// a basis vector that is nearly orthogonal to the others, and such
+// directions are far below a solve's tolerance.
 
-#include "tetskin/simulation/LinearSolvers.h"
+#include "tetskin/simulation/NodeBlockMatrix.h"
 
 namespace tetskin {
 
@@ -28,11 +36,16 @@ class ProjectedInitialGuess {
   int capacity() const { return capacity_; }
   int size() const { return size_; }
 
+  // Relative size (singular value of the stored solutions over the largest)
+  // below which a direction of their span is left out.
+  static constexpr double kDependence = 1e-7;
+
   // x = the A-orthogonal projection of A^-1 b onto the span of the stored
-  // solutions, computed without A^-1: with Q an orthonormal basis of the
-  // span, x = Q (Q^T A Q)^-1 Q^T b. x is left as it is while nothing nonzero
-  // is stored. A must be SPD and of the stored vectors' size.
-  void guess(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  // solutions, computed without A^-1: with Q a basis of the span,
+  // x = Q (Q^T A Q)^-1 Q^T b. x is left as it is while nothing nonzero is
+  // stored. A must be SPD and of the stored vectors' size. The result is the
+  // same bits on any number of threads.
+  void guess(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   // Stores a solution (copied), replacing the oldest once full; a solution of
   // another size than the stored ones starts the store afresh.
   void remember(const Eigen::VectorXd& solution);
@@ -40,11 +53,10 @@ class ProjectedInitialGuess {
 
  private:
   int capacity_;
-  int size_ = 0, next_ = 0;    // stored count; column written next
-  Eigen::MatrixXd solutions_;  // dofs x capacity
-  // Scratch: an orthonormal basis of the stored span and A times it.
-  Eigen::MatrixXd basis_;
-  DenseRows rows_, products_;
+  int size_ = 0, next_ = 0;  // stored count; column written next
+  DenseRows solutions_;      // dofs x capacity, a solution per column
+  // Scratch: the basis of the span and A times it.
+  DenseRows basis_, products_;
 };
 
 }  // namespace tetskin
