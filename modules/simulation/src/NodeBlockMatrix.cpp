@@ -96,16 +96,12 @@ template <int K>
   using Double4 = double __attribute__((vector_size(32)));
   Double4 sums[K] = {};
   const int* columns = A.columns().data();
-  const double* values = A.values().data();
   for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
        k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
-    const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
-    Double4 c0, c1, c2;  // (memcpy: unaligned loads)
-    __builtin_memcpy(&c0, block, sizeof c0);
-    __builtin_memcpy(&c1, block + 4, sizeof c1);
-    __builtin_memcpy(&c2, block + 8, sizeof c2);
+    Double4 c[3];
+    loadBlockColumns(A, k, c);
     const double* x = X + static_cast<std::ptrdiff_t>(columns[k]) * K;  // rows 3u .. 3u+2
-    for (int j = 0; j < K; ++j) sums[j] += c0 * x[j] + c1 * x[K + j] + c2 * x[2 * K + j];
+    for (int j = 0; j < K; ++j) sums[j] += c[0] * x[j] + c[1] * x[K + j] + c[2] * x[2 * K + j];
   }
   for (int a = 0; a < 3; ++a)
     for (int j = 0; j < K; ++j) Y[(3 * v + a) * K + j] = sums[j][a];

@@ -16,9 +16,9 @@ namespace {
 
 // The projection with K stored solutions, K fixed at compile time so that
 // the per-dof work (K x K outer products) unrolls and stays in registers.
-// Returns false (x untouched) when nothing usable is stored.
+// x is left as it is when nothing usable is stored.
 template <int K>
-bool project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::VectorXd& b,
+void project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::VectorXd& b,
              DenseRows& basis, DenseRows& products, Eigen::VectorXd& x) {
   using Row = Eigen::Matrix<double, 1, K>;
   using Square = Eigen::Matrix<double, K, K>;
@@ -38,14 +38,14 @@ bool project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::
         return sums;
       },
       Square::Zero());
-  if (!gram.allFinite()) return false;
+  if (!gram.allFinite()) return;
   // A basis of the span: Q = S V D^-1/2 over the eigenpairs (V, D) of S^T S
   // that are not negligible (then Q^T Q = I up to the Gram matrix's
   // rounding); the columns of the others are zero.
   const Eigen::SelfAdjointEigenSolver<Square> eigen(gram);
-  if (eigen.info() != Eigen::Success) return false;
+  if (eigen.info() != Eigen::Success) return;
   const double largest = eigen.eigenvalues()[K - 1];
-  if (!(largest > 0)) return false;  // only zeros stored
+  if (!(largest > 0)) return;  // only zeros stored
   int rank = 0;
   Square toBasis = Square::Zero();  // Q = S toBasis
   for (; rank < K; ++rank) {
@@ -85,23 +85,22 @@ bool project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::
   const Eigen::MatrixXd system =
       0.5 * (reduced.topLeftCorner(rank, rank) + reduced.topLeftCorner(rank, rank).transpose());
   const Eigen::LLT<Eigen::MatrixXd> factor(system);
-  if (factor.info() != Eigen::Success) return false;  // A not SPD on the span
+  if (factor.info() != Eigen::Success) return;  // A not SPD on the span
   Column coefficients = Column::Zero();
   coefficients.head(rank) = factor.solve(basisB.head(rank));
-  if (!coefficients.allFinite()) return false;
+  if (!coefficients.allFinite()) return;
   x.resize(A.rows());
   tbb::parallel_for(tbb::blocked_range<Index>(0, A.rows(), 1024), [&](const auto& range) {
     for (Index i = range.begin(); i != range.end(); ++i)
       x[i] = Eigen::Map<const Row>(basis.data() + i * K).dot(coefficients.transpose());
   });
-  return true;
 }
 
 template <int... K>
 void projectWith(int k, const NodeBlockMatrix& A, const DenseRows& solutions,
                  const Eigen::VectorXd& b, DenseRows& basis, DenseRows& products,
                  Eigen::VectorXd& x, std::integer_sequence<int, K...>) {
-  ((k == K + 1 ? void(project<K + 1>(A, solutions, b, basis, products, x)) : void()), ...);
+  ((k == K + 1 ? project<K + 1>(A, solutions, b, basis, products, x) : void()), ...);
 }
 
 }  // namespace

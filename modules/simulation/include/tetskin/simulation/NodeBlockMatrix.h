@@ -75,6 +75,16 @@ constexpr int kMaxProductColumns = 16;
 void multiply(const NodeBlockMatrix& A, const DenseRows& X, DenseRows& Y,
               SimdKernel kernel = SimdKernel::Fastest);
 
+// Block k's three columns as `Lanes` vectors of four Scalar (the fourth
+// lane zero), loaded unaligned (memcpy); always inlined, so that in a caller
+// compiled for AVX2 they are AVX2 loads.
+template <typename Lanes, typename Scalar>
+[[gnu::always_inline]] inline void loadBlockColumns(const BasicNodeBlockMatrix<Scalar>& A, int k,
+                                                    Lanes columns[3]) {
+  const Scalar* block = A.values().data() + 12 * static_cast<std::ptrdiff_t>(k);
+  for (int c = 0; c < 3; ++c) __builtin_memcpy(&columns[c], block + 4 * c, sizeof(Lanes));
+}
+
 // sums = sum of A_vu x_u over node v's blocks, leaving out column
 // `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none),
 // with each block column one `Lanes` vector of four Scalar (GCC's vector
@@ -87,17 +97,13 @@ template <typename Lanes, typename Scalar>
                                                     Scalar sums[3]) {
   Lanes total = {0, 0, 0, 0};
   const int* columns = A.columns().data();
-  const Scalar* values = A.values().data();
   for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
        k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
     if (columns[k] == skipColumn) continue;
-    const Scalar* block = values + 12 * static_cast<std::ptrdiff_t>(k);
     const Scalar* xc = x + columns[k];
-    Lanes c0, c1, c2;  // (memcpy: unaligned loads)
-    __builtin_memcpy(&c0, block, sizeof c0);
-    __builtin_memcpy(&c1, block + 4, sizeof c1);
-    __builtin_memcpy(&c2, block + 8, sizeof c2);
-    total += c0 * xc[0] + c1 * xc[1] + c2 * xc[2];
+    Lanes c[3];
+    loadBlockColumns(A, k, c);
+    total += c[0] * xc[0] + c[1] * xc[1] + c[2] * xc[2];
   }
   for (int a = 0; a < 3; ++a) sums[a] = total[a];
 }
