@@ -161,6 +161,27 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
   return order;
 }
 
+// Asks for node u's row of blocks to be brought into the cache. Always
+// inlined: as a function of its own, GCC finds it free of side effects
+// and drops the call.
+template <typename Scalar>
+[[gnu::always_inline]] inline void prefetchBlockRow(const BasicNodeBlockMatrix<Scalar>& A, int u) {
+  const auto row = [&](int node) {
+    return reinterpret_cast<const char*>(A.values().data() +
+                                         12 * static_cast<std::ptrdiff_t>(A.blockStarts()[node]));
+  };
+  for (const char *line = row(u), *end = row(u + 1); line < end; line += 64)
+    __builtin_prefetch(line);
+  __builtin_prefetch(A.columns().data() + A.blockStarts()[u]);
+}
+
+// How many nodes ahead a backward sweep prefetches rows: the hardware
+// prefetcher follows the ascending reads of a forward sweep but not rows
+// taken in descending order, and without help the backward sweep took
+// about 2.5x as long as the forward one at 109k elements (float blocks,
+// e.g. 3.1 against 1.2 ms per sweep on 2 threads, 6.0 against 2.2 on one).
+constexpr int kBackwardPrefetchNodes = 3;
+
 // One block Gauss-Seidel sweep: each node's 3 unknowns solved together
 // (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)) in the sweep order; `forward`
 // false runs it exactly backwards (colours, and nodes within each chunk), so
@@ -183,7 +204,10 @@ void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
     if (forward)
       for (int v = first; v < last; ++v) relax(v);
     else
-      for (int v = last; v-- > first;) relax(v);
+      for (int v = last; v-- > first;) {
+        if (v >= kBackwardPrefetchNodes) prefetchBlockRow(A, v - kBackwardPrefetchNodes);
+        relax(v);
+      }
   };
   for (std::size_t i = 0; i < order.colours.size(); ++i) {
     const std::vector<int>& chunks = order.colours[forward ? i : order.colours.size() - 1 - i];
