@@ -250,6 +250,12 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
       EXPECT_LT((Eigen::Map<Eigen::Vector3d>(sums) - withoutDiagonal).norm(),
                 1e-12 * expected.norm());
     }
+    // Each node's diagonal block (the V-cycle inverts them from its copy).
+    for (Index node = 0; node < blocks.nodeCount(); ++node) {
+      const Eigen::Matrix3d diagonal = A.block(3 * node, 3 * node, 3, 3).toDense();
+      ASSERT_EQ(blocks.diagonalBlock(node), diagonal) << "node " << node;
+      ASSERT_EQ(single.diagonalBlock(node), diagonal.cast<float>()) << "node " << node;
+    }
     // Padding entries are zero, so a non-finite x touches only its own dofs'
     // products through real entries.
     for (std::size_t k = 0; k < blocks.values().size(); k += 4)
@@ -269,6 +275,18 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
   EXPECT_EQ(badNode, 0);
   SparseMatrix rectangular(6, 9);
   EXPECT_THROW(blocks.assign(rectangular), Error);
+  // Two nodes coupled only to each other: no diagonal blocks, read as zero.
+  std::vector<Eigen::Triplet<double, int>> offDiagonal;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      offDiagonal.emplace_back(a, 3 + b, 1.0 + a + 3 * b);
+      offDiagonal.emplace_back(3 + b, a, 1.0 + a + 3 * b);
+    }
+  SparseMatrix coupled(6, 6);
+  coupled.setFromTriplets(offDiagonal.begin(), offDiagonal.end());
+  blocks.assign(coupled);
+  EXPECT_EQ(blocks.diagonalBlock(0), Eigen::Matrix3d::Zero());
+  EXPECT_EQ(blocks.diagonalBlock(1), Eigen::Matrix3d::Zero());
 }
 
 // The V-cycle is a symmetric operator (forward sweeps before, the exact

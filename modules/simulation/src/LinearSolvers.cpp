@@ -221,11 +221,18 @@ void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
   }
 }
 
-// Inverse 3x3 diagonal blocks (identity where a block is singular).
-// (Inverted in double, stored in Scalar.)
-template <typename Scalar>
-void invertDiagonalBlocks(const SparseMatrix& A,
-                          std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverse) {
+Eigen::Matrix3d diagonalBlock(const FloatNodeBlockMatrix& A, Index node) {
+  return A.diagonalBlock(node).cast<double>();
+}
+
+Eigen::Matrix3d diagonalBlock(const NodeBlockMatrix& A, Index node) {
+  return A.diagonalBlock(node);
+}
+
+// Inverse 3x3 diagonal blocks (identity where a block is singular) of a
+// SparseMatrix or a block copy. (Inverted in double, stored in Scalar.)
+template <typename Matrix, typename Scalar>
+void invertDiagonalBlocks(const Matrix& A, std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverse) {
   const Index nodes = A.rows() / 3;
   inverse.resize(static_cast<std::size_t>(nodes));
   tbb::parallel_for(Index(0), nodes, [&](Index v) {
@@ -256,10 +263,13 @@ struct Cycle {
     x.resize(levels);
     r.resize(levels);
   }
-  // After level l's matrix changed.
+  // After level l's matrix changed. (The diagonal blocks are read from
+  // the copy: on the 109k-element level 1.7-1.8 ms against 2.6-3.5 ms from
+  // A's rows. In float the inverse is that of the rounded blocks, the ones
+  // the sweeps use.)
   void prepare(const SparseMatrix& A, std::size_t l) {
-    invertDiagonalBlocks(A, inverseDiagonals[l]);
     blocks[l].assign(A);
+    invertDiagonalBlocks(blocks[l], inverseDiagonals[l]);
   }
 };
 

@@ -3,6 +3,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -62,6 +63,20 @@ void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
       }
     }
   });
+}
+
+template <typename Scalar>
+Eigen::Matrix<Scalar, 3, 3> BasicNodeBlockMatrix<Scalar>::diagonalBlock(Index v) const {
+  const auto node = static_cast<std::size_t>(v);
+  const auto begin = columns_.begin() + blockStarts_[node];
+  const auto end = columns_.begin() + blockStarts_[node + 1];
+  const auto found = std::lower_bound(begin, end, static_cast<int>(3 * v));
+  Eigen::Matrix<Scalar, 3, 3> block = Eigen::Matrix<Scalar, 3, 3>::Zero();
+  if (found == end || *found != 3 * v) return block;
+  const Scalar* entries = values_.data() + 12 * (found - columns_.begin());
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a) block(a, c) = entries[4 * c + a];
+  return block;
 }
 
 template class BasicNodeBlockMatrix<double>;

@@ -50,6 +50,12 @@ class BasicNodeBlockMatrix {
   const std::vector<int>& columns() const { return columns_; }
   const std::vector<Scalar>& values() const { return values_; }
 
+  // Node v's diagonal block (zero where the pattern has none): its row's
+  // blocks are contiguous, so this reads one short column list and one
+  // block, where the sparse matrix needs a search in one row and entries
+  // from three.
+  Eigen::Matrix<Scalar, 3, 3> diagonalBlock(Index v) const;
+
  private:
   std::vector<int> blockStarts_{0};
   std::vector<int> columns_;
