@@ -221,12 +221,9 @@ void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
   }
 }
 
-Eigen::Matrix3d diagonalBlock(const FloatNodeBlockMatrix& A, Index node) {
-  return A.diagonalBlock(node).cast<double>();
-}
-
-Eigen::Matrix3d diagonalBlock(const NodeBlockMatrix& A, Index node) {
-  return A.diagonalBlock(node);
+template <typename Scalar>
+Eigen::Matrix3d diagonalBlock(const BasicNodeBlockMatrix<Scalar>& A, Index node) {
+  return A.diagonalBlock(node).template cast<double>();
 }
 
 // Inverse 3x3 diagonal blocks (identity where a block is singular) of a
