@@ -26,7 +26,7 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface;
   int steps = 120, level = -1, every = 1;
-  std::string scenario = "wobble", solver = "multigrid", coarseOperators = "galerkin";
+  std::string scenario = "wobble", solver = "auto", coarseOperators = "galerkin";
   SimulationOptions options;
   bool quiet = false;
 };
@@ -34,7 +34,7 @@ struct SimulateArgs {
 void run(SimulateArgs& a) {
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);
-  a.options.solver = a.solver == "cg" ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+  a.options.solver = solverKindFromString(a.solver);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
   const SimulationOptions options =
@@ -75,13 +75,14 @@ void run(SimulateArgs& a) {
   Progress progress(a.quiet);
   writeFrame();
   double stepSeconds = 0;
-  long iterations = 0;
+  long iterations = 0, multigridSteps = 0;
   for (int i = 0; i < a.steps; ++i) {
     scenario->beforeStep(sim, sim.state().time);
     const auto start = std::chrono::steady_clock::now();
     const StepStats stats = sim.step();
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     iterations += stats.iterations;
+    multigridSteps += stats.solver == SolverKind::Multigrid;
     if ((i + 1) % a.every == 0) writeFrame();
     progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
   }
@@ -90,11 +91,15 @@ void run(SimulateArgs& a) {
       "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s\n",
       a.steps, options.timeStep, level, static_cast<long long>(sim.restMesh().elementCount()),
       scenario->name(), toString(options.solver),
-      options.solver == SolverKind::Multigrid ? ", " : "",
-      options.solver == SolverKind::Multigrid ? toString(options.coarseOperators) : "");
+      options.solver != SolverKind::ConjugateGradient ? ", " : "",
+      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "");
   std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
               a.steps / std::max(stepSeconds, 1e-12),
               static_cast<double>(iterations) / std::max(a.steps, 1));
+  if (options.solver == SolverKind::Automatic)
+    std::printf(
+        "  auto: multigrid solved %ld of %d steps, cg the rest; faster in the last round: %s\n",
+        multigridSteps, a.steps, toString(sim.solverChoice()->preferred()));
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
   std::printf("wrote %s (%lld frames)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()));
@@ -122,9 +127,11 @@ void addSimulateCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"wobble", "drop", "twist", "sag"}));
   cmd->add_option("--level", a->level, "simulated level, 0 = coarsest (default: finest)");
-  cmd->add_option("--solver", a->solver, "cg (block-Jacobi CG) or multigrid (CG with a V-cycle)")
+  cmd->add_option("--solver", a->solver,
+                  "cg (block-Jacobi CG), multigrid (CG with a V-cycle) or auto (whichever of "
+                  "the two is faster here, timed every 120 steps)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"cg", "multigrid"}));
+      ->check(CLI::IsMember({"auto", "cg", "multigrid"}));
   cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
       ->capture_default_str();
   cmd->add_option("--guess-solutions", a->options.guessSolutions,

@@ -298,7 +298,7 @@ QWidget* MainWindow::buildSimulationDock() {
   scenario_ = combo("scenario", {});
   for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
   scenario_->setCurrentText("wobble");
-  solver_ = combo("solver", {"cg", "multigrid"});
+  solver_ = combo("solver", {"auto", "cg", "multigrid"});
   timeStep_ = new QDoubleSpinBox;
   timeStep_->setObjectName("timeStep");
   timeStep_->setDecimals(4);
@@ -491,8 +491,7 @@ void MainWindow::resetSimulation() {
   options.timeStep = timeStep_->value();
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
-  options.solver =
-      solver_->currentText() == "multigrid" ? SolverKind::Multigrid : SolverKind::ConjugateGradient;
+  options.solver = solverKindFromString(solver_->currentText().toStdString());
   try {
     runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, scene_->level(), options,
                                                  scenario_->currentText().toStdString());

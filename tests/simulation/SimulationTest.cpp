@@ -192,23 +192,28 @@ TEST(Simulation, WobbleMovesTheTopBackAndForth) {
   }
 }
 
-// The three solvers follow the same trajectory when each solve is tight:
-// the multigrid variants differ only in their preconditioner. Drop, on the
+// The solvers follow the same trajectory when each solve is tight: the
+// multigrid variants differ only in their preconditioner, and the automatic
+// one switches between CG and multigrid (two untimed steps and its first
+// round alternate them, four steps each at the default coarse reuse of 4).
+// Drop, on the
 // finest level with a floor, exercises the contact springs that the
 // rediscretized coarse levels take over lumped.
-TEST(Simulation, CgAndBothMultigridVariantsFollowTheSameTrajectory) {
+TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
   const Dataset d = loadDataset(kData + "bunny.json");
   for (const char* name : {"wobble", "drop"}) {
     std::vector<Points3> ends;
     std::vector<int> contacts;
-    for (int variant = 0; variant < 3; ++variant) {
+    for (int variant = 0; variant < 4; ++variant) {
       SimulationOptions options =
           scenarioOptions(name, SimulationOptions{}, extractLevel(d.mesh, d.mesh.finestLevel()));
       options.tolerance = 1e-10;
-      options.solver = variant == 0 ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+      options.solver = variant == 0   ? SolverKind::ConjugateGradient
+                       : variant == 3 ? SolverKind::Automatic
+                                      : SolverKind::Multigrid;
       options.coarseOperators =
-          variant == 1 ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
-      options.coarseReuse = variant == 2 ? 3 : 1;
+          variant == 2 ? CoarseOperators::Rediscretized : CoarseOperators::Galerkin;
+      if (variant < 3) options.coarseReuse = variant == 2 ? 3 : 1;
       Simulation sim(d.mesh, -1, options);
       auto scenario = makeScenario(name);
       scenario->setUp(sim);
@@ -222,13 +227,19 @@ TEST(Simulation, CgAndBothMultigridVariantsFollowTheSameTrajectory) {
         scenario->beforeStep(sim, sim.state().time);
         const StepStats stats = sim.step();
         EXPECT_LE(stats.residual, 1e-10) << name << " variant " << variant;
+        if (variant == 3) {
+          const SolverKind expected = i >= 10      ? sim.solverChoice()->preferred()
+                                      : i % 2 == 0 ? SolverKind::ConjugateGradient
+                                                   : SolverKind::Multigrid;
+          EXPECT_EQ(stats.solver, expected) << name << " step " << i;
+        }
         touching = std::max(touching, stats.contacts);
       }
       ends.push_back(sim.state().positions);
       contacts.push_back(touching);
     }
     const double size = (ends[0].colwise().maxCoeff() - ends[0].colwise().minCoeff()).norm();
-    for (int variant = 1; variant < 3; ++variant)
+    for (int variant = 1; variant < 4; ++variant)
       EXPECT_LT((ends[variant] - ends[0]).cwiseAbs().maxCoeff(), 1e-6 * size)
           << name << " variant " << variant;
     if (std::string(name) == "drop") {

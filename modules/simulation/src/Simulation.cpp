@@ -13,10 +13,6 @@
 
 namespace tetskin {
 
-const char* toString(SolverKind kind) {
-  return kind == SolverKind::ConjugateGradient ? "cg" : "multigrid";
-}
-
 const char* toString(CoarseOperators kind) {
   return kind == CoarseOperators::Galerkin ? "galerkin" : "rediscretized";
 }
@@ -38,6 +34,11 @@ struct Simulation::CoarseLevel {
 };
 
 namespace {
+
+// The automatic solver's rounds: trial steps of each solver (at least a
+// full coarse-reuse period of multigrid steps, so its trials carry their
+// share of coarse rebuilds), and steps between rounds (2 s at 60 steps/s).
+constexpr int kMinTrialSteps = 3, kMaxTrialSteps = 8, kStepsBetweenTrials = 120;
 
 // The mesh's nodes breadth first along its edges (internal -> mesh id).
 std::vector<int> meshNodeOrder(const TetMesh& mesh) {
@@ -127,7 +128,11 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   system_ = fem_.pattern();
   dampedMass_ = (1 + options.timeStep * options.material.massDamping) * fem_.lumpedMass();
   dirichlet_ = std::make_unique<DirichletRows>();
-  if (options.solver == SolverKind::Multigrid) {
+  if (options.solver != SolverKind::Multigrid) blockJacobi_ = std::make_unique<BlockJacobi>();
+  if (options.solver == SolverKind::Automatic)
+    choice_.emplace(std::clamp(options.coarseReuse, kMinTrialSteps, kMaxTrialSteps),
+                    kStepsBetweenTrials);
+  if (options.solver != SolverKind::ConjugateGradient) {
     // This level, then the coarser ones, each renumbered breadth first.
     std::vector<TetMesh> meshes{internal_};
     for (int coarse = level_ - 1; coarse >= 0; --coarse) {
@@ -144,13 +149,9 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
         coarseSystems_.push_back(coarseLevel.fem.pattern());
       }
     }
-    auto mg = std::make_unique<MultigridPreconditioner>(prolongations_);
-    mg->setCoarseReuse(options.coarseReuse);
-    mg->setSinglePrecision(options.singlePrecisionCycle);
-    multigrid_ = mg.get();
-    preconditioner_ = std::move(mg);
-  } else {
-    preconditioner_ = std::make_unique<BlockJacobi>();
+    multigrid_ = std::make_unique<MultigridPreconditioner>(prolongations_);
+    multigrid_->setCoarseReuse(options.coarseReuse);
+    multigrid_->setSinglePrecision(options.singlePrecisionCycle);
   }
   // Automatic floor stiffness: about a hundred times the stiffest element
   // diagonal, so penetration stays small without ruining the conditioning.
@@ -329,24 +330,37 @@ StepStats Simulation::step() {
   StepStats stats;
   const double h = options_.timeStep;
   buildSystem(h, stats);
+  stats.solver = choice_ ? choice_->next() : options_.solver;
+  const bool multigrid = stats.solver == SolverKind::Multigrid;
   auto start = std::chrono::steady_clock::now();
-  if (coarse_.empty()) {
-    preconditioner_->setup(system_);
+  if (!multigrid) {
+    blockJacobi_->setup(system_);
   } else {
-    // Rediscretized multigrid: new coarse systems when the multigrid takes
-    // them (every coarseReuse steps).
-    if (multigrid_->coarseDue()) buildCoarseSystems(h);
-    multigrid_->setup(system_, coarseSystems_);
+    // Coarse operators left from before a spell of CG steps are stale:
+    // rebuild them.
+    if (choice_ && steps_ - lastMultigridStep_ > options_.coarseReuse) multigrid_->renewCoarse();
+    lastMultigridStep_ = steps_;
+    if (coarse_.empty()) {
+      multigrid_->setup(system_);
+    } else {
+      // Rediscretized multigrid: new coarse systems when the multigrid takes
+      // them (every coarseReuse steps).
+      if (multigrid_->coarseDue()) buildCoarseSystems(h);
+      multigrid_->setup(system_, coarseSystems_);
+    }
   }
   blockSystem_.assign(system_);
   stats.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   start = std::chrono::steady_clock::now();
   guess_.guess(blockSystem_, rhs_, dv_);  // (dv_ holds the last solution: the plain warm start)
-  const SolveStats solve = conjugateGradient(blockSystem_, rhs_, dv_, *preconditioner_,
+  const Preconditioner& preconditioner =
+      multigrid ? static_cast<const Preconditioner&>(*multigrid_) : *blockJacobi_;
+  const SolveStats solve = conjugateGradient(blockSystem_, rhs_, dv_, preconditioner,
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (choice_) choice_->record(stats.setupSeconds + stats.solveSeconds);
   stats.iterations = solve.iterations;
   stats.residual = solve.relativeResidual;
   if (!dv_.allFinite()) throw Error("the simulation diverged (non-finite velocity update)");

@@ -95,6 +95,9 @@ class MultigridPreconditioner : public Preconditioner {
   // Whether the next setup takes new coarse operators (see setCoarseReuse):
   // a caller with coarse operators of its own rebuilds them then.
   bool coarseDue() const { return setupsSinceCoarse_ == 0; }
+  // The next setup takes new coarse operators, and the reuse count starts
+  // over from it (e.g. after steps solved without this preconditioner).
+  void renewCoarse() { setupsSinceCoarse_ = 0; }
   // Run the cycle in single precision (the default) or double. The cycle
   // only preconditions: CG's iterates, products and residuals stay double,
   // so the solve reaches its tolerance either way.

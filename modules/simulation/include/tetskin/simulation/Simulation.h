@@ -3,8 +3,9 @@
 // The control mesh as an elastic body: corotated FEM, implicit (backward)
 // Euler steps (M + h C + h^2 K) dv = h (f - C v - h K v) with Rayleigh damping
 // C = alpha M + beta K, Dirichlet and kinematic nodes, gravity, external point
-// forces and a floor with penalty contact. Solved by block-Jacobi CG or by CG
-// with a multigrid V-cycle over the dataset's coarser levels.
+// forces and a floor with penalty contact. Solved by block-Jacobi CG, by CG
+// with a multigrid V-cycle over the dataset's coarser levels, or by whichever
+// of the two is faster on the running simulation (SolverChoice.h).
 //
 // Threads: step() may run on one thread while others call state(),
 // setExternalForces() or energies(); those are guarded by a mutex. Two threads
@@ -20,13 +21,11 @@
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/ProjectedInitialGuess.h"
+#include "tetskin/simulation/SolverChoice.h"
 
 namespace tetskin {
 
 class DirichletRows;
-
-enum class SolverKind { ConjugateGradient, Multigrid };
-const char* toString(SolverKind kind);
 
 // Multigrid coarse operators: Galerkin products P^T A P of the system, or the
 // coarse meshes' own corotated FEM (rediscretized) at positions interpolated
@@ -48,14 +47,17 @@ struct SimulationOptions {
   // (ProjectedInitialGuess.h); 0: from the last solution as it is.
   int guessSolutions = 6;
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
-  // step); the solve stays exact to `tolerance` either way.
-  int coarseReuse = 1;
+  // step); the solve stays exact to `tolerance` either way. Rebuilt every
+  // fourth step they cost 0-0.8 more iterations per step than rebuilt
+  // every step, and the steps were 1.3-1.9x as fast (README, Simulation).
+  int coarseReuse = 4;
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = 2000;
 };
 
 struct StepStats {
+  SolverKind solver = SolverKind::ConjugateGradient;  // the one that solved this step
   int iterations = 0;
   double residual = 0;
   int contacts = 0;
@@ -88,6 +90,9 @@ class Simulation {
   int level() const { return level_; }
   const TetMesh& restMesh() const { return rest_; }
   const SimulationOptions& options() const { return options_; }
+  // SolverKind::Automatic: the trials so far and the faster solver of the
+  // last round (nullptr for a fixed solver).
+  const SolverChoice* solverChoice() const { return choice_ ? &*choice_ : nullptr; }
   // Lumped mass per node.
   Eigen::VectorXd nodeMasses() const;
 
@@ -122,9 +127,11 @@ class Simulation {
   std::vector<int> rank_;   // level node -> internal node
   TetMesh internal_;        // rest_ renumbered
   SimulationOptions options_;
-  CorotatedFem fem_;  // on internal_
-  std::unique_ptr<Preconditioner> preconditioner_;
-  MultigridPreconditioner* multigrid_ = nullptr;
+  CorotatedFem fem_;                                    // on internal_
+  std::unique_ptr<BlockJacobi> blockJacobi_;            // cg, auto
+  std::unique_ptr<MultigridPreconditioner> multigrid_;  // multigrid, auto
+  std::optional<SolverChoice> choice_;                  // auto
+  Index lastMultigridStep_ = -1;                        // steps_ of multigrid's last step
 
   mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_
   Eigen::VectorXd x_, v_, external_;

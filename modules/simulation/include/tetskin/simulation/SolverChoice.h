@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The automatic solver: which of block-Jacobi CG and multigrid CG solves a
+// simulation's steps faster, found by timing both on the running simulation.
+//
+// Neither wins everywhere: a multigrid iteration costs several CG iterations
+// and its coarse operators cost a setup, so CG is faster on small or soft
+// bodies (fewer CG iterations) and multigrid on large or stiff ones; where
+// the two cross depends on the mesh, the material, the motion and the
+// machine (at the default material on our 2-core machine, CG was about twice
+// as fast at 12.7k elements and multigrid about 1.4x as fast at 109k). So the
+// two are compared where it matters: a round of `trialSteps` steps of each,
+// alternated (the state drifts alike for both), then `period` steps with the
+// one whose trial steps took less time in all, then the next round, so a
+// change of regime (a body coming to rest, a stiffer contact) is followed.
+// The very first two steps (CG, then multigrid) are not timed: they carry
+// one-time costs (the multigrid's Galerkin streams, the first allocations)
+// that would count against a solver for good.
+// Both solve every step to the same tolerance: the choice moves the
+// trajectory by no more than the solves' tolerance does.
+
+#include <string>
+
+namespace tetskin {
+
+enum class SolverKind { ConjugateGradient, Multigrid, Automatic };
+const char* toString(SolverKind kind);
+// The kind named by toString(); throws Error for any other name.
+SolverKind solverKindFromString(const std::string& name);
+
+class SolverChoice {
+ public:
+  SolverChoice(int trialSteps, int period);
+  // The solver of the coming step: ConjugateGradient or Multigrid.
+  SolverKind next() const;
+  // The time the step of next() took (its preconditioner's setup and solve).
+  void record(double seconds);
+  // The faster one in the last round (ConjugateGradient before the first).
+  SolverKind preferred() const { return preferred_; }
+  // Rounds of trials completed.
+  int rounds() const { return rounds_; }
+
+ private:
+  int trialSteps_, period_;
+  // Step within the round: trials first, then the period; -2 and -1 are the
+  // untimed first steps.
+  int position_ = -2;
+  double trialSeconds_[2] = {0, 0};  // CG, multigrid
+  SolverKind preferred_ = SolverKind::ConjugateGradient;
+  int rounds_ = 0;
+};
+
+}  // namespace tetskin

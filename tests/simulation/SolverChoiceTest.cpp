@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/simulation/SolverChoice.h"
+
+namespace tetskin {
+namespace {
+
+using Kind = SolverKind;
+
+// Runs `steps` steps, each taking the time `seconds(kind, step)`, and
+// returns the solver of every step.
+template <typename Seconds>
+std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds) {
+  std::vector<Kind> used;
+  for (int i = 0; i < steps; ++i) {
+    used.push_back(choice.next());
+    choice.record(seconds(used.back(), i));
+  }
+  return used;
+}
+
+TEST(SolverChoice, AlternatesTheTrialsThenKeepsTheFasterUntilTheNextRound) {
+  SolverChoice choice(3, 5);
+  const std::vector<Kind> used = run(choice, 2 + 2 * (6 + 5), [](Kind kind, int) {
+    return kind == Kind::Multigrid ? 0.010 : 0.025;
+  });
+  const Kind C = Kind::ConjugateGradient, M = Kind::Multigrid;
+  const std::vector<Kind> expected{C, M,                              // untimed
+                                   C, M, C, M, C, M, M, M, M, M, M,   // round 1
+                                   C, M, C, M, C, M, M, M, M, M, M};  // round 2
+  EXPECT_EQ(used, expected);
+  EXPECT_EQ(choice.rounds(), 2);
+  EXPECT_EQ(choice.preferred(), M);
+}
+
+TEST(SolverChoice, FollowsAChangeOfRegime) {
+  // CG is faster for the first 22 steps, multigrid after.
+  SolverChoice choice(2, 6);
+  const std::vector<Kind> used = run(choice, 32, [](Kind kind, int step) {
+    const bool cgFaster = step < 22;
+    return (kind == Kind::ConjugateGradient) == cgFaster ? 0.01 : 0.02;
+  });
+  // Two untimed steps, then rounds of 4 trials + 6 steps: steps 6-11 and
+  // 16-21 with CG, 26-31 (after the trials of 22-25) with multigrid.
+  for (int i : {6, 11, 16, 21}) EXPECT_EQ(used[i], Kind::ConjugateGradient) << i;
+  for (int i : {26, 31}) EXPECT_EQ(used[i], Kind::Multigrid) << i;
+}
+
+TEST(SolverChoice, ComparesTheTrialsTotalsNotSingleSteps) {
+  // Multigrid's trials include one slow step (a coarse rebuild) in three:
+  // 0.03 + 0.005 + 0.005 = 0.04 against CG's 3 x 0.012 = 0.036.
+  SolverChoice choice(3, 10);
+  int multigridStep = 0;
+  run(choice, 2 + 6, [&](Kind kind, int step) {
+    if (step < 2) return 1.0;  // untimed
+    if (kind == Kind::ConjugateGradient) return 0.012;
+    return multigridStep++ == 0 ? 0.03 : 0.005;
+  });
+  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+}
+
+TEST(SolverChoice, AnUntimedStepCountsAsSlow) {
+  SolverChoice choice(1, 4);
+  run(choice, 2 + 2, [](Kind kind, int) {
+    return kind == Kind::Multigrid ? std::numeric_limits<double>::quiet_NaN() : 1.0;
+  });
+  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+}
+
+TEST(SolverChoice, TheFirstTwoStepsAreNotTimed) {
+  // A one-time cost in the first multigrid step (its streams) must not
+  // decide the first round.
+  SolverChoice choice(2, 4);
+  run(choice, 2 + 4, [](Kind kind, int step) {
+    if (step == 1) return 100.0;
+    return kind == Kind::Multigrid ? 0.01 : 0.02;
+  });
+  EXPECT_EQ(choice.rounds(), 1);
+  EXPECT_EQ(choice.preferred(), Kind::Multigrid);
+}
+
+TEST(SolverChoice, RefusesEmptyTrials) {
+  EXPECT_THROW(SolverChoice(0, 10), Error);
+  EXPECT_THROW(SolverChoice(2, -1), Error);
+}
+
+TEST(SolverChoice, SolverNamesRoundTrip) {
+  for (Kind kind : {Kind::ConjugateGradient, Kind::Multigrid, Kind::Automatic})
+    EXPECT_EQ(solverKindFromString(toString(kind)), kind);
+  EXPECT_STREQ(toString(Kind::Automatic), "auto");
+  EXPECT_THROW(solverKindFromString("gmres"), Error);
+}
+
+}  // namespace
+}  // namespace tetskin
