@@ -7,6 +7,7 @@
 
 #include "AnimatedScene.h"
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 
@@ -117,7 +118,7 @@ void addBenchCommand(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--frames", a->frames, "frames per measurement")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str();
   cmd->add_flag("--json", a->json, "machine-readable results");
   cmd->callback([a] { run(*a); });

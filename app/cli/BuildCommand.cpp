@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "Progress.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/ModelBuilder.h"
@@ -96,13 +97,13 @@ void addBuildCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--levels", a->options.levels, "number of output levels L")
       ->capture_default_str()
-      ->check(CLI::Range(1, 16));
+      ->check(wholeNumber(1, 16));
   cmd->add_option("--min-elements", a->options.minElements, "elements of the coarsest level")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--max-elements", a->options.maxElements, "elements of the finest level")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--mesher", a->mesher, "tetgen or netgen")
       ->capture_default_str()
       ->check(CLI::IsMember({"tetgen", "netgen"}));
@@ -115,10 +116,10 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_flag("--decimate", a->options.decimate,
                 "derive coarser input levels of detail from the finest surface");
   cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
   cmd->callback([a] { run(*a); });
 }

@@ -6,6 +6,7 @@
 
 #include "AnimatedScene.h"
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -136,7 +137,7 @@ void addRenderCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--frames", a->frames,
                   "simulate and draw N frames, report frames/s and a breakdown")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumber(0));
   cmd->add_option("--scenario", a->scenario, "scenario of the simulated frames")
       ->capture_default_str();
   cmd->callback([a] { run(*a); });

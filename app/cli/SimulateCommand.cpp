@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "Progress.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
@@ -114,15 +115,13 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("DATASET", a->dataset, "dataset (.json)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
       ->required();
-  cmd->add_option("--steps", a->steps, "time steps")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));
   cmd->add_option("--dt", a->options.timeStep, "time step in seconds")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   cmd->add_option("--every", a->every, "write every k-th step")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--scenario", a->scenario, "wobble, drop, twist or sag")
       ->capture_default_str()
       ->check(CLI::IsMember({"wobble", "drop", "twist", "sag"}));
@@ -133,16 +132,17 @@ void addSimulateCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "cg", "multigrid"}));
   cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(positiveNumber());
   cmd->add_option("--guess-solutions", a->options.guessSolutions,
                   "start each solve from the best combination of the last N solutions "
                   "(0: from the last one as it is)")
       ->capture_default_str()
-      ->check(CLI::Range(0, kMaxProductColumns));
+      ->check(wholeNumber(0, kMaxProductColumns));
   cmd->add_option("--coarse-reuse", a->options.coarseReuse,
                   "multigrid: rebuild the coarse operators every N steps (solves stay exact)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumber(1));
   cmd->add_option("--coarse-operators", a->coarseOperators,
                   "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
       ->capture_default_str()

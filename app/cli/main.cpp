@@ -2,9 +2,28 @@
 // tetskin: the command-line front end. Parses, wires modules, reports; no math.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "Commands.h"
 #include "tetskin/core/Error.h"
+
+namespace {
+
+// "tetskin" or "tetskin SUBCOMMAND", as far as the command line named one.
+std::string commandPath(const CLI::App& app) {
+  std::string path = app.get_name();
+  for (const CLI::App* sub : app.get_subcommands()) path += " " + sub->get_name();
+  return path;
+}
+
+std::string oneLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  return text;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -24,7 +43,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version arrive here too, with exit code 0: CLI11 prints them.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    // A usage error is bad input like any other: one line, status 1.
+    std::cerr << "error: " << oneLine(e.what()) << " (see " << commandPath(app) << " --help)\n";
+    return 1;
   } catch (const tetskin::Error& e) {
     std::cerr << "error: " << e.what() << '\n';
     return 1;

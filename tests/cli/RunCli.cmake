@@ -1,5 +1,6 @@
 # Runs one tetskin command line and checks its exit status and output.
 #   -DCOMMAND="exe|arg|..." (| separates the arguments) -DEXPECT_FAIL=ON|OFF -DSTDOUT_REGEX=... -DSTDERR_REGEX=...
+#   -DEXPECT_STATUS=N (the exact exit status of a failing run)
 #   -DMUST_NOT_EXIST=path (an output a failed run must not leave behind)
 string(REPLACE "|" ";" COMMAND "${COMMAND}")
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -8,6 +9,9 @@ if(EXPECT_FAIL AND rc EQUAL 0)
   message(FATAL_ERROR "expected a non-zero exit status")
 elseif(NOT EXPECT_FAIL AND NOT rc EQUAL 0)
   message(FATAL_ERROR "expected exit status 0")
+endif()
+if(DEFINED EXPECT_STATUS AND NOT rc EQUAL EXPECT_STATUS)
+  message(FATAL_ERROR "expected exit status ${EXPECT_STATUS}")
 endif()
 if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
   message(FATAL_ERROR "stdout does not match: ${STDOUT_REGEX}")

@@ -3,7 +3,12 @@
 
 #include <Eigen/Geometry>
 #include <atomic>
+#include <functional>
+#include <limits>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
@@ -344,6 +349,42 @@ TEST(Simulation, BadParametersAreErrors) {
   options.guessSolutions = -1;
   EXPECT_THROW(Simulation(oneLevel(block), 0, options), Error);
   EXPECT_THROW(makeScenario("spin"), Error);
+}
+
+// Each option out of its range, NaN and infinity included, is an error
+// that names it, and a valid set is not.
+TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {
+  const TetMesh block = test::tetGrid(1, 1, 1, {1, 1, 1});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::function<void(SimulationOptions&)>, std::string>> cases = {
+      {[&](auto& o) { o.timeStep = nan; }, "time step"},
+      {[&](auto& o) { o.timeStep = inf; }, "time step"},
+      {[&](auto& o) { o.timeStep = -0.01; }, "time step"},
+      {[&](auto& o) { o.tolerance = nan; }, "tolerance"},
+      {[&](auto& o) { o.tolerance = 0; }, "tolerance"},
+      {[&](auto& o) { o.tolerance = 1; }, "tolerance"},
+      {[&](auto& o) { o.maxIterations = 0; }, "iteration"},
+      {[&](auto& o) { o.coarseReuse = 0; }, "coarse-operator reuse"},
+      {[&](auto& o) { o.friction = 1.5; }, "friction"},
+      {[&](auto& o) { o.friction = nan; }, "friction"},
+      {[&](auto& o) { o.floorStiffness = -1; }, "floor stiffness"},
+      {[&](auto& o) { o.floorHeight = nan; }, "floor height"},
+      {[&](auto& o) { o.gravity.y() = nan; }, "gravity"},
+      {[&](auto& o) { o.material.youngsModulus = inf; }, "Young's modulus"},
+      {[&](auto& o) { o.material.massDamping = inf; }, "damping"},
+  };
+  EXPECT_NO_THROW(Simulation(oneLevel(block), 0, SimulationOptions{}));
+  for (const auto& [spoil, name] : cases) {
+    SimulationOptions options;
+    spoil(options);
+    try {
+      Simulation(oneLevel(block), 0, options);
+      ADD_FAILURE() << "no error for a bad " << name;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ void validateMaterial(const ElasticMaterial& m) {
     throw Error("Poisson's ratio must lie in [0, 0.5), got " + std::to_string(m.poissonRatio));
   if (!(m.density > 0) || !std::isfinite(m.density))
     throw Error("density must be positive, got " + std::to_string(m.density));
-  if (!(m.massDamping >= 0) || !(m.stiffnessDamping >= 0))
+  if (!(m.massDamping >= 0) || !(m.stiffnessDamping >= 0) || !std::isfinite(m.massDamping) ||
+      !std::isfinite(m.stiffnessDamping))
     throw Error("Rayleigh damping coefficients must be >= 0");
 }
 

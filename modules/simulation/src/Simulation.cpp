@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "DirichletRows.h"
 #include "NodeOrder.h"
@@ -39,6 +40,29 @@ namespace {
 // full coarse-reuse period of multigrid steps, so its trials carry their
 // share of coarse rebuilds), and steps between rounds (2 s at 60 steps/s).
 constexpr int kMinTrialSteps = 3, kMaxTrialSteps = 8, kStepsBetweenTrials = 120;
+
+// Throws Error naming the first option out of its range (NaN included);
+// the material is CorotatedFem's to check.
+void validateOptions(const SimulationOptions& o) {
+  const auto number = [](double value) { return std::to_string(value); };
+  if (!(o.timeStep > 0) || !std::isfinite(o.timeStep))
+    throw Error("the time step must be a positive number of seconds, got " + number(o.timeStep));
+  if (!o.gravity.allFinite()) throw Error("gravity must be finite");
+  if (o.floorHeight && !std::isfinite(*o.floorHeight))
+    throw Error("the floor height must be finite, got " + number(*o.floorHeight));
+  if (!(o.floorStiffness >= 0) || !std::isfinite(o.floorStiffness))
+    throw Error("the floor stiffness must be >= 0 (0: automatic), got " + number(o.floorStiffness));
+  if (!(o.friction >= 0 && o.friction <= 1))
+    throw Error("friction must lie in [0, 1], got " + number(o.friction));
+  if (!(o.tolerance > 0 && o.tolerance < 1))
+    throw Error("the solver tolerance (a relative residual) must lie in (0, 1), got " +
+                number(o.tolerance));
+  if (o.maxIterations < 1)
+    throw Error("the solver needs at least 1 iteration, got " + std::to_string(o.maxIterations));
+  if (o.coarseReuse < 1)
+    throw Error("the coarse-operator reuse must be at least 1 step, got " +
+                std::to_string(o.coarseReuse));
+}
 
 // The mesh's nodes breadth first along its edges (internal -> mesh id).
 std::vector<int> meshNodeOrder(const TetMesh& mesh) {
@@ -117,8 +141,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       options_(options),
       fem_(internal_, options.material),
       guess_(options.guessSolutions) {
-  if (!(options.timeStep > 0)) throw Error("the time step must be positive");
-  if (options.coarseReuse < 1) throw Error("the coarse-operator reuse must be at least 1 step");
+  validateOptions(options);
   x_ = fem_.restPositions();
   v_.setZero(fem_.dofCount());
   external_.setZero(fem_.dofCount());

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Checks on numeric option values with messages a user can act on. CLI11's
+// own PositiveNumber and Range name the range 0 to 1.8e308, accept "nan"
+// and "inf", and let "1e3" through to an integer conversion that then
+// reports a count of arguments.
+
+#include <CLI/CLI.hpp>
+#include <limits>
+
+namespace tetskin::cli {
+
+// A whole number in [min, max] (digits with an optional sign).
+CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<int>::max());
+
+// A finite number > 0.
+CLI::Validator positiveNumber();
+
+}  // namespace tetskin::cli
