@@ -108,7 +108,7 @@ void addBuildCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"tetgen", "netgen"}));
   cmd->add_option("--qualities", a->qualities,
-                  "TetGen radius-edge bounds, each in (1.0, 2.0]; closer to 1 is finer")
+                  "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--lod-series", a->lodSeries, "read NAME_0.obj .. NAME_{K-1}.obj");

@@ -80,6 +80,7 @@ TEST(Dataset, NodeElePairLoadsAsOneLevel) {
   EXPECT_EQ(d.mesh.elements.row(1), Eigen::RowVector4i(4, 1, 3, 2));
   EXPECT_EQ(resolveLevel(d.mesh, -1), 0);
   EXPECT_THROW(resolveLevel(d.mesh, 1), Error);
+  EXPECT_THROW(resolveLevel(d.mesh, -2), Error);  // only -1 stands for the finest
 }
 
 }  // namespace

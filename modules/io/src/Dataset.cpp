@@ -67,7 +67,7 @@ void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset) {
 }
 
 int resolveLevel(const MultiLevelTetMesh& mesh, int level) {
-  const int resolved = level < 0 ? mesh.finestLevel() : level;
+  const int resolved = level == -1 ? mesh.finestLevel() : level;
   if (resolved < 0 || resolved >= mesh.levelCount())
     throw Error("level " + std::to_string(level) + " does not exist: the dataset has levels 0.." +
                 std::to_string(mesh.levelCount() - 1));

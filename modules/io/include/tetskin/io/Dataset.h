@@ -27,7 +27,8 @@ Dataset loadDataset(const std::filesystem::path& path);
 // and file names from the mesh.
 void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset);
 
-// Resolves a level argument: -1 means the finest.
+// Resolves a level argument: -1 means the finest; any other level outside
+// the dataset (negative included) is an Error.
 int resolveLevel(const MultiLevelTetMesh& mesh, int level);
 
 }  // namespace tetskin
