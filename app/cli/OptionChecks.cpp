@@ -4,8 +4,25 @@
 #include <charconv>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace tetskin::cli {
+
+namespace {
+
+// Whether all of `text` reads as one number, into `value`. A leading '+'
+// is allowed on floating-point numbers only: CLI11's own conversion reads
+// "+0.5" as a double but fails on "+5" as an integer.
+template <typename Number>
+bool parsesAll(const std::string& text, Number& value) {
+  const bool plus = std::is_floating_point_v<Number> && text.size() > 1 && text[0] == '+';
+  const char* first = text.data() + (plus ? 1 : 0);
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(first, end, value);
+  return !text.empty() && error == std::errc{} && stop == end;
+}
+
+}  // namespace
 
 CLI::Validator wholeNumber(long long min, long long max) {
   const std::string range = max == std::numeric_limits<int>::max()
@@ -14,10 +31,7 @@ CLI::Validator wholeNumber(long long min, long long max) {
   return CLI::Validator(
       [min, max, range](std::string& text) -> std::string {
         long long value = 0;
-        const char* end = text.data() + text.size();
-        const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (text.empty() || error != std::errc{} || stop != end)
-          return "'" + text + "' is not a whole number";
+        if (!parsesAll(text, value)) return "'" + text + "' is not a whole number";
         if (value < min || value > max) return text + " is not " + range;
         return {};
       },
@@ -33,9 +47,7 @@ CLI::Validator positiveNumber() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         double value = 0;
-        const char* end = text.data() + text.size();
-        const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (text.empty() || error != std::errc{} || stop != end || !std::isfinite(value))
+        if (!parsesAll(text, value) || !std::isfinite(value))
           return "'" + text + "' is not a finite number";
         if (!(value > 0)) return text + " is not > 0";
         return {};
