@@ -8,7 +8,7 @@
 // bodies (fewer CG iterations) and multigrid on large or stiff ones; where
 // the two cross depends on the mesh, the material, the motion and the
 // machine (at the default material on our 2-core machine, CG was about twice
-// as fast at 12.7k elements; at 109k multigrid was 1.4-1.6x as fast over the
+// as fast at 12.7k elements; at 109k multigrid was 1.3-1.6x as fast over the
 // benchmark's steps and CG slightly faster over the first 60-180). So the
 // two are compared where it matters: a round of `trialSteps` steps of each,
 // alternated (the state drifts alike for both), then `period` steps with the
