@@ -25,9 +25,9 @@ bool parsesAll(const std::string& text, Number& value) {
 }  // namespace
 
 CLI::Validator wholeNumber(long long min, long long max) {
-  const std::string range = max == std::numeric_limits<int>::max()
-                                ? ">= " + std::to_string(min)
-                                : "in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  const bool bounded = max != std::numeric_limits<int>::max();
+  const std::string interval = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  const std::string range = bounded ? "in " + interval : ">= " + std::to_string(min);
   return CLI::Validator(
       [min, max, range](std::string& text) -> std::string {
         long long value = 0;
@@ -36,11 +36,10 @@ CLI::Validator wholeNumber(long long min, long long max) {
         return {};
       },
       // Shown in --help after the type, as CLI11's own checks are.
-      max != std::numeric_limits<int>::max()
-          ? "[" + std::to_string(min) + ", " + std::to_string(max) + "]"
+      bounded    ? interval
       : min == 0 ? "NONNEGATIVE"
       : min == 1 ? "POSITIVE"
-                 : ">= " + std::to_string(min));
+                 : range);
 }
 
 CLI::Validator positiveNumber() {
