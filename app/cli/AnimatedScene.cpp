@@ -34,12 +34,20 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
   const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                             box.max.y(), box.min.z(), box.max.z()};
   view_->setCamera(o.camera, bounds);
+  makeScenario(o.scenario);  // an unknown scenario fails now, before any frames
+  scenarioName_ = o.scenario;
+  datasetName_ = o.datasetName;
+  view_->render();
+}
+
+void AnimatedScene::startSimulation() {
+  const TetMesh rest = extractLevel(dataset_.mesh, level_);
   simulation_ = std::make_unique<Simulation>(
-      dataset.mesh, level_, scenarioOptions(o.scenario, SimulationOptions{}, rest));
-  scenario_ = makeScenario(o.scenario);
+      dataset_.mesh, level_, scenarioOptions(scenarioName_, SimulationOptions{}, rest),
+      datasetName_);
+  scenario_ = makeScenario(scenarioName_);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);
-  view_->render();
 }
 
 AnimatedScene::~AnimatedScene() = default;
@@ -55,6 +63,7 @@ int AnimatedScene::furShells() const {
 FrameStats AnimatedScene::run(int frames) {
   FrameStats s;
   s.frames = frames;
+  if (frames > 0 && !simulation_) startSimulation();
   const LevelRange& range = dataset_.mesh.levels[static_cast<std::size_t>(level_)];
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) {

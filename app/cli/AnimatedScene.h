@@ -23,10 +23,11 @@ struct SceneOptions {
   std::string scenario = "wobble";
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
-  std::string control = "none";   // none, surface, wireframe, shrink
-  std::filesystem::path texture;  // PNG applied through the surface's texture coordinates
-                                  // (on fur paths: the fur's colour and mask)
-  FurParameters fur;              // for the fur paths
+  std::string control = "none";         // none, surface, wireframe, shrink
+  std::filesystem::path texture;        // PNG applied through the surface's texture coordinates
+                                        // (on fur paths: the fur's colour and mask)
+  FurParameters fur;                    // for the fur paths
+  std::string datasetName = "dataset";  // names the dataset in errors (e.g. its path)
 };
 
 struct FrameStats {
@@ -41,7 +42,9 @@ class AnimatedScene {
   AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface, const SceneOptions& options);
   ~AnimatedScene();
   // Simulates, deforms and draws `frames` frames (the first draw, which
-  // compiles shaders, happens in the constructor and is not counted).
+  // compiles shaders, happens in the constructor and is not counted). The
+  // simulation is set up on the first frames run: a still image needs none
+  // (nor a level the simulation would refuse).
   FrameStats run(int frames);
   OffscreenView& view() { return *view_; }
   int level() const { return level_; }
@@ -55,8 +58,10 @@ class AnimatedScene {
   std::unique_ptr<DeformableSurface> surface_;
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
+  std::string scenarioName_, datasetName_;
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<Scenario> scenario_;
+  void startSimulation();
   Points3 nodes_;
 };
 

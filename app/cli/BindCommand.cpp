@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/Error.h"
@@ -56,7 +57,9 @@ void addBindCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("SURFACE", a->surface, "surface to bind")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", a->output, "binding file (.vtp)")->required();
+  cmd->add_option("-o,--output", a->output, "binding file (.vtp)")
+      ->required()
+      ->check(fileEnding(".vtp"));
   cmd->add_option("--level", a->level, "level, 0 = coarsest (default: finest)");
   cmd->add_option("--method", a->method, "closest (exact), seed (the report's), embed (tetrahedra)")
       ->capture_default_str()

@@ -41,7 +41,6 @@ void run(BuildArgs& a) {
   if (out.extension() == ".json") out.replace_extension();
   const std::filesystem::path json = std::filesystem::path(out.string() + ".json");
   const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
-  std::filesystem::create_directories(directory);
 
   a.options.mesher = a.mesher == "netgen" ? MesherKind::Netgen : MesherKind::TetGen;
   a.options.qualities = a.qualities;
@@ -63,6 +62,8 @@ void run(BuildArgs& a) {
     progress.update(stage, done, total);
   };
   BuildResult result = buildDataset(std::move(inputs), a.options, events);
+  // Only now: bad input or a failed build leaves no empty folder behind.
+  std::filesystem::create_directories(directory);
   saveDataset(json, result.dataset);
   progress.log("");
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
@@ -31,8 +32,8 @@ Points3 readPositions(const std::filesystem::path& path) {
 
 void run(const DeformArgs& a) {
   const Dataset dataset = loadDataset(a.dataset);
-  BoundSurface bound = readBinding(a.binding);
-  const int level = resolveLevel(dataset.mesh, bound.binding.level);
+  BoundSurface bound = readBinding(a.binding, dataset.mesh);
+  const int level = bound.binding.level;
   const Points3 control =
       datasetPositions(dataset.mesh, level, readPositions(a.positions), a.positions.string());
   SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
@@ -60,7 +61,9 @@ void addDeformCommand(CLI::App& app) {
                   "deformed control nodes: .node (all dataset nodes or the bound level's) or .vtu")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", a->output, "deformed surface (.vtp)")->required();
+  cmd->add_option("-o,--output", a->output, "deformed surface (.vtp)")
+      ->required()
+      ->check(fileEnding(".vtp"));
   cmd->callback([a] { run(*a); });
 }
 

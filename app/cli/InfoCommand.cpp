@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "Commands.h"
 #include "tetskin/core/Geometry.h"
@@ -37,20 +38,28 @@ void printDataset(const std::filesystem::path& path) {
   printBox(boundingBox(dataset.mesh.nodes));
   std::printf("  %-5s %8s %9s %12s %12s  %s\n", "level", "nodes", "elements", "volume",
               "min volume", "source");
+  std::string warnings;
   for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
     const TetMesh level = extractLevel(dataset.mesh, k);
     double total = 0.0, smallest = std::numeric_limits<double>::infinity();
+    Index nonPositive = 0, first = -1;
     for (Index e = 0; e < level.elementCount(); ++e) {
       const double v = elementVolume(level, e);
       total += v;
       smallest = std::min(smallest, v);
+      if (!(v > 0) && nonPositive++ == 0) first = e;
     }
+    if (nonPositive > 0)
+      warnings += "  warning: level " + std::to_string(k) + " has " + std::to_string(nonPositive) +
+                  " inverted or degenerate element(s) (first: element " + std::to_string(first) +
+                  "); simulate refuses the level\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::printf("  %-5d %8lld %9lld %12g %12g  %s %s %g\n", k,
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), total, smallest, src.input.c_str(),
                 src.mesher.c_str(), src.quality);
   }
+  std::fputs(warnings.c_str(), stdout);
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "OptionChecks.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <type_traits>
 
@@ -52,6 +55,20 @@ CLI::Validator positiveNumber() {
         return {};
       },
       "POSITIVE");
+}
+
+CLI::Validator fileEnding(const std::string& extension) {
+  auto lower = [](std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+  };
+  return CLI::Validator(
+      [extension, lower](std::string& text) -> std::string {
+        if (lower(std::filesystem::path(text).extension().string()) == lower(extension)) return {};
+        return "'" + text + "' does not end in " + extension;
+      },
+      "");
 }
 
 }  // namespace tetskin::cli

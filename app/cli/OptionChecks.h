@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Checks on numeric option values with messages a user can act on. CLI11's
-// own PositiveNumber and Range name the range 0 to 1.8e308, accept "nan"
-// and "inf", and let "1e3" through to an integer conversion that then
-// reports a count of arguments.
+// Checks on option values with messages a user can act on. CLI11's own
+// PositiveNumber and Range name the range 0 to 1.8e308, accept "nan" and
+// "inf", and let "1e3" through to an integer conversion that then reports a
+// count of arguments.
 
 #include <CLI/CLI.hpp>
 #include <limits>
+#include <string>
 
 namespace tetskin::cli {
 
@@ -15,5 +16,10 @@ CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<in
 
 // A finite number > 0.
 CLI::Validator positiveNumber();
+
+// A file name ending in `extension` (e.g. ".vtp", any letter case): an
+// output whose format is fixed, checked before any work so that a binding
+// is not written as XML into "out.obj" nor a PNG into "image.jpg".
+CLI::Validator fileEnding(const std::string& extension);
 
 }  // namespace tetskin::cli

@@ -65,6 +65,7 @@ void run(const RenderArgs& a) {
   o.scenario = a.scenario;
   o.control = a.control;
   o.texture = a.texture;
+  o.datasetName = a.dataset.string();
   if (o.control != "none") parseControlMeshStyle(o.control);  // reject typos before any work
   const Dataset dataset = loadDataset(a.dataset);
   o.fur = furParameters(a, dataset.config);
@@ -106,7 +107,7 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--path", a->path, "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu")
       ->capture_default_str();
-  cmd->add_option("-o,--output", a->output, "image (.png)")->required();
+  cmd->add_option("-o,--output", a->output, "image (.png)")->required()->check(fileEnding(".png"));
   cmd->add_option("--texture", a->texture,
                   "colour texture (PNG) for a surface with texture coordinates; on fur paths it "
                   "colours the fur and its alpha 0 masks it (default there: the config's "

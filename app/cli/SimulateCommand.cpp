@@ -41,7 +41,7 @@ void run(SimulateArgs& a) {
   const SimulationOptions options =
       scenarioOptions(a.scenario, a.options, extractLevel(dataset.mesh, level));
   std::unique_ptr<Scenario> scenario = makeScenario(a.scenario);
-  Simulation sim(dataset.mesh, level, options);
+  Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);
 
   // The bound surface, if any, follows every frame.

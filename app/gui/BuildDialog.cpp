@@ -163,7 +163,6 @@ bool BuildDialog::start() {
     auto post = [this](auto f) { QMetaObject::invokeMethod(this, f, Qt::QueuedConnection); };
     try {
       const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
-      std::filesystem::create_directories(directory);
       std::vector<SurfaceInput> inputs;
       for (const auto& path : paths) {
         SurfaceInput input{
@@ -186,6 +185,8 @@ bool BuildDialog::start() {
       events.cancelled = [this] { return cancelled_.load(); };
       BuildResult result = buildDataset(std::move(inputs), options, events);
       if (cancelled_) throw Cancelled();
+      // Only now: bad input, a failure or a cancel leaves no empty folder.
+      std::filesystem::create_directories(directory);
       saveDataset(json, result.dataset);
       post([this, j = QString::fromStdString(json.string())] { finish(true, "done", j); });
     } catch (const Cancelled&) {

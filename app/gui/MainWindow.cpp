@@ -494,7 +494,8 @@ void MainWindow::resetSimulation() {
   options.solver = solverKindFromString(solver_->currentText().toStdString());
   try {
     runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, scene_->level(), options,
-                                                 scenario_->currentText().toStdString());
+                                                 scenario_->currentText().toStdString(),
+                                                 scene_->datasetPath().string());
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return;

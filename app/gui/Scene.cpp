@@ -124,14 +124,10 @@ void Scene::openSurface(const std::filesystem::path& path) {
 
 void Scene::openBinding(const std::filesystem::path& path) {
   if (!dataset_) throw Error(path.string(), 0, "open the dataset the binding refers to first");
-  BoundSurface bound = readBinding(path);
-  validateBinding(bound.binding, bound.surface.vertexCount(), dataset_->mesh.nodes.rows(),
-                  path.string());
-  const int level = resolveLevel(dataset_->mesh, bound.binding.level);
+  BoundSurface bound = readBinding(path, dataset_->mesh);
   surface_ = std::move(bound.surface);
   binding_ = std::move(bound.binding);
-  binding_.level = level;
-  level_ = level;
+  level_ = binding_.level;
   previousSummary_.reset();
   picked_.reset();
   rebuildControl();

@@ -20,9 +20,10 @@ namespace tetskin::gui {
 
 class SimulationRunner {
  public:
-  // Throws Error for an unknown scenario or bad options.
+  // Throws Error for an unknown scenario, bad options or a level the
+  // simulation refuses (named after `datasetName`).
   SimulationRunner(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options,
-                   const std::string& scenario);
+                   const std::string& scenario, const std::string& datasetName = "dataset");
   ~SimulationRunner();
 
   void play();

@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 #include <vtkPolyData.h>
 
+#include <cmath>
+#include <functional>
+#include <string>
+
 #include "TestFiles.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
@@ -50,6 +54,43 @@ TEST(BindingFile, PlainSurfaceIsNotABinding) {
   } catch (const Error& e) {
     EXPECT_NE(e.message().find("is not a TetSkin binding"), std::string::npos) << e.what();
   }
+}
+
+// Read for use with a dataset, a binding that does not fit it is an error
+// naming the file: a level it lacks, nodes of another level, a broken weight.
+TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
+  test::ScratchDir dir;
+  const Dataset d = loadDataset(kData + "bunny.json");
+  BoundSurface good;
+  good.surface = readObj(kData + "bunny.obj");
+  good.binding = bindSurface(good.surface, d.mesh, 0);
+  good.dataset = "bunny.json";
+  writeBinding(dir / "good.vtp", good);
+  EXPECT_EQ(readBinding(dir / "good.vtp", d.mesh).binding.controlIds, good.binding.controlIds);
+  auto error = [&](const std::function<void(BoundSurface&)>& spoil) -> std::string {
+    BoundSurface bad = good;
+    spoil(bad);
+    writeBinding(dir / "bad.vtp", bad);
+    try {
+      readBinding(dir / "bad.vtp", d.mesh);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.file(), (dir / "bad.vtp").string());
+      return e.message();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(error([](BoundSurface& b) { b.binding.level = 7; }),
+            "is bound to level 7, but the dataset has levels 0..2");
+  const std::string otherLevel = error([](BoundSurface& b) { b.binding.level = 1; });
+  EXPECT_EQ(otherLevel.rfind("vertex 0 is bound to node ", 0), 0u) << otherLevel;
+  EXPECT_NE(otherLevel.find(", outside level 1's nodes [224, 1061) (a binding made for another "
+                            "dataset?)"),
+            std::string::npos)
+      << otherLevel;
+  EXPECT_EQ(error([](BoundSurface& b) { b.binding.weights(5, 1) = std::nan(""); }),
+            "vertex 5 has a non-finite weight");
+  EXPECT_EQ(error([](BoundSurface& b) { b.binding.controlIds(9, 2) = 99999; }),
+            "vertex 9 is bound to node 99999, outside the dataset's 4331 nodes");
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tetskin/core/Geometry.h"
 
 namespace tetskin {
@@ -57,6 +59,20 @@ TEST(Geometry, EmptyBoundingBox) {
   grown.extend(X);
   EXPECT_FALSE(grown.empty());
   EXPECT_EQ(grown.min, X);
+}
+
+// Every mesh's points pass through coordinateProblem: NaN and infinity, and
+// magnitudes whose products would overflow, are named; the limit itself is
+// accepted.
+TEST(Geometry, CoordinateProblemNamesNonFiniteAndHugeCoordinates) {
+  EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(1, -2, 3)), "");
+  EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(kMaxCoordinate, -kMaxCoordinate, 0)), "");
+  EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(0, std::nan(""), 0)),
+            "has a non-finite coordinate");
+  EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(0, 0, -HUGE_VAL)), "has a non-finite coordinate");
+  EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(0, -2e31, 1e300)),
+            "has a coordinate of magnitude 1e+300, beyond the largest accepted (1e+30); rescale "
+            "the model");
 }
 
 }  // namespace

@@ -101,6 +101,7 @@ TEST(ObjFormat, MalformedInputNamesFileAndLine) {
   expectObjError("v 0 0 0\nv 1 zero 0\n", 2, "'zero' is not a number");
   expectObjError("v 0 0 nan\n", 1, "not a finite number");
   expectObjError("v 0 0 1e999\n", 1, "out of range");
+  expectObjError("v 0 0 0\nv 0 -2e30 0\n", 2, "vertex has a coordinate of magnitude 2e+30, beyond");
   expectObjError("v 0 0\n", 1, "expected 4 to 7 values");
   expectObjError("v 0 0 0\nv 1 0 0\nf 1 2\n", 3, "at least 3 vertices");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2 3\n", 4, "malformed face corner");

@@ -118,9 +118,10 @@ TEST(TetGenFormat, RoundTripsAreExact) {
 
   NodeFile n;
   n.points.resize(2, 3);
-  n.points << 0.1, 1.0 / 3.0, -7e-300, 1e300, 2, 3;
+  // (Coordinates stay within kMaxCoordinate; attributes may be any double.)
+  n.points << 0.1, 1.0 / 3.0, -7e-300, 9.87654321012345e29, 2, 3;
   n.attributes.resize(2, 1);
-  n.attributes << 4.5, -1;
+  n.attributes << 4.5, 1e300;
   n.markers = {3, 4};
   writeNode(dir / "a.node", n);
   const NodeFile nb = readNode(dir / "a.node");
@@ -184,6 +185,7 @@ TEST(TetGenFormat, MalformedInputNamesFileAndLine) {
   expectError(node, "2 3 0 0\n0 0 0 0\n2 1 0 0\n", 3, "should be 1");             // numbering
   expectError(node, "1 3 0 0\n5 0 0 0\n", 2, "numbered 0 or 1");
   expectError(node, "1 3 0 0\n0 0 nan 0\n", 2, "not a finite number");
+  expectError(node, "1 3 0 0\n0 0 1e31 0\n", 2, "node has a coordinate of magnitude 1e+31");
   expectError(node, "1 3 0 0\n0 0 x 0\n", 2, "'x' is not a number");
   expectError(node, "1 3 0 0\n0 0 0\n", 2, "expected 4 values");
   expectError(node, "1 2 0 0\n0 0 0\n", 1, "dimension must be 3");

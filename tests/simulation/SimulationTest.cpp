@@ -387,5 +387,36 @@ TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {
   }
 }
 
+// A level with an inverted element is refused, naming the dataset, the
+// level and the element; a coarse level only where the multigrid uses it.
+TEST(Simulation, InvertedElementIsAnErrorNamingDatasetLevelAndElement) {
+  MultiLevelTetMesh dataset;
+  TetMesh coarse = test::tetGrid(1, 1, 1, {1, 1, 1});
+  std::swap(coarse.elements(2, 0), coarse.elements(2, 1));  // element 2 turned inside out
+  appendLevel(dataset, coarse);
+  appendLevel(dataset, test::tetGrid(2, 2, 2, {1, 1, 1}));
+  auto message = [&](int level, SolverKind solver) -> std::string {
+    SimulationOptions options;
+    options.solver = solver;
+    try {
+      Simulation(dataset, level, options, "blocks.json");
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message(1, SolverKind::ConjugateGradient), "");
+  for (SolverKind solver : {SolverKind::Multigrid, SolverKind::Automatic})
+    EXPECT_EQ(message(1, solver).rfind("blocks.json: level 0 (a coarser level, used by the "
+                                       "multigrid solver): element 2 has non-positive volume -",
+                                       0),
+              0u)
+        << message(1, solver);
+  EXPECT_EQ(message(0, SolverKind::ConjugateGradient)
+                .rfind("blocks.json: level 0: element 2 has non-positive volume -", 0),
+            0u)
+      << message(0, SolverKind::ConjugateGradient);
+}
+
 }  // namespace
 }  // namespace tetskin

@@ -61,7 +61,7 @@ std::string formatSummary(const BindingSummary& s, const SurfaceBinding& b) {
   out += line;
   out += "  most negative weight:";
   for (Index v : s.worstBarycentric) {
-    std::snprintf(line, sizeof line, " v%lld (%.3f)", static_cast<long long>(v),
+    std::snprintf(line, sizeof line, " v%lld (%.3g)", static_cast<long long>(v),
                   b.minBarycentric[v]);
     out += line;
   }

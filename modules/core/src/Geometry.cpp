@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace tetskin {
 
@@ -53,6 +54,16 @@ Index nearestPoint(const Points3& points, const Eigen::Vector3d& query) {
     }
   }
   return best;
+}
+
+std::string coordinateProblem(const Eigen::Ref<const Eigen::RowVector3d>& point) {
+  if (!point.allFinite()) return "has a non-finite coordinate";
+  const double largest = point.cwiseAbs().maxCoeff();
+  if (largest <= kMaxCoordinate) return {};
+  std::ostringstream text;
+  text << "has a coordinate of magnitude " << largest << ", beyond the largest accepted ("
+       << kMaxCoordinate << "); rescale the model";
+  return text.str();
 }
 
 }  // namespace tetskin

@@ -8,8 +8,8 @@ namespace tetskin {
 void validateSurface(const SurfaceMesh& mesh, const std::string& name) {
   const Index n = mesh.vertexCount();
   for (Index v = 0; v < n; ++v) {
-    if (!mesh.positions.row(v).allFinite())
-      throw Error(name, 0, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+    const std::string problem = coordinateProblem(mesh.positions.row(v));
+    if (!problem.empty()) throw Error(name, 0, "vertex " + std::to_string(v) + " " + problem);
   }
   for (Index t = 0; t < mesh.triangleCount(); ++t) {
     for (int k = 0; k < 3; ++k) {

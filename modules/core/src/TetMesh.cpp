@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/TetMesh.h"
 
+#include <sstream>
+
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -20,8 +22,8 @@ double elementVolume(const TetMesh& mesh, Index e) {
 
 void validateTetMesh(const TetMesh& mesh, const std::string& name, bool requirePositiveVolume) {
   for (Index v = 0; v < mesh.nodeCount(); ++v) {
-    if (!mesh.nodes.row(v).allFinite())
-      throw Error(name, 0, "node " + std::to_string(v) + " has a non-finite coordinate");
+    const std::string problem = coordinateProblem(mesh.nodes.row(v));
+    if (!problem.empty()) throw Error(name, 0, "node " + std::to_string(v) + " " + problem);
   }
   for (Index e = 0; e < mesh.elementCount(); ++e) {
     for (int k = 0; k < 4; ++k) {
@@ -33,10 +35,12 @@ void validateTetMesh(const TetMesh& mesh, const std::string& name, bool requireP
     }
     if (requirePositiveVolume) {
       const double volume = elementVolume(mesh, e);
-      if (!(volume > 0.0))
-        throw Error(
-            name, 0,
-            "element " + std::to_string(e) + " has non-positive volume " + std::to_string(volume));
+      if (!(volume > 0.0)) {
+        std::ostringstream message;  // %g-style: "-0.46803", "-1.2e-17", not "-0.000000"
+        message << "element " << e << " has non-positive volume " << volume
+                << " (inverted or degenerate)";
+        throw Error(name, 0, message.str());
+      }
     }
   }
 }

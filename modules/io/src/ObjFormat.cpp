@@ -50,8 +50,7 @@ class ObjParser {
     if (keyword == "v") {
       // x y z [w] or x y z r g b (vertex colours, ignored)
       lines_.expectTokens(4, 7, "vertex");
-      std::array<double, 3> p{};
-      for (int k = 0; k < 3; ++k) p[k] = lines_.toDouble(lines_[1 + k], "coordinate");
+      const std::array<double, 3> p = lines_.toPoint(1, "vertex");
       for (std::size_t k = 4; k < lines_.size(); ++k) lines_.toDouble(lines_[k], "vertex value");
       positions_.push_back(p);
     } else if (keyword == "vt") {

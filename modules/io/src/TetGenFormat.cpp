@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/io/TetGenFormat.h"
 
+#include <array>
+
 #include "NumberFormat.h"
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
@@ -73,7 +75,8 @@ NodeFile parsePointSection(TextLines& lines) {
     nextLine(lines, "a node");
     lines.expectTokens(columns, columns, "node");
     file.firstIndex = checkItemNumber(lines, static_cast<int>(i), file.firstIndex, "node");
-    for (int k = 0; k < 3; ++k) file.points(i, k) = lines.toDouble(lines[1 + k], "coordinate");
+    const std::array<double, 3> point = lines.toPoint(1, "node");
+    for (int k = 0; k < 3; ++k) file.points(i, k) = point[static_cast<std::size_t>(k)];
     for (int a = 0; a < attributeCount; ++a)
       file.attributes(i, a) = lines.toDouble(lines[4 + a], "attribute");
     if (markerFlag)

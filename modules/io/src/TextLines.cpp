@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 
 namespace tetskin::detail {
 
@@ -79,6 +80,14 @@ double TextLines::toDouble(std::string_view token, const char* what) const {
   if (!std::isfinite(value))
     fail(std::string(what) + " '" + std::string(token) + "' is not a finite number");
   return value;
+}
+
+std::array<double, 3> TextLines::toPoint(std::size_t first, const char* what) const {
+  std::array<double, 3> p{};
+  for (std::size_t k = 0; k < 3; ++k) p[k] = toDouble(tokens_[first + k], "coordinate");
+  const std::string problem = coordinateProblem(Eigen::RowVector3d(p[0], p[1], p[2]));
+  if (!problem.empty()) fail(std::string(what) + " " + problem);
+  return p;
 }
 
 long long TextLines::toInteger(std::string_view token, const char* what) const {

@@ -4,6 +4,7 @@
 // the source name and the line number, so every error it raises reads
 // `FILE:LINE: what`.
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -33,6 +34,10 @@ class TextLines {
   void expectTokens(std::size_t min, std::size_t max, const char* what) const;
 
   double toDouble(std::string_view token, const char* what) const;  // finite only
+  // Tokens first..first+2 as a point's coordinates: finite, and within the
+  // magnitude every mesh must keep (core's coordinateProblem); `what` names
+  // the point ("vertex", "node") in the error.
+  std::array<double, 3> toPoint(std::size_t first, const char* what) const;
   long long toInteger(std::string_view token, const char* what) const;
   // Fails when `count` items of at least `minBytesPerItem` bytes each cannot
   // fit in the rest of the input, so a corrupt header never allocates absurdly.

@@ -64,9 +64,10 @@ void validateOptions(const SimulationOptions& o) {
                 std::to_string(o.coarseReuse));
 }
 
-// The mesh's nodes breadth first along its edges (internal -> mesh id).
-std::vector<int> meshNodeOrder(const TetMesh& mesh) {
-  validateTetMesh(mesh, "simulation mesh", /*requirePositiveVolume=*/true);
+// The mesh's nodes breadth first along its edges (internal -> mesh id),
+// after checking the mesh (`name` says where it is in errors).
+std::vector<int> meshNodeOrder(const TetMesh& mesh, const std::string& name) {
+  validateTetMesh(mesh, name, /*requirePositiveVolume=*/true);
   const auto n = static_cast<std::size_t>(mesh.nodeCount());
   std::vector<std::vector<int>> neighbours(n);
   for (Index e = 0; e < mesh.elementCount(); ++e)
@@ -104,8 +105,14 @@ TetMesh renumbered(const TetMesh& mesh, const std::vector<int>& order) {
 }
 
 // A level's mesh renumbered breadth first.
-TetMesh renumbered(const TetMesh& mesh) {
-  return renumbered(mesh, meshNodeOrder(mesh));
+TetMesh renumbered(const TetMesh& mesh, const std::string& name) {
+  return renumbered(mesh, meshNodeOrder(mesh, name));
+}
+
+// Where a level is, for errors: "bunny.json: level 0".
+std::string levelName(const std::string& datasetName, int level) {
+  const std::string name = "level " + std::to_string(level);
+  return datasetName.empty() ? name : datasetName + ": " + name;
 }
 
 }  // namespace
@@ -132,10 +139,10 @@ Eigen::VectorXd Simulation::nodeMasses() const {
 }
 
 Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
-                       const SimulationOptions& options)
+                       const SimulationOptions& options, const std::string& datasetName)
     : level_(level < 0 ? dataset.finestLevel() : level),
       rest_(extractLevel(dataset, level_)),
-      order_(meshNodeOrder(rest_)),
+      order_(meshNodeOrder(rest_, levelName(datasetName, level_))),
       rank_(inverse(order_)),
       internal_(renumbered(rest_, order_)),
       options_(options),
@@ -159,7 +166,10 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
     // This level, then the coarser ones, each renumbered breadth first.
     std::vector<TetMesh> meshes{internal_};
     for (int coarse = level_ - 1; coarse >= 0; --coarse) {
-      meshes.push_back(renumbered(extractLevel(dataset, coarse)));
+      // (Named as such: a broken coarse level stops the multigrid only.)
+      meshes.push_back(renumbered(
+          extractLevel(dataset, coarse),
+          levelName(datasetName, coarse) + " (a coarser level, used by the multigrid solver)"));
       prolongations_.push_back(nodalProlongation(meshes.back(), meshes[meshes.size() - 2].nodes));
     }
     if (options.coarseOperators == CoarseOperators::Rediscretized) {

@@ -120,4 +120,28 @@ BoundSurface readBinding(const std::filesystem::path& path) {
   return bindingFromPolyData(readVtp(path), path.string());
 }
 
+BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
+  BoundSurface bound = readBinding(path);
+  const std::string name = path.string();
+  const SurfaceBinding& b = bound.binding;
+  validateBinding(b, bound.surface.vertexCount(), dataset.nodes.rows(), name);
+  if (b.level < 0 || b.level >= dataset.levelCount())
+    throw Error(name, 0,
+                "is bound to level " + std::to_string(b.level) +
+                    ", but the dataset has levels 0.." + std::to_string(dataset.levelCount() - 1));
+  const LevelRange& range = dataset.levels[static_cast<std::size_t>(b.level)];
+  for (Index v = 0; v < b.vertexCount(); ++v)
+    for (int c = 0; c < b.controlsPerVertex(); ++c) {
+      const int id = b.controlIds(v, c);
+      if (id < range.firstNode || id >= range.firstNode + range.nodeCount)
+        throw Error(name, 0,
+                    "vertex " + std::to_string(v) + " is bound to node " + std::to_string(id) +
+                        ", outside level " + std::to_string(b.level) + "'s nodes [" +
+                        std::to_string(range.firstNode) + ", " +
+                        std::to_string(range.firstNode + range.nodeCount) +
+                        ") (a binding made for another dataset?)");
+    }
+  return bound;
+}
+
 }  // namespace tetskin

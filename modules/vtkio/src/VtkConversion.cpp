@@ -13,6 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 
 namespace tetskin {
 namespace {
@@ -33,8 +34,8 @@ Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
     double p[3];
     points->GetPoint(i, p);
     out.row(i) << p[0], p[1], p[2];
-    if (!out.row(i).allFinite())
-      throw Error(sourceName, 0, "point " + std::to_string(i) + " has a non-finite coordinate");
+    const std::string problem = coordinateProblem(out.row(i));
+    if (!problem.empty()) throw Error(sourceName, 0, "point " + std::to_string(i) + " " + problem);
   }
   return out;
 }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <limits>
+#include <string>
 
 #include "tetskin/core/Types.h"
 
@@ -40,5 +41,16 @@ double triangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
 // Unit normal (counter-clockwise winding); the zero vector for a degenerate triangle.
 Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& c);
+
+// The largest coordinate magnitude a mesh may have. Areas, volumes and
+// TetGen's predicates multiply up to five coordinate differences, which
+// must stay finite in double precision; beyond this a model is almost
+// surely in the wrong units (or corrupt) and should be rescaled.
+inline constexpr double kMaxCoordinate = 1e30;
+
+// What is wrong with a point's coordinates, as the end of a sentence that
+// names the point ("has a non-finite coordinate", "has a coordinate ...
+// beyond +-1e30 ..."); empty when they are finite and within kMaxCoordinate.
+std::string coordinateProblem(const Eigen::Ref<const Eigen::RowVector3d>& point);
 
 }  // namespace tetskin

@@ -81,8 +81,10 @@ struct Energies {
 class Simulation {
  public:
   // Simulates `level` (< 0: the finest) of the dataset; multigrid uses the
-  // coarser levels.
-  Simulation(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options);
+  // coarser levels. Each level it uses must have positive element volumes;
+  // errors name the level after `datasetName` (e.g. the config's path).
+  Simulation(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options,
+             const std::string& datasetName = "dataset");
   ~Simulation();
 
   // Node ids here and in every call below are the dataset level's.

@@ -12,6 +12,7 @@
 
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
 
 class vtkPolyData;
 
@@ -29,5 +30,9 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceNam
 
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
 BoundSurface readBinding(const std::filesystem::path& path);
+// Reads a binding to use with `dataset`, checked against it: its level
+// exists, every vertex is bound to nodes of that level, with finite
+// weights summing to 1 (validateBinding). Errors name `path`.
+BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset);
 
 }  // namespace tetskin
