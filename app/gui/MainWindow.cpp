@@ -311,7 +311,7 @@ QWidget* MainWindow::buildSimulationDock() {
   young_->setValue(ElasticMaterial{}.youngsModulus);
   poisson_ = new QDoubleSpinBox;
   poisson_->setObjectName("poisson");
-  poisson_->setRange(0, 0.49);
+  poisson_->setRange(-0.99, 0.49);
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
   form->addRow("Scenario", scenario_);

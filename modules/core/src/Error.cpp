@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/Error.h"
 
+#include <cstdio>
+
 namespace tetskin {
 namespace {
 
@@ -19,5 +21,11 @@ Error::Error(const std::string& file, long line, const std::string& message)
       file_(file),
       line_(line),
       message_(message) {}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 }  // namespace tetskin

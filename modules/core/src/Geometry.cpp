@@ -4,7 +4,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
-#include <sstream>
+
+#include "tetskin/core/Error.h"
 
 namespace tetskin {
 
@@ -60,10 +61,8 @@ std::string coordinateProblem(const Eigen::Ref<const Eigen::RowVector3d>& point)
   if (!point.allFinite()) return "has a non-finite coordinate";
   const double largest = point.cwiseAbs().maxCoeff();
   if (largest <= kMaxCoordinate) return {};
-  std::ostringstream text;
-  text << "has a coordinate of magnitude " << largest << ", beyond the largest accepted ("
-       << kMaxCoordinate << "); rescale the model";
-  return text.str();
+  return "has a coordinate of magnitude " + formatNumber(largest) +
+         ", beyond the largest accepted (" + formatNumber(kMaxCoordinate) + "); rescale the model";
 }
 
 }  // namespace tetskin

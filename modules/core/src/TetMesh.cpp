@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/TetMesh.h"
 
-#include <sstream>
-
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -35,12 +33,10 @@ void validateTetMesh(const TetMesh& mesh, const std::string& name, bool requireP
     }
     if (requirePositiveVolume) {
       const double volume = elementVolume(mesh, e);
-      if (!(volume > 0.0)) {
-        std::ostringstream message;  // %g-style: "-0.46803", "-1.2e-17", not "-0.000000"
-        message << "element " << e << " has non-positive volume " << volume
-                << " (inverted or degenerate)";
-        throw Error(name, 0, message.str());
-      }
+      if (!(volume > 0.0))
+        throw Error(name, 0,
+                    "element " + std::to_string(e) + " has non-positive volume " +
+                        formatNumber(volume) + " (inverted or degenerate)");
     }
   }
 }

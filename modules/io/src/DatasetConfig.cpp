@@ -40,8 +40,8 @@ class Fields {
     if (!v.is_number()) fail(where(key), "must be a number");
     const double x = v.get<double>();
     if (!std::isfinite(x) || x < min || x > max || (minExclusive && x == min))
-      fail(where(key), "must lie in " + std::string(minExclusive ? "(" : "[") + fmt(min) + ", " +
-                           fmt(max) + "], found " + v.dump());
+      fail(where(key), "must lie in " + std::string(minExclusive ? "(" : "[") + formatNumber(min) +
+                           ", " + formatNumber(max) + "], found " + v.dump());
     return x;
   }
   long long integer(const char* key, long long min, long long max) const {
@@ -72,12 +72,6 @@ class Fields {
   void optional(const char* key) const { seen_.insert(key); }
 
  private:
-  static std::string fmt(double x) {
-    std::string s = std::to_string(x);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-  }
   const json& object_;
   std::string pointer_;
   const std::string& file_;

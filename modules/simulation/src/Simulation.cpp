@@ -44,19 +44,20 @@ constexpr int kMinTrialSteps = 3, kMaxTrialSteps = 8, kStepsBetweenTrials = 120;
 // Throws Error naming the first option out of its range (NaN included);
 // the material is CorotatedFem's to check.
 void validateOptions(const SimulationOptions& o) {
-  const auto number = [](double value) { return std::to_string(value); };
   if (!(o.timeStep > 0) || !std::isfinite(o.timeStep))
-    throw Error("the time step must be a positive number of seconds, got " + number(o.timeStep));
+    throw Error("the time step must be a positive number of seconds, got " +
+                formatNumber(o.timeStep));
   if (!o.gravity.allFinite()) throw Error("gravity must be finite");
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
-    throw Error("the floor height must be finite, got " + number(*o.floorHeight));
+    throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
   if (!(o.floorStiffness >= 0) || !std::isfinite(o.floorStiffness))
-    throw Error("the floor stiffness must be >= 0 (0: automatic), got " + number(o.floorStiffness));
+    throw Error("the floor stiffness must be >= 0 (0: automatic), got " +
+                formatNumber(o.floorStiffness));
   if (!(o.friction >= 0 && o.friction <= 1))
-    throw Error("friction must lie in [0, 1], got " + number(o.friction));
+    throw Error("friction must lie in [0, 1], got " + formatNumber(o.friction));
   if (!(o.tolerance > 0 && o.tolerance < 1))
     throw Error("the solver tolerance (a relative residual) must lie in (0, 1), got " +
-                number(o.tolerance));
+                formatNumber(o.tolerance));
   if (o.maxIterations < 1)
     throw Error("the solver needs at least 1 iteration, got " + std::to_string(o.maxIterations));
   if (o.coarseReuse < 1)

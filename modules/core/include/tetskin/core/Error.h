@@ -24,4 +24,9 @@ class Error : public std::runtime_error {
   std::string message_;
 };
 
+// A number as error messages show it: %g, six significant digits ("0.3",
+// "-0.46803", "1e-07", "1e+30"; std::to_string would say "-0.000000" for a
+// tiny negative volume and "0.000000" for 1e-7).
+std::string formatNumber(double value);
+
 }  // namespace tetskin
