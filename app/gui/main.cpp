@@ -88,8 +88,17 @@ int main(int argc, char** argv) {
   if (parser.isSet(control) && !choose("controlStyle", parser.value(control))) return 1;
   if (parser.isSet(colorBy) && !choose("colorBy", parser.value(colorBy))) return 1;
   if (parser.isSet(highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
-  for (int i = 0; i < parser.value(steps).toInt(); ++i)
-    window.findChild<QPushButton*>("step")->click();
+  bool stepsOk = false;
+  const int stepCount = parser.value(steps).toInt(&stepsOk);
+  if (!stepsOk || stepCount < 0) {
+    std::fprintf(stderr, "error: --steps must be a whole number >= 0, got '%s'\n",
+                 parser.value(steps).toStdString().c_str());
+    return 1;
+  }
+  for (int i = 0; i < stepCount; ++i) window.findChild<QPushButton*>("step")->click();
+  // Steps asked for but not taken (the simulation could not start: its
+  // error is the window's last) must not pass for a simulated screenshot.
+  if (oneShot && stepCount > 0 && !window.lastError().isEmpty()) return fail();
   if (parser.isSet(pick)) {
     window.renderNow();
     window.clickAt(window.view()->width() / 2, window.view()->height() / 2);
