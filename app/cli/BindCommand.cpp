@@ -24,6 +24,7 @@ struct BindArgs {
 };
 
 void run(const BindArgs& a) {
+  requireNotAnInput(a.output, {a.dataset, a.surface});
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);
   BoundSurface bound;

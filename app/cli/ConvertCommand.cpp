@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -54,6 +55,7 @@ void addConvertCommand(CLI::App& app) {
   cmd->add_option("OUT", o->output, "output file")->required();
   cmd->add_option("--level", o->level, "dataset level, 0 = coarsest (default: finest)");
   cmd->callback([o] {
+    requireNotAnInput(o->output, {o->input});
     if (isSurfaceFile(o->input)) {
       const SurfaceMesh mesh = readSurface(o->input);
       writeSurface(o->output, mesh);

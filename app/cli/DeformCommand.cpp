@@ -31,6 +31,7 @@ Points3 readPositions(const std::filesystem::path& path) {
 }
 
 void run(const DeformArgs& a) {
+  requireNotAnInput(a.output, {a.dataset, a.binding, a.positions});
   const Dataset dataset = loadDataset(a.dataset);
   BoundSurface bound = readBinding(a.binding, dataset.mesh);
   const int level = bound.binding.level;

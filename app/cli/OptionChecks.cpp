@@ -7,7 +7,10 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <system_error>
 #include <type_traits>
+
+#include "tetskin/core/Error.h"
 
 namespace tetskin::cli {
 
@@ -69,6 +72,15 @@ CLI::Validator fileEnding(const std::string& extension) {
         return "'" + text + "' does not end in " + extension;
       },
       "");
+}
+
+void requireNotAnInput(const std::filesystem::path& output,
+                       std::initializer_list<std::filesystem::path> inputs) {
+  for (const std::filesystem::path& input : inputs) {
+    std::error_code error;  // (a missing output, or input, is no clash)
+    if (!input.empty() && std::filesystem::equivalent(output, input, error))
+      throw Error(output.string(), 0, "is also an input of this command; write to another file");
+  }
 }
 
 }  // namespace tetskin::cli

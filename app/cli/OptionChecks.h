@@ -6,6 +6,8 @@
 // count of arguments.
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <initializer_list>
 #include <limits>
 #include <string>
 
@@ -21,5 +23,12 @@ CLI::Validator positiveNumber();
 // output whose format is fixed, checked before any work so that a binding
 // is not written as XML into "out.obj" nor a PNG into "image.jpg".
 CLI::Validator fileEnding(const std::string& extension);
+
+// Throws Error naming `output` when it is the same file as one of `inputs`
+// (e.g. `convert a.obj a.obj`, `deform ... b.vtp -o b.vtp`): writing it
+// would replace an input, and a binding overwritten by its deformed surface
+// is lost.
+void requireNotAnInput(const std::filesystem::path& output,
+                       std::initializer_list<std::filesystem::path> inputs);
 
 }  // namespace tetskin::cli

@@ -77,6 +77,7 @@ void run(const RenderArgs& a) {
       throw Error(a.dataset.string(), 0, "names no default surface; give --surface");
     surfacePath = dataset.config.resolve(*dataset.config.surface);
   }
+  requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
   const SurfaceMesh surface = readSurface(surfacePath);
   AnimatedScene scene(dataset, surface, o);
   const FrameStats s = scene.run(a.frames);
