@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <tuple>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -51,7 +52,7 @@ const ReportRow kRows[] = {
 
 void run(const BenchArgs& a) {
   SceneOptions o;
-  std::sscanf(a.size.c_str(), "%dx%d", &o.width, &o.height);
+  std::tie(o.width, o.height) = parseImageSize(a.size);
   const Dataset dataset = loadDataset(a.data / "bunny.json");
   o.fur = dataset.config.fur;
   nlohmann::json results = nlohmann::json::array();
@@ -119,7 +120,7 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--frames", a->frames, "frames per measurement")
       ->capture_default_str()
       ->check(wholeNumber(1));
-  cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
   cmd->add_flag("--json", a->json, "machine-readable results");
   cmd->callback([a] { run(*a); });
 }

@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace tetskin::cli {
 
@@ -23,6 +24,11 @@ CLI::Validator positiveNumber();
 // output whose format is fixed, checked before any work so that a binding
 // is not written as XML into "out.obj" nor a PNG into "image.jpg".
 CLI::Validator fileEnding(const std::string& extension);
+
+// An image size "WIDTHxHEIGHT", each in [16, 8192], for --size; and its
+// two numbers once the validator has passed it.
+CLI::Validator imageSize();
+std::pair<int, int> parseImageSize(const std::string& text);
 
 // Throws Error naming `output` when it is the same file as one of `inputs`
 // (e.g. `convert a.obj a.obj`, `deform ... b.vtp -o b.vtp`): writing it

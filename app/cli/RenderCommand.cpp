@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <tuple>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -56,9 +57,7 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
 
 void run(const RenderArgs& a) {
   SceneOptions o;
-  if (std::sscanf(a.size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 16 ||
-      o.height < 16 || o.width > 8192 || o.height > 8192)
-    throw Error("--size must be WIDTHxHEIGHT between 16 and 8192, got '" + a.size + "'");
+  std::tie(o.width, o.height) = parseImageSize(a.size);
   o.path = parseRenderPath(a.path);
   o.camera = parseCameraPreset(a.camera);
   o.level = a.level;
@@ -133,7 +132,7 @@ void addRenderCommand(CLI::App& app) {
       ->group(fur);
   cmd->add_option("--fur-fins", a->furFins, "silhouette fins (true/false)")->group(fur);
   cmd->add_option("--level", a->level, "bound and simulated level (default: finest)");
-  cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
   cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();
   cmd->add_option("--control", a->control, "control mesh: none, surface, wireframe or shrink")
       ->capture_default_str();
