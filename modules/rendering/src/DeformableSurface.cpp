@@ -120,9 +120,10 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
   applyMaterial(s.actor, material);
   vtkSmartPointer<vtkImageData> image;
   if (!texture.empty()) {
+    image = readPng(texture);  // (a missing or broken texture is named first)
     if (!restSurface.hasTexcoords())
-      throw Error(texture.string(), 0, "the surface has no texture coordinates to apply it with");
-    image = readPng(texture);
+      throw Error(texture.string(), 0,
+                  "cannot be applied: the surface has no texture coordinates (OBJ 'vt')");
   }
   if (hasFur(path)) {
     // The skin under the fur: darker, its highlight weaker and broader.

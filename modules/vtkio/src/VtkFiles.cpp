@@ -73,8 +73,9 @@ void writePng(const std::filesystem::path& path, vtkImageData* image) {
 
 vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path) {
   auto reader = vtkSmartPointer<vtkPNGReader>::New();
-  if (!std::filesystem::is_regular_file(path) || !reader->CanReadFile(path.c_str()))
-    throw Error(path.string(), 0, "is not a readable PNG image");
+  if (!std::filesystem::is_regular_file(path))
+    throw Error(path.string(), 0, "cannot open for reading");
+  if (!reader->CanReadFile(path.c_str())) throw Error(path.string(), 0, "is not a PNG image");
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkImageData* image = reader->GetOutput();
