@@ -111,7 +111,8 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_option("--qualities", a->qualities,
                   "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer")
       ->delimiter(',')
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(numberAbove(1));
   cmd->add_option("--lod-series", a->lodSeries, "read NAME_0.obj .. NAME_{K-1}.obj");
   cmd->add_option("--inputs", a->lodInputs, "K, the number of files of --lod-series");
   cmd->add_flag("--decimate", a->options.decimate,

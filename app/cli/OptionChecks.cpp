@@ -50,17 +50,22 @@ CLI::Validator wholeNumber(long long min, long long max) {
 }
 
 CLI::Validator positiveNumber() {
+  return numberAbove(0);
+}
+
+CLI::Validator numberAbove(double bound) {
+  const std::string limit = formatNumber(bound);
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [bound, limit](std::string& text) -> std::string {
         double value = 0;
         if (!parsesAll(text, value) || !std::isfinite(value))
           return "'" + text + "' is not a finite number";
-        if (!(value > 0)) return text + " is not > 0";
+        if (!(value > bound)) return text + " is not > " + limit;
         return {};
       },
-      "POSITIVE");
+      // Shown in --help after the type, as CLI11's own checks are.
+      bound == 0 ? "POSITIVE" : "> " + limit);
 }
-
 CLI::Validator fileEnding(const std::string& extension) {
   auto lower = [](std::string text) {
     std::transform(text.begin(), text.end(), text.begin(),

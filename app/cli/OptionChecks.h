@@ -20,6 +20,9 @@ CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<in
 // A finite number > 0.
 CLI::Validator positiveNumber();
 
+// A finite number > `bound` (each element, on a list option).
+CLI::Validator numberAbove(double bound);
+
 // A file name ending in `extension` (e.g. ".vtp", any letter case): an
 // output whose format is fixed, checked before any work so that a binding
 // is not written as XML into "out.obj" nor a PNG into "image.jpg".

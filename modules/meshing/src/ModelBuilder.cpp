@@ -122,7 +122,7 @@ nlohmann::json repairJson(const RepairReport& report) {
 BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
                          const BuildEvents& events) {
   for (double q : options.qualities)
-    if (!(q > 1.0)) throw Error("quality " + std::to_string(q) + " must be greater than 1.0");
+    if (!(q > 1.0)) throw Error("quality " + formatNumber(q) + " must be greater than 1.0");
   const std::vector<double> targets =
       levelTargets(options.minElements, options.maxElements, options.levels);
   if (options.mesher == MesherKind::Netgen && !netgenAvailable())

@@ -46,7 +46,7 @@ Index orientElementsPositively(TetMesh& mesh) {
 TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio) {
   if (!(radiusEdgeRatio > 1.0))
     throw Error("the TetGen quality (radius-edge ratio) must be greater than 1.0, got " +
-                std::to_string(radiusEdgeRatio));
+                formatNumber(radiusEdgeRatio));
   tetgenio in, out;
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(surface.vertexCount());
