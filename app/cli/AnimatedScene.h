@@ -59,10 +59,11 @@ class AnimatedScene {
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
   std::string scenarioName_, datasetName_;
-  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<Simulation> simulation_;  // from the first frames run on
   std::unique_ptr<Scenario> scenario_;
-  void startSimulation();
   Points3 nodes_;
+
+  void startSimulation();
 };
 
 }  // namespace tetskin::cli

@@ -52,7 +52,7 @@ void printDataset(const std::filesystem::path& path) {
     if (nonPositive > 0)
       warnings += "  warning: level " + std::to_string(k) + " has " + std::to_string(nonPositive) +
                   " inverted or degenerate element(s) (first: element " + std::to_string(first) +
-                  "); simulate refuses the level\n";
+                  "); simulate refuses it (and multigrid on finer levels)\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::printf("  %-5d %8lld %9lld %12g %12g  %s %s %g\n", k,
                 static_cast<long long>(level.nodeCount()),
