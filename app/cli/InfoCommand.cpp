@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
+#include <vtkPolyData.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "Commands.h"
+#include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
 namespace {
@@ -19,15 +24,26 @@ void printBox(const BoundingBox& box) {
               box.min.z(), box.max.x(), box.max.y(), box.max.z(), box.diagonal());
 }
 
-void printSurface(const std::filesystem::path& path) {
-  const SurfaceMesh mesh = readSurface(path);
-  std::printf("%s: surface\n", path.c_str());
+void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, const char* kind) {
+  std::printf("%s: %s\n", path.c_str(), kind);
   std::printf("  vertices   %lld\n  triangles  %lld\n", static_cast<long long>(mesh.vertexCount()),
               static_cast<long long>(mesh.triangleCount()));
   std::printf("  normals    %s\n  texcoords  %s\n", mesh.hasNormals() ? "yes" : "no",
               mesh.hasTexcoords() ? "yes" : "no");
   std::printf("  area       %g\n", surfaceArea(mesh));
   printBox(boundingBox(mesh));
+}
+
+// A .vtp from `tetskin bind`: the surface, what it is bound to, and the
+// binding's quality summary as `bind` printed it.
+void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
+  const BoundSurface bound = bindingFromPolyData(data, path.string());
+  printSurface(path, bound.surface, "binding");
+  std::printf("  dataset    %s\n", bound.dataset.c_str());
+  std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),
+                           bound.binding)
+                 .c_str(),
+             stdout);
 }
 
 void printDataset(const std::filesystem::path& path) {
@@ -67,13 +83,21 @@ void printDataset(const std::filesystem::path& path) {
 void addInfoCommand(CLI::App& app) {
   auto files = std::make_shared<std::vector<std::filesystem::path>>();
   CLI::App* cmd = app.add_subcommand(
-      "info", "Print a summary of surfaces (.obj/.ply/.stl/.vtp) and datasets (.json/.node/.ele)");
+      "info",
+      "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
+      "bound to and their quality) and datasets (.json/.node/.ele)");
   cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
   cmd->callback([files] {
     for (const auto& path : *files) {
-      if (isSurfaceFile(path))
-        printSurface(path);
-      else
+      if (path.extension() == ".vtp") {
+        const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+        if (isBinding(data))
+          printBinding(path, data);
+        else
+          printSurface(path, readSurface(path), "surface");
+      } else if (isSurfaceFile(path)) {
+        printSurface(path, readSurface(path), "surface");
+      } else
         printDataset(path);
     }
   });

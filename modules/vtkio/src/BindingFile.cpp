@@ -75,6 +75,12 @@ vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
   return data;
 }
 
+bool isBinding(vtkPolyData* data) {
+  vtkFieldData* fd = data ? data->GetFieldData() : nullptr;
+  return fd && fd->GetAbstractArray("Dataset") && fd->GetAbstractArray("Method") &&
+         fd->GetAbstractArray("Level");
+}
+
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
   BoundSurface bound;
   bound.surface = fromVtkPolyData(data, source);

@@ -27,6 +27,9 @@ struct BoundSurface {
 // The surface (with `surface.normals` if present) plus the binding arrays.
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
+// Whether `data` carries a binding's field data (a .vtp from `tetskin bind`
+// rather than a plain surface); bindingFromPolyData still checks the rest.
+bool isBinding(vtkPolyData* data);
 
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
 BoundSurface readBinding(const std::filesystem::path& path);
