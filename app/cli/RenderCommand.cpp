@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -29,9 +30,6 @@ struct RenderArgs {
 
 FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   FurParameters f = config.fur;
-  auto check = [](bool ok, const char* what) {
-    if (!ok) throw Error(std::string(what));
-  };
   if (a.furShells) f.shells = *a.furShells;
   if (a.furMinShells) f.minShells = *a.furMinShells;
   if (a.furTextureSize) f.textureSize = *a.furTextureSize;
@@ -44,14 +42,12 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   if (a.furLighting) f.lighting = parseFurLighting(*a.furLighting);
   if (a.furFins) f.fins = *a.furFins;
   if (a.furAdaptive) f.adaptiveShells = *a.furAdaptive;
-  check(f.shells >= 1 && f.shells <= 256, "--fur-shells must lie in [1, 256]");
-  check(f.minShells >= 1 && f.minShells <= f.shells, "--fur-min-shells must lie in [1, shells]");
-  check(f.length > 0 && f.length <= 1, "--fur-length must lie in (0, 1]");
-  check(f.density >= 0 && f.density <= 1, "--fur-density must lie in [0, 1]");
-  check(f.drag >= 0 && f.drag <= 10, "--fur-drag must lie in [0, 10]");
-  check(f.velvet >= 0 && f.velvet <= 1, "--fur-velvet must lie in [0, 1]");
-  check(f.textureRepeats > 0 && f.textureRepeats <= 1000, "--fur-repeats must lie in (0, 1000]");
-  check(f.textureSize >= 8 && f.textureSize <= 4096, "--fur-texture-size must lie in [8, 4096]");
+  // The config's ranges, named by the option that sets each parameter.
+  if (const auto problem = furParameterProblem(f)) {
+    std::string option = problem->key == "texture_repeats" ? "repeats" : problem->key;
+    std::replace(option.begin(), option.end(), '_', '-');
+    throw Error("--fur-" + option + ": " + problem->what);
+  }
   return f;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/DatasetConfig.h"
@@ -161,6 +163,28 @@ TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
   expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
   expectConfigError("", "invalid JSON", 1);
   expectConfigError("[1, 2]", "/: must be an object");
+}
+
+// The one check of the fur ranges (the config reader and render's options):
+// defaults pass; the first parameter out of range is named with its value,
+// min_shells against the shells in effect.
+TEST(DatasetConfig, FurParameterProblemNamesTheFirstParameterOutOfRange) {
+  FurParameters fur;
+  EXPECT_FALSE(furParameterProblem(fur));
+  fur.length = 0;
+  fur.drag = 11;
+  auto problem = furParameterProblem(fur);
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->key, "length");
+  EXPECT_EQ(problem->what, "must lie in (0, 1], found 0");
+  fur = FurParameters{};
+  fur.shells = 3;  // below the default min_shells 4
+  problem = furParameterProblem(fur);
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->key, "min_shells");
+  EXPECT_EQ(problem->what, "must lie in [1, 3], found 4");
+  fur.density = std::nan("");
+  EXPECT_EQ(furParameterProblem(fur)->key, "density");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "TextLines.h"
@@ -13,6 +14,12 @@ namespace tetskin {
 namespace {
 
 using nlohmann::json;
+
+// "must lie in [min, max], found x" ("(min" when min itself is excluded).
+std::string outOfRange(double min, double max, bool minExclusive, const std::string& found) {
+  return "must lie in " + std::string(minExclusive ? "(" : "[") + formatNumber(min) + ", " +
+         formatNumber(max) + "], found " + found;
+}
 
 // Validates one JSON object and reads typed fields out of it; errors name the
 // file and the JSON pointer of the field.
@@ -40,8 +47,7 @@ class Fields {
     if (!v.is_number()) fail(where(key), "must be a number");
     const double x = v.get<double>();
     if (!std::isfinite(x) || x < min || x > max || (minExclusive && x == min))
-      fail(where(key), "must lie in " + std::string(minExclusive ? "(" : "[") + formatNumber(min) +
-                           ", " + formatNumber(max) + "], found " + v.dump());
+      fail(where(key), outOfRange(min, max, minExclusive, v.dump()));
     return x;
   }
   long long integer(const char* key, long long min, long long max) const {
@@ -52,6 +58,11 @@ class Fields {
       fail(where(key), "must lie in [" + std::to_string(min) + ", " + std::to_string(max) +
                            "], found " + std::to_string(x));
     return x;
+  }
+  // Any finite number; its range is checked elsewhere.
+  double anyNumber(const char* key) const {
+    constexpr double kLargest = std::numeric_limits<double>::max();
+    return number(key, -kLargest, kLargest);
   }
   std::string string(const char* key) const {
     const json& v = get(key);
@@ -134,6 +145,28 @@ FurLighting parseFurLighting(std::string_view name) {
   throw Error("unknown fur lighting '" + std::string(name) + "' (known: velvet, kajiya-kay)");
 }
 
+std::optional<FurParameterProblem> furParameterProblem(const FurParameters& p) {
+  std::optional<FurParameterProblem> problem;
+  auto check = [&](const char* key, double value, double min, double max,
+                   bool minExclusive = false) {
+    if (problem) return;
+    if (!std::isfinite(value) || value < min || value > max || (minExclusive && value == min))
+      problem = FurParameterProblem{key, outOfRange(min, max, minExclusive, formatNumber(value))};
+  };
+  check("shells", p.shells, 1, 256);
+  check("length", p.length, 0, 1, true);
+  check("density", p.density, 0, 1);
+  check("texture_size", p.textureSize, 8, 4096);
+  check("texture_repeats", p.textureRepeats, 0, 1000, true);
+  check("root_shade", p.rootShade, 0, 1);
+  check("drag", p.drag, 0, 10);
+  check("max_bend", p.maxBend, 0, 1);
+  check("velvet", p.velvet, 0, 1);
+  check("base_darkening", p.baseDarkening, 0, 1);
+  check("min_shells", p.minShells, 1, p.shells);
+  return problem;
+}
+
 DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
                                  const std::filesystem::path& directory) {
   json root;
@@ -188,16 +221,18 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     const json& enabled = f.get("enabled");
     if (!enabled.is_boolean()) f.fail("/fur/enabled", "must be true or false");
     config.fur.enabled = enabled.get<bool>();
-    config.fur.shells = static_cast<int>(f.integer("shells", 1, 256));
-    config.fur.length = f.number("length", 0, 1, true);
-    config.fur.density = f.number("density", 0, 1);
-    config.fur.textureSize = static_cast<int>(f.integer("texture_size", 8, 4096));
-    config.fur.seed = static_cast<std::uint32_t>(f.integer("seed", 0, 0xffffffffLL));
+    // Types here; ranges once all are read (furParameterProblem).
+    constexpr long long kAnyInt = std::numeric_limits<int>::max();
     FurParameters& p = config.fur;
-    if (f.has("texture_repeats")) p.textureRepeats = f.number("texture_repeats", 0, 1000, true);
-    if (f.has("root_shade")) p.rootShade = f.number("root_shade", 0, 1);
-    if (f.has("drag")) p.drag = f.number("drag", 0, 10);
-    if (f.has("max_bend")) p.maxBend = f.number("max_bend", 0, 1);
+    p.shells = static_cast<int>(f.integer("shells", -kAnyInt, kAnyInt));
+    p.length = f.anyNumber("length");
+    p.density = f.anyNumber("density");
+    p.textureSize = static_cast<int>(f.integer("texture_size", -kAnyInt, kAnyInt));
+    p.seed = static_cast<std::uint32_t>(f.integer("seed", 0, 0xffffffffLL));
+    if (f.has("texture_repeats")) p.textureRepeats = f.anyNumber("texture_repeats");
+    if (f.has("root_shade")) p.rootShade = f.anyNumber("root_shade");
+    if (f.has("drag")) p.drag = f.anyNumber("drag");
+    if (f.has("max_bend")) p.maxBend = f.anyNumber("max_bend");
     if (f.has("lighting")) {
       try {
         p.lighting = parseFurLighting(f.string("lighting"));
@@ -205,14 +240,16 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
         f.fail("/fur/lighting", e.what());
       }
     }
-    if (f.has("velvet")) p.velvet = f.number("velvet", 0, 1);
-    if (f.has("base_darkening")) p.baseDarkening = f.number("base_darkening", 0, 1);
+    if (f.has("velvet")) p.velvet = f.anyNumber("velvet");
+    if (f.has("base_darkening")) p.baseDarkening = f.anyNumber("base_darkening");
     for (auto [key, flag] : {std::pair{"fins", &p.fins}, {"adaptive_shells", &p.adaptiveShells}})
       if (f.has(key)) {
         if (!f.get(key).is_boolean()) f.fail(f.where(key), "must be true or false");
         *flag = f.get(key).get<bool>();
       }
-    if (f.has("min_shells")) p.minShells = static_cast<int>(f.integer("min_shells", 1, p.shells));
+    if (f.has("min_shells"))
+      p.minShells = static_cast<int>(f.integer("min_shells", -kAnyInt, kAnyInt));
+    if (const auto problem = furParameterProblem(p)) f.fail("/fur/" + problem->key, problem->what);
     if (auto t = f.optionalString("color_texture")) p.colorTexture = *t;
     for (const char* key : {"texture_repeats", "root_shade", "drag", "max_bend", "lighting",
                             "velvet", "base_darkening", "fins", "adaptive_shells", "min_shells"})

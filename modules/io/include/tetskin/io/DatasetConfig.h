@@ -55,6 +55,17 @@ struct FurParameters {
 const char* toString(FurLighting lighting);
 FurLighting parseFurLighting(std::string_view name);  // throws Error
 
+// The first numeric fur parameter outside its range (the ranges noted in
+// FurParameters), as its config key and what is wrong, e.g. {"shells",
+// "must lie in [1, 256], found 300"}; nullopt when all are in range. The one
+// check of the ranges: the config reader and the command line's overrides
+// both use it.
+struct FurParameterProblem {
+  std::string key;  // snake_case, as in the config's fur section
+  std::string what;
+};
+std::optional<FurParameterProblem> furParameterProblem(const FurParameters& fur);
+
 struct LevelSource {
   std::string input;   // surface file the level was meshed from
   std::string mesher;  // "tetgen", "netgen", or what else produced it
