@@ -8,6 +8,7 @@
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -41,6 +42,7 @@ void run(BuildArgs& a) {
   if (out.extension() == ".json") out.replace_extension();
   const std::filesystem::path json = std::filesystem::path(out.string() + ".json");
   const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
+  requireWritableLocation(json);  // before the meshing, not after it
 
   a.options.mesher = a.mesher == "netgen" ? MesherKind::Netgen : MesherKind::TetGen;
   a.options.qualities = a.qualities;

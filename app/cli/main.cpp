@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // tetskin: the command-line front end. Parses, wires modules, reports; no math.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const tetskin::Error& e) {
     std::cerr << "error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // e.g. a folder to create where a file is: the path and the reason.
+    std::cerr << "error: " << e.path1().string() << ": " << e.code().message() << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "error: out of memory\n";

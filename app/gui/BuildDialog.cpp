@@ -17,6 +17,7 @@
 #include <filesystem>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/meshing/IsolatedJobs.h"
 #include "tetskin/meshing/ModelBuilder.h"
@@ -163,6 +164,7 @@ bool BuildDialog::start() {
     auto post = [this](auto f) { QMetaObject::invokeMethod(this, f, Qt::QueuedConnection); };
     try {
       const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
+      requireWritableLocation(json);  // before the meshing, not after it
       std::vector<SurfaceInput> inputs;
       for (const auto& path : paths) {
         SurfaceInput input{

@@ -60,5 +60,22 @@ TEST(AtomicFile, WriterRejectingInvalidMeshWritesNothing) {
   EXPECT_EQ(dir.listing(), "");
 }
 
+// A location is writable when the nearest existing folder on its path is a
+// writable folder (the rest would be made); checking it makes nothing.
+TEST(AtomicFile, WritableLocationIsCheckedWithoutMakingFolders) {
+  test::ScratchDir dir;
+  dir.write("file.txt", "not a folder");
+  EXPECT_NO_THROW(requireWritableLocation(dir / "out.json"));
+  EXPECT_NO_THROW(requireWritableLocation(dir / "new" / "deeper" / "out.json"));
+  try {
+    requireWritableLocation(dir / "file.txt" / "sub" / "out.json");
+    ADD_FAILURE() << "no error under a file";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.message(),
+              "cannot be written: " + (dir / "file.txt").string() + " is not a folder");
+  }
+  EXPECT_EQ(dir.listing(), "file.txt\n");
+}
+
 }  // namespace
 }  // namespace tetskin

@@ -84,4 +84,15 @@ void writeFileAtomically(const std::filesystem::path& target,
   renameOnto(tmp, target);
 }
 
+void requireWritableLocation(const std::filesystem::path& target) {
+  std::filesystem::path existing = std::filesystem::absolute(target).parent_path();
+  std::error_code error;
+  while (!std::filesystem::exists(existing, error) && existing.has_relative_path())
+    existing = existing.parent_path();
+  if (!std::filesystem::is_directory(existing, error))
+    throw Error(target.string(), 0, "cannot be written: " + existing.string() + " is not a folder");
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw Error(target.string(), 0, "cannot be written: " + existing.string() + " is not writable");
+}
+
 }  // namespace tetskin

@@ -41,4 +41,10 @@ void writeTextAtomically(const std::filesystem::path& target,
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& write);
 
+// Throws Error naming `target` when no file could be written there because
+// the nearest existing folder on its path is a file, or is not writable (the
+// folders after it would be made). For commands that work long before they
+// write, so that they fail before the work rather than after it.
+void requireWritableLocation(const std::filesystem::path& target);
+
 }  // namespace tetskin
