@@ -14,6 +14,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
@@ -93,8 +94,8 @@ void addInfoCommand(CLI::App& app) {
         const vtkSmartPointer<vtkPolyData> data = readVtp(path);
         if (isBinding(data))
           printBinding(path, data);
-        else
-          printSurface(path, readSurface(path), "surface");
+        else  // (what readSurface makes of a .vtp, without reading it again)
+          printSurface(path, fromVtkPolyData(data, path.string()), "surface");
       } else if (isSurfaceFile(path)) {
         printSurface(path, readSurface(path), "surface");
       } else

@@ -66,6 +66,7 @@ CLI::Validator numberAbove(double bound) {
       // Shown in --help after the type, as CLI11's own checks are.
       bound == 0 ? "POSITIVE" : "> " + limit);
 }
+
 CLI::Validator fileEnding(const std::string& extension) {
   auto lower = [](std::string text) {
     std::transform(text.begin(), text.end(), text.begin(),
