@@ -346,7 +346,9 @@ void MainWindow::buildMenus() {
     if (!path.isEmpty()) exportFrame(path);
   });
   file->addAction("&Screenshot...", this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, "Screenshot", "tetskin.png", "*.png");
+    QString path = QFileDialog::getSaveFileName(this, "Screenshot", "tetskin.png", "*.png");
+    if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
+      path += ".png";  // as the filter says
     if (!path.isEmpty()) saveScreenshot(path);
   });
   file->addSeparator();
@@ -680,8 +682,17 @@ vtkSmartPointer<vtkImageData> MainWindow::grabImage() {
   return image;
 }
 
+QString MainWindow::screenshotNameProblem(const QString& path) {
+  // The image is a PNG whatever the name says; a name that says otherwise
+  // would mislead whoever opens it.
+  if (lowerExtension(path.toStdString()) == ".png") return {};
+  return "a screenshot is a PNG image: the name must end in .png";
+}
+
 bool MainWindow::saveScreenshot(const QString& path, bool wholeWindow) {
   try {
+    if (const QString problem = screenshotNameProblem(path); !problem.isEmpty())
+      throw Error(path.toStdString(), 0, problem.toStdString());
     vtkSmartPointer<vtkImageData> view = grabImage();
     if (!wholeWindow) {
       writePng(path.toStdString(), view);

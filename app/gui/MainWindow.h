@@ -61,6 +61,9 @@ class MainWindow : public QMainWindow {
   vtkSmartPointer<vtkImageData> grabImage();
   // The 3D view only, or (wholeWindow) the window with its docks.
   bool saveScreenshot(const QString& path, bool wholeWindow = false);
+  // Why `path` cannot name a screenshot (the image is a PNG: the name must
+  // end in .png), or an empty string.
+  static QString screenshotNameProblem(const QString& path);
   // .vtu: the simulated level now; .vtp: the deformed bound surface now.
   bool exportFrame(const QString& path);
   bool startRecording(const QString& pvd);

@@ -10,6 +10,7 @@
 #include <QCommandLineParser>
 #include <QPushButton>
 #include <QSurfaceFormat>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -38,7 +39,10 @@ int main(int argc, char** argv) {
                                       "FILE");
   const QCommandLineOption path("path", "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu", "PATH",
                                 "cpu");
-  const QCommandLineOption size("size", "window size WIDTHxHEIGHT", "WxH", "1280x800");
+  const QCommandLineOption size("size",
+                                "with --screenshot the image's size (the view's, or with --window "
+                                "the window's), else the window's: WIDTHxHEIGHT",
+                                "WxH", "1280x800");
   const QCommandLineOption camera("camera", "iso, front, side or top", "PRESET", "iso");
   const QCommandLineOption whole("window", "with --screenshot: the whole window, docks included");
   const QCommandLineOption control("control", "control mesh: none, surface, wireframe, shrink",
@@ -52,18 +56,42 @@ int main(int argc, char** argv) {
       {screenshot, whole, path, size, camera, control, colorBy, highlight, pick, steps});
   parser.process(app);
 
-  int width = 1280, height = 800;
-  if (std::sscanf(parser.value(size).toStdString().c_str(), "%dx%d", &width, &height) != 2 ||
-      width < 64 || height < 64) {
-    std::fprintf(stderr, "error: --size must be WIDTHxHEIGHT, got '%s'\n",
+  // WIDTHxHEIGHT, both whole numbers in [64, 8192], nothing else.
+  const QStringList edges = parser.value(size).split('x');
+  bool widthOk = false, heightOk = false;
+  const int width = edges.size() == 2 ? edges[0].toInt(&widthOk) : 0;
+  const int height = edges.size() == 2 ? edges[1].toInt(&heightOk) : 0;
+  if (!widthOk || !heightOk || std::min(width, height) < 64 || std::max(width, height) > 8192) {
+    std::fprintf(stderr, "error: --size: '%s' is not WIDTHxHEIGHT with both in [64, 8192]\n",
                  parser.value(size).toStdString().c_str());
     return 1;
   }
+  bool stepsOk = false;
+  const int stepCount = parser.value(steps).toInt(&stepsOk);
+  if (!stepsOk || stepCount < 0) {
+    std::fprintf(stderr, "error: --steps: '%s' is not a whole number >= 0\n",
+                 parser.value(steps).toStdString().c_str());
+    return 1;
+  }
   const bool oneShot = parser.isSet(screenshot);
+  if (const QString problem =
+          tetskin::gui::MainWindow::screenshotNameProblem(parser.value(screenshot));
+      oneShot && !problem.isEmpty()) {
+    std::fprintf(stderr, "error: %s: %s\n", parser.value(screenshot).toStdString().c_str(),
+                 problem.toStdString().c_str());
+    return 1;
+  }
   tetskin::gui::MainWindow window(!oneShot);
   window.resize(width, height);
   window.show();
   QApplication::processEvents();
+  if (oneShot && !parser.isSet(whole)) {
+    // The image is the view's: --size is then its size, the window grown
+    // by what the docks and bars take beside it.
+    window.view()->setFixedSize(width, height);
+    window.resize(window.minimumSizeHint());
+    QApplication::processEvents();
+  }
   const auto fail = [&window] {
     std::fprintf(stderr, "error: %s\n", window.lastError().toStdString().c_str());
     return 1;
@@ -74,27 +102,25 @@ int main(int argc, char** argv) {
     if (!window.lastError().isEmpty() && oneShot) return fail();
   }
   // Settings as a user would make them in the docks.
-  const auto choose = [&window](const char* box, const QString& value) {
+  // An unknown value is named with the option and the box's own entries
+  // (the choices the dock offers), as the command line's errors are.
+  const auto choose = [&window](const char* box, const char* option, const QString& value) {
     auto* combo = window.findChild<QComboBox*>(box);
     if (combo->findText(value) < 0) {
-      std::fprintf(stderr, "error: '%s' is not one of the %s choices\n",
-                   value.toStdString().c_str(), box);
+      QStringList choices;
+      for (int i = 0; i < combo->count(); ++i) choices << combo->itemText(i);
+      std::fprintf(stderr, "error: %s: '%s' is not one of %s\n", option,
+                   value.toStdString().c_str(), choices.join(", ").toStdString().c_str());
       return false;
     }
     combo->setCurrentText(value);
     return true;
   };
-  if (parser.isSet(camera) && !choose("camera", parser.value(camera))) return 1;
-  if (parser.isSet(control) && !choose("controlStyle", parser.value(control))) return 1;
-  if (parser.isSet(colorBy) && !choose("colorBy", parser.value(colorBy))) return 1;
-  if (parser.isSet(highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
-  bool stepsOk = false;
-  const int stepCount = parser.value(steps).toInt(&stepsOk);
-  if (!stepsOk || stepCount < 0) {
-    std::fprintf(stderr, "error: --steps must be a whole number >= 0, got '%s'\n",
-                 parser.value(steps).toStdString().c_str());
+  if (parser.isSet(camera) && !choose("camera", "--camera", parser.value(camera))) return 1;
+  if (parser.isSet(control) && !choose("controlStyle", "--control", parser.value(control)))
     return 1;
-  }
+  if (parser.isSet(colorBy) && !choose("colorBy", "--color-by", parser.value(colorBy))) return 1;
+  if (parser.isSet(highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
   for (int i = 0; i < stepCount; ++i) window.findChild<QPushButton*>("step")->click();
   // Steps asked for but not taken (the simulation could not start: its
   // error is the window's last) must not pass for a simulated screenshot.
