@@ -61,7 +61,7 @@ void addBindCommand(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "binding file (.vtp)")
       ->required()
       ->check(fileEnding(".vtp"));
-  cmd->add_option("--level", a->level, "level, 0 = coarsest (default: finest)");
+  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--method", a->method, "closest (exact), seed (the report's), embed (tetrahedra)")
       ->capture_default_str()
       ->check(CLI::IsMember({"closest", "seed", "embed"}));

@@ -116,7 +116,8 @@ void addBuildCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(numberAbove(1));
   cmd->add_option("--lod-series", a->lodSeries, "read NAME_0.obj .. NAME_{K-1}.obj");
-  cmd->add_option("--inputs", a->lodInputs, "K, the number of files of --lod-series");
+  cmd->add_option("--inputs", a->lodInputs, "K, the number of files of --lod-series")
+      ->check(wholeNumber(1));
   cmd->add_flag("--decimate", a->options.decimate,
                 "derive coarser input levels of detail from the finest surface");
   cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")

@@ -53,7 +53,7 @@ void addConvertCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("OUT", o->output, "output file")->required();
-  cmd->add_option("--level", o->level, "dataset level, 0 = coarsest (default: finest)");
+  cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
   cmd->callback([o] {
     requireNotAnInput(o->output, {o->input});
     if (isSurfaceFile(o->input)) {

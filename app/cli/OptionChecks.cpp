@@ -29,6 +29,12 @@ bool parsesAll(const std::string& text, Number& value) {
   return !text.empty() && error == std::errc{} && stop == end;
 }
 
+std::string lowerCase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
 }  // namespace
 
 CLI::Validator wholeNumber(long long min, long long max) {
@@ -47,6 +53,40 @@ CLI::Validator wholeNumber(long long min, long long max) {
       : min == 0 ? "NONNEGATIVE"
       : min == 1 ? "POSITIVE"
                  : range);
+}
+
+CLI::Validator anyWholeNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        long long value = 0;
+        if (!parsesAll(text, value) || value < std::numeric_limits<int>::min() ||
+            value > std::numeric_limits<int>::max())
+          return "'" + text + "' is not a whole number";
+        return {};
+      },
+      "");
+}
+
+CLI::Validator finiteNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        if (!parsesAll(text, value) || !std::isfinite(value))
+          return "'" + text + "' is not a finite number";
+        return {};
+      },
+      "");
+}
+
+CLI::Validator trueOrFalse() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::string word = lowerCase(text);
+        for (const char* known : {"true", "false", "on", "off", "yes", "no", "1", "0"})
+          if (word == known) return {};
+        return "'" + text + "' is not true or false";
+      },
+      "true/false");
 }
 
 CLI::Validator positiveNumber() {
@@ -68,14 +108,10 @@ CLI::Validator numberAbove(double bound) {
 }
 
 CLI::Validator fileEnding(const std::string& extension) {
-  auto lower = [](std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-  };
   return CLI::Validator(
-      [extension, lower](std::string& text) -> std::string {
-        if (lower(std::filesystem::path(text).extension().string()) == lower(extension)) return {};
+      [extension](std::string& text) -> std::string {
+        if (lowerCase(std::filesystem::path(text).extension().string()) == lowerCase(extension))
+          return {};
         return "'" + text + "' does not end in " + extension;
       },
       "");

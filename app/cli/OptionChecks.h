@@ -17,11 +17,27 @@ namespace tetskin::cli {
 // A whole number in [min, max] (digits with an optional sign).
 CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<int>::max());
 
+// --help of the --level options (resolveLevel, io Dataset.h).
+inline constexpr const char* kLevelHelp =
+    "dataset level: 0 = coarsest, -1 = finest (the default), -2 the one below it, ...";
+
+// A whole number of any sign, e.g. --level (negative counts from the
+// finest) or an option whose range a module checks with its own message.
+CLI::Validator anyWholeNumber();
+
+// A finite number of any sign (its range checked where it is used).
+CLI::Validator finiteNumber();
+
 // A finite number > 0.
 CLI::Validator positiveNumber();
 
 // A finite number > `bound` (each element, on a list option).
 CLI::Validator numberAbove(double bound);
+
+// true or false (also on/off, yes/no, 1/0, any letter case) for a bool
+// option. CLI11 alone reads any whole number as true ("--fur-fins 2") and
+// answers other words with "Could not convert".
+CLI::Validator trueOrFalse();
 
 // A file name ending in `extension` (e.g. ".vtp", any letter case): an
 // output whose format is fixed, checked before any work so that a binding

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -61,7 +63,7 @@ void run(const RenderArgs& a) {
   o.control = a.control;
   o.texture = a.texture;
   o.datasetName = a.dataset.string();
-  if (o.control != "none") parseControlMeshStyle(o.control);  // reject typos before any work
+  parseControlMeshStyle(o.control);  // reject typos before any work
   const Dataset dataset = loadDataset(a.dataset);
   o.fur = furParameters(a, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
@@ -110,24 +112,41 @@ void addRenderCommand(CLI::App& app) {
                   "fur.color_texture)")
       ->check(CLI::ExistingFile);
   const char* fur = "Fur (fur paths; default: the dataset config's fur section)";
-  cmd->add_option("--fur-shells", a->furShells, "most shells drawn")->group(fur);
-  cmd->add_option("--fur-min-shells", a->furMinShells, "fewest shells when adaptive")->group(fur);
-  cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
+  // (The fur values' ranges are io furParameterProblem's, checked in run();
+  // the checks here only keep CLI11's "Could not convert" from the user.)
+  cmd->add_option("--fur-shells", a->furShells, "most shells drawn")
+      ->check(anyWholeNumber())
       ->group(fur);
-  cmd->add_option("--fur-length", a->furLength, "fur length / bounding-box diagonal")->group(fur);
-  cmd->add_option("--fur-density", a->furDensity, "share of texels with a hair")->group(fur);
+  cmd->add_option("--fur-min-shells", a->furMinShells, "fewest shells when adaptive")
+      ->check(anyWholeNumber())
+      ->group(fur);
+  cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
+      ->check(trueOrFalse())
+      ->group(fur);
+  cmd->add_option("--fur-length", a->furLength, "fur length / bounding-box diagonal")
+      ->check(finiteNumber())
+      ->group(fur);
+  cmd->add_option("--fur-density", a->furDensity, "share of texels with a hair")
+      ->check(finiteNumber())
+      ->group(fur);
   cmd->add_option("--fur-texture-size", a->furTextureSize, "fur texture edge in texels")
+      ->check(anyWholeNumber())
       ->group(fur);
   cmd->add_option("--fur-repeats", a->furRepeats, "fur texture tiles across the diagonal")
+      ->check(finiteNumber())
       ->group(fur);
-  cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")->group(fur);
+  cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
+      ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
+      ->group(fur);
   cmd->add_option("--fur-drag", a->furDrag, "seconds of velocity the tips trail by (0: static)")
+      ->check(finiteNumber())
       ->group(fur);
   cmd->add_option("--fur-lighting", a->furLighting, "velvet or kajiya-kay")->group(fur);
   cmd->add_option("--fur-velvet", a->furVelvet, "highlight offset off the mirror direction")
+      ->check(finiteNumber())
       ->group(fur);
-  cmd->add_option("--fur-fins", a->furFins, "silhouette fins (true/false)")->group(fur);
-  cmd->add_option("--level", a->level, "bound and simulated level (default: finest)");
+  cmd->add_option("--fur-fins", a->furFins, "silhouette fins")->check(trueOrFalse())->group(fur);
+  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
   cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();
   cmd->add_option("--control", a->control, "control mesh: none, surface, wireframe or shrink")

@@ -125,7 +125,7 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--scenario", a->scenario, "wobble, drop, twist or sag")
       ->capture_default_str()
       ->check(CLI::IsMember({"wobble", "drop", "twist", "sag"}));
-  cmd->add_option("--level", a->level, "simulated level, 0 = coarsest (default: finest)");
+  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--solver", a->solver,
                   "cg (block-Jacobi CG), multigrid (CG with a V-cycle) or auto (whichever of "
                   "the two is faster here, timed every 120 steps)")
@@ -147,16 +147,22 @@ void addSimulateCommand(CLI::App& app) {
                   "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
       ->capture_default_str()
       ->check(CLI::IsMember({"galerkin", "rediscretized"}));
+  // (Their ranges are validateMaterial's, checked when the simulation starts.)
   cmd->add_option("--young", a->options.material.youngsModulus, "Young's modulus (Pa)")
-      ->capture_default_str();
-  cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteNumber());
+  cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio, in (-1, 0.5)")
+      ->capture_default_str()
+      ->check(finiteNumber());
   cmd->add_option("--density", a->options.material.density, "density (kg/m^3)")
-      ->capture_default_str();
-  cmd->add_option("--alpha", a->options.material.massDamping, "Rayleigh mass damping")
-      ->capture_default_str();
-  cmd->add_option("--beta", a->options.material.stiffnessDamping, "Rayleigh stiffness damping")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteNumber());
+  cmd->add_option("--alpha", a->options.material.massDamping, "Rayleigh mass damping (1/s)")
+      ->capture_default_str()
+      ->check(finiteNumber());
+  cmd->add_option("--beta", a->options.material.stiffnessDamping, "Rayleigh stiffness damping (s)")
+      ->capture_default_str()
+      ->check(finiteNumber());
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame")
       ->check(CLI::ExistingFile);

@@ -138,14 +138,13 @@ QWidget* MainWindow::buildViewDock() {
     scene_->setFurVisible(on);
     renderNow();
   });
-  controlStyle_ = combo("controlStyle", {"none", "surface", "wireframe", "shrink"});
+  QStringList controlStyles;
+  for (const char* style : kControlMeshStyleNames) controlStyles << style;
+  controlStyle_ = combo("controlStyle", controlStyles);
   controlStyle_->setCurrentText("wireframe");
   form->addRow("Control mesh", controlStyle_);
   connect(controlStyle_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    if (name == "none")
-      scene_->setControlStyle(std::nullopt);
-    else
-      scene_->setControlStyle(parseControlMeshStyle(name.toStdString()));
+    scene_->setControlStyle(parseControlMeshStyle(name.toStdString()));
     renderNow();
   });
   controlLevel_ = new QSpinBox;

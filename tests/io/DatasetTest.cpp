@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
@@ -80,7 +82,26 @@ TEST(Dataset, NodeElePairLoadsAsOneLevel) {
   EXPECT_EQ(d.mesh.elements.row(1), Eigen::RowVector4i(4, 1, 3, 2));
   EXPECT_EQ(resolveLevel(d.mesh, -1), 0);
   EXPECT_THROW(resolveLevel(d.mesh, 1), Error);
-  EXPECT_THROW(resolveLevel(d.mesh, -2), Error);  // only -1 stands for the finest
+  EXPECT_THROW(resolveLevel(d.mesh, -2), Error);  // one level: nothing below the finest
+}
+
+TEST(Dataset, NegativeLevelsCountFromTheFinest) {
+  MultiLevelTetMesh mesh;  // (resolveLevel reads only the level count)
+  mesh.levels.resize(3);
+  EXPECT_EQ(resolveLevel(mesh, 0), 0);
+  EXPECT_EQ(resolveLevel(mesh, 2), 2);
+  EXPECT_EQ(resolveLevel(mesh, -1), 2);
+  EXPECT_EQ(resolveLevel(mesh, -3), 0);
+  for (int level : {3, -4, std::numeric_limits<int>::min()}) {
+    try {
+      resolveLevel(mesh, level);
+      FAIL() << level;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "level " + std::to_string(level) +
+                                           " does not exist: the dataset has levels 0..2 (or "
+                                           "-3..-1 counted from the finest)");
+    }
+  }
 }
 
 }  // namespace

@@ -67,11 +67,13 @@ void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset) {
 }
 
 int resolveLevel(const MultiLevelTetMesh& mesh, int level) {
-  const int resolved = level == -1 ? mesh.finestLevel() : level;
-  if (resolved < 0 || resolved >= mesh.levelCount())
+  const int count = mesh.levelCount();
+  const long long resolved = level < 0 ? static_cast<long long>(count) + level : level;
+  if (resolved < 0 || resolved >= count)
     throw Error("level " + std::to_string(level) + " does not exist: the dataset has levels 0.." +
-                std::to_string(mesh.levelCount() - 1));
-  return resolved;
+                std::to_string(count - 1) + " (or -" + std::to_string(count) +
+                "..-1 counted from the finest)");
+  return static_cast<int>(resolved);
 }
 
 }  // namespace tetskin

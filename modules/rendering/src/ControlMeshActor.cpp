@@ -13,12 +13,15 @@
 
 namespace tetskin {
 
-ControlMeshStyle parseControlMeshStyle(std::string_view name) {
+std::optional<ControlMeshStyle> parseControlMeshStyle(std::string_view name) {
+  if (name == "none") return std::nullopt;
   if (name == "surface") return ControlMeshStyle::Surface;
   if (name == "wireframe") return ControlMeshStyle::Wireframe;
   if (name == "shrink") return ControlMeshStyle::ShrunkenTets;
-  throw Error("unknown control mesh style '" + std::string(name) +
-              "' (surface, wireframe, shrink)");
+  std::string known;
+  for (const char* style : kControlMeshStyleNames)
+    known += std::string(known.empty() ? "" : ", ") + style;
+  throw Error("unknown control mesh style '" + std::string(name) + "' (known: " + known + ")");
 }
 
 struct ControlMeshActor::Impl {

@@ -27,8 +27,9 @@ Dataset loadDataset(const std::filesystem::path& path);
 // and file names from the mesh.
 void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset);
 
-// Resolves a level argument: -1 means the finest; any other level outside
-// the dataset (negative included) is an Error.
+// Resolves a level argument: 0 is the coarsest; a negative level counts
+// from the finest (-1 the finest, -2 the one below it), as Python indexes;
+// a level outside the dataset either way is an Error.
 int resolveLevel(const MultiLevelTetMesh& mesh, int level);
 
 }  // namespace tetskin

@@ -5,7 +5,9 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "tetskin/core/TetMesh.h"
@@ -15,8 +17,12 @@ class vtkActor;
 namespace tetskin {
 
 enum class ControlMeshStyle { Surface, Wireframe, ShrunkenTets };
-// "surface", "wireframe", "shrink"; throws Error otherwise.
-ControlMeshStyle parseControlMeshStyle(std::string_view name);
+// The names the command line and the GUI offer: "none" (no control mesh
+// drawn), "surface", "wireframe", "shrink".
+inline constexpr std::array<const char*, 4> kControlMeshStyleNames = {"none", "surface",
+                                                                      "wireframe", "shrink"};
+// One of kControlMeshStyleNames ("none": nullopt); throws Error otherwise.
+std::optional<ControlMeshStyle> parseControlMeshStyle(std::string_view name);
 
 class ControlMeshActor {
  public:

@@ -6,7 +6,7 @@ namespace tetskin {
 
 struct ElasticMaterial {
   double youngsModulus = 2.0e5;    // Pa: the bunny (10 m, 100 kg/m^3) sags about 5% under gravity
-  double poissonRatio = 0.3;       // [0, 0.5)
+  double poissonRatio = 0.3;       // (-1, 0.5)
   double density = 100.0;          // kg / m^3
   double massDamping = 0.1;        // Rayleigh alpha: C = alpha M + beta K
   double stiffnessDamping = 0.01;  // Rayleigh beta, seconds
