@@ -84,6 +84,24 @@ TEST(ModelBuilder, UnrepairableInputsAreSkippedOrReported) {
   EXPECT_TRUE(skipped);
 }
 
+TEST(ModelBuilder, TheSameSurfaceTwiceIsRefusedBeforeAnyMeshing) {
+  const SurfaceMesh box = test::box({0, 0, 0}, {1, 1, 1});
+  SurfaceMesh moved = box;
+  moved.positions(0, 0) += 1e-9;  // a different surface, if barely
+  std::vector<std::string> log;
+  try {
+    buildDataset({{"a.obj", box, ""}, {"b.obj", moved, ""}, {"copy.obj", box, ""}}, BuildOptions{},
+                 {[&](const std::string& l) { log.push_back(l); }, {}, {}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), "copy.obj");
+    EXPECT_STREQ(e.what(),
+                 "copy.obj: is the same surface as the input a.obj; each input is a level of "
+                 "detail of its own");
+  }
+  EXPECT_TRUE(log.empty());  // not even repaired
+}
+
 TEST(ModelBuilder, NetgenBuildsLevels) {
   BuildOptions options;
   options.mesher = MesherKind::Netgen;

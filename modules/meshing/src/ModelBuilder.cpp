@@ -41,6 +41,18 @@ void say(const BuildEvents& events, const std::string& line) {
 std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
                                          const BuildOptions& options, const BuildEvents& events) {
   if (inputs.empty()) throw Error("no input surface given");
+  // The same surface twice (one file named twice, or a copy) would only be
+  // meshed twice: most likely a slip of the command line.
+  auto sameSurface = [](const SurfaceMesh& a, const SurfaceMesh& b) {
+    return a.positions.rows() == b.positions.rows() && a.triangles.rows() == b.triangles.rows() &&
+           a.positions == b.positions && a.triangles == b.triangles;
+  };
+  for (std::size_t j = 1; j < inputs.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (sameSurface(inputs[i].mesh, inputs[j].mesh))
+        throw Error(inputs[j].name, 0,
+                    "is the same surface as the input " + inputs[i].name +
+                        "; each input is a level of detail of its own");
   // Finest input first: the search order of the level selection starts there.
   std::stable_sort(inputs.begin(), inputs.end(), [](const SurfaceInput& a, const SurfaceInput& b) {
     return a.mesh.triangleCount() > b.mesh.triangleCount();
