@@ -42,9 +42,10 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
 
 void AnimatedScene::startSimulation() {
   const TetMesh rest = extractLevel(dataset_.mesh, level_);
+  SimulationOptions options;
+  options.material = dataset_.config.elasticity;  // the body the dataset describes
   simulation_ = std::make_unique<Simulation>(
-      dataset_.mesh, level_, scenarioOptions(scenarioName_, SimulationOptions{}, rest),
-      datasetName_);
+      dataset_.mesh, level_, scenarioOptions(scenarioName_, options, rest), datasetName_);
   scenario_ = makeScenario(scenarioName_);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "Commands.h"
 #include "OptionChecks.h"
@@ -29,8 +31,20 @@ struct SimulateArgs {
   int steps = 120, level = -1, every = 1;
   std::string scenario = "wobble", solver = "auto", coarseOperators = "galerkin";
   SimulationOptions options;
+  std::optional<double> young, poisson, density, alpha, beta;  // over the config's elasticity
   bool quiet = false;
 };
+
+// The config's material with the options given on the command line over it.
+ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
+  ElasticMaterial m = dataset.config.elasticity;
+  m.youngsModulus = a.young.value_or(m.youngsModulus);
+  m.poissonRatio = a.poisson.value_or(m.poissonRatio);
+  m.density = a.density.value_or(m.density);
+  m.massDamping = a.alpha.value_or(m.massDamping);
+  m.stiffnessDamping = a.beta.value_or(m.stiffnessDamping);
+  return m;
+}
 
 void run(SimulateArgs& a) {
   const Dataset dataset = loadDataset(a.dataset);
@@ -38,6 +52,7 @@ void run(SimulateArgs& a) {
   a.options.solver = solverKindFromString(a.solver);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
+  a.options.material = materialOf(a, dataset);
   const SimulationOptions options =
       scenarioOptions(a.scenario, a.options, extractLevel(dataset.mesh, level));
   std::unique_ptr<Scenario> scenario = makeScenario(a.scenario);
@@ -94,6 +109,7 @@ void run(SimulateArgs& a) {
       scenario->name(), toString(options.solver),
       options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "");
+  std::printf("  material: %s\n", describe(options.material).c_str());
   std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
               a.steps / std::max(stepSeconds, 1e-12),
               static_cast<double>(iterations) / std::max(a.steps, 1));
@@ -147,22 +163,23 @@ void addSimulateCommand(CLI::App& app) {
                   "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
       ->capture_default_str()
       ->check(CLI::IsMember({"galerkin", "rediscretized"}));
-  // (Their ranges are validateMaterial's, checked when the simulation starts.)
-  cmd->add_option("--young", a->options.material.youngsModulus, "Young's modulus (Pa)")
-      ->capture_default_str()
-      ->check(finiteNumber());
-  cmd->add_option("--poisson", a->options.material.poissonRatio, "Poisson's ratio, in (-1, 0.5)")
-      ->capture_default_str()
-      ->check(finiteNumber());
-  cmd->add_option("--density", a->options.material.density, "density (kg/m^3)")
-      ->capture_default_str()
-      ->check(finiteNumber());
-  cmd->add_option("--alpha", a->options.material.massDamping, "Rayleigh mass damping (1/s)")
-      ->capture_default_str()
-      ->check(finiteNumber());
-  cmd->add_option("--beta", a->options.material.stiffnessDamping, "Rayleigh stiffness damping (s)")
-      ->capture_default_str()
-      ->check(finiteNumber());
+  // Each overrides the dataset config's elasticity section (defaults where
+  // the config has none). Their ranges are validateMaterial's, checked when
+  // the simulation starts.
+  const char* material = "Material (default: the dataset config's elasticity section)";
+  const ElasticMaterial defaults;
+  auto materialOption = [&](const char* name, std::optional<double>& value, const char* what,
+                            double fallback) {
+    cmd->add_option(name, value,
+                    std::string(what) + " (without a config value: " + formatNumber(fallback) + ")")
+        ->check(finiteNumber())
+        ->group(material);
+  };
+  materialOption("--young", a->young, "Young's modulus, Pa", defaults.youngsModulus);
+  materialOption("--poisson", a->poisson, "Poisson's ratio, in (-1, 0.5)", defaults.poissonRatio);
+  materialOption("--density", a->density, "density, kg/m^3", defaults.density);
+  materialOption("--alpha", a->alpha, "Rayleigh mass damping, 1/s", defaults.massDamping);
+  materialOption("--beta", a->beta, "Rayleigh stiffness damping, s", defaults.stiffnessDamping);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame")
       ->check(CLI::ExistingFile);

@@ -305,12 +305,13 @@ QWidget* MainWindow::buildSimulationDock() {
   timeStep_->setValue(1.0 / 60.0);
   young_ = new QDoubleSpinBox;
   young_->setObjectName("young");
-  young_->setRange(1e2, 1e10);
+  young_->setRange(1, 1e13);
   young_->setDecimals(0);
   young_->setValue(ElasticMaterial{}.youngsModulus);
   poisson_ = new QDoubleSpinBox;
   poisson_->setObjectName("poisson");
-  poisson_->setRange(-0.99, 0.49);
+  poisson_->setDecimals(3);
+  poisson_->setRange(-0.999, 0.499);
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
   form->addRow("Scenario", scenario_);
@@ -389,6 +390,11 @@ bool MainWindow::openFile(const QString& qpath) {
   try {
     if (ext == ".json" || ext == ".node" || ext == ".ele") {
       scene_->openDataset(path);
+      // The new dataset's body (config section elasticity, or the defaults)
+      // replaces what the dock held; a surface opened later keeps the dock's.
+      const ElasticMaterial& material = scene_->dataset().config.elasticity;
+      young_->setValue(material.youngsModulus);
+      poisson_->setValue(material.poissonRatio);
     } else if (ext == ".vtp") {
       vtkSmartPointer<vtkPolyData> polyData = readVtp(path);
       if (polyData->GetPointData()->GetArray("ControlIds"))
@@ -490,6 +496,8 @@ void MainWindow::resetSimulation() {
   if (!scene_->hasDataset()) return;
   SimulationOptions options;
   options.timeStep = timeStep_->value();
+  // The dataset's material (density, damping), with the dock's E and nu.
+  options.material = scene_->dataset().config.elasticity;
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());

@@ -159,6 +159,42 @@ TEST(DatasetConfig, FurSectionOptionalFieldsDefaultAndRoundTrip) {
                     "/fur/fur_length: is not a known field");
 }
 
+// The body's material: every key optional (defaults), ranges checked by
+// materialProblem and named by JSON pointer, written back in full.
+TEST(DatasetConfig, ElasticitySectionDefaultsValidatesAndRoundTrips) {
+  const DatasetConfig plain = parseDatasetConfig(kConfig, "d.json", "/data");
+  EXPECT_EQ(plain.elasticity.youngsModulus, ElasticMaterial{}.youngsModulus);
+  EXPECT_EQ(plain.elasticity.stiffnessDamping, ElasticMaterial{}.stiffnessDamping);
+
+  const std::string soft =
+      replaced(kConfig, R"("provenance")",
+               R"("elasticity": {"youngs_modulus": 5e4, "poisson_ratio": -0.2, "density": 1000},
+  "provenance")");
+  const DatasetConfig c = parseDatasetConfig(soft, "d.json", "/data");
+  EXPECT_EQ(c.elasticity.youngsModulus, 5e4);
+  EXPECT_EQ(c.elasticity.poissonRatio, -0.2);
+  EXPECT_EQ(c.elasticity.density, 1000.0);
+  EXPECT_EQ(c.elasticity.massDamping, ElasticMaterial{}.massDamping);  // not given
+
+  test::ScratchDir dir;
+  writeDatasetConfig(dir / "d.json", c);
+  const DatasetConfig back = readDatasetConfig(dir / "d.json");
+  EXPECT_EQ(back.elasticity.youngsModulus, 5e4);
+  EXPECT_EQ(back.elasticity.poissonRatio, -0.2);
+  EXPECT_EQ(back.elasticity.density, 1000.0);
+  EXPECT_EQ(back.elasticity.massDamping, c.elasticity.massDamping);
+  EXPECT_EQ(back.elasticity.stiffnessDamping, c.elasticity.stiffnessDamping);
+
+  expectConfigError(replaced(soft, R"("poisson_ratio": -0.2)", R"("poisson_ratio": 0.5)"),
+                    "/elasticity/poisson_ratio: Poisson's ratio must lie in (-1, 0.5), got 0.5");
+  expectConfigError(replaced(soft, R"("density": 1000)", R"("density": 0)"),
+                    "/elasticity/density: density must be finite and positive, got 0");
+  expectConfigError(replaced(soft, R"("youngs_modulus": 5e4)", R"("youngs_modulus": "5e4")"),
+                    "/elasticity/youngs_modulus: must be a number");
+  expectConfigError(replaced(soft, R"("density": 1000)", R"("densty": 1000)"),
+                    "/elasticity/densty: is not a known field");
+}
+
 TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
   expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
   expectConfigError("", "invalid JSON", 1);

@@ -257,6 +257,23 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     f.rejectUnknown();
   }
   top.optional("fur");
+  if (top.has("elasticity")) {
+    Fields e(top.get("elasticity"), "/elasticity", sourceName);
+    ElasticMaterial& m = config.elasticity;
+    // Types here; ranges once all are read (materialProblem).
+    for (auto [key, value] : {std::pair{"youngs_modulus", &m.youngsModulus},
+                              {"poisson_ratio", &m.poissonRatio},
+                              {"density", &m.density},
+                              {"mass_damping", &m.massDamping},
+                              {"stiffness_damping", &m.stiffnessDamping}}) {
+      if (e.has(key)) *value = e.anyNumber(key);
+      e.optional(key);
+    }
+    if (const auto problem = materialProblem(m))
+      e.fail("/elasticity/" + problem->key, problem->what);
+    e.rejectUnknown();
+  }
+  top.optional("elasticity");
   if (top.has("provenance")) {
     config.provenance = top.get("provenance");
     if (!config.provenance.is_object()) top.fail("/provenance", "must be an object");
@@ -313,6 +330,11 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
                  {"adaptive_shells", config.fur.adaptiveShells},
                  {"min_shells", config.fur.minShells}};
   if (config.fur.colorTexture) root["fur"]["color_texture"] = config.fur.colorTexture->string();
+  root["elasticity"] = {{"youngs_modulus", config.elasticity.youngsModulus},
+                        {"poisson_ratio", config.elasticity.poissonRatio},
+                        {"density", config.elasticity.density},
+                        {"mass_damping", config.elasticity.massDamping},
+                        {"stiffness_damping", config.elasticity.stiffnessDamping}};
   root["provenance"] = config.provenance;
   writeTextAtomically(path, [&](std::ostream& out) { out << root.dump(2) << '\n'; });
 }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The dataset config (`OUT.json`): which .node/.ele files hold the levels,
-// where each level lies in them and where it came from, and the defaults a
+// where each level lies in them and where it came from, the defaults a
 // viewer needs to show the object at once (scale, material, texture, surface,
-// fur). Reading validates every field; unknown fields are errors, so a typo
-// never passes silently. Relative paths are relative to the config file.
+// fur), and the body's elastic material for the simulation (elasticity). Reading validates every
+// field; unknown fields are errors, so a typo never passes silently. Relative paths are relative to
+// the config file.
 
 #include <array>
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tetskin/core/ElasticMaterial.h"
 #include "tetskin/core/TetMesh.h"
 
 namespace tetskin {
@@ -88,6 +90,10 @@ struct DatasetConfig {
   std::optional<std::filesystem::path> texture;
   std::optional<std::filesystem::path> surface;
   FurParameters fur;
+  // The `elasticity` section (every key optional; a config without it gets
+  // the defaults): what `simulate`, `render --frames` and the GUI simulate
+  // unless told otherwise.
+  ElasticMaterial elasticity;
   nlohmann::json provenance = nlohmann::json::object();
 
   // The directory of the config file; relative paths are resolved against it.

@@ -25,8 +25,8 @@
 #include <array>
 #include <vector>
 
+#include "tetskin/core/ElasticMaterial.h"
 #include "tetskin/core/TetMesh.h"
-#include "tetskin/simulation/ElasticMaterial.h"
 #include "tetskin/simulation/SimdKernel.h"
 
 namespace tetskin {
