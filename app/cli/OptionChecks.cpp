@@ -42,10 +42,12 @@ CLI::Validator wholeNumber(long long min, long long max) {
   const std::string interval = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
   const std::string range = bounded ? "in " + interval : ">= " + std::to_string(min);
   return CLI::Validator(
-      [min, max, range](std::string& text) -> std::string {
+      [min, max, range, interval](std::string& text) -> std::string {
         long long value = 0;
         if (!parsesAll(text, value)) return "'" + text + "' is not a whole number";
-        if (value < min || value > max) return text + " is not " + range;
+        if (value < min) return text + " is not " + range;
+        // (The whole interval: an unbounded check shows only its minimum.)
+        if (value > max) return text + " is not in " + interval;
         return {};
       },
       // Shown in --help after the type, as CLI11's own checks are.
@@ -55,27 +57,14 @@ CLI::Validator wholeNumber(long long min, long long max) {
                  : range);
 }
 
+// The two below are wholeNumber's and numberAbove's checks without a bound
+// of their own, and so with nothing to add to --help.
 CLI::Validator anyWholeNumber() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        long long value = 0;
-        if (!parsesAll(text, value) || value < std::numeric_limits<int>::min() ||
-            value > std::numeric_limits<int>::max())
-          return "'" + text + "' is not a whole number";
-        return {};
-      },
-      "");
+  return wholeNumber(std::numeric_limits<int>::min()).description("");
 }
 
 CLI::Validator finiteNumber() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double value = 0;
-        if (!parsesAll(text, value) || !std::isfinite(value))
-          return "'" + text + "' is not a finite number";
-        return {};
-      },
-      "");
+  return numberAbove(-std::numeric_limits<double>::infinity()).description("");
 }
 
 CLI::Validator trueOrFalse() {

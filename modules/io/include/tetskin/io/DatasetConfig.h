@@ -3,9 +3,9 @@
 // The dataset config (`OUT.json`): which .node/.ele files hold the levels,
 // where each level lies in them and where it came from, the defaults a
 // viewer needs to show the object at once (scale, material, texture, surface,
-// fur), and the body's elastic material for the simulation (elasticity). Reading validates every
-// field; unknown fields are errors, so a typo never passes silently. Relative paths are relative to
-// the config file.
+// fur), and the body's elastic material for the simulation (elasticity).
+// Reading validates every field; unknown fields are errors, so a typo never
+// passes silently. Relative paths are relative to the config file.
 
 #include <array>
 #include <cstdint>
