@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
       "high-resolution surface bound to it (and optional fur).",
       "tetskin"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "tetskin 0.1.0");
+  app.set_version_flag("--version", "tetskin " TETSKIN_VERSION);
   tetskin::cli::addBuildCommand(app);
   tetskin::cli::addBindCommand(app);
   tetskin::cli::addDeformCommand(app);

@@ -1,25 +1,115 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // tetskin-gui [DATASET.json] [SURFACE] [--screenshot FILE [--window]] [--path PATH]
 //             [--size WxH] [--camera PRESET] [--control STYLE] [--color-by ARRAY]
-//             [--highlight] [--pick] [--steps N]
+//             [--highlight] [--pick] [--steps N] [--help] [--version]
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCommandLineParser>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSurfaceFormat>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <string_view>
 
 #include "MainWindow.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+// The command line: declared once, read before a display is needed (help,
+// version and usage errors work over ssh), and again once the QApplication
+// has taken its own options (-platform, -style, ...) out.
+struct GuiArguments {
+  QCommandLineParser parser;
+  QCommandLineOption screenshot{"screenshot", "render one frame to FILE (PNG) and exit", "FILE"};
+  QCommandLineOption path{"path", "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu", "PATH", "cpu"};
+  QCommandLineOption size{"size",
+                          "with --screenshot the image's size (the view's, or with --window "
+                          "the window's), else the window's: WIDTHxHEIGHT",
+                          "WxH", "1280x800"};
+  QCommandLineOption camera{"camera", "iso, front, side or top", "PRESET", "iso"};
+  QCommandLineOption whole{"window", "with --screenshot: the whole window, docks included"};
+  QCommandLineOption control{"control", "control mesh: none, surface, wireframe, shrink", "STYLE"};
+  QCommandLineOption colorBy{"color-by", "material, MinBarycentric, Distance or FaceId", "ARRAY"};
+  QCommandLineOption highlight{"highlight", "mark vertices with negative weights or far"};
+  QCommandLineOption pick{"pick", "inspect the vertex at the centre of the view"};
+  QCommandLineOption steps{"steps", "simulate N steps first", "N", "0"};
+  // Checked values.
+  int width = 0, height = 0, stepCount = 0;
+
+  GuiArguments() {
+    parser.setApplicationDescription(
+        "TetSkin: inspect how a surface is bound to a simulated tetrahedral control mesh");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument("DATASET", "dataset (.json, or a .node/.ele pair)", "[DATASET]");
+    parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
+    parser.addOptions(
+        {screenshot, whole, path, size, camera, control, colorBy, highlight, pick, steps});
+  }
+
+  // Parses the application's arguments; prints help or the version and
+  // exits, or checks the values. false (after one line `error: ...`) on a
+  // usage error.
+  bool read(const QCoreApplication& app) {
+    if (!parser.parse(app.arguments()))
+      return usageError(parser.errorText().toStdString() + " (see tetskin-gui --help)");
+    if (parser.isSet("help")) parser.showHelp(0);
+    if (parser.isSet("version")) parser.showVersion();
+    // WIDTHxHEIGHT, both whole numbers in [64, 8192], nothing else.
+    const QStringList edges = parser.value(size).split('x');
+    bool widthOk = false, heightOk = false;
+    width = edges.size() == 2 ? edges[0].toInt(&widthOk) : 0;
+    height = edges.size() == 2 ? edges[1].toInt(&heightOk) : 0;
+    if (!widthOk || !heightOk || std::min(width, height) < 64 || std::max(width, height) > 8192)
+      return usageError("--size: '" + parser.value(size).toStdString() +
+                        "' is not WIDTHxHEIGHT with both in [64, 8192]");
+    bool stepsOk = false;
+    stepCount = parser.value(steps).toInt(&stepsOk);
+    if (!stepsOk || stepCount < 0)
+      return usageError("--steps: '" + parser.value(steps).toStdString() +
+                        "' is not a whole number >= 0");
+    if (const QString problem =
+            tetskin::gui::MainWindow::screenshotNameProblem(parser.value(screenshot));
+        parser.isSet(screenshot) && !problem.isEmpty())
+      return usageError(parser.value(screenshot).toStdString() + ": " + problem.toStdString());
+    return true;
+  }
+
+ private:
+  static bool usageError(const std::string& what) {
+    std::fprintf(stderr, "error: %s\n", what.c_str());
+    return false;
+  }
+};
+
+// Whether Qt can open a window: an X display, or a platform chosen by
+// QT_QPA_PLATFORM or -platform (e.g. offscreen).
+bool hasPlatform(int argc, char** argv) {
   const char* display = std::getenv("DISPLAY");
   const char* platform = std::getenv("QT_QPA_PLATFORM");
-  if ((!display || !*display) && !platform) {
+  if ((display && *display) || platform) return true;
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "-platform" || std::string_view(argv[i]) == "--platform")
+      return true;
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QCoreApplication::setOrganizationName("TetSkin");
+  QCoreApplication::setApplicationName("tetskin-gui");
+  QCoreApplication::setApplicationVersion(TETSKIN_VERSION);
+  if (!hasPlatform(argc, argv)) {
+    // Help, the version and usage errors need no window.
+    const QCoreApplication plain(argc, argv);
+    if (!GuiArguments().read(plain)) return 1;
     std::fprintf(stderr,
                  "error: tetskin-gui needs an X display (no DISPLAY is set; for --screenshot "
                  "run under xvfb-run -a)\n");
@@ -27,68 +117,28 @@ int main(int argc, char** argv) {
   }
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
-  QApplication::setOrganizationName("TetSkin");
-  QApplication::setApplicationName("tetskin-gui");
-  QCommandLineParser parser;
-  parser.setApplicationDescription(
-      "TetSkin: inspect how a surface is bound to a simulated tetrahedral control mesh");
-  parser.addHelpOption();
-  parser.addPositionalArgument("DATASET", "dataset (.json, or a .node/.ele pair)", "[DATASET]");
-  parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
-  const QCommandLineOption screenshot("screenshot", "render one frame to FILE (PNG) and exit",
-                                      "FILE");
-  const QCommandLineOption path("path", "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu", "PATH",
-                                "cpu");
-  const QCommandLineOption size("size",
-                                "with --screenshot the image's size (the view's, or with --window "
-                                "the window's), else the window's: WIDTHxHEIGHT",
-                                "WxH", "1280x800");
-  const QCommandLineOption camera("camera", "iso, front, side or top", "PRESET", "iso");
-  const QCommandLineOption whole("window", "with --screenshot: the whole window, docks included");
-  const QCommandLineOption control("control", "control mesh: none, surface, wireframe, shrink",
-                                   "STYLE");
-  const QCommandLineOption colorBy("color-by", "material, MinBarycentric, Distance or FaceId",
-                                   "ARRAY");
-  const QCommandLineOption highlight("highlight", "mark vertices with negative weights or far");
-  const QCommandLineOption pick("pick", "inspect the vertex at the centre of the view");
-  const QCommandLineOption steps("steps", "simulate N steps first", "N", "0");
-  parser.addOptions(
-      {screenshot, whole, path, size, camera, control, colorBy, highlight, pick, steps});
-  parser.process(app);
-
-  // WIDTHxHEIGHT, both whole numbers in [64, 8192], nothing else.
-  const QStringList edges = parser.value(size).split('x');
-  bool widthOk = false, heightOk = false;
-  const int width = edges.size() == 2 ? edges[0].toInt(&widthOk) : 0;
-  const int height = edges.size() == 2 ? edges[1].toInt(&heightOk) : 0;
-  if (!widthOk || !heightOk || std::min(width, height) < 64 || std::max(width, height) > 8192) {
-    std::fprintf(stderr, "error: --size: '%s' is not WIDTHxHEIGHT with both in [64, 8192]\n",
-                 parser.value(size).toStdString().c_str());
-    return 1;
-  }
-  bool stepsOk = false;
-  const int stepCount = parser.value(steps).toInt(&stepsOk);
-  if (!stepsOk || stepCount < 0) {
-    std::fprintf(stderr, "error: --steps: '%s' is not a whole number >= 0\n",
-                 parser.value(steps).toStdString().c_str());
-    return 1;
-  }
-  const bool oneShot = parser.isSet(screenshot);
-  if (const QString problem =
-          tetskin::gui::MainWindow::screenshotNameProblem(parser.value(screenshot));
-      oneShot && !problem.isEmpty()) {
-    std::fprintf(stderr, "error: %s: %s\n", parser.value(screenshot).toStdString().c_str(),
-                 problem.toStdString().c_str());
-    return 1;
-  }
+  GuiArguments args;
+  if (!args.read(app)) return 1;
+  const QCommandLineParser& parser = args.parser;
+  const bool oneShot = parser.isSet(args.screenshot);
   tetskin::gui::MainWindow window(!oneShot);
-  window.resize(width, height);
+  window.resize(args.width, args.height);
   window.show();
   QApplication::processEvents();
-  if (oneShot && !parser.isSet(whole)) {
+  if (!window.view()->isValid()) {
+    // e.g. Qt's offscreen platform, or an X server without GLX: the view
+    // would stay black and a screenshot empty.
+    const char* message =
+        "the view cannot create an OpenGL context on this display (for --screenshot without a "
+        "display run under xvfb-run -a)";
+    std::fprintf(stderr, "error: %s\n", message);
+    if (!oneShot) QMessageBox::critical(&window, "TetSkin", message);
+    return 1;
+  }
+  if (oneShot && !parser.isSet(args.whole)) {
     // The image is the view's: --size is then its size, the window grown
     // by what the docks and bars take beside it.
-    window.view()->setFixedSize(width, height);
+    window.view()->setFixedSize(args.width, args.height);
     window.resize(window.minimumSizeHint());
     QApplication::processEvents();
   }
@@ -97,8 +147,8 @@ int main(int argc, char** argv) {
     return 1;
   };
   if (!window.openFiles(parser.positionalArguments()) && oneShot) return fail();
-  if (parser.isSet(path)) {
-    window.setRenderPath(parser.value(path));
+  if (parser.isSet(args.path)) {
+    window.setRenderPath(parser.value(args.path));
     if (!window.lastError().isEmpty() && oneShot) return fail();
   }
   // Settings as a user would make them in the docks.
@@ -116,23 +166,27 @@ int main(int argc, char** argv) {
     combo->setCurrentText(value);
     return true;
   };
-  if (parser.isSet(camera) && !choose("camera", "--camera", parser.value(camera))) return 1;
-  if (parser.isSet(control) && !choose("controlStyle", "--control", parser.value(control)))
+  if (parser.isSet(args.camera) && !choose("camera", "--camera", parser.value(args.camera)))
     return 1;
-  if (parser.isSet(colorBy) && !choose("colorBy", "--color-by", parser.value(colorBy))) return 1;
-  if (parser.isSet(highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
-  for (int i = 0; i < stepCount; ++i) window.findChild<QPushButton*>("step")->click();
+  if (parser.isSet(args.control) &&
+      !choose("controlStyle", "--control", parser.value(args.control)))
+    return 1;
+  if (parser.isSet(args.colorBy) && !choose("colorBy", "--color-by", parser.value(args.colorBy)))
+    return 1;
+  if (parser.isSet(args.highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
+  for (int i = 0; i < args.stepCount; ++i) window.findChild<QPushButton*>("step")->click();
   // Steps asked for but not taken (the simulation could not start: its
   // error is the window's last) must not pass for a simulated screenshot.
-  if (oneShot && stepCount > 0 && !window.lastError().isEmpty()) return fail();
-  if (parser.isSet(pick)) {
+  if (oneShot && args.stepCount > 0 && !window.lastError().isEmpty()) return fail();
+  if (parser.isSet(args.pick)) {
     window.renderNow();
     window.clickAt(window.view()->width() / 2, window.view()->height() / 2);
   }
   if (oneShot) {
     QApplication::processEvents();
-    if (!window.saveScreenshot(parser.value(screenshot), parser.isSet(whole))) return fail();
-    std::printf("wrote %s\n", parser.value(screenshot).toStdString().c_str());
+    if (!window.saveScreenshot(parser.value(args.screenshot), parser.isSet(args.whole)))
+      return fail();
+    std::printf("wrote %s\n", parser.value(args.screenshot).toStdString().c_str());
     return 0;
   }
   return QApplication::exec();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -51,6 +52,31 @@ TEST(SurfaceFile, BrokenFilesGiveErrorsNamingTheFile) {
   EXPECT_THROW(readSurface(dir / "empty.stl"), Error);
   EXPECT_THROW(readSurface(dir / "missing.ply"), Error);
   EXPECT_THROW(readSurface(dir / "x.abc"), Error);
+}
+
+TEST(VtkFiles, PngRoundTripsAndAnEmptyImageIsNamedNotWritten) {
+  test::ScratchDir dir;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(4, 3, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int i = 0; i < 4 * 3 * 3; ++i) pixels[i] = static_cast<unsigned char>(20 * i);
+  writePng(dir / "a.png", image);
+  const vtkSmartPointer<vtkImageData> back = readPng(dir / "a.png");
+  int dims[3];
+  back->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 4);
+  EXPECT_EQ(dims[1], 3);
+  EXPECT_EQ(static_cast<unsigned char*>(back->GetScalarPointer())[7], 140);
+  // A render that produced nothing (no OpenGL context): named, and no file.
+  try {
+    writePng(dir / "empty.png", vtkSmartPointer<vtkImageData>::New());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.file(), (dir / "empty.png").string());
+    EXPECT_NE(std::string(e.what()).find("no image to write"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(dir.listing(), "a.png\n");
 }
 
 TEST(SurfaceFile, VtuRoundTrip) {

@@ -62,6 +62,9 @@ vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path) 
 }
 
 void writePng(const std::filesystem::path& path, vtkImageData* image) {
+  // (libpng would refuse it deep inside, and VTK report that as a full disk.)
+  if (!image || image->GetNumberOfPoints() == 0)
+    throw Error(path.string(), 0, "no image to write (the render produced no pixels)");
   writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();
     writer->SetFileName(tmp.c_str());
