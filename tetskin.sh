@@ -72,9 +72,11 @@ paraview_python() {
 }
 
 # Everything that needs an X display (rendering, GUI) runs under Xvfb when
-# there is no display of our own.
+# there is no display of our own. -noreset: by default an X server resets when
+# its last client leaves and refuses connections meanwhile, which made a test
+# starting just as another ended fail now and then ("bad X server connection").
 with_display() {
-  if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x1024x24" "$@"; fi
+  if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; fi
 }
 
 demo() {
@@ -131,9 +133,8 @@ run_tests() {
   build -DTETSKIN_PARAVIEW_ROOT="$(paraview_python)"
   sanitized_io_tests
   log "the whole test suite"
-  # --repeat until-pass:3: a test that fails is run again, up to 3 times in all.
-  # Rendering.Gpu2PassEqualsTheCpuPath aborted in about 1 of 12 parallel runs
-  # here (never alone, in 36 runs); a real failure fails all three times.
+  # --repeat until-pass:3: a test that fails is run again, up to 3 times in all
+  # (a real failure fails all three times).
   (cd "$BUILD_DIR" && with_display ctest -j "$JOBS" --output-on-failure --no-tests=error \
     --repeat until-pass:3)
 }

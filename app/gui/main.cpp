@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "MainWindow.h"
+#include "tetskin/rendering/XDisplay.h"
 
 namespace {
 
@@ -88,16 +89,15 @@ struct GuiArguments {
   }
 };
 
-// Whether Qt can open a window: an X display, or a platform chosen by
-// QT_QPA_PLATFORM or -platform (e.g. offscreen).
-bool hasPlatform(int argc, char** argv) {
-  const char* display = std::getenv("DISPLAY");
-  const char* platform = std::getenv("QT_QPA_PLATFORM");
-  if ((display && *display) || platform) return true;
+// Why Qt's default platform cannot open a window here, or empty. A platform
+// chosen by QT_QPA_PLATFORM or -platform (e.g. offscreen) is Qt's to check;
+// otherwise it is xcb, which aborts the process when it cannot connect.
+std::string platformProblem(int argc, char** argv) {
+  if (std::getenv("QT_QPA_PLATFORM")) return {};
   for (int i = 1; i < argc; ++i)
     if (std::string_view(argv[i]) == "-platform" || std::string_view(argv[i]) == "--platform")
-      return true;
-  return false;
+      return {};
+  return tetskin::xDisplayProblem();
 }
 
 }  // namespace
@@ -106,13 +106,14 @@ int main(int argc, char** argv) {
   QCoreApplication::setOrganizationName("TetSkin");
   QCoreApplication::setApplicationName("tetskin-gui");
   QCoreApplication::setApplicationVersion(TETSKIN_VERSION);
-  if (!hasPlatform(argc, argv)) {
+  if (const std::string problem = platformProblem(argc, argv); !problem.empty()) {
     // Help, the version and usage errors need no window.
     const QCoreApplication plain(argc, argv);
     if (!GuiArguments().read(plain)) return 1;
     std::fprintf(stderr,
-                 "error: tetskin-gui needs an X display (no DISPLAY is set; for --screenshot "
-                 "run under xvfb-run -a)\n");
+                 "error: tetskin-gui needs an X display (%s; for --screenshot run under "
+                 "xvfb-run -a)\n",
+                 problem.c_str());
     return 1;
   }
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());

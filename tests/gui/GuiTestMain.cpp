@@ -7,12 +7,12 @@
 #include <QDir>
 #include <QSettings>
 #include <QSurfaceFormat>
-#include <cstdlib>
+
+#include "tetskin/rendering/XDisplay.h"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  const char* display = std::getenv("DISPLAY");
-  if (::testing::GTEST_FLAG(list_tests) || !display || !*display)
+  if (::testing::GTEST_FLAG(list_tests) || !tetskin::xDisplayProblem().empty())
     return RUN_ALL_TESTS();  // tests skip
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);

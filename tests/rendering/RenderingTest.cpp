@@ -30,6 +30,7 @@
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/rendering/XDisplay.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -52,8 +53,8 @@ Points3 twisted(const Points3& nodes) {
 class Rendering : public ::testing::Test {
  protected:
   void SetUp() override {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
+    if (const std::string problem = xDisplayProblem(); !problem.empty())
+      GTEST_SKIP() << "needs an X display (run under xvfb-run): " << problem;
     dataset_ = loadDataset(kData + "bunny.json");
     surface_ = readObj(kData + "bunny_8k.obj");
     binding_ = bindSurface(surface_, dataset_.mesh, 1);

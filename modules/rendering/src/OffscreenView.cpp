@@ -8,10 +8,10 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <cstdlib>
 #include <sstream>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/rendering/XDisplay.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -31,9 +31,8 @@ struct OffscreenView::Impl {
 
 OffscreenView::OffscreenView(int width, int height) : impl_(std::make_unique<Impl>()) {
   // Without a display Debian's VTK aborts the process; say what to do instead.
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
-    throw Error("rendering needs an X display: run under xvfb-run -a (no DISPLAY is set)");
+  if (const std::string problem = xDisplayProblem(); !problem.empty())
+    throw Error("rendering needs an X display: run under xvfb-run -a (" + problem + ")");
   impl_->window->SetOffScreenRendering(1);
   impl_->window->SetMultiSamples(0);  // identical images on every run
   impl_->window->SetSize(width, height);

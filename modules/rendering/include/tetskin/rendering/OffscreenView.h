@@ -25,7 +25,7 @@ void styleBackground(vtkRenderer* renderer);
 
 class OffscreenView {
  public:
-  // Throws Error when there is no X display.
+  // Throws Error when there is no X display to connect to (XDisplay.h).
   OffscreenView(int width, int height);
   ~OffscreenView();
   vtkRenderer* renderer() const;
