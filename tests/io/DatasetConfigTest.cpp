@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/DatasetConfig.h"
@@ -31,14 +32,8 @@ constexpr std::string_view kConfig = R"({
 })";
 
 void expectConfigError(const std::string& content, const std::string& what, long line = 0) {
-  try {
-    parseDatasetConfig(content, "d.json", "/data");
-    FAIL() << "expected an error containing '" << what << "'";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.file(), "d.json");
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_NE(e.message().find(what), std::string::npos) << e.what();
-  }
+  test::expectErrorAt([&] { parseDatasetConfig(content, "d.json", "/data"); }, "d.json", line,
+                      what);
 }
 
 std::string replaced(std::string_view text, const std::string& from, const std::string& to) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/ObjFormat.h"
@@ -10,19 +11,8 @@ namespace {
 
 using namespace std::string_view_literals;
 
-// Expects parseObj to fail with a message starting "name:LINE: " and containing `what`.
 void expectObjError(std::string_view content, long line, const std::string& what) {
-  try {
-    parseObj(content, "bad.obj");
-    FAIL() << "expected an error containing '" << what << "'";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.file(), "bad.obj");
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_NE(e.message().find(what), std::string::npos) << e.what();
-    const std::string prefix =
-        line > 0 ? "bad.obj:" + std::to_string(line) + ": " : std::string("bad.obj: ");
-    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
-  }
+  test::expectErrorAt([&] { parseObj(content, "bad.obj"); }, "bad.obj", line, what);
 }
 
 constexpr std::string_view kQuad =

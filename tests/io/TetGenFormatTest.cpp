@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/TetGenFormat.h"
@@ -12,14 +13,7 @@ using namespace std::string_view_literals;
 
 template <typename Parse>
 void expectError(Parse parse, std::string_view content, long line, const std::string& what) {
-  try {
-    parse(content, "bad.file");
-    FAIL() << "expected an error containing '" << what << "'";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.file(), "bad.file");
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_NE(e.message().find(what), std::string::npos) << e.what();
-  }
+  test::expectErrorAt([&] { parse(content, "bad.file"); }, "bad.file", line, what);
 }
 
 const auto node = [](std::string_view c, const std::string& n) { return parseNode(c, n); };

@@ -1,18 +1,16 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/SurfaceFile.h"
 
-#include <vtkPLYReader.h>
-#include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 
-#include "PlyHeader.h"
 #include "VtkErrorCapture.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/io/ObjFormat.h"
+#include "tetskin/io/PlyFormat.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -56,10 +54,7 @@ bool isSurfaceFile(const std::filesystem::path& path) {
 SurfaceMesh readSurface(const std::filesystem::path& path) {
   const std::string e = lowerExtension(path);
   if (e == ".obj") return readObj(path);
-  if (e == ".ply") {
-    detail::checkPlyHeader(path);
-    return readWithVtk<vtkPLYReader>(path);
-  }
+  if (e == ".ply") return readPly(path);
   if (e == ".stl") return readWithVtk<vtkSTLReader>(path);
   if (e == ".vtp") return fromVtkPolyData(readVtp(path), path.string());
   throw Error(path.string(), 0,
@@ -70,7 +65,7 @@ void writeSurface(const std::filesystem::path& path, const SurfaceMesh& mesh) {
   validateSurface(mesh, path.string());
   const std::string e = lowerExtension(path);
   if (e == ".obj") return writeObj(path, mesh);
-  if (e == ".ply") return writeWithVtk<vtkPLYWriter>(path, mesh);
+  if (e == ".ply") return writePly(path, mesh);
   if (e == ".stl") return writeWithVtk<vtkSTLWriter>(path, mesh);
   if (e == ".vtp") return writeVtp(path, toVtkPolyData(mesh));
   throw Error(path.string(), 0,

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Surface files by extension: .obj (TetSkin's strict reader), .ply, .stl and
-// .vtp (VTK's readers, with their errors turned into tetskin::Error).
+// Surface files by extension: .obj and .ply (TetSkin's strict readers, in
+// io), .stl and .vtp (VTK's readers, with their errors turned into
+// tetskin::Error).
 
 #include <filesystem>
 
