@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -8,10 +12,12 @@
 
 #include "Commands.h"
 #include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
@@ -80,6 +86,39 @@ void printDataset(const std::filesystem::path& path) {
   std::fputs(warnings.c_str(), stdout);
 }
 
+// A .vtu (`convert` of a level, a frame of `simulate`): the tetrahedra, and
+// each point and cell array with its range (of magnitudes for vectors).
+void printTetMesh(const std::filesystem::path& path) {
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
+  const TetMesh mesh = fromVtkUnstructuredGrid(grid, path.string());
+  std::printf("%s: tetrahedral mesh\n", path.c_str());
+  std::printf("  nodes      %lld\n  elements   %lld\n", static_cast<long long>(mesh.nodeCount()),
+              static_cast<long long>(mesh.elementCount()));
+  double total = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (Index e = 0; e < mesh.elementCount(); ++e) {
+    const double v = elementVolume(mesh, e);
+    total += v;
+    smallest = std::min(smallest, v);
+  }
+  std::printf("  volume     %g (smallest element %g)\n", total, smallest);
+  printBox(boundingBox(mesh.nodes));
+  const auto printArrays = [](const char* kind, vtkFieldData* arrays) {
+    for (int i = 0; i < arrays->GetNumberOfArrays(); ++i) {
+      vtkDataArray* array = arrays->GetArray(i);
+      if (!array) continue;  // (not numeric)
+      const int components = array->GetNumberOfComponents();
+      double range[2];
+      array->GetRange(range, components == 1 ? 0 : -1);
+      std::printf("  %-10s %s (%d component%s): %s %g .. %g\n", kind, array->GetName(), components,
+                  components == 1 ? "" : "s", components == 1 ? "range" : "length", range[0],
+                  range[1]);
+      kind = "";
+    }
+  };
+  printArrays("point data", grid->GetPointData());
+  printArrays("cell data", grid->GetCellData());
+}
+
 }  // namespace
 
 void addInfoCommand(CLI::App& app) {
@@ -87,11 +126,13 @@ void addInfoCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "info",
       "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
-      "bound to and their quality) and datasets (.json/.node/.ele)");
+      "bound to and their quality), tetrahedral meshes (.vtu from convert or simulate: arrays "
+      "and their ranges) and datasets (.json/.node/.ele)");
   cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
   cmd->callback([files] {
     for (const auto& path : *files) {
-      if (path.extension() == ".vtp") {
+      const std::string extension = lowerExtension(path);
+      if (extension == ".vtp") {
         const vtkSmartPointer<vtkPolyData> data = readVtp(path);
         if (isBinding(data))
           printBinding(path, data);
@@ -99,8 +140,17 @@ void addInfoCommand(CLI::App& app) {
           printSurface(path, fromVtkPolyData(data, path.string()), "surface");
       } else if (isSurfaceFile(path)) {
         printSurface(path, readSurface(path), "surface");
-      } else
+      } else if (extension == ".vtu") {
+        printTetMesh(path);
+      } else if (isDatasetFile(path)) {
         printDataset(path);
+      } else {
+        throw Error(
+            path.string(), 0,
+            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu) and "
+            "datasets (.json .node .ele), not " +
+                (extension.empty() ? "files without an extension" : "'" + extension + "' files"));
+      }
     }
   });
 }

@@ -388,7 +388,7 @@ bool MainWindow::openFile(const QString& qpath) {
   const std::filesystem::path path = qpath.toStdString();
   const std::string ext = lowerExtension(path);
   try {
-    if (ext == ".json" || ext == ".node" || ext == ".ele") {
+    if (isDatasetFile(path)) {
       scene_->openDataset(path);
       // The new dataset's body (config section elasticity, or the defaults)
       // replaces what the dock held; a surface opened later keeps the dock's.
@@ -794,9 +794,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     if (url.isLocalFile()) files << url.toLocalFile();
   // A dataset first, so that surfaces dropped with it bind to it.
   std::stable_sort(files.begin(), files.end(), [](const QString& a, const QString& b) {
-    const auto rank = [](const QString& f) {
-      return f.endsWith(".json") || f.endsWith(".node") || f.endsWith(".ele") ? 0 : 1;
-    };
+    const auto rank = [](const QString& f) { return isDatasetFile(f.toStdString()) ? 0 : 1; };
     return rank(a) < rank(b);
   });
   openFiles(files);

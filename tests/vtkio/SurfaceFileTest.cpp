@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
+#include <cstring>
+
+#include "ExpectError.h"
 #include "Shapes.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
@@ -77,6 +83,47 @@ TEST(VtkFiles, PngRoundTripsAndAnEmptyImageIsNamedNotWritten) {
     EXPECT_NE(std::string(e.what()).find("no image to write"), std::string::npos) << e.what();
   }
   EXPECT_EQ(dir.listing(), "a.png\n");
+}
+
+// Attributes that crash VTK's XML reader (field data of an unknown or
+// legacy type, a negative size) are refused first, with file and line.
+TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
+  test::ScratchDir dir;
+  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bunny());
+  auto level = vtkSmartPointer<vtkIntArray>::New();
+  level->SetName("Level");
+  level->InsertNextValue(2);
+  data->GetFieldData()->AddArray(level);
+  writeVtp(dir / "good.vtp", data);
+  const std::string good = test::readText(dir / "good.vtp");
+  const auto lineOf = [&](const std::string& text) {
+    const auto at = good.find(text);
+    EXPECT_NE(at, std::string::npos) << text;
+    return 1 + static_cast<long>(std::count(good.begin(), good.begin() + at, '\n'));
+  };
+  const struct {
+    const char* from;
+    const char* to;
+    const char* what;
+  } cases[] = {
+      {"type=\"Int32\" Name=\"Level\"", "type=\"Inx32\" Name=\"Level\"",
+       "DataArray 'Level': unknown type 'Inx32'"},
+      {"type=\"Int32\" Name=\"Level\"", "type=\"IdType\" Name=\"Level\"", "unknown type 'IdType'"},
+      {"NumberOfPoints=\"1839\"", "NumberOfPoints=\"-1\"",
+       "Piece: NumberOfPoints '-1' is not a whole number >= 0"},
+      {"Name=\"Level\" NumberOfTuples=\"1\"", "Name=\"Level\" NumberOfTuples=\"x\"",
+       "NumberOfTuples 'x' is not a whole number >= 0"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.to);
+    std::string bad = good;
+    const auto at = bad.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    bad.replace(at, std::strlen(c.from), c.to);
+    const auto path = dir.write("bad.vtp", bad);
+    test::expectErrorAt([&] { readVtp(path); }, path.string(), lineOf(c.from), c.what);
+  }
+  EXPECT_EQ(readVtp(dir / "good.vtp")->GetNumberOfPoints(), 1839);
 }
 
 TEST(SurfaceFile, VtuRoundTrip) {

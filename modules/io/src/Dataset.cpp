@@ -27,6 +27,11 @@ Dataset loadNodeElePair(const std::filesystem::path& path) {
 
 }  // namespace
 
+bool isDatasetFile(const std::filesystem::path& path) {
+  const std::string e = lowerExtension(path);
+  return e == ".json" || e == ".node" || e == ".ele";
+}
+
 Dataset loadDataset(const std::filesystem::path& path) {
   if (lowerExtension(path) == ".node" || lowerExtension(path) == ".ele")
     return loadNodeElePair(path);

@@ -12,6 +12,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "VtkErrorCapture.h"
+#include "VtkXmlHeader.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 
@@ -36,6 +37,7 @@ template <typename Reader, typename Data>
 vtkSmartPointer<Data> readXml(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
+  detail::checkVtkXmlHeader(path);
   auto reader = vtkSmartPointer<Reader>::New();
   detail::VtkErrorCapture errors(reader);
   reader->SetFileName(path.c_str());

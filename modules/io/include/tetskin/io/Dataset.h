@@ -20,6 +20,8 @@ struct Dataset {
 // ranges against the files, every node index, and (for the config) that the
 // config's ranges match the files exactly.
 Dataset loadDataset(const std::filesystem::path& path);
+// Whether loadDataset takes the file by its extension (.json, .node, .ele).
+bool isDatasetFile(const std::filesystem::path& path);
 
 // Writes `<stem>.node`, `<stem>.ele` beside `jsonPath` (or the names already
 // in the config), then the config, each atomically; the config comes last so

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+#include <filesystem>
+
+namespace tetskin::detail {
+
+// Checks the XML part of a VTK XML file (.vtp, .vtu) before VTK's reader
+// sees it: that reader crashes on some malformed attributes (an unknown or
+// legacy array type such as 'Inx32' or 'IdType' in field data, a negative
+// NumberOfPoints). Every Array/DataArray must have a known type and
+// whole-number counts, every Piece non-negative whole-number sizes. Throws
+// Error naming the file and line.
+void checkVtkXmlHeader(const std::filesystem::path& path);
+
+}  // namespace tetskin::detail
