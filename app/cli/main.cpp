@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <regex>
 #include <string>
 
 #include "Commands.h"
@@ -22,6 +23,13 @@ std::string oneLine(std::string text) {
   for (char& c : text)
     if (c == '\n') c = ' ';
   return text;
+}
+
+// CLI11's words for an option given more than once ("--steps: At Most 1
+// required but received 2") in ours.
+std::string plainUsageError(const std::string& text) {
+  static const std::regex repeated("At Most 1 required but received ([0-9]+)");
+  return std::regex_replace(text, repeated, "given $1 times; give it once");
 }
 
 }  // namespace
@@ -47,7 +55,8 @@ int main(int argc, char** argv) {
     // --help and --version arrive here too, with exit code 0: CLI11 prints them.
     if (e.get_exit_code() == 0) return app.exit(e);
     // A usage error is bad input like any other: one line, status 1.
-    std::cerr << "error: " << oneLine(e.what()) << " (see " << commandPath(app) << " --help)\n";
+    std::cerr << "error: " << plainUsageError(oneLine(e.what())) << " (see " << commandPath(app)
+              << " --help)\n";
     return 1;
   } catch (const tetskin::Error& e) {
     std::cerr << "error: " << e.what() << '\n';
