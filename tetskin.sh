@@ -16,7 +16,7 @@ JOBS=${JOBS:-$(nproc)}
 DEPS=(
   cmake ninja-build g++ pkg-config ccache
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
-  libvtk9-qt-dev qtbase5-dev libglew-dev
+  libvtk9-qt-dev qtbase5-dev libglew-dev libpng-dev
   libtet1.5-dev libnglib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth assimp-testmodels netgen-doc paraview

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <random>
 
 #include "ExpectError.h"
 #include "Shapes.h"
@@ -83,6 +84,51 @@ TEST(VtkFiles, PngRoundTripsAndAnEmptyImageIsNamedNotWritten) {
     EXPECT_NE(std::string(e.what()).find("no image to write"), std::string::npos) << e.what();
   }
   EXPECT_EQ(dir.listing(), "a.png\n");
+}
+
+// VTK's own PNG reader crashed on every damaged texture tried; these must
+// end in an Error naming the file (or, where the damage missed the pixels,
+// an image of the right size). Grey images come out as RGB.
+TEST(VtkFiles, DamagedPngsAreErrorsAndGreyBecomesRgb) {
+  test::ScratchDir dir;
+  auto grey = vtkSmartPointer<vtkImageData>::New();
+  grey->SetDimensions(64, 48, 1);
+  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* pixels = static_cast<unsigned char*>(grey->GetScalarPointer());
+  for (int i = 0; i < 64 * 48; ++i) pixels[i] = static_cast<unsigned char>((i * 7) % 251);
+  writePng(dir / "grey.png", grey);
+  const vtkSmartPointer<vtkImageData> rgb = readPng(dir / "grey.png");
+  ASSERT_EQ(rgb->GetNumberOfScalarComponents(), 3);
+  const auto* back = static_cast<const unsigned char*>(rgb->GetScalarPointer());
+  EXPECT_EQ(back[3 * 100], pixels[100]);  // the same row order as VTK's
+  EXPECT_EQ(back[3 * 100 + 2], pixels[100]);
+
+  const std::string good = test::readText(dir / "grey.png");
+  std::mt19937 random(5);
+  int refused = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::string damaged = good;
+    const auto at = [&](std::size_t size) {
+      return std::uniform_int_distribution<std::size_t>(0, size - 1)(random);
+    };
+    if (trial % 2)
+      damaged.resize(at(damaged.size()));
+    else
+      for (int k = 0; k < 1 + trial % 9; ++k)
+        damaged[at(damaged.size())] = static_cast<char>(random());
+    const auto path = dir.write("damaged.png", damaged);
+    try {
+      int dims[3];
+      readPng(path)->GetDimensions(dims);
+      EXPECT_EQ(dims[0] * dims[1], 64 * 48);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.file(), path.string());
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 100);
+  test::expectErrorAt([&] { readPng(dir.write("text.png", "not an image")); },
+                      (dir / "text.png").string(), 0, "is not a PNG image");
 }
 
 // Attributes that crash VTK's XML reader (field data of an unknown or

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/VtkFiles.h"
 
+#include <png.h>
 #include <vtkImageData.h>
-#include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -10,6 +10,10 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
+
+#include <array>
+#include <fstream>
+#include <string>
 
 #include "VtkErrorCapture.h"
 #include "VtkXmlHeader.h"
@@ -76,16 +80,43 @@ void writePng(const std::filesystem::path& path, vtkImageData* image) {
   });
 }
 
+// Through libpng's simplified API, not vtkPNGReader: VTK 9.1's reader
+// crashes (a double free in its clean-up) on any PNG whose data libpng
+// rejects, e.g. one cut short.
 vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path) {
-  auto reader = vtkSmartPointer<vtkPNGReader>::New();
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
-  if (!reader->CanReadFile(path.c_str())) throw Error(path.string(), 0, "is not a PNG image");
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  if (image->GetScalarType() != VTK_UNSIGNED_CHAR || image->GetNumberOfScalarComponents() < 3)
-    throw Error(path.string(), 0, "must be an 8-bit RGB or RGBA image");
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  const auto failed = [&](const std::string& what) {
+    const std::string reason = png.message;
+    png_image_free(&png);
+    return Error(path.string(), 0, what + (reason.empty() ? "" : " (" + reason + ")"));
+  };
+  std::array<png_byte, 8> signature{};
+  std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(signature.data()), 8);
+  if (png_sig_cmp(signature.data(), 0, 8) != 0) throw failed("is not a PNG image");
+  if (!png_image_begin_read_from_file(&png, path.c_str())) throw failed("is a damaged PNG image");
+  // 16-bit data would be taken as linear and converted to sRGB on the way
+  // to 8 bits: refused rather than silently changed.
+  if (png.format & PNG_FORMAT_FLAG_LINEAR)
+    throw failed("must have 8 bits per channel (this one has 16)");
+  constexpr png_uint_32 kMaxEdge = 32768;
+  if (png.width > kMaxEdge || png.height > kMaxEdge)
+    throw failed("is " + std::to_string(png.width) + " x " + std::to_string(png.height) +
+                 " pixels; at most " + std::to_string(kMaxEdge) + " on a side are read");
+  // Grey and palette images come out as RGB (with alpha where they have it).
+  const bool alpha = (png.format & PNG_FORMAT_FLAG_ALPHA) != 0;
+  png.format = alpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(static_cast<int>(png.width), static_cast<int>(png.height), 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, alpha ? 4 : 3);
+  // A negative stride stores the rows bottom-up: VTK's image origin is the
+  // lower left corner.
+  if (!png_image_finish_read(&png, nullptr, image->GetScalarPointer(),
+                             -static_cast<png_int_32>(PNG_IMAGE_ROW_STRIDE(png)), nullptr))
+    throw failed("is a damaged PNG image");
+  png_image_free(&png);
   return image;
 }
 

@@ -18,7 +18,9 @@ void writeVtu(const std::filesystem::path& path, vtkUnstructuredGrid* data);
 vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path);
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path);
 void writePng(const std::filesystem::path& path, vtkImageData* image);
-// An 8-bit RGB or RGBA image; throws Error naming the file otherwise.
+// An 8-bit RGB or RGBA image (grey and palette images become RGB), rows
+// bottom-up as VTK's; throws Error naming the file for anything else or a
+// damaged file.
 vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path);
 
 }  // namespace tetskin
