@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <string>
 
 #include "Commands.h"
@@ -19,6 +21,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -119,6 +122,35 @@ void printTetMesh(const std::filesystem::path& path) {
   printArrays("cell data", grid->GetCellData());
 }
 
+// A .pvd (from simulate, the GUI's recorder or ParaView): its time steps and,
+// per part, how many files it lists and whether they are all there.
+void printSeries(const std::filesystem::path& path) {
+  const PvdSeries series = PvdSeries::read(path);
+  std::set<double> times;
+  std::map<int, std::vector<std::string>> filesOfPart;
+  for (const PvdSeries::Entry& e : series.entries()) {
+    times.insert(e.time);
+    filesOfPart[e.part].push_back(e.file);
+  }
+  std::printf("%s: time series, %zu time step%s", path.c_str(), times.size(),
+              times.size() == 1 ? "" : "s");
+  if (!times.empty()) std::printf(", t %g .. %g", *times.begin(), *times.rbegin());
+  std::printf("\n");
+  const std::filesystem::path folder = path.parent_path();
+  for (const auto& [part, files] : filesOfPart) {
+    std::size_t missing = 0;
+    std::string firstMissing;
+    for (const std::string& f : files)
+      if (!std::filesystem::is_regular_file(folder / f) && missing++ == 0) firstMissing = f;
+    std::printf("  part %d     %zu file%s, %s .. %s", part, files.size(),
+                files.size() == 1 ? "" : "s", files.front().c_str(), files.back().c_str());
+    if (missing == 0)
+      std::printf(", all present\n");
+    else
+      std::printf(", %zu missing (first: %s)\n", missing, firstMissing.c_str());
+  }
+}
+
 }  // namespace
 
 void addInfoCommand(CLI::App& app) {
@@ -127,7 +159,8 @@ void addInfoCommand(CLI::App& app) {
       "info",
       "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
       "bound to and their quality), tetrahedral meshes (.vtu from convert or simulate: arrays "
-      "and their ranges) and datasets (.json/.node/.ele)");
+      "and their ranges), time series (.pvd: steps, files, any missing) and datasets "
+      "(.json/.node/.ele)");
   cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
   cmd->callback([files] {
     for (const auto& path : *files) {
@@ -142,13 +175,15 @@ void addInfoCommand(CLI::App& app) {
         printSurface(path, readSurface(path), "surface");
       } else if (extension == ".vtu") {
         printTetMesh(path);
+      } else if (extension == ".pvd") {
+        printSeries(path);
       } else if (isDatasetFile(path)) {
         printDataset(path);
       } else {
         throw Error(
             path.string(), 0,
-            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu) and "
-            "datasets (.json .node .ele), not " +
+            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu), time series "
+            "(.pvd) and datasets (.json .node .ele), not " +
                 (extension.empty() ? "files without an extension" : "'" + extension + "' files"));
       }
     }

@@ -15,6 +15,7 @@
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/ObjFormat.h"
+#include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -170,6 +171,28 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
     test::expectErrorAt([&] { readVtp(path); }, path.string(), lineOf(c.from), c.what);
   }
   EXPECT_EQ(readVtp(dir / "good.vtp")->GetNumberOfPoints(), 1839);
+}
+
+// File names with XML's special characters are legal on disk: the .pvd
+// escapes them, and reads back what was written.
+TEST(PvdSeries, WrittenSeriesReadsBackWithAnyFileName) {
+  test::ScratchDir dir;
+  PvdSeries series(dir / "r&d.pvd");
+  series.add(0.0, 0, "r&d_frames/control_00000.vtu");
+  series.add(0.0, 1, "r&d_frames/\"<surface>\".vtp");
+  series.add(1.0 / 60, 0, "r&d_frames/control_00001.vtu");
+  series.write();
+  const PvdSeries back = PvdSeries::read(dir / "r&d.pvd");
+  ASSERT_EQ(back.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back.entries()[i].file, series.entries()[i].file);
+    EXPECT_EQ(back.entries()[i].part, series.entries()[i].part);
+    EXPECT_EQ(back.entries()[i].time, series.entries()[i].time);  // 17 digits: exact
+  }
+  test::expectErrorAt([&] { PvdSeries::read(dir.write("x.pvd", "<VTKFile type=\"PolyData\"/>")); },
+                      (dir / "x.pvd").string(), 0, "is not a ParaView time series");
+  test::expectErrorAt([&] { PvdSeries::read(dir.write("y.pvd", "<VTKFile")); },
+                      (dir / "y.pvd").string(), 0, "is not a readable XML file");
 }
 
 TEST(SurfaceFile, VtuRoundTrip) {

@@ -1,13 +1,73 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/PvdSeries.h"
 
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+
+#include <cmath>
 #include <iomanip>
 
+#include "VtkErrorCapture.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 
 namespace tetskin {
+namespace {
+
+// A file name as an XML attribute value ('a&b_frames/...' is legal on disk).
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  return out;
+}
+
+}  // namespace
 
 PvdSeries::PvdSeries(std::filesystem::path pvdPath) : path_(std::move(pvdPath)) {}
+
+PvdSeries PvdSeries::read(const std::filesystem::path& pvdPath) {
+  const std::string file = pvdPath.string();
+  if (!std::filesystem::is_regular_file(pvdPath)) throw Error(file, 0, "cannot open for reading");
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  detail::VtkErrorCapture errors(parser);
+  parser->SetFileName(pvdPath.c_str());
+  if (!parser->Parse() || !parser->GetRootElement())
+    throw Error(file, 0, "is not a readable XML file: " + errors.message("no root element"));
+  vtkXMLDataElement* root = parser->GetRootElement();
+  const char* type = root->GetAttribute("type");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (std::string(root->GetName()) != "VTKFile" || !type || std::string(type) != "Collection" ||
+      !collection)
+    throw Error(file, 0, "is not a ParaView time series (no VTKFile of type Collection)");
+  PvdSeries series(pvdPath);
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* dataSet = collection->GetNestedElement(i);
+    if (std::string(dataSet->GetName()) != "DataSet") continue;
+    const char* name = dataSet->GetAttribute("file");
+    double time = 0;
+    int part = 0;
+    if (!name || !*name || !dataSet->GetScalarAttribute("timestep", time) || !std::isfinite(time))
+      throw Error(file, 0, "DataSet " + std::to_string(i) + " has no file or no finite timestep");
+    dataSet->GetScalarAttribute("part", part);  // optional
+    series.add(time, part, name);
+  }
+  return series;
+}
 
 void PvdSeries::add(double time, int part, const std::string& file) {
   entries_.push_back({time, part, file});
@@ -20,7 +80,7 @@ void PvdSeries::write() const {
         << "  <Collection>\n";
     for (const Entry& e : entries_)
       out << "    <DataSet timestep=\"" << std::setprecision(17) << e.time
-          << "\" group=\"\" part=\"" << e.part << "\" file=\"" << e.file << "\"/>\n";
+          << "\" group=\"\" part=\"" << e.part << "\" file=\"" << escaped(e.file) << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
   });
 }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "VtkErrorCapture.h"
 
-#include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkLogger.h>
+#include <vtkObject.h>
 #include <vtkStringOutputWindow.h>
 
 namespace tetskin::detail {
@@ -27,11 +27,11 @@ void onError(vtkObject*, unsigned long, void* clientData, void* callData) {
 
 }  // namespace
 
-VtkErrorCapture::VtkErrorCapture(vtkAlgorithm* algorithm) : algorithm_(algorithm) {
+VtkErrorCapture::VtkErrorCapture(vtkObject* source) : source_(source) {
   auto callback = vtkSmartPointer<vtkCallbackCommand>::New();
   callback->SetCallback(onError);
   callback->SetClientData(&message_);
-  tag_ = algorithm_->AddObserver(vtkCommand::ErrorEvent, callback);
+  tag_ = source_->AddObserver(vtkCommand::ErrorEvent, callback);
   previousWindow_ = vtkOutputWindow::GetInstance();
   window_ = vtkSmartPointer<vtkStringOutputWindow>::New();
   vtkOutputWindow::SetInstance(window_);
@@ -41,7 +41,7 @@ VtkErrorCapture::VtkErrorCapture(vtkAlgorithm* algorithm) : algorithm_(algorithm
 }
 
 VtkErrorCapture::~VtkErrorCapture() {
-  algorithm_->RemoveObserver(tag_);
+  source_->RemoveObserver(tag_);
   vtkOutputWindow::SetInstance(previousWindow_);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
 }

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Collects what a VTK algorithm reports (its error events, and whatever VTK
-// prints through the output window meanwhile: executive errors, parser
-// messages) instead of printing it, so a failed read or write becomes one
-// tetskin::Error naming the file. Not thread-safe: VTK's output window is global.
+// Collects what a VTK algorithm or parser reports (its error events, and
+// whatever VTK prints through the output window meanwhile: executive errors,
+// parser messages) instead of printing it, so a failed read or write becomes
+// one tetskin::Error naming the file. Not thread-safe: VTK's output window
+// is global.
 
 #include <vtkSmartPointer.h>
 
 #include <string>
 
-class vtkAlgorithm;
+class vtkObject;
 class vtkOutputWindow;
 class vtkStringOutputWindow;
 
@@ -17,18 +18,18 @@ namespace tetskin::detail {
 
 class VtkErrorCapture {
  public:
-  explicit VtkErrorCapture(vtkAlgorithm* algorithm);
+  explicit VtkErrorCapture(vtkObject* source);
   ~VtkErrorCapture();
   VtkErrorCapture(const VtkErrorCapture&) = delete;
   VtkErrorCapture& operator=(const VtkErrorCapture&) = delete;
 
-  // The algorithm raised an error event.
+  // The source raised an error event.
   bool failed() const { return !message_.empty(); }
   // The first error, or else the first line VTK printed, or `fallback`.
   std::string message(const std::string& fallback = "VTK reported an error") const;
 
  private:
-  vtkAlgorithm* algorithm_;
+  vtkObject* source_;
   unsigned long tag_ = 0;
   std::string message_;
   vtkSmartPointer<vtkOutputWindow> previousWindow_;

@@ -12,20 +12,26 @@ namespace tetskin {
 
 class PvdSeries {
  public:
+  struct Entry {
+    double time;
+    int part;
+    std::string file;  // as written: relative to the .pvd's directory
+  };
+
   explicit PvdSeries(std::filesystem::path pvdPath);
+  // Reads a .pvd (ours or ParaView's); throws Error naming the file when it
+  // is not a VTK Collection or a DataSet lacks its timestep or file.
+  static PvdSeries read(const std::filesystem::path& pvdPath);
+
   const std::filesystem::path& path() const { return path_; }
   // `file` relative to the .pvd's directory; `part` separates datasets of one
   // time step (0 control mesh, 1 surface).
   void add(double time, int part, const std::string& file);
   void write() const;
   std::size_t size() const { return entries_.size(); }
+  const std::vector<Entry>& entries() const { return entries_; }
 
  private:
-  struct Entry {
-    double time;
-    int part;
-    std::string file;
-  };
   std::filesystem::path path_;
   std::vector<Entry> entries_;
 };
