@@ -156,6 +156,13 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
       {"type=\"Int32\" Name=\"Level\"", "type=\"Inx32\" Name=\"Level\"",
        "DataArray 'Level': unknown type 'Inx32'"},
       {"type=\"Int32\" Name=\"Level\"", "type=\"IdType\" Name=\"Level\"", "unknown type 'IdType'"},
+      {"type=\"Float64\" Name=\"Points\"", "type=\"String\" Name=\"Points\"",
+       "DataArray 'Points': type String (strings are Array elements)"},
+      {"type=\"Int32\" Name=\"Level\"", "type=\"String\" Name=\"Level\"",
+       "DataArray 'Level': type String"},
+      {"Name=\"Points\" NumberOfComponents=\"3\"",
+       "Name=\"Points\" NumberOfComponents=\"99999999999\"",
+       "DataArray 'Points': NumberOfComponents '99999999999' is not a whole number in [1, 4096]"},
       {"NumberOfPoints=\"1839\"", "NumberOfPoints=\"-1\"",
        "Piece: NumberOfPoints '-1' is not a whole number >= 0"},
       {"Name=\"Level\" NumberOfTuples=\"1\"", "Name=\"Level\" NumberOfTuples=\"x\"",
@@ -171,6 +178,18 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
     test::expectErrorAt([&] { readVtp(path); }, path.string(), lineOf(c.from), c.what);
   }
   EXPECT_EQ(readVtp(dir / "good.vtp")->GetNumberOfPoints(), 1839);
+  // Float cell offsets in a .vtu (VTK crashed); a point array of that name
+  // is any other array.
+  writeVtu(dir / "good.vtu", toVtkUnstructuredGrid(test::unitTetrahedron()));
+  std::string vtu = test::readText(dir / "good.vtu");
+  const auto offsets = vtu.find("\" Name=\"offsets\"");
+  ASSERT_NE(offsets, std::string::npos);
+  const auto type = vtu.rfind("type=\"", offsets) + 6;
+  vtu.replace(type, offsets - type, "Float32");
+  const auto path = dir.write("bad.vtu", vtu);
+  test::expectErrorAt([&] { readVtu(path); }, path.string(),
+                      1 + static_cast<long>(std::count(vtu.begin(), vtu.begin() + type, '\n')),
+                      "Cells offsets: type 'Float32' is not an integer type");
 }
 
 // File names with XML's special characters are legal on disk: the .pvd

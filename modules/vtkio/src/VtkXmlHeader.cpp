@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,11 @@ namespace {
 constexpr std::array<std::string_view, 12> kArrayTypes{"Int8",    "UInt8",   "Int16",  "UInt16",
                                                        "Int32",   "UInt32",  "Int64",  "UInt64",
                                                        "Float32", "Float64", "String", "Bit"};
+
+constexpr std::array<std::string_view, 8> kIntegerTypes{"Int8",  "UInt8",  "Int16", "UInt16",
+                                                        "Int32", "UInt32", "Int64", "UInt64"};
+constexpr std::array<std::string_view, 5> kCellSections{"Cells", "Verts", "Lines", "Strips",
+                                                        "Polys"};
 
 // The value of attribute `name` in a tag's text, or nullopt.
 std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
@@ -35,11 +41,17 @@ std::optional<std::string_view> attribute(std::string_view tag, std::string_view
   return std::nullopt;
 }
 
-bool isWholeNumber(std::string_view text, long long minimum) {
+bool isWholeNumber(std::string_view text, long long minimum,
+                   long long maximum = std::numeric_limits<long long>::max()) {
   long long value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size() && value >= minimum;
+  return ec == std::errc() && end == text.data() + text.size() && value >= minimum &&
+         value <= maximum;
 }
+
+// More components than any array TetSkin or ParaView users write (VTK hung
+// on 99999999999).
+constexpr long long kMaxComponents = 4096;
 
 }  // namespace
 
@@ -54,13 +66,30 @@ void checkVtkXmlHeader(const std::filesystem::path& path) {
     xml += '\n';
   }
   const std::string file = path.string();
+  // Inside a cell section (Cells of a .vtu; Verts, Lines, Strips, Polys of
+  // a .vtp), whose offsets and connectivity must be integers: VTK crashed
+  // on float offsets in a .vtu.
+  std::string_view cellSection;
+  long line = 1;
+  std::size_t counted = 0;  // newlines counted up to here
   std::size_t at = 0;
   while ((at = xml.find('<', at)) != std::string::npos) {
     const std::size_t end = xml.find('>', at);
     if (end == std::string::npos) break;  // VTK's parser reports it
     const std::string_view tag(xml.data() + at, end - at);
-    const long line = 1 + static_cast<long>(std::count(xml.begin(), xml.begin() + at, '\n'));
+    line += static_cast<long>(std::count(xml.begin() + static_cast<std::ptrdiff_t>(counted),
+                                         xml.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    counted = at;
     const std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/") - 1);
+    if (tag.substr(0, 2) == "</") {  // a closing tag
+      if (std::find(kCellSections.begin(), kCellSections.end(), tag.substr(2)) !=
+          kCellSections.end())
+        cellSection = {};
+      at = end;
+      continue;
+    }
+    if (std::find(kCellSections.begin(), kCellSections.end(), name) != kCellSections.end())
+      cellSection = name;
     const std::string arrayName(attribute(tag, "Name").value_or("?"));
     if (name == "Array" || name == "DataArray") {
       const auto type = attribute(tag, "type");
@@ -68,10 +97,22 @@ void checkVtkXmlHeader(const std::filesystem::path& path) {
         throw Error(file, line,
                     std::string(name) + " '" + arrayName + "': unknown type '" +
                         std::string(type.value_or("")) + "'");
-      if (const auto n = attribute(tag, "NumberOfComponents"); n && !isWholeNumber(*n, 1))
+      // VTK writes string arrays as Array elements, numbers as DataArray;
+      // it crashed on a DataArray declared String (point or field data).
+      if (*type == "String" && name == "DataArray")
+        throw Error(file, line,
+                    "DataArray '" + arrayName + "': type String (strings are Array elements)");
+      if (!cellSection.empty() && (arrayName == "offsets" || arrayName == "connectivity") &&
+          std::find(kIntegerTypes.begin(), kIntegerTypes.end(), *type) == kIntegerTypes.end())
+        throw Error(file, line,
+                    std::string(cellSection) + " " + arrayName + ": type '" + std::string(*type) +
+                        "' is not an integer type");
+      if (const auto n = attribute(tag, "NumberOfComponents");
+          n && !isWholeNumber(*n, 1, kMaxComponents))
         throw Error(file, line,
                     std::string(name) + " '" + arrayName + "': NumberOfComponents '" +
-                        std::string(*n) + "' is not a whole number >= 1");
+                        std::string(*n) + "' is not a whole number in [1, " +
+                        std::to_string(kMaxComponents) + "]");
       if (const auto n = attribute(tag, "NumberOfTuples"); n && !isWholeNumber(*n, 0))
         throw Error(file, line,
                     std::string(name) + " '" + arrayName + "': NumberOfTuples '" + std::string(*n) +

@@ -5,11 +5,13 @@
 namespace tetskin::detail {
 
 // Checks the XML part of a VTK XML file (.vtp, .vtu) before VTK's reader
-// sees it: that reader crashes on some malformed attributes (an unknown or
-// legacy array type such as 'Inx32' or 'IdType' in field data, a negative
-// NumberOfPoints). Every Array/DataArray must have a known type and
-// whole-number counts, every Piece non-negative whole-number sizes. Throws
-// Error naming the file and line.
+// sees it: that reader crashes or hangs on some malformed attributes (an
+// unknown or legacy array type such as 'Inx32' or 'IdType' in field data, a
+// negative NumberOfPoints, float cell offsets, a point array declared
+// String, 99999999999 components). Every Array/DataArray must have a known
+// type (String on Array elements only), 1 to 4096 components and whole-number
+// counts, cell offsets and connectivity an integer type, every Piece
+// non-negative whole-number sizes. Throws Error naming the file and line.
 void checkVtkXmlHeader(const std::filesystem::path& path);
 
 }  // namespace tetskin::detail
