@@ -56,6 +56,26 @@ void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
              stdout);
 }
 
+// Element volumes of a tetrahedral mesh: their sum, the smallest, and the
+// elements that are not positive (inverted or degenerate).
+struct Volumes {
+  double total = 0.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  Index nonPositive = 0;
+  Index firstNonPositive = -1;
+};
+
+Volumes volumes(const TetMesh& mesh) {
+  Volumes result;
+  for (Index e = 0; e < mesh.elementCount(); ++e) {
+    const double v = elementVolume(mesh, e);
+    result.total += v;
+    result.smallest = std::min(result.smallest, v);
+    if (!(v > 0) && result.nonPositive++ == 0) result.firstNonPositive = e;
+  }
+  return result;
+}
+
 void printDataset(const std::filesystem::path& path) {
   const Dataset dataset = loadDataset(path);
   std::printf("%s: dataset, %d level(s), %lld nodes, %lld elements\n", path.c_str(),
@@ -68,23 +88,18 @@ void printDataset(const std::filesystem::path& path) {
   std::string warnings;
   for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
     const TetMesh level = extractLevel(dataset.mesh, k);
-    double total = 0.0, smallest = std::numeric_limits<double>::infinity();
-    Index nonPositive = 0, first = -1;
-    for (Index e = 0; e < level.elementCount(); ++e) {
-      const double v = elementVolume(level, e);
-      total += v;
-      smallest = std::min(smallest, v);
-      if (!(v > 0) && nonPositive++ == 0) first = e;
-    }
-    if (nonPositive > 0)
-      warnings += "  warning: level " + std::to_string(k) + " has " + std::to_string(nonPositive) +
-                  " inverted or degenerate element(s) (first: element " + std::to_string(first) +
+    const Volumes v = volumes(level);
+    if (v.nonPositive > 0)
+      warnings += "  warning: level " + std::to_string(k) + " has " +
+                  std::to_string(v.nonPositive) +
+                  " inverted or degenerate element(s) (first: element " +
+                  std::to_string(v.firstNonPositive) +
                   "); simulate refuses it (and multigrid on finer levels)\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::printf("  %-5d %8lld %9lld %12g %12g  %s %s %g\n", k,
                 static_cast<long long>(level.nodeCount()),
-                static_cast<long long>(level.elementCount()), total, smallest, src.input.c_str(),
-                src.mesher.c_str(), src.quality);
+                static_cast<long long>(level.elementCount()), v.total, v.smallest,
+                src.input.c_str(), src.mesher.c_str(), src.quality);
   }
   std::fputs(warnings.c_str(), stdout);
 }
@@ -97,13 +112,8 @@ void printTetMesh(const std::filesystem::path& path) {
   std::printf("%s: tetrahedral mesh\n", path.c_str());
   std::printf("  nodes      %lld\n  elements   %lld\n", static_cast<long long>(mesh.nodeCount()),
               static_cast<long long>(mesh.elementCount()));
-  double total = 0.0, smallest = std::numeric_limits<double>::infinity();
-  for (Index e = 0; e < mesh.elementCount(); ++e) {
-    const double v = elementVolume(mesh, e);
-    total += v;
-    smallest = std::min(smallest, v);
-  }
-  std::printf("  volume     %g (smallest element %g)\n", total, smallest);
+  const Volumes v = volumes(mesh);
+  std::printf("  volume     %g (smallest element %g)\n", v.total, v.smallest);
   printBox(boundingBox(mesh.nodes));
   const auto printArrays = [](const char* kind, vtkFieldData* arrays) {
     for (int i = 0; i < arrays->GetNumberOfArrays(); ++i) {

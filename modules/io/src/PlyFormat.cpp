@@ -110,14 +110,10 @@ class Values {
 
   // Ascii: FILE:LINE: message. Binary: FILE: vertex 12: message.
   [[noreturn]] void fail(const std::string& message) const {
-    if (format_ == Format::Ascii) lines_.fail(message);
-    throw Error(lines_.sourceName(), 0, where() + ": " + message);
+    raise(format_ == Format::Ascii ? message : where() + ": " + message);
   }
   // FILE:LINE: vertex 12 message, or FILE: vertex 12 message.
-  [[noreturn]] void failAbout(const std::string& message) const {
-    if (format_ == Format::Ascii) lines_.fail(where() + " " + message);
-    throw Error(lines_.sourceName(), 0, where() + " " + message);
-  }
+  [[noreturn]] void failAbout(const std::string& message) const { raise(where() + " " + message); }
 
   // A value of type `t` as a double (integers up to 32 bits are exact).
   double read(Type t, const std::string& what) {
@@ -197,7 +193,10 @@ class Values {
     return lines_[token_++];
   }
   [[noreturn]] void failEnd() const {
-    const std::string message = "the file ends inside " + where() + " (truncated file?)";
+    raise("the file ends inside " + where() + " (truncated file?)");
+  }
+  // The one way out: ascii errors name the current line, binary ones none.
+  [[noreturn]] void raise(const std::string& message) const {
     if (format_ == Format::Ascii) lines_.fail(message);
     throw Error(lines_.sourceName(), 0, message);
   }
