@@ -38,5 +38,26 @@ TEST(LevelSelection, FailedCandidatesAreNeverChosen) {
   EXPECT_THROW(selectLevels({}, {600}), Error);
 }
 
+TEST(LevelSelection, WarningsNameRepeatedLevelsAndCountsFarFromTheirTargets) {
+  const std::vector<double> targets = levelTargets(600, 12000, 3);  // 600, 2683, 12000
+  // Every target met within a factor of 2: nothing to say.
+  EXPECT_TRUE(selectionWarnings({12500, 2700, 610}, {2, 1, 0}, targets).empty());
+  EXPECT_TRUE(selectionWarnings({1200, 2700, 6000}, {0, 1, 2}, targets).empty());
+  // One candidate for all three levels (a single input without --decimate).
+  EXPECT_EQ(selectionWarnings({22431}, {0, 0, 0}, targets),
+            (std::vector<std::string>{"level 0 has 22431 elements, 37x its target of 600",
+                                      "levels 0 and 1 are the same candidate (22431 elements)",
+                                      "level 1 has 22431 elements, 8.4x its target of 2683",
+                                      "levels 1 and 2 are the same candidate (22431 elements)"}));
+  // Too few elements; exactly half a target is still within the tolerance.
+  EXPECT_EQ(selectionWarnings({290, 700, 5000}, {0, 1, 2}, targets),
+            (std::vector<std::string>{"level 0 has 290 elements, 1/2.1 of its target of 600",
+                                      "level 1 has 700 elements, 1/3.8 of its target of 2683",
+                                      "level 2 has 5000 elements, 1/2.4 of its target of 12000"}));
+  EXPECT_TRUE(selectionWarnings({300, 1342, 6000}, {0, 1, 2}, targets).empty());
+  EXPECT_EQ(selectionWarnings({100}, {0}, {12000}),
+            std::vector<std::string>{"level 0 has 100 elements, 1/120 of its target of 12000"});
+}
+
 }  // namespace
 }  // namespace tetskin

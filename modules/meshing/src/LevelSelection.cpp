@@ -2,7 +2,9 @@
 #include "tetskin/meshing/LevelSelection.h"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include "tetskin/core/Error.h"
 
@@ -40,6 +42,33 @@ std::vector<int> selectLevels(const std::vector<Index>& elementCounts,
     chosen.push_back(best);
   }
   return chosen;
+}
+
+std::vector<std::string> selectionWarnings(const std::vector<Index>& elementCounts,
+                                           const std::vector<int>& chosen,
+                                           const std::vector<double>& targets) {
+  std::vector<std::string> warnings;
+  auto count = [&](std::size_t level) {
+    return elementCounts[static_cast<std::size_t>(chosen[level])];
+  };
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    if (k > 0 && chosen[k] == chosen[k - 1])
+      warnings.push_back("levels " + std::to_string(k - 1) + " and " + std::to_string(k) +
+                         " are the same candidate (" + std::to_string(count(k)) + " elements)");
+    if (k >= targets.size()) continue;
+    const double ratio = static_cast<double>(count(k)) / targets[k];
+    if (ratio <= kTargetTolerance && ratio >= 1 / kTargetTolerance) continue;
+    // "269x" or "4.5x" its target; "1/24" or "1/2.5" of it.
+    const double factor = ratio > 1 ? ratio : 1 / ratio;
+    std::ostringstream shown;
+    shown << std::fixed << std::setprecision(factor < 10 ? 1 : 0) << factor;
+    std::ostringstream line;
+    line << "level " << k << " has " << count(k) << " elements, "
+         << (ratio > 1 ? shown.str() + "x" : "1/" + shown.str() + " of") << " its target of "
+         << std::llround(targets[k]);
+    warnings.push_back(line.str());
+  }
+  return warnings;
 }
 
 }  // namespace tetskin

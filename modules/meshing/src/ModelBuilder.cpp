@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/Decimation.h"
@@ -129,6 +130,30 @@ nlohmann::json repairJson(const RepairReport& report) {
   return j;
 }
 
+// What to change when the selection is off its targets: the range the
+// candidates cover, and the options that give other candidates.
+std::string selectionHint(const std::vector<Index>& counts, const BuildOptions& options,
+                          std::size_t inputCount) {
+  Index fewest = std::numeric_limits<Index>::max(), most = 0, made = 0;
+  for (Index c : counts)
+    if (c >= 0) {
+      fewest = std::min(fewest, c);
+      most = std::max(most, c);
+      ++made;
+    }
+  std::string hint = made == 1
+                         ? "hint: the only candidate has " + std::to_string(most) +
+                               " elements; choose --min-elements and --max-elements near it"
+                         : "hint: the " + std::to_string(made) + " candidates have " +
+                               std::to_string(fewest) + " to " + std::to_string(most) +
+                               " elements; choose --min-elements and --max-elements in that range";
+  if (!options.decimate && inputCount == 1)
+    hint += ", or add coarser levels of detail (--decimate, or --lod-series)";
+  else if (options.mesher == MesherKind::TetGen)
+    hint += ", or widen --qualities";
+  return hint;
+}
+
 }  // namespace
 
 BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
@@ -220,10 +245,9 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   std::stable_sort(result.chosen.begin(), result.chosen.end(), [&](int a, int b) {
     return counts[static_cast<std::size_t>(a)] < counts[static_cast<std::size_t>(b)];
   });
-  for (std::size_t k = 1; k < result.chosen.size(); ++k)
-    if (result.chosen[k] == result.chosen[k - 1])
-      say(events, "warning: levels " + std::to_string(k - 1) + " and " + std::to_string(k) +
-                      " are the same candidate (too few candidates between min and max elements)");
+  const std::vector<std::string> warnings = selectionWarnings(counts, result.chosen, targets);
+  for (const std::string& warning : warnings) say(events, "warning: " + warning);
+  if (!warnings.empty()) say(events, selectionHint(counts, options, prepared.size()));
 
   Dataset& dataset = result.dataset;
   nlohmann::json candidatesJson = nlohmann::json::array();

@@ -6,6 +6,7 @@
 // quality of the finest input first, so that on equal distance the best
 // quality for that element count wins.
 
+#include <string>
 #include <vector>
 
 #include "tetskin/core/Types.h"
@@ -21,5 +22,15 @@ std::vector<double> levelTargets(Index minElements, Index maxElements, int level
 // succeeded.
 std::vector<int> selectLevels(const std::vector<Index>& elementCounts,
                               const std::vector<double>& targets);
+
+// What is wrong with a selection, one line each (without "warning: "):
+// neighbouring levels that are the same candidate, and levels whose count
+// is more than kTargetTolerance away from their target (either way).
+// `chosen` is per level, coarsest first, and targets[k] is level k's.
+// Empty when the selection is as asked.
+constexpr double kTargetTolerance = 2.0;
+std::vector<std::string> selectionWarnings(const std::vector<Index>& elementCounts,
+                                           const std::vector<int>& chosen,
+                                           const std::vector<double>& targets);
 
 }  // namespace tetskin
