@@ -96,6 +96,22 @@ CLI::Validator numberAbove(double bound) {
       bound == 0 ? "POSITIVE" : "> " + limit);
 }
 
+CLI::Validator numberFrom(double min, double below) {
+  const std::string range = std::isinf(below)
+                                ? ">= " + formatNumber(min)
+                                : "in [" + formatNumber(min) + ", " + formatNumber(below) + ")";
+  return CLI::Validator(
+      [min, below, range](std::string& text) -> std::string {
+        double value = 0;
+        if (!parsesAll(text, value) || !std::isfinite(value))
+          return "'" + text + "' is not a finite number";
+        if (!(value >= min && value < below)) return text + " is not " + range;
+        return {};
+      },
+      // Shown in --help after the type, as CLI11's own checks are.
+      std::isinf(below) ? (min == 0 ? "NONNEGATIVE" : range) : range.substr(3));
+}
+
 CLI::Validator fileEnding(const std::string& extension) {
   return CLI::Validator(
       [extension](std::string& text) -> std::string {

@@ -34,6 +34,9 @@ CLI::Validator positiveNumber();
 // A finite number > `bound` (each element, on a list option).
 CLI::Validator numberAbove(double bound);
 
+// A finite number in [min, below) (below infinite: >= min).
+CLI::Validator numberFrom(double min, double below = std::numeric_limits<double>::infinity());
+
 // true or false (also on/off, yes/no, 1/0, any letter case) for a bool
 // option. CLI11 alone reads any whole number as true ("--fur-fins 2") and
 // answers other words with "Could not convert".

@@ -12,6 +12,7 @@
 #include "Commands.h"
 #include "OptionChecks.h"
 #include "Progress.h"
+#include "ScenarioOptions.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -29,7 +30,8 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface;
   int steps = 120, level = -1, every = 1;
-  std::string scenario = "wobble", solver = "auto", coarseOperators = "galerkin";
+  std::string solver = "auto", coarseOperators = "galerkin";
+  ScenarioArgs scenario;
   SimulationOptions options;
   std::optional<double> young, poisson, density, alpha, beta;  // over the config's elasticity
   bool quiet = false;
@@ -46,16 +48,18 @@ ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
   return m;
 }
 
-void run(SimulateArgs& a) {
+void run(SimulateArgs& a, const CLI::App& cmd) {
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);
   a.options.solver = solverKindFromString(a.solver);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
   a.options.material = materialOf(a, dataset);
+  const TetMesh rest = extractLevel(dataset.mesh, level);
   const SimulationOptions options =
-      scenarioOptions(a.scenario, a.options, extractLevel(dataset.mesh, level));
-  std::unique_ptr<Scenario> scenario = makeScenario(a.scenario);
+      scenarioOptions(a.scenario.name, withGravityAndFloor(a.options, a.scenario), rest);
+  std::unique_ptr<Scenario> scenario =
+      makeScenario(a.scenario.name, scenarioParameters(cmd, a.scenario, rest.nodeCount()));
   Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);
 
@@ -110,6 +114,13 @@ void run(SimulateArgs& a) {
       options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "");
   std::printf("  material: %s\n", describe(options.material).c_str());
+  std::printf("  %zu of %lld nodes fixed, gravity %s,%s,%s m/s^2", sim.fixedNodes().size(),
+              static_cast<long long>(sim.restMesh().nodeCount()),
+              formatNumber(options.gravity.x()).c_str(), formatNumber(options.gravity.y()).c_str(),
+              formatNumber(options.gravity.z()).c_str());
+  if (options.floorHeight)
+    std::printf(", floor at y = %s", formatNumber(*options.floorHeight).c_str());
+  std::printf("\n");
   std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
               a.steps / std::max(stepSeconds, 1e-12),
               static_cast<double>(iterations) / std::max(a.steps, 1));
@@ -138,9 +149,7 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--every", a->every, "write every k-th step")
       ->capture_default_str()
       ->check(wholeNumber(1));
-  cmd->add_option("--scenario", a->scenario, "wobble, drop, twist or sag")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"wobble", "drop", "twist", "sag"}));
+  addScenarioOptions(*cmd, a->scenario);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--solver", a->solver,
                   "cg (block-Jacobi CG), multigrid (CG with a V-cycle) or auto (whichever of "
@@ -184,7 +193,7 @@ void addSimulateCommand(CLI::App& app) {
                   "also write this surface, bound (closest) and deformed, per frame")
       ->check(CLI::ExistingFile);
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 
 }  // namespace tetskin::cli

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -219,6 +221,96 @@ TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
     EXPECT_GE(boundingBox(x).min.y(), *options.floorHeight - 1e-9);
     EXPECT_LT(boundingBox(x).min.y(), *options.floorHeight + 0.05);  // resting on it
   }
+}
+
+// Scenario parameters: held nodes stay put in every scenario (and join the
+// scenario's own fixed nodes), a base share of 0 fixes nothing (a sagging
+// body then falls freely), the push scales with its acceleration, and
+// values no scenario can use are refused.
+TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  const TetMesh rest = extractLevel(d.mesh, 0);
+  Index top = 0, bottom = 0;
+  rest.nodes.col(1).maxCoeff(&top);
+  rest.nodes.col(1).minCoeff(&bottom);
+  ScenarioParameters held;
+  held.heldNodes = {static_cast<int>(top)};
+  for (const std::string& name : scenarioNames()) {
+    Simulation sim(d.mesh, 0, scenarioOptions(name, SimulationOptions{}, rest));
+    auto scenario = makeScenario(name, held);
+    scenario->setUp(sim);
+    const std::vector<int>& fixed = sim.fixedNodes();
+    EXPECT_TRUE(std::is_sorted(fixed.begin(), fixed.end())) << name;
+    EXPECT_TRUE(std::binary_search(fixed.begin(), fixed.end(), static_cast<int>(top))) << name;
+    // The base (all but drop) is still fixed besides.
+    EXPECT_EQ(std::binary_search(fixed.begin(), fixed.end(), static_cast<int>(bottom)),
+              name != "drop")
+        << name;
+    const Points3 start = sim.state().positions;
+    for (int i = 0; i < 10; ++i) {
+      scenario->beforeStep(sim, sim.state().time);
+      sim.step();
+    }
+    // Twist turns the top (its fixed nodes follow targets); elsewhere held is held.
+    if (name != "twist") {
+      EXPECT_LT((sim.state().positions.row(top) - start.row(top)).norm(), 1e-12) << name;
+    }
+  }
+  {  // No base and nothing held: the whole body falls with g.
+    ScenarioParameters free;
+    free.baseShare = 0;
+    Simulation sim(d.mesh, 0, SimulationOptions{});
+    auto sag = makeScenario("sag", free);
+    sag->setUp(sim);
+    EXPECT_TRUE(sim.fixedNodes().empty());
+    for (int i = 0; i < 6; ++i) sim.step();
+    const Eigen::VectorXd m = sim.nodeMasses();
+    const double fallen = m.dot(sim.state().positions.col(1) - rest.nodes.col(1)) / m.sum();
+    // Backward Euler on a rigid fall: v_k = (v_{k-1} - h g) / (1 + h alpha)
+    // (mass damping; stiffness damping and elastic forces vanish), x_k =
+    // x_{k-1} + h v_k.
+    const double h = sim.options().timeStep, alpha = sim.options().material.massDamping;
+    double v = 0, y = 0;
+    for (int i = 0; i < 6; ++i) {
+      v = (v - h * 9.81) / (1 + h * alpha);
+      y += h * v;
+    }
+    EXPECT_NEAR(fallen, y, 1e-6 * std::abs(y));
+  }
+  {  // Twice the push, twice the sideways swing (linear at this amplitude).
+    auto swing = [&](double acceleration) {
+      ScenarioParameters p;
+      p.pushAcceleration = acceleration;
+      SimulationOptions options;
+      options.gravity.setZero();
+      Simulation sim(d.mesh, 0, options);
+      auto wobble = makeScenario("wobble", p);
+      wobble->setUp(sim);
+      for (int i = 0; i < 8; ++i) {
+        wobble->beforeStep(sim, sim.state().time);
+        sim.step();
+      }
+      return sim.state().positions(top, 0) - rest.nodes(top, 0);
+    };
+    const double one = swing(1), two = swing(2);
+    EXPECT_GT(one, 1e-5);
+    EXPECT_NEAR(two, 2 * one, 0.02 * one);
+  }
+  for (auto spoil : std::vector<std::function<void(ScenarioParameters&)>>{
+           [](ScenarioParameters& p) { p.baseShare = 1; },
+           [](ScenarioParameters& p) { p.baseShare = -0.1; },
+           [](ScenarioParameters& p) { p.pushFrequency = 0; },
+           [](ScenarioParameters& p) { p.twistSeconds = -1; },
+           [](ScenarioParameters& p) { p.dropHeight = std::numeric_limits<double>::quiet_NaN(); },
+           [](ScenarioParameters& p) { p.pushAcceleration = INFINITY; }}) {
+    ScenarioParameters p;
+    spoil(p);
+    EXPECT_THROW(makeScenario("wobble", p), Error);
+  }
+  ScenarioParameters missing;
+  missing.heldNodes = {static_cast<int>(rest.nodeCount())};
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  EXPECT_THROW(makeScenario("sag", missing)->setUp(sim), Error);
 }
 
 TEST(Simulation, WobbleMovesTheTopBackAndForth) {

@@ -2,6 +2,7 @@
 #include "tetskin/simulation/Scenario.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "tetskin/core/Error.h"
@@ -17,26 +18,36 @@ std::vector<int> nodesBelow(const TetMesh& mesh, double y) {
   return nodes;
 }
 
+// The base: nodes in the lowest share of the height (none for share 0).
+std::vector<int> baseNodes(const TetMesh& rest, double share) {
+  if (share <= 0) return {};
+  const BoundingBox box = boundingBox(rest.nodes);
+  return nodesBelow(rest, box.min.y() + share * box.extent().y());
+}
+
 class Sag : public Scenario {
  public:
-  explicit Sag(const ScenarioParameters& p) : p_(p) {}
+  using Scenario::Scenario;
   const char* name() const override { return "sag"; }
-  void setUp(Simulation& sim) override {
-    const BoundingBox box = boundingBox(sim.restMesh().nodes);
-    sim.setFixedNodes(nodesBelow(sim.restMesh(), box.min.y() + p_.baseShare * box.extent().y()));
-  }
   void beforeStep(Simulation&, double) override {}
 
  protected:
-  ScenarioParameters p_;
+  void prepare(Simulation& sim) override {
+    sim.setFixedNodes(baseNodes(sim.restMesh(), p_.baseShare));
+  }
 };
 
 class Wobble : public Sag {
  public:
   using Sag::Sag;
   const char* name() const override { return "wobble"; }
-  void setUp(Simulation& sim) override {
-    Sag::setUp(sim);
+  void beforeStep(Simulation& sim, double time) override {
+    sim.setExternalForces(pushed_ * std::sin(2 * M_PI * p_.pushFrequency * time));
+  }
+
+ protected:
+  void prepare(Simulation& sim) override {
+    Sag::prepare(sim);
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
     const Eigen::VectorXd mass = sim.nodeMasses();
     pushed_ = Points3::Zero(sim.restMesh().nodeCount(), 3);
@@ -46,9 +57,6 @@ class Wobble : public Sag {
       if (t > 0.6) pushed_(v, 0) = mass[v] * p_.pushAcceleration * (t - 0.6) / 0.4;
     }
   }
-  void beforeStep(Simulation& sim, double time) override {
-    sim.setExternalForces(pushed_ * std::sin(2 * M_PI * p_.pushFrequency * time));
-  }
 
  private:
   Points3 pushed_;
@@ -56,28 +64,30 @@ class Wobble : public Sag {
 
 class Drop : public Scenario {
  public:
-  explicit Drop(const ScenarioParameters& p) : p_(p) {}
+  using Scenario::Scenario;
   const char* name() const override { return "drop"; }
-  void setUp(Simulation& sim) override {
+  void beforeStep(Simulation&, double) override {}
+
+ protected:
+  void prepare(Simulation& sim) override {
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
     Points3 lifted = sim.restMesh().nodes;
     lifted.col(1).array() += p_.dropHeight * box.extent().y();
     sim.setPositions(lifted);
   }
-  void beforeStep(Simulation&, double) override {}
-
- private:
-  ScenarioParameters p_;
 };
 
 class Twist : public Sag {
  public:
   using Sag::Sag;
   const char* name() const override { return "twist"; }
-  void setUp(Simulation& sim) override {
+  void beforeStep(Simulation& sim, double time) override;
+
+ protected:
+  void prepare(Simulation& sim) override {
     const TetMesh& rest = sim.restMesh();
     const BoundingBox box = boundingBox(rest.nodes);
-    std::vector<int> fixed = nodesBelow(rest, box.min.y() + p_.baseShare * box.extent().y());
+    std::vector<int> fixed = baseNodes(rest, p_.baseShare);
     top_.clear();
     for (Index v = 0; v < rest.nodeCount(); ++v)
       if (rest.nodes(v, 1) >= box.max.y() - 0.15 * box.extent().y())
@@ -86,24 +96,50 @@ class Twist : public Sag {
     sim.setFixedNodes(fixed);
     axis_ = box.center();
   }
-  void beforeStep(Simulation& sim, double time) override {
-    const double h = sim.options().timeStep;
-    const double share = std::min((time + h) / p_.twistSeconds, 1.0);
-    const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, Eigen::Vector3d::UnitY());
-    Points3 targets(static_cast<Index>(top_.size()), 3);
-    for (std::size_t i = 0; i < top_.size(); ++i) {
-      const Eigen::Vector3d p = sim.restMesh().nodes.row(top_[i]).transpose();
-      targets.row(static_cast<Index>(i)) = (axis_ + turn * (p - axis_)).transpose();
-    }
-    sim.setKinematicTargets(top_, targets);
-  }
 
  private:
   std::vector<int> top_;
   Eigen::Vector3d axis_;
 };
 
+void Twist::beforeStep(Simulation& sim, double time) {
+  const double h = sim.options().timeStep;
+  const double share = std::min((time + h) / p_.twistSeconds, 1.0);
+  const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, Eigen::Vector3d::UnitY());
+  Points3 targets(static_cast<Index>(top_.size()), 3);
+  for (std::size_t i = 0; i < top_.size(); ++i) {
+    const Eigen::Vector3d p = sim.restMesh().nodes.row(top_[i]).transpose();
+    targets.row(static_cast<Index>(i)) = (axis_ + turn * (p - axis_)).transpose();
+  }
+  sim.setKinematicTargets(top_, targets);
+}
+
 }  // namespace
+
+void Scenario::setUp(Simulation& sim) {
+  prepare(sim);
+  if (p_.heldNodes.empty()) return;
+  std::vector<int> fixed = sim.fixedNodes();
+  fixed.insert(fixed.end(), p_.heldNodes.begin(), p_.heldNodes.end());
+  std::sort(fixed.begin(), fixed.end());
+  fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
+  sim.setFixedNodes(fixed);
+}
+
+void validateScenarioParameters(const ScenarioParameters& p) {
+  auto require = [](bool ok, const char* what, double value, const char* range) {
+    if (!ok) throw Error(std::string(what) + " must be " + range + ", got " + formatNumber(value));
+  };
+  require(p.baseShare >= 0 && p.baseShare < 1, "the base share", p.baseShare, "in [0, 1)");
+  require(std::isfinite(p.pushAcceleration), "the push acceleration", p.pushAcceleration, "finite");
+  require(p.pushFrequency > 0 && std::isfinite(p.pushFrequency), "the push frequency",
+          p.pushFrequency, "finite and > 0");
+  require(p.dropHeight >= 0 && std::isfinite(p.dropHeight), "the drop height", p.dropHeight,
+          "finite and >= 0");
+  require(std::isfinite(p.twistDegrees), "the twist angle", p.twistDegrees, "finite");
+  require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
+          "finite and > 0");
+}
 
 SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
                                   const TetMesh& rest) {
@@ -112,6 +148,7 @@ SimulationOptions scenarioOptions(std::string_view name, SimulationOptions optio
 }
 
 std::unique_ptr<Scenario> makeScenario(std::string_view name, const ScenarioParameters& p) {
+  validateScenarioParameters(p);
   if (name == "wobble") return std::make_unique<Wobble>(p);
   if (name == "drop") return std::make_unique<Drop>(p);
   if (name == "twist") return std::make_unique<Twist>(p);

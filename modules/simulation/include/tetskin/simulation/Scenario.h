@@ -17,22 +17,35 @@
 namespace tetskin {
 
 struct ScenarioParameters {
-  double baseShare = 0.1;        // nodes in the lowest share of the height are fixed
+  double baseShare = 0.1;        // wobble, twist, sag: nodes in the lowest share of the height
+                                 // are fixed (0: none)
   double pushAcceleration = 15;  // wobble: peak sideways acceleration of the pushed part
   double pushFrequency = 1.0;    // wobble: Hz
   double dropHeight = 0.3;       // drop: start this share of the height above the floor
   double twistDegrees = 90;      // twist: final angle of the top
   double twistSeconds = 1.0;     // twist: time to reach it
+  std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
 };
+
+// Throws Error naming the parameter whose value no scenario can use (e.g. a
+// base share outside [0, 1), a twist time <= 0, anything not finite).
+void validateScenarioParameters(const ScenarioParameters& parameters);
 
 class Scenario {
  public:
   virtual ~Scenario() = default;
+  explicit Scenario(const ScenarioParameters& parameters) : p_(parameters) {}
   virtual const char* name() const = 0;
-  // Fixed nodes, initial state, floor: called once before the first step.
-  virtual void setUp(Simulation& simulation) = 0;
+  // Fixed nodes (the scenario's own and the held ones) and the initial
+  // state: called once before the first step.
+  void setUp(Simulation& simulation);
   // Forces and kinematic targets for the step that starts at `time`.
   virtual void beforeStep(Simulation& simulation, double time) = 0;
+
+ protected:
+  // The scenario's own part of setUp().
+  virtual void prepare(Simulation& simulation) = 0;
+  ScenarioParameters p_;
 };
 
 // The simulation options a scenario needs (e.g. drop adds a floor).

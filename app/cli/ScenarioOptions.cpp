@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "ScenarioOptions.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "OptionChecks.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/NodeList.h"
+
+namespace tetskin::cli {
+namespace {
+
+// The options that only some scenarios read.
+const std::vector<std::pair<const char*, std::vector<std::string>>> kScenarioOnly = {
+    {"--base", {"wobble", "twist", "sag"}}, {"--push", {"wobble"}},
+    {"--push-frequency", {"wobble"}},       {"--drop-height", {"drop"}},
+    {"--twist-degrees", {"twist"}},         {"--twist-seconds", {"twist"}}};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return text;
+}
+
+}  // namespace
+
+void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
+  cmd.add_option("--scenario", a.name, "wobble, drop, twist or sag")
+      ->capture_default_str()
+      ->check(CLI::IsMember(scenarioNames()));
+  const char* group = "Scenario";
+  ScenarioParameters& p = a.parameters;
+  auto number = [&](const char* name, double& value, const std::string& what) {
+    return cmd.add_option(name, value, what)->capture_default_str()->group(group);
+  };
+  number("--base", p.baseShare,
+         "wobble, twist, sag: hold the nodes in this lowest share of the height still (0: none)")
+      ->check(numberFrom(0, 1));
+  number("--push", p.pushAcceleration, "wobble: peak sideways acceleration of the push, m/s^2")
+      ->check(finiteNumber());
+  number("--push-frequency", p.pushFrequency, "wobble: push frequency, Hz")
+      ->check(positiveNumber());
+  number("--drop-height", p.dropHeight,
+         "drop: start this share of the body's height above the floor")
+      ->check(numberFrom(0));
+  number("--twist-degrees", p.twistDegrees, "twist: final angle of the top, degrees")
+      ->check(finiteNumber());
+  number("--twist-seconds", p.twistSeconds, "twist: seconds to reach it")->check(positiveNumber());
+  cmd.add_option("--fixed-nodes", a.fixedNodes,
+                 "also hold these nodes still: a text file of node numbers of the level, from 0 "
+                 "(the point ids of its .vtu), separated by spaces or lines, # comments")
+      ->check(CLI::ExistingFile)
+      ->group(group);
+  cmd.add_option("--gravity", a.gravity, "gravity X,Y,Z in m/s^2 (default 0,-9.81,0; y is up)")
+      ->expected(3)
+      ->delimiter(',')
+      ->check(finiteNumber())
+      ->group(group);
+  cmd.add_option("--floor", a.floor,
+                 "a floor plane at this height y, with contact (drop: at the body's lowest point "
+                 "at rest unless given)")
+      ->check(finiteNumber())
+      ->group(group);
+}
+
+ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount) {
+  for (const auto& [option, scenarios] : kScenarioOnly)
+    if (cmd.count(option) > 0 &&
+        std::find(scenarios.begin(), scenarios.end(), a.name) == scenarios.end())
+      throw Error(std::string(option) + ": applies to the " + joined(scenarios) + " scenario" +
+                  (scenarios.size() > 1 ? "s" : "") + ", not to " + a.name);
+  ScenarioParameters p = a.parameters;
+  validateScenarioParameters(p);
+  if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
+  return p;
+}
+
+SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& a) {
+  if (a.gravity.size() == 3) options.gravity = {a.gravity[0], a.gravity[1], a.gravity[2]};
+  if (a.floor) options.floorHeight = *a.floor;
+  return options;
+}
+
+}  // namespace tetskin::cli

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The scenario options of `tetskin simulate`: which scenario, its parameters
+// (Scenario.h), nodes held still from a file, gravity and a floor.
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetskin/simulation/Scenario.h"
+
+namespace tetskin::cli {
+
+struct ScenarioArgs {
+  std::string name = "wobble";
+  ScenarioParameters parameters;
+  std::filesystem::path fixedNodes;  // a node list (io NodeList.h), or empty
+  std::vector<double> gravity;       // x, y, z; empty: the default
+  std::optional<double> floor;       // height of a floor plane
+};
+
+// Adds --scenario and the "Scenario" group of options to `cmd`.
+void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
+
+// The scenario's parameters with the held nodes read (a level of
+// `nodeCount` nodes). Throws Error for an option of another scenario than
+// the chosen one (e.g. --push with drop): it would change nothing.
+ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
+                                      Index nodeCount);
+
+// `options` with the given gravity and floor.
+SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);
+
+}  // namespace tetskin::cli
