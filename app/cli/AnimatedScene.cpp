@@ -34,8 +34,10 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
   const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                             box.max.y(), box.min.z(), box.max.z()};
   view_->setCamera(o.camera, bounds);
-  makeScenario(o.scenario);  // an unknown scenario fails now, before any frames
-  scenarioName_ = o.scenario;
+  // An unknown scenario or bad parameters fail now, before any frames.
+  makeScenario(o.scenario.name, o.scenarioParameters);
+  scenarioArgs_ = o.scenario;
+  scenarioParameters_ = o.scenarioParameters;
   datasetName_ = o.datasetName;
   view_->render();
 }
@@ -45,8 +47,10 @@ void AnimatedScene::startSimulation() {
   SimulationOptions options;
   options.material = dataset_.config.elasticity;  // the body the dataset describes
   simulation_ = std::make_unique<Simulation>(
-      dataset_.mesh, level_, scenarioOptions(scenarioName_, options, rest), datasetName_);
-  scenario_ = makeScenario(scenarioName_);
+      dataset_.mesh, level_,
+      scenarioOptions(scenarioArgs_.name, withGravityAndFloor(options, scenarioArgs_), rest),
+      datasetName_);
+  scenario_ = makeScenario(scenarioArgs_.name, scenarioParameters_);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);
 }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "ScenarioOptions.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
@@ -20,7 +21,8 @@ namespace tetskin::cli {
 struct SceneOptions {
   int level = -1;
   RenderPath path = RenderPath::Cpu;
-  std::string scenario = "wobble";
+  ScenarioArgs scenario;                  // name, gravity, floor
+  ScenarioParameters scenarioParameters;  // with the held nodes read (scenarioParameters())
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
   std::string control = "none";         // none, surface, wireframe, shrink
@@ -58,7 +60,9 @@ class AnimatedScene {
   std::unique_ptr<DeformableSurface> surface_;
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
-  std::string scenarioName_, datasetName_;
+  ScenarioArgs scenarioArgs_;
+  ScenarioParameters scenarioParameters_;
+  std::string datasetName_;
   std::unique_ptr<Simulation> simulation_;  // from the first frames run on
   std::unique_ptr<Scenario> scenario_;
   Points3 nodes_;

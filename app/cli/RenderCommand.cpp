@@ -11,6 +11,7 @@
 #include "AnimatedScene.h"
 #include "Commands.h"
 #include "OptionChecks.h"
+#include "ScenarioOptions.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -20,7 +21,8 @@ namespace {
 
 struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture;
-  std::string path = "cpu", camera = "iso", control = "none", scenario = "wobble", size = "800x600";
+  std::string path = "cpu", camera = "iso", control = "none", size = "800x600";
+  ScenarioArgs scenario;
   int level = -1, frames = 0;
   // Fur: overrides of the dataset config's `fur` section.
   std::optional<int> furShells, furMinShells, furTextureSize;
@@ -53,7 +55,7 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   return f;
 }
 
-void run(const RenderArgs& a) {
+void run(const RenderArgs& a, const CLI::App& cmd) {
   SceneOptions o;
   std::tie(o.width, o.height) = parseImageSize(a.size);
   o.path = parseRenderPath(a.path);
@@ -66,6 +68,11 @@ void run(const RenderArgs& a) {
   parseControlMeshStyle(o.control);  // reject typos before any work
   const Dataset dataset = loadDataset(a.dataset);
   o.fur = furParameters(a, dataset.config);
+  if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
+    throw Error(*option + ": applies to simulated frames; give --frames N");
+  o.scenarioParameters = scenarioParameters(
+      cmd, a.scenario,
+      dataset.mesh.levels[static_cast<std::size_t>(resolveLevel(dataset.mesh, a.level))].nodeCount);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
   std::filesystem::path surfacePath = a.surface;
@@ -154,9 +161,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--frames", a->frames,
                   "simulate and draw N frames, report frames/s and a breakdown")
       ->check(wholeNumber(0));
-  cmd->add_option("--scenario", a->scenario, "scenario of the simulated frames")
-      ->capture_default_str();
-  cmd->callback([a] { run(*a); });
+  addScenarioOptions(*cmd, a->scenario);
+  cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 
 }  // namespace tetskin::cli

@@ -11,6 +11,8 @@
 namespace tetskin::cli {
 namespace {
 
+constexpr const char* kGroup = "Scenario";
+
 // The options that only some scenarios read.
 const std::vector<std::pair<const char*, std::vector<std::string>>> kScenarioOnly = {
     {"--base", {"wobble", "twist", "sag"}}, {"--push", {"wobble"}},
@@ -30,7 +32,7 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   cmd.add_option("--scenario", a.name, "wobble, drop, twist or sag")
       ->capture_default_str()
       ->check(CLI::IsMember(scenarioNames()));
-  const char* group = "Scenario";
+  const char* group = kGroup;
   ScenarioParameters& p = a.parameters;
   auto number = [&](const char* name, double& value, const std::string& what) {
     return cmd.add_option(name, value, what)->capture_default_str()->group(group);
@@ -63,6 +65,12 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "at rest unless given)")
       ->check(finiteNumber())
       ->group(group);
+}
+
+std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
+  for (const CLI::Option* option : cmd.get_options())
+    if (option->get_group() == kGroup && option->count() > 0) return option->get_name();
+  return std::nullopt;
 }
 
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount) {

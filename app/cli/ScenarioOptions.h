@@ -24,6 +24,10 @@ struct ScenarioArgs {
 // Adds --scenario and the "Scenario" group of options to `cmd`.
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
 
+// The first option of the "Scenario" group given on the command line, if any
+// (--scenario itself not counted).
+std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
+
 // The scenario's parameters with the held nodes read (a level of
 // `nodeCount` nodes). Throws Error for an option of another scenario than
 // the chosen one (e.g. --push with drop): it would change nothing.
