@@ -26,6 +26,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -45,6 +46,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/io/NodeList.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -314,7 +316,32 @@ QWidget* MainWindow::buildSimulationDock() {
   poisson_->setRange(-0.999, 0.499);
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
+  baseShare_ = new QDoubleSpinBox;
+  baseShare_->setObjectName("baseShare");
+  baseShare_->setDecimals(2);
+  baseShare_->setRange(0, 0.95);
+  baseShare_->setSingleStep(0.05);
+  baseShare_->setValue(ScenarioParameters{}.baseShare);
+  baseShare_->setToolTip("wobble, twist, sag: the lowest share of the height held still (0: none)");
+  fixedNodes_ = new QLineEdit;
+  fixedNodes_->setObjectName("fixedNodes");
+  fixedNodes_->setPlaceholderText("none");
+  fixedNodes_->setToolTip(
+      "a text file of node numbers of the simulated level, from 0, held still besides the base");
+  auto* fixedRow = new QHBoxLayout;
+  auto* chooseFixed = new QPushButton("...");
+  chooseFixed->setObjectName("chooseFixedNodes");
+  fixedRow->addWidget(fixedNodes_);
+  fixedRow->addWidget(chooseFixed);
+  connect(chooseFixed, &QPushButton::clicked, this, [this] {
+    if (!interactive_) return;
+    const QString file =
+        QFileDialog::getOpenFileName(this, "Fixed nodes", {}, "Node lists (*.txt);;All files (*)");
+    if (!file.isEmpty()) fixedNodes_->setText(file);
+  });
   form->addRow("Scenario", scenario_);
+  form->addRow("Fixed base (share)", baseShare_);
+  form->addRow("Fixed nodes", fixedRow);
   form->addRow("Solver", solver_);
   form->addRow("Time step (s)", timeStep_);
   form->addRow("Young's modulus (Pa)", young_);
@@ -501,10 +528,16 @@ void MainWindow::resetSimulation() {
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());
+  ScenarioParameters parameters;
+  parameters.baseShare = baseShare_->value();
   try {
+    if (!fixedNodes_->text().isEmpty())
+      parameters.heldNodes = readNodeList(
+          fixedNodes_->text().toStdString(),
+          scene_->dataset().mesh.levels[static_cast<std::size_t>(scene_->level())].nodeCount);
     runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, scene_->level(), options,
                                                  scenario_->currentText().toStdString(),
-                                                 scene_->datasetPath().string());
+                                                 scene_->datasetPath().string(), parameters);
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return;

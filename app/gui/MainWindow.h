@@ -21,6 +21,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLineEdit;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -128,7 +129,8 @@ class MainWindow : public QMainWindow {
   QSpinBox* rebindLevel_;
   // Simulation.
   QPushButton *play_, *step_, *reset_, *record_;
-  QDoubleSpinBox *timeStep_, *young_, *poisson_;
+  QDoubleSpinBox *timeStep_, *young_, *poisson_, *baseShare_;
+  QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
   QComboBox *scenario_, *solver_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;

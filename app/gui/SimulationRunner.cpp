@@ -7,11 +7,12 @@ namespace tetskin::gui {
 
 SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, int level,
                                    const SimulationOptions& options, const std::string& scenario,
-                                   const std::string& datasetName) {
+                                   const std::string& datasetName,
+                                   const ScenarioParameters& parameters) {
   const TetMesh rest = extractLevel(dataset, level);
   simulation_ = std::make_unique<Simulation>(dataset, level,
                                              scenarioOptions(scenario, options, rest), datasetName);
-  scenario_ = makeScenario(scenario);
+  scenario_ = makeScenario(scenario, parameters);
   scenario_->setUp(*simulation_);
   pull_ = applied_ = Points3::Zero(rest.nodes.rows(), 3);
   thread_ = std::thread([this] { loop(); });

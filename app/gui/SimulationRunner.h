@@ -23,7 +23,8 @@ class SimulationRunner {
   // Throws Error for an unknown scenario, bad options or a level the
   // simulation refuses (named after `datasetName`).
   SimulationRunner(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options,
-                   const std::string& scenario, const std::string& datasetName = "dataset");
+                   const std::string& scenario, const std::string& datasetName = "dataset",
+                   const ScenarioParameters& parameters = {});
   ~SimulationRunner();
 
   void play();

@@ -16,6 +16,7 @@
 #include <QComboBox>
 #include <QDropEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
 #include <QSpinBox>
@@ -243,6 +244,30 @@ TEST_F(Gui, SimulationTakesTheDatasetsMaterial) {
   ASSERT_TRUE(window_->openFiles({kData + "bunny.json"})) << window_->lastError().toStdString();
   EXPECT_EQ(child<QDoubleSpinBox>("young")->value(), 2e5);
   EXPECT_EQ(window_->runner()->simulation().options().material.density, 100.0);
+}
+
+// The dock's fixed base and node list reach the simulation on Reset; a bad
+// list is reported with its file and line.
+TEST_F(Gui, SimulationHoldsTheBaseShareAndTheListedNodes) {
+  openSample();
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  child<QDoubleSpinBox>("baseShare")->setValue(0);
+  child<QLineEdit>("fixedNodes")
+      ->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/held_nodes.txt");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().fixedNodes(), (std::vector<int>{0, 1, 2}));
+  child<QLineEdit>("fixedNodes")->clear();
+  child<QDoubleSpinBox>("baseShare")->setValue(0.1);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  const std::size_t base = window_->runner()->simulation().fixedNodes().size();
+  EXPECT_GT(base, 3u);
+  const std::filesystem::path bad = scratch("bad_nodes.txt");
+  std::ofstream(bad) << "# too far\n99999\n";
+  child<QLineEdit>("fixedNodes")->setText(QString::fromStdString(bad.string()));
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_TRUE(window_->lastError().contains("bad_nodes.txt:2: node 99999 does not exist"))
+      << window_->lastError().toStdString();
 }
 
 TEST_F(Gui, ShiftDragPullsTheBody) {
