@@ -32,10 +32,9 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   cmd.add_option("--scenario", a.name, "wobble, drop, twist or sag")
       ->capture_default_str()
       ->check(CLI::IsMember(scenarioNames()));
-  const char* group = kGroup;
   ScenarioParameters& p = a.parameters;
   auto number = [&](const char* name, double& value, const std::string& what) {
-    return cmd.add_option(name, value, what)->capture_default_str()->group(group);
+    return cmd.add_option(name, value, what)->capture_default_str()->group(kGroup);
   };
   number("--base", p.baseShare,
          "wobble, twist, sag: hold the nodes in this lowest share of the height still (0: none)")
@@ -54,17 +53,17 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "also hold these nodes still: a text file of node numbers of the level, from 0 "
                  "(the point ids of its .vtu), separated by spaces or lines, # comments")
       ->check(CLI::ExistingFile)
-      ->group(group);
+      ->group(kGroup);
   cmd.add_option("--gravity", a.gravity, "gravity X,Y,Z in m/s^2 (default 0,-9.81,0; y is up)")
       ->expected(3)
       ->delimiter(',')
       ->check(finiteNumber())
-      ->group(group);
+      ->group(kGroup);
   cmd.add_option("--floor", a.floor,
                  "a floor plane at this height y, with contact (drop: at the body's lowest point "
                  "at rest unless given)")
       ->check(finiteNumber())
-      ->group(group);
+      ->group(kGroup);
 }
 
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
