@@ -6,6 +6,7 @@
 
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/io/NodeList.h"
 
 namespace tetskin::cli {
@@ -82,6 +83,19 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
   validateScenarioParameters(p);
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
   return p;
+}
+
+std::string nodesBelowFloor(const Simulation& sim) {
+  const std::optional<double> floor = sim.options().floorHeight;
+  if (!floor) return {};
+  const Points3 x = sim.state().positions;
+  // (A node on the floor, as drop with --drop-height 0 puts the lowest, is not below.)
+  const double tolerance = 1e-9 * boundingBox(x).diagonal();
+  const auto below = (x.col(1).array() < *floor - tolerance).count();
+  if (below == 0) return {};
+  return std::to_string(below) + " of " + std::to_string(x.rows()) +
+         " nodes start below the floor at y = " + formatNumber(*floor) +
+         "; contact pushes them up at once";
 }
 
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& a) {

@@ -62,6 +62,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       makeScenario(a.scenario.name, scenarioParameters(cmd, a.scenario, rest.nodeCount()));
   Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);
+  if (const std::string warning = nodesBelowFloor(sim); !warning.empty())
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
 
   // The bound surface, if any, follows every frame.
   std::unique_ptr<BoundSurface> bound;
