@@ -35,9 +35,8 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
                             box.max.y(), box.min.z(), box.max.z()};
   view_->setCamera(o.camera, bounds);
   // An unknown scenario or bad parameters fail now, before any frames.
-  makeScenario(o.scenario.name, o.scenarioParameters);
+  makeScenario(o.scenario.name, o.scenario.parameters);
   scenarioArgs_ = o.scenario;
-  scenarioParameters_ = o.scenarioParameters;
   datasetName_ = o.datasetName;
   view_->render();
 }
@@ -50,7 +49,7 @@ void AnimatedScene::startSimulation() {
       dataset_.mesh, level_,
       scenarioOptions(scenarioArgs_.name, withGravityAndFloor(options, scenarioArgs_), rest),
       datasetName_);
-  scenario_ = makeScenario(scenarioArgs_.name, scenarioParameters_);
+  scenario_ = makeScenario(scenarioArgs_.name, scenarioArgs_.parameters);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);
 }

@@ -21,8 +21,7 @@ namespace tetskin::cli {
 struct SceneOptions {
   int level = -1;
   RenderPath path = RenderPath::Cpu;
-  ScenarioArgs scenario;                  // name, gravity, floor
-  ScenarioParameters scenarioParameters;  // with the held nodes read (scenarioParameters())
+  ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
   std::string control = "none";         // none, surface, wireframe, shrink
@@ -61,7 +60,6 @@ class AnimatedScene {
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
   ScenarioArgs scenarioArgs_;
-  ScenarioParameters scenarioParameters_;
   std::string datasetName_;
   std::unique_ptr<Simulation> simulation_;  // from the first frames run on
   std::unique_ptr<Scenario> scenario_;

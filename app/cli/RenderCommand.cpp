@@ -70,7 +70,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.fur = furParameters(a, dataset.config);
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
     throw Error(*option + ": applies to simulated frames; give --frames N");
-  o.scenarioParameters = scenarioParameters(
+  o.scenario.parameters = scenarioParameters(
       cmd, a.scenario,
       dataset.mesh.levels[static_cast<std::size_t>(resolveLevel(dataset.mesh, a.level))].nodeCount);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
