@@ -32,8 +32,8 @@ class Sag : public Scenario {
   void beforeStep(Simulation&, double) override {}
 
  protected:
-  void prepare(Simulation& sim) override {
-    sim.setFixedNodes(baseNodes(sim.restMesh(), p_.baseShare));
+  std::vector<int> prepare(Simulation& sim) override {
+    return baseNodes(sim.restMesh(), p_.baseShare);
   }
 };
 
@@ -46,8 +46,8 @@ class Wobble : public Sag {
   }
 
  protected:
-  void prepare(Simulation& sim) override {
-    Sag::prepare(sim);
+  std::vector<int> prepare(Simulation& sim) override {
+    std::vector<int> fixed = Sag::prepare(sim);
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
     const Eigen::VectorXd mass = sim.nodeMasses();
     pushed_ = Points3::Zero(sim.restMesh().nodeCount(), 3);
@@ -56,6 +56,7 @@ class Wobble : public Sag {
       const double t = (sim.restMesh().nodes(v, 1) - box.min.y()) / box.extent().y();
       if (t > 0.6) pushed_(v, 0) = mass[v] * p_.pushAcceleration * (t - 0.6) / 0.4;
     }
+    return fixed;
   }
 
  private:
@@ -69,11 +70,12 @@ class Drop : public Scenario {
   void beforeStep(Simulation&, double) override {}
 
  protected:
-  void prepare(Simulation& sim) override {
+  std::vector<int> prepare(Simulation& sim) override {
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
     Points3 lifted = sim.restMesh().nodes;
     lifted.col(1).array() += p_.dropHeight * box.extent().y();
     sim.setPositions(lifted);
+    return {};
   }
 };
 
@@ -84,7 +86,7 @@ class Twist : public Sag {
   void beforeStep(Simulation& sim, double time) override;
 
  protected:
-  void prepare(Simulation& sim) override {
+  std::vector<int> prepare(Simulation& sim) override {
     const TetMesh& rest = sim.restMesh();
     const BoundingBox box = boundingBox(rest.nodes);
     std::vector<int> fixed = baseNodes(rest, p_.baseShare);
@@ -93,8 +95,8 @@ class Twist : public Sag {
       if (rest.nodes(v, 1) >= box.max.y() - 0.15 * box.extent().y())
         top_.push_back(static_cast<int>(v));
     fixed.insert(fixed.end(), top_.begin(), top_.end());
-    sim.setFixedNodes(fixed);
     axis_ = box.center();
+    return fixed;
   }
 
  private:
@@ -117,9 +119,7 @@ void Twist::beforeStep(Simulation& sim, double time) {
 }  // namespace
 
 void Scenario::setUp(Simulation& sim) {
-  prepare(sim);
-  if (p_.heldNodes.empty()) return;
-  std::vector<int> fixed = sim.fixedNodes();
+  std::vector<int> fixed = prepare(sim);
   fixed.insert(fixed.end(), p_.heldNodes.begin(), p_.heldNodes.end());
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());

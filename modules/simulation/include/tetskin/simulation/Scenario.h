@@ -43,8 +43,9 @@ class Scenario {
   virtual void beforeStep(Simulation& simulation, double time) = 0;
 
  protected:
-  // The scenario's own part of setUp().
-  virtual void prepare(Simulation& simulation) = 0;
+  // The scenario's own part of setUp(): its initial state, forces and
+  // targets; returns the nodes it fixes (setUp() adds the held ones).
+  virtual std::vector<int> prepare(Simulation& simulation) = 0;
   ScenarioParameters p_;
 };
 
