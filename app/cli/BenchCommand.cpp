@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <tuple>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -52,7 +51,9 @@ const ReportRow kRows[] = {
 
 void run(const BenchArgs& a) {
   SceneOptions o;
-  std::tie(o.width, o.height) = parseImageSize(a.size);
+  const ImageSize size = checkedImageSize(a.size);
+  o.width = size.width;
+  o.height = size.height;
   const Dataset dataset = loadDataset(a.data / "bunny.json");
   o.fur = dataset.config.fur;
   nlohmann::json results = nlohmann::json::array();

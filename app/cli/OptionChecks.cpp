@@ -122,37 +122,13 @@ CLI::Validator fileEnding(const std::string& extension) {
       "");
 }
 
-namespace {
-
-constexpr int kMinImageEdge = 16, kMaxImageEdge = 8192;
-
-// WIDTHxHEIGHT as two whole numbers in range, or nothing.
-std::optional<std::pair<int, int>> imageSizeOf(const std::string& text) {
-  const std::size_t x = text.find('x');
-  if (x == std::string::npos) return std::nullopt;
-  int width = 0, height = 0;
-  if (!parsesAll(text.substr(0, x), width) || !parsesAll(text.substr(x + 1), height))
-    return std::nullopt;
-  auto inRange = [](int edge) { return edge >= kMinImageEdge && edge <= kMaxImageEdge; };
-  if (!inRange(width) || !inRange(height)) return std::nullopt;
-  return std::pair{width, height};
-}
-
-}  // namespace
-
 CLI::Validator imageSize() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        if (imageSizeOf(text)) return {};
-        return "'" + text + "' is not WIDTHxHEIGHT with both in [" + std::to_string(kMinImageEdge) +
-               ", " + std::to_string(kMaxImageEdge) + "]";
-      },
-      "");
+  return CLI::Validator([](std::string& text) { return imageSizeProblem(text); }, "");
 }
 
-std::pair<int, int> parseImageSize(const std::string& text) {
-  const auto size = imageSizeOf(text);
-  if (!size) throw Error("--size: '" + text + "' is not a valid WIDTHxHEIGHT");
+ImageSize checkedImageSize(const std::string& text) {
+  const std::optional<ImageSize> size = parseImageSize(text);
+  if (!size) throw Error("--size: " + imageSizeProblem(text));
   return *size;
 }
 

@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "tetskin/rendering/ImageSize.h"
+
 namespace tetskin::cli {
 
 // A whole number in [min, max] (digits with an optional sign).
@@ -47,10 +49,10 @@ CLI::Validator trueOrFalse();
 // is not written as XML into "out.obj" nor a PNG into "image.jpg".
 CLI::Validator fileEnding(const std::string& extension);
 
-// An image size "WIDTHxHEIGHT", each in [16, 8192], for --size; and its
+// An image size "WIDTHxHEIGHT" (rendering ImageSize.h) for --size; and its
 // two numbers once the validator has passed it.
 CLI::Validator imageSize();
-std::pair<int, int> parseImageSize(const std::string& text);
+ImageSize checkedImageSize(const std::string& text);
 
 // Throws Error naming `output` when it is the same file as one of `inputs`
 // (e.g. `convert a.obj a.obj`, `deform ... b.vtp -o b.vtp`): writing it

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
-#include <tuple>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -57,7 +56,9 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
 
 void run(const RenderArgs& a, const CLI::App& cmd) {
   SceneOptions o;
-  std::tie(o.width, o.height) = parseImageSize(a.size);
+  const ImageSize size = checkedImageSize(a.size);
+  o.width = size.width;
+  o.height = size.height;
   o.path = parseRenderPath(a.path);
   o.camera = parseCameraPreset(a.camera);
   o.level = a.level;

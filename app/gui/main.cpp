@@ -11,13 +11,14 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSurfaceFormat>
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "MainWindow.h"
+#include "tetskin/rendering/ImageSize.h"
 #include "tetskin/rendering/XDisplay.h"
 
 namespace {
@@ -62,14 +63,11 @@ struct GuiArguments {
       return usageError(parser.errorText().toStdString() + " (see tetskin-gui --help)");
     if (parser.isSet("help")) parser.showHelp(0);
     if (parser.isSet("version")) parser.showVersion();
-    // WIDTHxHEIGHT, both whole numbers in [64, 8192], nothing else.
-    const QStringList edges = parser.value(size).split('x');
-    bool widthOk = false, heightOk = false;
-    width = edges.size() == 2 ? edges[0].toInt(&widthOk) : 0;
-    height = edges.size() == 2 ? edges[1].toInt(&heightOk) : 0;
-    if (!widthOk || !heightOk || std::min(width, height) < 64 || std::max(width, height) > 8192)
-      return usageError("--size: '" + parser.value(size).toStdString() +
-                        "' is not WIDTHxHEIGHT with both in [64, 8192]");
+    const std::string sizeText = parser.value(size).toStdString();
+    const std::optional<tetskin::ImageSize> checkedSize = tetskin::parseImageSize(sizeText);
+    if (!checkedSize) return usageError("--size: " + tetskin::imageSizeProblem(sizeText));
+    width = checkedSize->width;
+    height = checkedSize->height;
     bool stepsOk = false;
     stepCount = parser.value(steps).toInt(&stepsOk);
     if (!stepsOk || stepCount < 0)
