@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "ScenarioOptions.h"
 
-#include <algorithm>
 #include <utility>
 
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
-#include "tetskin/core/Geometry.h"
 #include "tetskin/io/NodeList.h"
 
 namespace tetskin::cli {
@@ -14,11 +12,14 @@ namespace {
 
 constexpr const char* kGroup = "Scenario";
 
-// The options that only some scenarios read.
-const std::vector<std::pair<const char*, std::vector<std::string>>> kScenarioOnly = {
-    {"--base", {"wobble", "twist", "sag"}}, {"--push", {"wobble"}},
-    {"--push-frequency", {"wobble"}},       {"--drop-height", {"drop"}},
-    {"--twist-degrees", {"twist"}},         {"--twist-seconds", {"twist"}}};
+// The options of the parameters that only some scenarios read.
+const std::vector<std::pair<const char*, ScenarioParameter>> kScenarioOnly = {
+    {"--base", ScenarioParameter::BaseShare},
+    {"--push", ScenarioParameter::PushAcceleration},
+    {"--push-frequency", ScenarioParameter::PushFrequency},
+    {"--drop-height", ScenarioParameter::DropHeight},
+    {"--twist-degrees", ScenarioParameter::TwistDegrees},
+    {"--twist-seconds", ScenarioParameter::TwistSeconds}};
 
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
@@ -74,28 +75,16 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
 }
 
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount) {
-  for (const auto& [option, scenarios] : kScenarioOnly)
-    if (cmd.count(option) > 0 &&
-        std::find(scenarios.begin(), scenarios.end(), a.name) == scenarios.end())
+  for (const auto& [option, parameter] : kScenarioOnly)
+    if (cmd.count(option) > 0 && !scenarioReads(a.name, parameter)) {
+      const std::vector<std::string> scenarios = scenariosReading(parameter);
       throw Error(std::string(option) + ": applies to the " + joined(scenarios) + " scenario" +
                   (scenarios.size() > 1 ? "s" : "") + ", not to " + a.name);
+    }
   ScenarioParameters p = a.parameters;
   validateScenarioParameters(p);
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
   return p;
-}
-
-std::string nodesBelowFloor(const Simulation& sim) {
-  const std::optional<double> floor = sim.options().floorHeight;
-  if (!floor) return {};
-  const Points3 x = sim.state().positions;
-  // (A node on the floor, as drop with --drop-height 0 puts the lowest, is not below.)
-  const double tolerance = 1e-9 * boundingBox(x).diagonal();
-  const auto below = (x.col(1).array() < *floor - tolerance).count();
-  if (below == 0) return {};
-  return std::to_string(below) + " of " + std::to_string(x.rows()) +
-         " nodes start below the floor at y = " + formatNumber(*floor) +
-         "; contact pushes them up at once";
 }
 
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& a) {

@@ -34,11 +34,6 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
                                       Index nodeCount);
 
-// A warning (without "warning: ") when nodes start below the simulation's
-// floor (e.g. --floor through the body): contact then throws them up, against
-// any fixed base. Empty when none does or there is no floor.
-std::string nodesBelowFloor(const Simulation& simulation);
-
 // `options` with the given gravity and floor.
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);
 

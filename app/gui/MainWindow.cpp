@@ -46,7 +46,6 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
-#include "tetskin/io/NodeList.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -296,9 +295,8 @@ QWidget* MainWindow::buildSimulationDock() {
     if (file.isEmpty() || !startRecording(file)) record_->setChecked(false);
   });
   auto* form = new QFormLayout;
-  scenario_ = combo("scenario", {});
-  for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
-  scenario_->setCurrentText("wobble");
+  layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
+  scenarioRows_ = new ScenarioRows(form, interactive_);
   solver_ = combo("solver", {"auto", "cg", "multigrid"});
   timeStep_ = new QDoubleSpinBox;
   timeStep_->setObjectName("timeStep");
@@ -316,37 +314,10 @@ QWidget* MainWindow::buildSimulationDock() {
   poisson_->setRange(-0.999, 0.499);
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
-  baseShare_ = new QDoubleSpinBox;
-  baseShare_->setObjectName("baseShare");
-  baseShare_->setDecimals(2);
-  baseShare_->setRange(0, 0.95);
-  baseShare_->setSingleStep(0.05);
-  baseShare_->setValue(ScenarioParameters{}.baseShare);
-  baseShare_->setToolTip("wobble, twist, sag: the lowest share of the height held still (0: none)");
-  fixedNodes_ = new QLineEdit;
-  fixedNodes_->setObjectName("fixedNodes");
-  fixedNodes_->setPlaceholderText("none");
-  fixedNodes_->setToolTip(
-      "a text file of node numbers of the simulated level, from 0, held still besides the base");
-  auto* fixedRow = new QHBoxLayout;
-  auto* chooseFixed = new QPushButton("...");
-  chooseFixed->setObjectName("chooseFixedNodes");
-  fixedRow->addWidget(fixedNodes_);
-  fixedRow->addWidget(chooseFixed);
-  connect(chooseFixed, &QPushButton::clicked, this, [this] {
-    if (!interactive_) return;
-    const QString file =
-        QFileDialog::getOpenFileName(this, "Fixed nodes", {}, "Node lists (*.txt);;All files (*)");
-    if (!file.isEmpty()) fixedNodes_->setText(file);
-  });
-  form->addRow("Scenario", scenario_);
-  form->addRow("Fixed base (share)", baseShare_);
-  form->addRow("Fixed nodes", fixedRow);
   form->addRow("Solver", solver_);
   form->addRow("Time step (s)", timeStep_);
   form->addRow("Young's modulus (Pa)", young_);
   form->addRow("Poisson's ratio", poisson_);
-  layout->addLayout(form);
   layout->addWidget(new QLabel("Changes apply on Reset."));
   layout->addStretch();
   return w;
@@ -521,28 +492,29 @@ void MainWindow::resetSimulation() {
     play_->setText("Play");
   }
   if (!scene_->hasDataset()) return;
-  SimulationOptions options;
+  const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
+  const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_->level())];
+  scenarioRows_->setBodyBottom(
+      mesh.nodes.col(1).segment(level.firstNode, level.nodeCount).minCoeff());
+  SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
   options.timeStep = timeStep_->value();
   // The dataset's material (density, damping), with the dock's E and nu.
   options.material = scene_->dataset().config.elasticity;
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());
-  ScenarioParameters parameters;
-  parameters.baseShare = baseShare_->value();
   try {
-    if (!fixedNodes_->text().isEmpty())
-      parameters.heldNodes = readNodeList(
-          fixedNodes_->text().toStdString(),
-          scene_->dataset().mesh.levels[static_cast<std::size_t>(scene_->level())].nodeCount);
-    runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, scene_->level(), options,
-                                                 scenario_->currentText().toStdString(),
+    const ScenarioParameters parameters = scenarioRows_->parameters(level.nodeCount);
+    runner_ = std::make_unique<SimulationRunner>(mesh, scene_->level(), options,
+                                                 scenarioRows_->scenario(),
                                                  scene_->datasetPath().string(), parameters);
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return;
   }
   if (scene_->deformable()) scene_->deformable()->setFrameSeconds(options.timeStep);
+  if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
+    statusBar()->showMessage("warning: " + QString::fromStdString(warning));
   showLatestState();
 }
 

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 
+#include "ScenarioRows.h"
 #include "Scene.h"
 #include "SimulationRunner.h"
 #include "tetskin/vtkio/RunRecorder.h"
@@ -129,9 +130,9 @@ class MainWindow : public QMainWindow {
   QSpinBox* rebindLevel_;
   // Simulation.
   QPushButton *play_, *step_, *reset_, *record_;
-  QDoubleSpinBox *timeStep_, *young_, *poisson_, *baseShare_;
-  QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
-  QComboBox *scenario_, *solver_;
+  ScenarioRows* scenarioRows_;
+  QDoubleSpinBox *timeStep_, *young_, *poisson_;
+  QComboBox* solver_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
   int framesSinceOverlay_ = 0;

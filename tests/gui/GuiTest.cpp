@@ -20,6 +20,7 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTest>
 #include <QUrl>
 #include <cstdlib>
@@ -268,6 +269,57 @@ TEST_F(Gui, SimulationHoldsTheBaseShareAndTheListedNodes) {
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_TRUE(window_->lastError().contains("bad_nodes.txt:2: node 99999 does not exist"))
       << window_->lastError().toStdString();
+}
+
+// The dock shows the parameters of the chosen scenario only (those
+// scenariosReading() names), and the run uses them, with its gravity and
+// floor.
+TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
+  openSample();
+  const std::vector<std::pair<const char*, ScenarioParameter>> rows = {
+      {"baseShare", ScenarioParameter::BaseShare},
+      {"push", ScenarioParameter::PushAcceleration},
+      {"pushFrequency", ScenarioParameter::PushFrequency},
+      {"dropHeight", ScenarioParameter::DropHeight},
+      {"twistDegrees", ScenarioParameter::TwistDegrees},
+      {"twistSeconds", ScenarioParameter::TwistSeconds}};
+  for (const std::string& name : scenarioNames()) {
+    child<QComboBox>("scenario")->setCurrentText(QString::fromStdString(name));
+    for (const auto& [row, parameter] : rows)
+      EXPECT_EQ(child<QDoubleSpinBox>(row)->isHidden(), !scenarioReads(name, parameter))
+          << name << " " << row;
+  }
+  // No gravity, no push: a wobble that stays at rest.
+  child<QComboBox>("scenario")->setCurrentText("wobble");
+  for (const char* axis : {"gravityX", "gravityY", "gravityZ"})
+    child<QDoubleSpinBox>(axis)->setValue(0);
+  child<QDoubleSpinBox>("push")->setValue(0);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().options().gravity, Eigen::Vector3d::Zero());
+  for (int i = 0; i < 3; ++i) child<QPushButton>("step")->click();
+  const Simulation& still = window_->runner()->simulation();
+  EXPECT_LT((still.state().positions - still.restMesh().nodes).norm(), 1e-12);
+  // Drop from height 0 with the default floor: the body starts on it.
+  child<QComboBox>("scenario")->setCurrentText("drop");
+  child<QDoubleSpinBox>("dropHeight")->setValue(0);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const Simulation& dropped = window_->runner()->simulation();
+  ASSERT_TRUE(dropped.options().floorHeight.has_value());
+  EXPECT_NEAR(dropped.state().positions.col(1).minCoeff(), *dropped.options().floorHeight, 1e-12);
+  // A floor set through the body: used, and warned of.
+  const double bottom = dropped.restMesh().nodes.col(1).minCoeff();
+  const double top = dropped.restMesh().nodes.col(1).maxCoeff();
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  child<QCheckBox>("floor")->setChecked(true);
+  EXPECT_NEAR(child<QDoubleSpinBox>("floorHeight")->value(), bottom, 1e-4);  // offered
+  child<QDoubleSpinBox>("floorHeight")->setValue((bottom + top) / 2);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_NEAR(*window_->runner()->simulation().options().floorHeight, (bottom + top) / 2, 1e-4);
+  EXPECT_TRUE(window_->statusBar()->currentMessage().contains("nodes start below the floor"))
+      << window_->statusBar()->currentMessage().toStdString();
 }
 
 TEST_F(Gui, ShiftDragPullsTheBody) {

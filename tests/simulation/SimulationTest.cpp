@@ -317,6 +317,47 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
   EXPECT_THROW(makeScenario("sag", missing)->setUp(sim), Error);
 }
 
+// scenariosReading() tells the truth: a parameter changes the run of
+// exactly the scenarios it names (the command line refuses, and the GUI
+// hides, it for the others).
+TEST(Simulation, ScenarioParametersChangeExactlyTheScenariosThatReadThem) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  const TetMesh rest = extractLevel(d.mesh, 0);
+  auto run = [&](const std::string& name, const ScenarioParameters& p) {
+    Simulation sim(d.mesh, 0, scenarioOptions(name, SimulationOptions{}, rest));
+    auto scenario = makeScenario(name, p);
+    scenario->setUp(sim);
+    for (int i = 0; i < 5; ++i) {
+      scenario->beforeStep(sim, sim.state().time);
+      sim.step();
+    }
+    return Points3(sim.state().positions);
+  };
+  const std::vector<std::pair<ScenarioParameter, std::function<void(ScenarioParameters&)>>>
+      changes = {
+          {ScenarioParameter::BaseShare, [](ScenarioParameters& p) { p.baseShare = 0.3; }},
+          {ScenarioParameter::PushAcceleration,
+           [](ScenarioParameters& p) { p.pushAcceleration = 40; }},
+          {ScenarioParameter::PushFrequency, [](ScenarioParameters& p) { p.pushFrequency = 3; }},
+          {ScenarioParameter::DropHeight, [](ScenarioParameters& p) { p.dropHeight = 0.6; }},
+          {ScenarioParameter::TwistDegrees, [](ScenarioParameters& p) { p.twistDegrees = 30; }},
+          {ScenarioParameter::TwistSeconds, [](ScenarioParameters& p) { p.twistSeconds = 0.3; }}};
+  const std::vector<std::string> names = scenarioNames();
+  for (const std::string& name : names) {
+    const Points3 plain = run(name, {});
+    for (const auto& [parameter, change] : changes) {
+      ScenarioParameters p;
+      change(p);
+      const double moved = (run(name, p) - plain).norm();
+      EXPECT_EQ(moved > 1e-9, scenarioReads(name, parameter))
+          << name << ", parameter " << static_cast<int>(parameter) << ": moved " << moved;
+    }
+  }
+  for (const auto& [parameter, change] : changes)
+    for (const std::string& reader : scenariosReading(parameter))
+      EXPECT_NE(std::find(names.begin(), names.end(), reader), names.end()) << reader;
+}
+
 TEST(Simulation, WobbleMovesTheTopBackAndForth) {
   const Dataset d = loadDataset(kData + "bunny.json");
   for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {

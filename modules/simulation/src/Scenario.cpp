@@ -141,10 +141,46 @@ void validateScenarioParameters(const ScenarioParameters& p) {
           "finite and > 0");
 }
 
+std::vector<std::string> scenariosReading(ScenarioParameter parameter) {
+  // (Sag reads the base only; wobble and twist are sag with a push or a
+  // turned top; drop has no base.)
+  switch (parameter) {
+    case ScenarioParameter::BaseShare:
+      return {"wobble", "twist", "sag"};
+    case ScenarioParameter::PushAcceleration:
+    case ScenarioParameter::PushFrequency:
+      return {"wobble"};
+    case ScenarioParameter::DropHeight:
+      return {"drop"};
+    case ScenarioParameter::TwistDegrees:
+    case ScenarioParameter::TwistSeconds:
+      return {"twist"};
+  }
+  return {};
+}
+
+bool scenarioReads(std::string_view name, ScenarioParameter parameter) {
+  const std::vector<std::string> readers = scenariosReading(parameter);
+  return std::find(readers.begin(), readers.end(), name) != readers.end();
+}
+
 SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
                                   const TetMesh& rest) {
   if (name == "drop" && !options.floorHeight) options.floorHeight = boundingBox(rest.nodes).min.y();
   return options;
+}
+
+std::string nodesBelowFloor(const Simulation& sim) {
+  const std::optional<double> floor = sim.options().floorHeight;
+  if (!floor) return {};
+  const Points3 x = sim.state().positions;
+  // (A node on the floor, where drop from height 0 puts the lowest, is not below.)
+  const double tolerance = 1e-9 * boundingBox(x).diagonal();
+  const auto below = (x.col(1).array() < *floor - tolerance).count();
+  if (below == 0) return {};
+  return std::to_string(below) + " of " + std::to_string(x.rows()) +
+         " nodes start below the floor at y = " + formatNumber(*floor) +
+         "; contact pushes them up at once";
 }
 
 std::unique_ptr<Scenario> makeScenario(std::string_view name, const ScenarioParameters& p) {

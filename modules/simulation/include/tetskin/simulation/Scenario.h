@@ -27,6 +27,22 @@ struct ScenarioParameters {
   std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
 };
 
+// The parameters that only some scenarios read (heldNodes: every one).
+enum class ScenarioParameter {
+  BaseShare,
+  PushAcceleration,
+  PushFrequency,
+  DropHeight,
+  TwistDegrees,
+  TwistSeconds
+};
+
+// The scenarios that read `parameter`, in scenarioNames() order; and
+// whether scenario `name` is one of them (the command line refuses, and the
+// GUI hides, a parameter the chosen scenario would ignore).
+std::vector<std::string> scenariosReading(ScenarioParameter parameter);
+bool scenarioReads(std::string_view name, ScenarioParameter parameter);
+
 // Throws Error naming the parameter whose value no scenario can use (e.g. a
 // base share outside [0, 1), a twist time <= 0, anything not finite).
 void validateScenarioParameters(const ScenarioParameters& parameters);
@@ -52,6 +68,11 @@ class Scenario {
 // The simulation options a scenario needs (e.g. drop adds a floor).
 SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
                                   const TetMesh& rest);
+
+// A warning (without "warning: ") when nodes start below the simulation's
+// floor (e.g. a floor set through the body): contact then throws them up,
+// against any fixed base. Empty when none does or there is no floor.
+std::string nodesBelowFloor(const Simulation& simulation);
 
 // Throws Error for an unknown name.
 std::unique_ptr<Scenario> makeScenario(std::string_view name,

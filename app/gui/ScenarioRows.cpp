@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "ScenarioRows.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+
+#include "tetskin/io/NodeList.h"
+
+namespace tetskin::gui {
+namespace {
+
+QDoubleSpinBox* numberBox(const char* name, double min, double max, int decimals, double value,
+                          const char* tip) {
+  auto* box = new QDoubleSpinBox;
+  box->setObjectName(name);
+  box->setRange(min, max);
+  box->setDecimals(decimals);
+  box->setValue(value);
+  box->setToolTip(tip);
+  return box;
+}
+
+}  // namespace
+
+ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
+    : QObject(form), form_(form), scenarioRow_(form->rowCount()) {
+  scenario_ = new QComboBox;
+  scenario_->setObjectName("scenario");
+  for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
+  scenario_->setCurrentText("wobble");
+  const ScenarioParameters defaults;
+  baseShare_ = numberBox("baseShare", 0, 0.95, 2, defaults.baseShare,
+                         "the lowest share of the height held still (0: none)");
+  baseShare_->setSingleStep(0.05);
+  push_ = numberBox("push", -1e4, 1e4, 2, defaults.pushAcceleration,
+                    "peak sideways acceleration of the push on the upper part");
+  pushFrequency_ =
+      numberBox("pushFrequency", 0.01, 100, 2, defaults.pushFrequency, "push frequency");
+  dropHeight_ = numberBox("dropHeight", 0, 10, 2, defaults.dropHeight,
+                          "start this share of the body's height above the floor");
+  dropHeight_->setSingleStep(0.1);
+  twistDegrees_ = numberBox("twistDegrees", -3600, 3600, 1, defaults.twistDegrees,
+                            "final angle of the top about the vertical axis");
+  twistDegrees_->setSingleStep(15);
+  twistSeconds_ =
+      numberBox("twistSeconds", 0.01, 100, 2, defaults.twistSeconds, "seconds to reach it");
+  twistSeconds_->setSingleStep(0.1);
+
+  fixedNodes_ = new QLineEdit;
+  fixedNodes_->setObjectName("fixedNodes");
+  fixedNodes_->setPlaceholderText("none");
+  fixedNodes_->setToolTip(
+      "a text file of node numbers of the simulated level, from 0, held still in any scenario");
+  auto* fixedRow = new QHBoxLayout;
+  auto* chooseFixed = new QPushButton("...");
+  chooseFixed->setObjectName("chooseFixedNodes");
+  fixedRow->addWidget(fixedNodes_);
+  fixedRow->addWidget(chooseFixed);
+  connect(chooseFixed, &QPushButton::clicked, this, [this, interactive] {
+    if (!interactive) return;
+    const QString file = QFileDialog::getOpenFileName(fixedNodes_->window(), "Fixed nodes", {},
+                                                      "Node lists (*.txt);;All files (*)");
+    if (!file.isEmpty()) fixedNodes_->setText(file);
+  });
+
+  const SimulationOptions plain;
+  auto* gravityRow = new QHBoxLayout;
+  const char* gravityNames[3] = {"gravityX", "gravityY", "gravityZ"};
+  for (int i = 0; i < 3; ++i) {
+    gravity_[i] =
+        numberBox(gravityNames[i], -1000, 1000, 2, plain.gravity[i], "gravity, m/s^2 (y is up)");
+    gravityRow->addWidget(gravity_[i]);
+  }
+  floor_ = new QCheckBox("at y =");
+  floor_->setObjectName("floor");
+  floor_->setToolTip(
+      "a floor plane with contact (drop always has one: at the body's lowest point unless set)");
+  floorHeight_ = numberBox("floorHeight", -1e6, 1e6, 4, 0, "height of the floor plane");
+  floorHeight_->setEnabled(false);
+  connect(floor_, &QCheckBox::toggled, floorHeight_, &QWidget::setEnabled);
+  auto* floorRow = new QHBoxLayout;
+  floorRow->addWidget(floor_);
+  floorRow->addWidget(floorHeight_, 1);
+
+  form_->addRow("Scenario", scenario_);
+  parameterRows_ = {
+      {new QLabel("Fixed base (share)"), baseShare_, ScenarioParameter::BaseShare},
+      {new QLabel("Push (m/s\u00b2)"), push_, ScenarioParameter::PushAcceleration},
+      {new QLabel("Push frequency (Hz)"), pushFrequency_, ScenarioParameter::PushFrequency},
+      {new QLabel("Drop height (share)"), dropHeight_, ScenarioParameter::DropHeight},
+      {new QLabel("Twist (degrees)"), twistDegrees_, ScenarioParameter::TwistDegrees},
+      {new QLabel("Twist time (s)"), twistSeconds_, ScenarioParameter::TwistSeconds}};
+  for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
+  form_->addRow("Fixed nodes", fixedRow);
+  form_->addRow("Gravity (m/s\u00b2)", gravityRow);
+  form_->addRow("Floor", floorRow);
+  connect(scenario_, &QComboBox::currentTextChanged, this, [this] { showRowsOfScenario(); });
+  showRowsOfScenario();
+}
+
+void ScenarioRows::showRowsOfScenario() {
+  // Qt 5's QFormLayout keeps the spacing of a hidden row: take the rows out
+  // and put back those of this scenario, right below the scenario box.
+  for (const ParameterRow& row : parameterRows_) {
+    if (form_->indexOf(row.field) >= 0) form_->takeRow(row.field);
+    row.label->hide();
+    row.field->hide();
+  }
+  int next = scenarioRow_ + 1;
+  for (const ParameterRow& row : parameterRows_)
+    if (scenarioReads(scenario(), row.parameter)) {
+      form_->insertRow(next++, row.label, row.field);
+      row.label->show();
+      row.field->show();
+    }
+}
+
+std::string ScenarioRows::scenario() const {
+  return scenario_->currentText().toStdString();
+}
+
+ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
+  ScenarioParameters p;
+  p.baseShare = baseShare_->value();
+  p.pushAcceleration = push_->value();
+  p.pushFrequency = pushFrequency_->value();
+  p.dropHeight = dropHeight_->value();
+  p.twistDegrees = twistDegrees_->value();
+  p.twistSeconds = twistSeconds_->value();
+  if (!fixedNodes_->text().isEmpty())
+    p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
+  return p;
+}
+
+SimulationOptions ScenarioRows::withGravityAndFloor(SimulationOptions options) const {
+  options.gravity = {gravity_[0]->value(), gravity_[1]->value(), gravity_[2]->value()};
+  if (floor_->isChecked()) options.floorHeight = floorHeight_->value();
+  return options;
+}
+
+void ScenarioRows::setBodyBottom(double y) {
+  if (!floor_->isChecked()) floorHeight_->setValue(y);
+}
+
+}  // namespace tetskin::gui

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The Simulation dock's scenario rows: which scenario, its parameters
+// (simulation Scenario.h), nodes held still from a file, gravity and a
+// floor; what `tetskin simulate` takes as its "Scenario" options. A
+// parameter the chosen scenario does not read is taken out of the form.
+
+#include <QObject>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tetskin/simulation/Scenario.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+class QWidget;
+
+namespace tetskin::gui {
+
+class ScenarioRows : public QObject {
+ public:
+  // Appends the rows to `form` (whose other rows share its label column),
+  // which must already be in a widget: that widget owns them. `interactive`: false in tests and
+  // one-shot screenshots (no file dialogs).
+  ScenarioRows(QFormLayout* form, bool interactive);
+
+  std::string scenario() const;
+  // The parameters, the held nodes read from their file (a level of
+  // `nodeCount` nodes); throws Error naming the file and line.
+  ScenarioParameters parameters(Index nodeCount) const;
+  // `options` with the panel's gravity and floor.
+  SimulationOptions withGravityAndFloor(SimulationOptions options) const;
+  // The floor's height offered until the user sets one: the body's lowest
+  // point at rest.
+  void setBodyBottom(double y);
+
+ private:
+  void showRowsOfScenario();
+
+  struct ParameterRow {
+    QLabel* label;
+    QWidget* field;
+    ScenarioParameter parameter;
+  };
+
+  QFormLayout* form_;
+  int scenarioRow_;  // the form's row of the scenario box
+  QComboBox* scenario_;
+  QDoubleSpinBox *baseShare_, *push_, *pushFrequency_, *dropHeight_, *twistDegrees_, *twistSeconds_,
+      *gravity_[3], *floorHeight_;
+  QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
+  QCheckBox* floor_;
+  // The rows of the parameters only some scenarios read, in form order.
+  std::vector<ParameterRow> parameterRows_;
+};
+
+}  // namespace tetskin::gui
