@@ -26,10 +26,13 @@ std::string oneLine(std::string text) {
 }
 
 // CLI11's words for an option given more than once ("--steps: At Most 1
-// required but received 2") in ours.
+// required but received 2") and for a list option given too few or too many
+// values ("--gravity: At least 3 required but received 2") in ours.
 std::string plainUsageError(const std::string& text) {
   static const std::regex repeated("At Most 1 required but received ([0-9]+)");
-  return std::regex_replace(text, repeated, "given $1 times; give it once");
+  static const std::regex valueCount("At (least|Most) ([0-9]+) required but received ([0-9]+)");
+  return std::regex_replace(std::regex_replace(text, repeated, "given $1 times; give it once"),
+                            valueCount, "takes $2 values, got $3");
 }
 
 }  // namespace
