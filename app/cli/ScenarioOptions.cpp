@@ -56,6 +56,11 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "(the point ids of its .vtu), separated by spaces or lines, # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
+  cmd.add_option("--loads", a.loads,
+                 "constant forces on nodes of the level: a text file of lines NODE FX FY FZ "
+                 "(newtons), # comments")
+      ->check(CLI::ExistingFile)
+      ->group(kGroup);
   cmd.add_option("--gravity", a.gravity, "gravity X,Y,Z in m/s^2 (default 0,-9.81,0; y is up)")
       ->expected(3)
       ->delimiter(',')
@@ -84,6 +89,7 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
   ScenarioParameters p = a.parameters;
   validateScenarioParameters(p);
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
+  if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   return p;
 }
 

@@ -17,6 +17,7 @@ struct ScenarioArgs {
   std::string name = "wobble";
   ScenarioParameters parameters;
   std::filesystem::path fixedNodes;  // a node list (io NodeList.h), or empty
+  std::filesystem::path loads;       // node forces (io NodeList.h), or empty
   std::vector<double> gravity;       // x, y, z; empty: the default
   std::optional<double> floor;       // height of a floor plane
 };
@@ -28,7 +29,7 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
 // (--scenario itself not counted).
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
-// The scenario's parameters with the held nodes read (a level of
+// The scenario's parameters with the held nodes and the loads read (a level of
 // `nodeCount` nodes). Throws Error for an option of another scenario than
 // the chosen one (e.g. --push with drop): it would change nothing.
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,

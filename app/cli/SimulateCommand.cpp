@@ -58,8 +58,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   const TetMesh rest = extractLevel(dataset.mesh, level);
   const SimulationOptions options =
       scenarioOptions(a.scenario.name, withGravityAndFloor(a.options, a.scenario), rest);
-  std::unique_ptr<Scenario> scenario =
-      makeScenario(a.scenario.name, scenarioParameters(cmd, a.scenario, rest.nodeCount()));
+  const ScenarioParameters parameters = scenarioParameters(cmd, a.scenario, rest.nodeCount());
+  std::unique_ptr<Scenario> scenario = makeScenario(a.scenario.name, parameters);
   Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);
   if (const std::string warning = nodesBelowFloor(sim); !warning.empty())
@@ -116,10 +116,18 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "");
   std::printf("  material: %s\n", describe(options.material).c_str());
-  std::printf("  %zu of %lld nodes fixed, gravity %s,%s,%s m/s^2", sim.fixedNodes().size(),
-              static_cast<long long>(sim.restMesh().nodeCount()),
-              formatNumber(options.gravity.x()).c_str(), formatNumber(options.gravity.y()).c_str(),
-              formatNumber(options.gravity.z()).c_str());
+  std::printf("  %zu of %lld nodes fixed, ", sim.fixedNodes().size(),
+              static_cast<long long>(sim.restMesh().nodeCount()));
+  if (parameters.loads.size() > 0) {
+    const Eigen::RowVector3d total = parameters.loads.colwise().sum();
+    std::printf(
+        "%lld loaded (total force %s,%s,%s N), ",
+        static_cast<long long>((parameters.loads.rowwise().squaredNorm().array() > 0).count()),
+        formatNumber(total.x()).c_str(), formatNumber(total.y()).c_str(),
+        formatNumber(total.z()).c_str());
+  }
+  std::printf("gravity %s,%s,%s m/s^2", formatNumber(options.gravity.x()).c_str(),
+              formatNumber(options.gravity.y()).c_str(), formatNumber(options.gravity.z()).c_str());
   if (options.floorHeight)
     std::printf(", floor at y = %s", formatNumber(*options.floorHeight).c_str());
   std::printf("\n");

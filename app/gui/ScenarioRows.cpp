@@ -53,22 +53,32 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
       numberBox("twistSeconds", 0.01, 100, 2, defaults.twistSeconds, "seconds to reach it");
   twistSeconds_->setSingleStep(0.1);
 
-  fixedNodes_ = new QLineEdit;
-  fixedNodes_->setObjectName("fixedNodes");
-  fixedNodes_->setPlaceholderText("none");
-  fixedNodes_->setToolTip(
+  // A file's name, typed or chosen with "...".
+  auto fileRow = [this, interactive](QLineEdit*& edit, const char* name, const char* title,
+                                     const char* tip) {
+    edit = new QLineEdit;
+    edit->setObjectName(name);
+    edit->setPlaceholderText("none");
+    edit->setToolTip(tip);
+    auto* choose = new QPushButton("...");
+    choose->setObjectName(QString(name) + "Choose");
+    auto* row = new QHBoxLayout;
+    row->addWidget(edit);
+    row->addWidget(choose);
+    connect(choose, &QPushButton::clicked, this, [edit, title, interactive] {
+      if (!interactive) return;
+      const QString file = QFileDialog::getOpenFileName(edit->window(), title, {},
+                                                        "Node files (*.txt);;All files (*)");
+      if (!file.isEmpty()) edit->setText(file);
+    });
+    return row;
+  };
+  QHBoxLayout* fixedRow = fileRow(
+      fixedNodes_, "fixedNodes", "Fixed nodes",
       "a text file of node numbers of the simulated level, from 0, held still in any scenario");
-  auto* fixedRow = new QHBoxLayout;
-  auto* chooseFixed = new QPushButton("...");
-  chooseFixed->setObjectName("chooseFixedNodes");
-  fixedRow->addWidget(fixedNodes_);
-  fixedRow->addWidget(chooseFixed);
-  connect(chooseFixed, &QPushButton::clicked, this, [this, interactive] {
-    if (!interactive) return;
-    const QString file = QFileDialog::getOpenFileName(fixedNodes_->window(), "Fixed nodes", {},
-                                                      "Node lists (*.txt);;All files (*)");
-    if (!file.isEmpty()) fixedNodes_->setText(file);
-  });
+  QHBoxLayout* loadsRow = fileRow(loads_, "loads", "Loads",
+                                  "a text file of lines NODE FX FY FZ: constant forces (newtons) "
+                                  "on nodes of the simulated level, in any scenario");
 
   const SimulationOptions plain;
   auto* gravityRow = new QHBoxLayout;
@@ -99,6 +109,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
       {new QLabel("Twist time (s)"), twistSeconds_, ScenarioParameter::TwistSeconds}};
   for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
   form_->addRow("Fixed nodes", fixedRow);
+  form_->addRow("Loads", loadsRow);
   form_->addRow("Gravity (m/s\u00b2)", gravityRow);
   form_->addRow("Floor", floorRow);
   connect(scenario_, &QComboBox::currentTextChanged, this, [this] { showRowsOfScenario(); });
@@ -136,6 +147,7 @@ ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
   p.twistSeconds = twistSeconds_->value();
   if (!fixedNodes_->text().isEmpty())
     p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
+  if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
   return p;
 }
 

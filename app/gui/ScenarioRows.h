@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The Simulation dock's scenario rows: which scenario, its parameters
-// (simulation Scenario.h), nodes held still from a file, gravity and a
-// floor; what `tetskin simulate` takes as its "Scenario" options. A
+// (simulation Scenario.h), nodes held still and forces on nodes from files,
+// gravity and a floor; what `tetskin simulate` takes as its "Scenario" options. A
 // parameter the chosen scenario does not read is taken out of the form.
 
 #include <QObject>
@@ -30,8 +30,8 @@ class ScenarioRows : public QObject {
   ScenarioRows(QFormLayout* form, bool interactive);
 
   std::string scenario() const;
-  // The parameters, the held nodes read from their file (a level of
-  // `nodeCount` nodes); throws Error naming the file and line.
+  // The parameters, the held nodes and the loads read from their files (a
+  // level of `nodeCount` nodes); throws Error naming the file and line.
   ScenarioParameters parameters(Index nodeCount) const;
   // `options` with the panel's gravity and floor.
   SimulationOptions withGravityAndFloor(SimulationOptions options) const;
@@ -54,6 +54,7 @@ class ScenarioRows : public QObject {
   QDoubleSpinBox *baseShare_, *push_, *pushFrequency_, *dropHeight_, *twistDegrees_, *twistSeconds_,
       *gravity_[3], *floorHeight_;
   QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
+  QLineEdit* loads_;       // a node forces file (io NodeList.h), or empty
   QCheckBox* floor_;
   // The rows of the parameters only some scenarios read, in form order.
   std::vector<ParameterRow> parameterRows_;

@@ -14,7 +14,7 @@ SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, int level,
                                              scenarioOptions(scenario, options, rest), datasetName);
   scenario_ = makeScenario(scenario, parameters);
   scenario_->setUp(*simulation_);
-  pull_ = applied_ = Points3::Zero(rest.nodes.rows(), 3);
+  pull_ = Points3::Zero(rest.nodes.rows(), 3);
   thread_ = std::thread([this] { loop(); });
 }
 
@@ -56,15 +56,12 @@ void SimulationRunner::release() {
 void SimulationRunner::stepOnce() {
   std::lock_guard<std::mutex> lock(stepMutex_);
   const auto start = std::chrono::steady_clock::now();
-  // The scenario's forces plus the user's pull: take back last step's pull
-  // first, since a scenario may keep its forces rather than set them anew.
-  simulation_->setExternalForces(simulation_->externalForces() - applied_);
+  // The scenario's forces (set anew each step) plus the user's pull.
   scenario_->beforeStep(*simulation_, simulation_->state().time);
   {
     std::lock_guard<std::mutex> pullLock(pullMutex_);
-    applied_ = pull_;
+    simulation_->setExternalForces(simulation_->externalForces() + pull_);
   }
-  simulation_->setExternalForces(simulation_->externalForces() + applied_);
   simulation_->step();
   lastStepSeconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -46,8 +46,7 @@ class SimulationRunner {
 
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<Scenario> scenario_;
-  Points3 pull_;     // what the user pulls with now (guarded by pullMutex_)
-  Points3 applied_;  // the pull added to the forces of the running step
+  Points3 pull_;  // what the user pulls with now (guarded by pullMutex_)
   std::mutex pullMutex_;
   std::atomic<bool> playing_{false}, quit_{false};
   std::atomic<double> lastStepSeconds_{0};

@@ -320,6 +320,15 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
   EXPECT_NEAR(*window_->runner()->simulation().options().floorHeight, (bottom + top) / 2, 1e-4);
   EXPECT_TRUE(window_->statusBar()->currentMessage().contains("nodes start below the floor"))
       << window_->statusBar()->currentMessage().toStdString();
+  // Loads from a file act in every step.
+  child<QCheckBox>("floor")->setChecked(false);
+  child<QLineEdit>("loads")->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/loads.txt");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  child<QPushButton>("step")->click();
+  const Points3 forces = window_->runner()->simulation().externalForces();
+  EXPECT_EQ(forces.row(20), Eigen::RowVector3d(0, -2, 0));
+  EXPECT_EQ(forces.colwise().sum(), Eigen::RowVector3d(0, -3, 0));
 }
 
 TEST_F(Gui, ShiftDragPullsTheBody) {

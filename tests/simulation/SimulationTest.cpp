@@ -36,39 +36,62 @@ std::vector<int> nodesWithXBelow(const TetMesh& mesh, double x) {
   return nodes;
 }
 
-// Euler-Bernoulli: a cantilever of length L under its own weight q per length
-// deflects q L^4 / (8 E I) at the tip, I = b h^3 / 12.
-TEST(Simulation, CantileverMatchesEulerBernoulli) {
-  const double L = 10, b = 1, h = 1;
-  // Linear tetrahedra are too stiff in bending and converge from below:
-  // 40x4x4 cubes give -17%, 60x6x6 -8%, 80x8x8 -4.4%.
-  const TetMesh beam = test::tetGrid(80, 8, 8, {L, h, b});
+// A cantilever along x, clamped at x = 0, for the Euler-Bernoulli tests:
+// linear tetrahedra are too stiff in bending and converge from below (under
+// its own weight 40x4x4 cubes give -17%, 60x6x6 -8%, 80x8x8 -4.4%).
+constexpr double kBeamLength = 10, kBeamWidth = 1, kBeamHeight = 1;
+
+TetMesh cantilever() {
+  return test::tetGrid(80, 8, 8, {kBeamLength, kBeamHeight, kBeamWidth});
+}
+
+// Large implicit steps, heavily damped, march to the static equilibrium.
+SimulationOptions staticBeamOptions() {
   SimulationOptions options;
   options.material.youngsModulus = 1e6;
   options.material.poissonRatio = 0.0;
   options.material.density = 1;
   options.material.massDamping = 5;
   options.material.stiffnessDamping = 0;
-  options.timeStep = 1.0;  // large implicit steps march to the static equilibrium
+  options.timeStep = 1.0;
   options.tolerance = 1e-10;
   options.solver = SolverKind::ConjugateGradient;
-  Simulation sim(oneLevel(beam), 0, options);
-  sim.setFixedNodes(nodesWithXBelow(beam, 1e-9));
+  return options;
+}
+
+// Steps until the tip (the nodes at x = L) settles; its mean downward
+// deflection. `scenario`, if any, is set up and drives each step.
+double settledTipDeflection(Simulation& sim, Scenario* scenario) {
+  const TetMesh& beam = sim.restMesh();
+  if (scenario) scenario->setUp(sim);
   double previous = 0, tip = 0;
   for (int i = 0; i < 60; ++i) {
+    if (scenario) scenario->beforeStep(sim, sim.state().time);
     sim.step();
     const Points3 x = sim.state().positions;
     tip = 0;
     int count = 0;
     for (Index v = 0; v < x.rows(); ++v)
-      if (beam.nodes(v, 0) >= L - 1e-9) {
+      if (beam.nodes(v, 0) >= kBeamLength - 1e-9) {
         tip += beam.nodes(v, 1) - x(v, 1);
         ++count;
       }
     tip /= count;
-    if (std::abs(tip - previous) < 1e-9 * tip) break;
+    if (std::abs(tip - previous) < 1e-9 * std::abs(tip)) break;
     previous = tip;
   }
+  return tip;
+}
+
+// Euler-Bernoulli: a cantilever of length L under its own weight q per length
+// deflects q L^4 / (8 E I) at the tip, I = b h^3 / 12.
+TEST(Simulation, CantileverMatchesEulerBernoulli) {
+  const double L = kBeamLength, b = kBeamWidth, h = kBeamHeight;
+  const TetMesh beam = cantilever();
+  const SimulationOptions options = staticBeamOptions();
+  Simulation sim(oneLevel(beam), 0, options);
+  sim.setFixedNodes(nodesWithXBelow(beam, 1e-9));
+  const double tip = settledTipDeflection(sim, nullptr);
   const double q = options.material.density * 9.81 * b * h;
   const double I = b * h * h * h / 12;
   const double expected = q * std::pow(L, 4) / (8 * options.material.youngsModulus * I);
@@ -315,6 +338,63 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
   missing.heldNodes = {static_cast<int>(rest.nodeCount())};
   Simulation sim(d.mesh, 0, SimulationOptions{});
   EXPECT_THROW(makeScenario("sag", missing)->setUp(sim), Error);
+}
+
+// Loads (ScenarioParameters::loads, `simulate --loads`): a force P spread
+// over the free end's nodes bends the cantilever by P L^3 / (3 E I), and
+// loads equal to each node's weight reproduce gravity.
+TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
+  const TetMesh beam = cantilever();
+  SimulationOptions options = staticBeamOptions();
+  options.gravity.setZero();
+  const double P = 0.5;
+  ScenarioParameters clamped;
+  clamped.baseShare = 0;  // (the base is a share of the height: clamp the end instead)
+  clamped.heldNodes = nodesWithXBelow(beam, 1e-9);
+  clamped.loads = Points3::Zero(beam.nodeCount(), 3);
+  std::vector<Index> end;
+  for (Index v = 0; v < beam.nodeCount(); ++v)
+    if (beam.nodes(v, 0) >= kBeamLength - 1e-9) end.push_back(v);
+  for (Index v : end) clamped.loads(v, 1) = -P / static_cast<double>(end.size());
+  Simulation sim(oneLevel(beam), 0, options);
+  const auto sag = makeScenario("sag", clamped);
+  const double tip = settledTipDeflection(sim, sag.get());
+  const double I = kBeamWidth * std::pow(kBeamHeight, 3) / 12;
+  const double expected = P * std::pow(kBeamLength, 3) / (3 * options.material.youngsModulus * I);
+  std::printf("tip load deflection: simulated %.5f, Euler-Bernoulli %.5f (%.1f%%)\n", tip, expected,
+              100 * (tip - expected) / expected);
+  EXPECT_NEAR(tip, expected, 0.1 * expected);
+  EXPECT_LT(tip, expected * 1.02);
+
+  // Weight as loads: m_i g on every node with gravity off, against gravity.
+  const Dataset d = loadDataset(kData + "bunny.json");
+  const TetMesh rest = extractLevel(d.mesh, 0);
+  auto sagged = [&](const SimulationOptions& o, const ScenarioParameters& p) {
+    Simulation s(d.mesh, 0, o);
+    const auto scenario = makeScenario("sag", p);
+    scenario->setUp(s);
+    for (int i = 0; i < 8; ++i) {
+      scenario->beforeStep(s, s.state().time);
+      s.step();
+    }
+    return Points3(s.state().positions);
+  };
+  const SimulationOptions withGravity;
+  SimulationOptions weightless;
+  weightless.gravity.setZero();
+  ScenarioParameters weights;
+  weights.loads = Points3::Zero(rest.nodeCount(), 3);
+  weights.loads.col(1) = Simulation(d.mesh, 0, weightless).nodeMasses() * -9.81;
+  const Points3 byGravity = sagged(withGravity, {});
+  const Points3 byLoads = sagged(weightless, weights);
+  EXPECT_GT((byGravity - rest.nodes).norm(), 1e-3);  // it did sag
+  EXPECT_LT((byLoads - byGravity).norm(), 1e-6 * (byGravity - rest.nodes).norm());
+
+  // Loads of another level are refused when the scenario is set up.
+  ScenarioParameters wrong;
+  wrong.loads = Points3::Zero(rest.nodeCount() + 1, 3);
+  Simulation other(d.mesh, 0, SimulationOptions{});
+  EXPECT_THROW(makeScenario("sag", wrong)->setUp(other), Error);
 }
 
 // scenariosReading() tells the truth: a parameter changes the run of

@@ -29,23 +29,23 @@ class Sag : public Scenario {
  public:
   using Scenario::Scenario;
   const char* name() const override { return "sag"; }
-  void beforeStep(Simulation&, double) override {}
 
  protected:
   std::vector<int> prepare(Simulation& sim) override {
     return baseNodes(sim.restMesh(), p_.baseShare);
   }
+  void drive(Simulation&, double, Points3&) override {}
 };
 
 class Wobble : public Sag {
  public:
   using Sag::Sag;
   const char* name() const override { return "wobble"; }
-  void beforeStep(Simulation& sim, double time) override {
-    sim.setExternalForces(pushed_ * std::sin(2 * M_PI * p_.pushFrequency * time));
-  }
 
  protected:
+  void drive(Simulation&, double time, Points3& forces) override {
+    forces += pushed_ * std::sin(2 * M_PI * p_.pushFrequency * time);
+  }
   std::vector<int> prepare(Simulation& sim) override {
     std::vector<int> fixed = Sag::prepare(sim);
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
@@ -67,9 +67,9 @@ class Drop : public Scenario {
  public:
   using Scenario::Scenario;
   const char* name() const override { return "drop"; }
-  void beforeStep(Simulation&, double) override {}
 
  protected:
+  void drive(Simulation&, double, Points3&) override {}
   std::vector<int> prepare(Simulation& sim) override {
     const BoundingBox box = boundingBox(sim.restMesh().nodes);
     Points3 lifted = sim.restMesh().nodes;
@@ -83,9 +83,9 @@ class Twist : public Sag {
  public:
   using Sag::Sag;
   const char* name() const override { return "twist"; }
-  void beforeStep(Simulation& sim, double time) override;
 
  protected:
+  void drive(Simulation& sim, double time, Points3& forces) override;
   std::vector<int> prepare(Simulation& sim) override {
     const TetMesh& rest = sim.restMesh();
     const BoundingBox box = boundingBox(rest.nodes);
@@ -104,7 +104,7 @@ class Twist : public Sag {
   Eigen::Vector3d axis_;
 };
 
-void Twist::beforeStep(Simulation& sim, double time) {
+void Twist::drive(Simulation& sim, double time, Points3&) {
   const double h = sim.options().timeStep;
   const double share = std::min((time + h) / p_.twistSeconds, 1.0);
   const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, Eigen::Vector3d::UnitY());
@@ -119,11 +119,20 @@ void Twist::beforeStep(Simulation& sim, double time) {
 }  // namespace
 
 void Scenario::setUp(Simulation& sim) {
+  if (p_.loads.size() > 0 && p_.loads.rows() != sim.restMesh().nodeCount())
+    throw Error("the loads are for " + std::to_string(p_.loads.rows()) +
+                " nodes, but the level has " + std::to_string(sim.restMesh().nodeCount()));
   std::vector<int> fixed = prepare(sim);
   fixed.insert(fixed.end(), p_.heldNodes.begin(), p_.heldNodes.end());
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   sim.setFixedNodes(fixed);
+}
+
+void Scenario::beforeStep(Simulation& sim, double time) {
+  Points3 forces = p_.loads.size() > 0 ? p_.loads : Points3::Zero(sim.restMesh().nodeCount(), 3);
+  drive(sim, time, forces);
+  sim.setExternalForces(forces);
 }
 
 void validateScenarioParameters(const ScenarioParameters& p) {
@@ -139,6 +148,7 @@ void validateScenarioParameters(const ScenarioParameters& p) {
   require(std::isfinite(p.twistDegrees), "the twist angle", p.twistDegrees, "finite");
   require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
           "finite and > 0");
+  if (!p.loads.allFinite()) throw Error("the loads must be finite");
 }
 
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {

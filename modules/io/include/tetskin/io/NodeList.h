@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// A list of node numbers in a text file, e.g. the nodes `tetskin simulate
-// --fixed-nodes` holds still: numbers from 0 (the point ids ParaView shows
-// for a level's .vtu), separated by spaces or line breaks, `#` starting a
-// comment. A number given twice counts once.
+// Nodes of a level named in a text file, by their numbers from 0 (the point
+// ids ParaView shows for a level's .vtu), `#` starting a comment:
+// - a node list, e.g. the nodes `tetskin simulate --fixed-nodes` holds
+//   still: numbers separated by spaces or line breaks; a number given twice
+//   counts once;
+// - node forces (`--loads`): one node per line, `NODE FX FY FZ`; the forces
+//   of a node given twice add up.
 
 #include <filesystem>
 #include <vector>
@@ -16,5 +19,10 @@ namespace tetskin {
 // number or names no node of a mesh with `nodeCount` nodes, and for a file
 // without any number. Returns the numbers sorted, each once.
 std::vector<int> readNodeList(const std::filesystem::path& path, Index nodeCount);
+
+// Throws Error naming the file and line for a line that is not a node and
+// three finite numbers, a node a mesh with `nodeCount` nodes lacks, and for a
+// file without any line. Returns the force on every node (nodeCount rows).
+Points3 readNodeForces(const std::filesystem::path& path, Index nodeCount);
 
 }  // namespace tetskin

@@ -25,6 +25,8 @@ struct ScenarioParameters {
   double twistDegrees = 90;      // twist: final angle of the top
   double twistSeconds = 1.0;     // twist: time to reach it
   std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
+  Points3 loads;                 // every scenario: a constant force on each node of the
+                                 // level (N; nodeCount rows), or empty for none
 };
 
 // The parameters that only some scenarios read (heldNodes: every one).
@@ -44,7 +46,8 @@ std::vector<std::string> scenariosReading(ScenarioParameter parameter);
 bool scenarioReads(std::string_view name, ScenarioParameter parameter);
 
 // Throws Error naming the parameter whose value no scenario can use (e.g. a
-// base share outside [0, 1), a twist time <= 0, anything not finite).
+// base share outside [0, 1), a twist time <= 0, anything not finite; loads
+// of another level: setUp() checks their count).
 void validateScenarioParameters(const ScenarioParameters& parameters);
 
 class Scenario {
@@ -55,10 +58,14 @@ class Scenario {
   // Fixed nodes (the scenario's own and the held ones) and the initial
   // state: called once before the first step.
   void setUp(Simulation& simulation);
-  // Forces and kinematic targets for the step that starts at `time`.
-  virtual void beforeStep(Simulation& simulation, double time) = 0;
+  // Sets the external forces (the scenario's and the loads) and kinematic
+  // targets for the step that starts at `time`.
+  void beforeStep(Simulation& simulation, double time);
 
  protected:
+  // The scenario's own part of beforeStep(): adds its forces to `forces`
+  // (zero, one row per node) and sets its targets.
+  virtual void drive(Simulation& simulation, double time, Points3& forces) = 0;
   // The scenario's own part of setUp(): its initial state, forces and
   // targets; returns the nodes it fixes (setUp() adds the held ones).
   virtual std::vector<int> prepare(Simulation& simulation) = 0;
