@@ -61,6 +61,11 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "(newtons), # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
+  cmd.add_option("--loads-seconds", p.loadSeconds,
+                 "with --loads: they act for this many seconds, then let go (default: the whole "
+                 "run)")
+      ->check(positiveNumber())
+      ->group(kGroup);
   cmd.add_option("--gravity", a.gravity, "gravity X,Y,Z in m/s^2 (default 0,-9.81,0; y is up)")
       ->expected(3)
       ->delimiter(',')
@@ -86,6 +91,8 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
       throw Error(std::string(option) + ": applies to the " + joined(scenarios) + " scenario" +
                   (scenarios.size() > 1 ? "s" : "") + ", not to " + a.name);
     }
+  if (cmd.count("--loads-seconds") > 0 && a.loads.empty())
+    throw Error("--loads-seconds: applies with --loads, which is not given");
   ScenarioParameters p = a.parameters;
   validateScenarioParameters(p);
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -120,11 +121,14 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
               static_cast<long long>(sim.restMesh().nodeCount()));
   if (parameters.loads.size() > 0) {
     const Eigen::RowVector3d total = parameters.loads.colwise().sum();
+    const std::string until = std::isfinite(parameters.loadSeconds)
+                                  ? " for " + formatNumber(parameters.loadSeconds) + " s"
+                                  : "";
     std::printf(
-        "%lld loaded (total force %s,%s,%s N), ",
+        "%lld loaded (total force %s,%s,%s N%s), ",
         static_cast<long long>((parameters.loads.rowwise().squaredNorm().array() > 0).count()),
         formatNumber(total.x()).c_str(), formatNumber(total.y()).c_str(),
-        formatNumber(total.z()).c_str());
+        formatNumber(total.z()).c_str(), until.c_str());
   }
   std::printf("gravity %s,%s,%s m/s^2", formatNumber(options.gravity.x()).c_str(),
               formatNumber(options.gravity.y()).c_str(), formatNumber(options.gravity.z()).c_str());

@@ -80,6 +80,10 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
                                   "a text file of lines NODE FX FY FZ: constant forces (newtons) "
                                   "on nodes of the simulated level, in any scenario");
 
+  loadSeconds_ =
+      numberBox("loadSeconds", 0, 1e4, 2, 0, "the loads act for this many seconds, then let go");
+  loadSeconds_->setSpecialValueText("whole run");  // (at 0)
+
   const SimulationOptions plain;
   auto* gravityRow = new QHBoxLayout;
   const char* gravityNames[3] = {"gravityX", "gravityY", "gravityZ"};
@@ -110,6 +114,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
   form_->addRow("Fixed nodes", fixedRow);
   form_->addRow("Loads", loadsRow);
+  form_->addRow("Loads act for (s)", loadSeconds_);
   form_->addRow("Gravity (m/s\u00b2)", gravityRow);
   form_->addRow("Floor", floorRow);
   connect(scenario_, &QComboBox::currentTextChanged, this, [this] { showRowsOfScenario(); });
@@ -148,6 +153,7 @@ ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
   if (!fixedNodes_->text().isEmpty())
     p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
   if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
+  if (loadSeconds_->value() > 0) p.loadSeconds = loadSeconds_->value();
   return p;
 }
 

@@ -52,7 +52,7 @@ class ScenarioRows : public QObject {
   int scenarioRow_;  // the form's row of the scenario box
   QComboBox* scenario_;
   QDoubleSpinBox *baseShare_, *push_, *pushFrequency_, *dropHeight_, *twistDegrees_, *twistSeconds_,
-      *gravity_[3], *floorHeight_;
+      *gravity_[3], *floorHeight_, *loadSeconds_;
   QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
   QLineEdit* loads_;       // a node forces file (io NodeList.h), or empty
   QCheckBox* floor_;

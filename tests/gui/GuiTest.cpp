@@ -329,6 +329,15 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
   const Points3 forces = window_->runner()->simulation().externalForces();
   EXPECT_EQ(forces.row(20), Eigen::RowVector3d(0, -2, 0));
   EXPECT_EQ(forces.colwise().sum(), Eigen::RowVector3d(0, -3, 0));
+  // ... for as long as asked, then let go.
+  child<QDoubleSpinBox>("loadSeconds")->setValue(0.01);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  child<QPushButton>("step")->click();
+  EXPECT_EQ(window_->runner()->simulation().externalForces().colwise().sum(),
+            Eigen::RowVector3d(0, -3, 0));
+  child<QPushButton>("step")->click();  // starts at 1/60 s > 0.01 s
+  EXPECT_EQ(window_->runner()->simulation().externalForces().norm(), 0.0);
 }
 
 TEST_F(Gui, ShiftDragPullsTheBody) {

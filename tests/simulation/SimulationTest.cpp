@@ -329,7 +329,11 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
            [](ScenarioParameters& p) { p.pushFrequency = 0; },
            [](ScenarioParameters& p) { p.twistSeconds = -1; },
            [](ScenarioParameters& p) { p.dropHeight = std::numeric_limits<double>::quiet_NaN(); },
-           [](ScenarioParameters& p) { p.pushAcceleration = INFINITY; }}) {
+           [](ScenarioParameters& p) { p.pushAcceleration = INFINITY; },
+           [](ScenarioParameters& p) { p.loadSeconds = 0; },
+           [](ScenarioParameters& p) {
+             p.loadSeconds = std::numeric_limits<double>::quiet_NaN();
+           }}) {
     ScenarioParameters p;
     spoil(p);
     EXPECT_THROW(makeScenario("wobble", p), Error);
@@ -395,6 +399,59 @@ TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
   wrong.loads = Points3::Zero(rest.nodeCount() + 1, 3);
   Simulation other(d.mesh, 0, SimulationOptions{});
   EXPECT_THROW(makeScenario("sag", wrong)->setUp(other), Error);
+}
+
+// Dynamics with a known answer: a cantilever let go after a tip load
+// (ScenarioParameters::loadSeconds) vibrates at Euler-Bernoulli's first
+// natural frequency, (1.8751^2 / 2 pi) sqrt(E I / (rho A L^4)).
+TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
+  const TetMesh beam = test::tetGrid(60, 6, 6, {kBeamLength, kBeamHeight, kBeamWidth});
+  SimulationOptions options;
+  options.material.youngsModulus = 1e6;
+  options.material.poissonRatio = 0.0;
+  options.material.density = 1;
+  options.material.massDamping = 0;  // (backward Euler damps on its own)
+  options.material.stiffnessDamping = 0;
+  options.gravity.setZero();
+  options.timeStep = 0.01;  // about 60 steps per period
+  options.tolerance = 1e-7;
+  ScenarioParameters plucked;
+  plucked.baseShare = 0;
+  plucked.heldNodes = nodesWithXBelow(beam, 1e-9);
+  plucked.loads = Points3::Zero(beam.nodeCount(), 3);
+  std::vector<Index> end;
+  for (Index v = 0; v < beam.nodeCount(); ++v)
+    if (beam.nodes(v, 0) >= kBeamLength - 1e-9) end.push_back(v);
+  for (Index v : end) plucked.loads(v, 1) = -0.5 / static_cast<double>(end.size());
+  plucked.loadSeconds = 0.2;
+  Simulation sim(oneLevel(beam), 0, options);
+  const auto sag = makeScenario("sag", plucked);
+  sag->setUp(sim);
+  // Upward zero crossings of the free end's mean height after the release.
+  std::vector<double> crossings;
+  double previous = 0;
+  while (sim.state().time < 2.0) {
+    sag->beforeStep(sim, sim.state().time);
+    sim.step();
+    double tip = 0;
+    for (Index v : end) tip += sim.state().positions(v, 1) - beam.nodes(v, 1);
+    tip /= static_cast<double>(end.size());
+    const double t = sim.state().time;
+    if (t > plucked.loadSeconds + options.timeStep && previous < 0 && tip >= 0)
+      crossings.push_back(t - options.timeStep * tip / (tip - previous));
+    previous = tip;
+  }
+  ASSERT_GE(crossings.size(), 3u) << "the free end did not swing";
+  const double period =
+      (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double I = kBeamWidth * std::pow(kBeamHeight, 3) / 12;
+  const double A = kBeamWidth * kBeamHeight;
+  const double expected = 1.8751 * 1.8751 / (2 * M_PI) *
+                          std::sqrt(options.material.youngsModulus * I /
+                                    (options.material.density * A * std::pow(kBeamLength, 4)));
+  std::printf("first natural frequency: simulated %.4f Hz, Euler-Bernoulli %.4f Hz (%.1f%%)\n",
+              1 / period, expected, 100 * (1 / period - expected) / expected);
+  EXPECT_NEAR(1 / period, expected, 0.1 * expected);
 }
 
 // scenariosReading() tells the truth: a parameter changes the run of

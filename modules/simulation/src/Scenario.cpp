@@ -130,7 +130,8 @@ void Scenario::setUp(Simulation& sim) {
 }
 
 void Scenario::beforeStep(Simulation& sim, double time) {
-  Points3 forces = p_.loads.size() > 0 ? p_.loads : Points3::Zero(sim.restMesh().nodeCount(), 3);
+  const bool loaded = p_.loads.size() > 0 && time < p_.loadSeconds;
+  Points3 forces = loaded ? p_.loads : Points3::Zero(sim.restMesh().nodeCount(), 3);
   drive(sim, time, forces);
   sim.setExternalForces(forces);
 }
@@ -149,6 +150,7 @@ void validateScenarioParameters(const ScenarioParameters& p) {
   require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
           "finite and > 0");
   if (!p.loads.allFinite()) throw Error("the loads must be finite");
+  require(p.loadSeconds > 0, "the time the loads act", p.loadSeconds, "> 0");
 }
 
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {

@@ -7,6 +7,7 @@
 //   twist   base fixed, the top turned about the vertical axis
 //   sag     base fixed, gravity only
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -27,6 +28,9 @@ struct ScenarioParameters {
   std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
   Points3 loads;                 // every scenario: a constant force on each node of the
                                  // level (N; nodeCount rows), or empty for none
+  double loadSeconds =
+      std::numeric_limits<double>::infinity();  // the loads act in the
+                                                // steps that start before this time, then let go
 };
 
 // The parameters that only some scenarios read (heldNodes: every one).
