@@ -18,8 +18,11 @@ double since(std::chrono::steady_clock::time_point t) {
 
 AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
                              const SceneOptions& o)
-    : dataset_(dataset), level_(resolveLevel(dataset.mesh, o.level)), nodes_(dataset.mesh.nodes) {
-  const SurfaceBinding binding = bindSurface(surface, dataset.mesh, level_);
+    : dataset_(dataset),
+      level_(o.binding ? o.binding->level : resolveLevel(dataset.mesh, o.level)),
+      nodes_(dataset.mesh.nodes) {
+  const SurfaceBinding binding =
+      o.binding ? *o.binding : bindSurface(surface, dataset.mesh, level_);
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, o.path,
                                                  dataset.config.material, o.texture, o.fur);
   view_ = std::make_unique<OffscreenView>(o.width, o.height);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ScenarioOptions.h"
@@ -20,6 +21,8 @@ namespace tetskin::cli {
 
 struct SceneOptions {
   int level = -1;
+  std::optional<SurfaceBinding> binding;  // drawn as it is, on its level; else the surface
+                                          // is bound to `level` (closest, normal offset)
   RenderPath path = RenderPath::Cpu;
   ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
   int width = 800, height = 600;

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
+#include <vtkPolyData.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
@@ -6,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -13,7 +16,10 @@
 #include "ScenarioOptions.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/FileNames.h"
+#include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
 namespace {
@@ -71,9 +77,6 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.fur = furParameters(a, dataset.config);
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
     throw Error(*option + ": applies to simulated frames; give --frames N");
-  o.scenario.parameters = scenarioParameters(
-      cmd, a.scenario,
-      dataset.mesh.levels[static_cast<std::size_t>(resolveLevel(dataset.mesh, a.level))].nodeCount);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
   std::filesystem::path surfacePath = a.surface;
@@ -83,7 +86,22 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     surfacePath = dataset.config.resolve(*dataset.config.surface);
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
-  const SurfaceMesh surface = readSurface(surfacePath);
+  // A binding from `tetskin bind` is drawn as it is (method, offset, level).
+  SurfaceMesh surface;
+  if (lowerExtension(surfacePath) == ".vtp" && isBinding(readVtp(surfacePath))) {
+    BoundSurface bound = readBinding(surfacePath, dataset.mesh);
+    if (cmd.count("--level") > 0 && resolveLevel(dataset.mesh, a.level) != bound.binding.level)
+      throw Error("--level " + std::to_string(a.level) + ": " + surfacePath.string() +
+                  " is bound to level " + std::to_string(bound.binding.level) +
+                  "; leave --level out to draw it there");
+    surface = std::move(bound.surface);
+    o.binding = std::move(bound.binding);
+  } else {
+    surface = readSurface(surfacePath);
+  }
+  const int level = o.binding ? o.binding->level : resolveLevel(dataset.mesh, a.level);
+  o.scenario.parameters = scenarioParameters(
+      cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
   AnimatedScene scene(dataset, surface, o);
   const FrameStats s = scene.run(a.frames);
   scene.view().writePng(a.output);

@@ -28,10 +28,17 @@ SurfaceDeformer::SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBi
     }
     r.d = binding.distance[v];
   }
-  if (offset_ == OffsetMode::Displacement) {
-    rest_ = restSurface.positions;
-    controlRest_ = controlRest;
-  }
+  if (offset_ == OffsetMode::Displacement)
+    shifts_ = displacementShifts(binding, restSurface.positions, controlRest);
+}
+
+Points3 displacementShifts(const SurfaceBinding& binding, const Points3& restSurface,
+                           const Points3& controlRest) {
+  Points3 shifts = restSurface;
+  for (Index v = 0; v < shifts.rows(); ++v)
+    for (int c = 0; c < binding.controlsPerVertex(); ++c)
+      shifts.row(v) -= binding.weights(v, c) * controlRest.row(binding.controlIds(v, c));
+  return shifts;
 }
 
 void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions) const {
@@ -48,11 +55,8 @@ void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions
       const Record& r = records[v];
       Eigen::Map<Eigen::Vector3d> p(out + 3 * v);
       if (offset_ == OffsetMode::Displacement) {
-        const double* x0 = controlRest_.data();
-        Eigen::Vector3d moved = rest_.row(v).transpose();
-        for (int c = 0; c < controls_; ++c)
-          moved += r.w[c] * (node(r.ids[c]) - Eigen::Map<const Eigen::Vector3d>(x0 + 3 * r.ids[c]));
-        p = moved;
+        p = shifts_.row(v).transpose();
+        for (int c = 0; c < controls_; ++c) p += r.w[c] * node(r.ids[c]);
       } else if (controls_ == 4) {
         p = r.w[0] * node(r.ids[0]) + r.w[1] * node(r.ids[1]) + r.w[2] * node(r.ids[2]) +
             r.w[3] * node(r.ids[3]);

@@ -69,10 +69,16 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
   Impl& s = *impl_;
   s.path = path;
   const RenderPath skin = skinPath(path);
-  if (binding.method == BindingMethod::Embed && skin != RenderPath::Cpu)
-    throw Error("the gpu paths draw triangle bindings (closest or seed), not embed");
-  if (binding.offset != OffsetMode::Normal && skin != RenderPath::Cpu)
-    throw Error("the gpu paths use the normal offset; bind with --offset normal");
+  // (gpu-1pass interpolates the control triangles' normals, which an
+  // embedding tetrahedron has not; gpu-2pass computes the surface's own.)
+  if (binding.method == BindingMethod::Embed && skin == RenderPath::Gpu1Pass)
+    throw Error(
+        "gpu-1pass draws triangle bindings (closest or seed), not embed: draw it with cpu or "
+        "gpu-2pass");
+  if (binding.offset != OffsetMode::Normal && skin == RenderPath::Gpu1Pass)
+    throw Error(
+        "gpu-1pass uses the normal offset: bind with --offset normal, or draw with cpu or "
+        "gpu-2pass");
   BoundSurface bound{restSurface, binding, ""};
   bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
   s.polyData = bindingToPolyData(bound);
@@ -98,20 +104,32 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       s.actor->SetMapper(s.gpuMapper);
     } else {
       s.gpu2Mapper = vtkSmartPointer<vtkTetSkinGpu2PassMapper>::New();
-      std::vector<int> ids(static_cast<std::size_t>(3 * restSurface.vertexCount()));
-      std::vector<float> weights(static_cast<std::size_t>(4 * restSurface.vertexCount()));
-      for (Index v = 0; v < restSurface.vertexCount(); ++v) {
-        for (int k = 0; k < 3; ++k) {
-          ids[static_cast<std::size_t>(3 * v + k)] = binding.controlIds(v, k);
-          weights[static_cast<std::size_t>(4 * v + k)] = static_cast<float>(binding.weights(v, k));
+      // The binding as SurfaceDeformer reads it, 4 values per vertex each.
+      const Index n = restSurface.vertexCount();
+      const int controls = binding.controlsPerVertex();
+      const Points3 shifted =
+          binding.offset == OffsetMode::Displacement
+              ? displacementShifts(binding, restSurface.positions, dataset.nodes)
+              : Points3::Zero(n, 3);
+      std::vector<int> ids(static_cast<std::size_t>(4 * n), -1);
+      std::vector<float> weights(static_cast<std::size_t>(4 * n), 0.0f);
+      std::vector<float> shifts(static_cast<std::size_t>(4 * n), 0.0f);
+      for (Index v = 0; v < n; ++v) {
+        const auto at = [v](int k) { return static_cast<std::size_t>(4 * v + k); };
+        for (int k = 0; k < controls; ++k) {
+          ids[at(k)] = binding.controlIds(v, k);
+          weights[at(k)] = static_cast<float>(binding.weights(v, k));
         }
-        weights[static_cast<std::size_t>(4 * v + 3)] = static_cast<float>(binding.distance[v]);
+        for (int k = 0; k < 3; ++k) shifts[at(k)] = static_cast<float>(shifted(v, k));
+        if (binding.offset == OffsetMode::Normal)
+          shifts[at(3)] = static_cast<float>(binding.distance[v]);
       }
+      s.maxDistance = std::max(s.maxDistance, shifted.rowwise().norm().maxCoeff());
       const std::vector<int> triangles(restSurface.triangles.data(),
                                        restSurface.triangles.data() + restSurface.triangles.size());
       const VertexTriangleAdjacency ring =
           vertexTriangleAdjacency(restSurface.triangles, restSurface.vertexCount());
-      s.gpu2Mapper->SetSurface(ids, weights, triangles, ring.offsets, ring.triangles);
+      s.gpu2Mapper->SetSurface(ids, weights, shifts, triangles, ring.offsets, ring.triangles);
       s.gpu2Mapper->SetInputData(s.polyData);
       s.gpu2Mapper->ScalarVisibilityOff();
       s.actor->SetMapper(s.gpu2Mapper);

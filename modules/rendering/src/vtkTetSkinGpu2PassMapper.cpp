@@ -64,7 +64,7 @@ GLuint compileCompute(const char* source, std::string& log) {
 }  // namespace
 
 struct vtkTetSkinGpu2PassMapper::GpuState {
-  StorageBuffer control, previousControl, ids, weights, triangles, faces, offsets, ring;
+  StorageBuffer control, previousControl, ids, weights, shifts, triangles, faces, offsets, ring;
   vtkNew<vtkOpenGLBufferObject> previous;
   vtkNew<vtkTextureObject> previousTexture;
   GLsizeiptr previousBytes = 0;
@@ -88,23 +88,21 @@ void vtkTetSkinGpu2PassMapper::PrintSelf(ostream& os, vtkIndent indent) {
 }
 
 void vtkTetSkinGpu2PassMapper::SetSurface(const std::vector<int>& controlIds,
-                                          const std::vector<float>& weightsAndOffset,
+                                          const std::vector<float>& weights,
+                                          const std::vector<float>& shifts,
                                           const std::vector<int>& triangles,
                                           const std::vector<int>& ringOffsets,
                                           const std::vector<int>& ringFaces) {
-  this->Vertices = static_cast<vtkIdType>(controlIds.size() / 3);
+  this->Vertices = static_cast<vtkIdType>(controlIds.size() / 4);
   this->TriangleCount = static_cast<vtkIdType>(triangles.size() / 3);
-  this->Ids.assign(static_cast<std::size_t>(4 * this->Vertices), 0);
-  for (vtkIdType v = 0; v < this->Vertices; ++v)
-    for (int k = 0; k < 3; ++k)
-      this->Ids[static_cast<std::size_t>(4 * v + k)] =
-          controlIds[static_cast<std::size_t>(3 * v + k)];
+  this->Ids = controlIds;
   this->Triangles.assign(static_cast<std::size_t>(4 * this->TriangleCount), 0);
   for (vtkIdType t = 0; t < this->TriangleCount; ++t)
     for (int k = 0; k < 3; ++k)
       this->Triangles[static_cast<std::size_t>(4 * t + k)] =
           triangles[static_cast<std::size_t>(3 * t + k)];
-  this->Weights = weightsAndOffset;
+  this->Weights = weights;
+  this->Shifts = shifts;
   this->RingOffsets = ringOffsets;
   this->RingFaces = ringFaces;
   if (this->RingFaces.empty()) this->RingFaces.push_back(0);  // no empty SSBOs
@@ -144,6 +142,7 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   if (this->SurfaceChanged) {
     g.ids.upload(this->Ids.data(), this->Ids.size() * sizeof(int));
     g.weights.upload(this->Weights.data(), this->Weights.size() * sizeof(float));
+    g.shifts.upload(this->Shifts.data(), this->Shifts.size() * sizeof(float));
     g.triangles.upload(this->Triangles.data(), this->Triangles.size() * sizeof(int));
     g.offsets.upload(this->RingOffsets.data(), this->RingOffsets.size() * sizeof(int));
     g.ring.upload(this->RingFaces.data(), this->RingFaces.size() * sizeof(int));
@@ -173,6 +172,7 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.offsets.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.ring.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, static_cast<GLuint>(this->Buffer(1)->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, g.shifts.id);
   glUseProgram(g.positions);
   glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
   glDispatchCompute(groups, 1, 1);
@@ -211,6 +211,7 @@ void vtkTetSkinGpu2PassMapper::ComputePreviousPositions(vtkOpenGLRenderWindow* w
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, static_cast<GLuint>(g.previous->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, g.shifts.id);
   glUseProgram(g.positions);
   glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
   glDispatchCompute(static_cast<GLuint>((this->Vertices + 63) / 64), 1, 1);
@@ -243,8 +244,8 @@ std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWind
 
 void vtkTetSkinGpu2PassMapper::ReleaseGraphicsResources(vtkWindow* window) {
   GpuState& g = *this->Gpu;
-  for (StorageBuffer* b : {&g.control, &g.previousControl, &g.ids, &g.weights, &g.triangles,
-                           &g.faces, &g.offsets, &g.ring})
+  for (StorageBuffer* b : {&g.control, &g.previousControl, &g.ids, &g.weights, &g.shifts,
+                           &g.triangles, &g.faces, &g.offsets, &g.ring})
     b->release();
   for (GLuint* p : {&g.positions, &g.faceNormals, &g.vertexNormals}) {
     if (*p) glDeleteProgram(*p);

@@ -43,13 +43,19 @@ class SurfaceDeformer {
   OffsetMode offset_;
   int controls_;
   std::vector<Record> records_;
-  Points3 rest_;  // surface rest positions (Displacement offset only)
-  Points3 controlRest_;
+  Points3 shifts_;  // displacementShifts() (Displacement offset only)
   Triangles triangles_;
   VertexTriangleAdjacency adjacency_;
   Points3 faceScratch_;
   Index maxControlId_ = -1;
 };
+
+// The Displacement offset (report formula 4.1, x = x_rest + sum w_i (X_i -
+// X_i,rest)) rearranged as x = sum w_i X_i + shift: one sum per frame, the
+// same on the CPU and in the GPU paths. Per surface vertex, shift = x_rest -
+// sum w_i X_i,rest; `controlRest` in dataset numbering.
+Points3 displacementShifts(const SurfaceBinding& binding, const Points3& restSurface,
+                           const Points3& controlRest);
 
 // A control-mesh state in the dataset's numbering from `given` positions: all
 // dataset nodes, or only those of `level` (the other nodes stay at rest).

@@ -20,11 +20,14 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
   vtkTypeMacro(vtkTetSkinGpu2PassMapper, vtkTetSkinBufferMapper)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  // Per surface vertex: 3 control ids, 3 weights + the normal offset d;
-  // triangles (3 ids each) and the one-ring (offsets: vertices + 1 entries).
-  void SetSurface(const std::vector<int>& controlIds, const std::vector<float>& weightsAndOffset,
-                  const std::vector<int>& triangles, const std::vector<int>& ringOffsets,
-                  const std::vector<int>& ringFaces);
+  // Per surface vertex, 4 values each: control ids (the 4th -1 for a
+  // triangle binding), weights (the 4th 0 for a triangle), and a shift
+  // (x, y, z, d): the vertex is sum w_i X_i + (x, y, z) + d n, n the unit
+  // normal of the deformed control triangle (triangle bindings only). Then
+  // the triangles (3 ids each) and the one-ring (offsets: vertices + 1).
+  void SetSurface(const std::vector<int>& controlIds, const std::vector<float>& weights,
+                  const std::vector<float>& shifts, const std::vector<int>& triangles,
+                  const std::vector<int>& ringOffsets, const std::vector<int>& ringFaces);
   // Control node positions, xyz per node (dataset numbering); used at the next render.
   void SetControlPositions(const float* positions, vtkIdType nodes);
   // The positions the first pass computed, xyzw per vertex (reads GPU memory).
@@ -55,8 +58,8 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
 
   struct GpuState;
   GpuState* Gpu;
-  std::vector<int> Ids, Triangles, RingOffsets, RingFaces;  // ids and triangles padded to 4
-  std::vector<float> Weights;
+  std::vector<int> Ids, Triangles, RingOffsets, RingFaces;  // triangles padded to 4
+  std::vector<float> Weights, Shifts;
   std::vector<float> Control;  // xyz_ per node
   vtkIdType Vertices = 0, TriangleCount = 0, Nodes = 0;
   bool SurfaceChanged = false, ControlChanged = false;
