@@ -1,6 +1,4 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include <vtkPolyData.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
@@ -14,12 +12,10 @@
 #include "Commands.h"
 #include "OptionChecks.h"
 #include "ScenarioOptions.h"
+#include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
-#include "tetskin/io/FileNames.h"
-#include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
-#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
 namespace {
@@ -87,19 +83,11 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
-  SurfaceMesh surface;
-  if (lowerExtension(surfacePath) == ".vtp" && isBinding(readVtp(surfacePath))) {
-    BoundSurface bound = readBinding(surfacePath, dataset.mesh);
-    if (cmd.count("--level") > 0 && resolveLevel(dataset.mesh, a.level) != bound.binding.level)
-      throw Error("--level " + std::to_string(a.level) + ": " + surfacePath.string() +
-                  " is bound to level " + std::to_string(bound.binding.level) +
-                  "; leave --level out to draw it there");
-    surface = std::move(bound.surface);
-    o.binding = std::move(bound.binding);
-  } else {
-    surface = readSurface(surfacePath);
-  }
-  const int level = o.binding ? o.binding->level : resolveLevel(dataset.mesh, a.level);
+  SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
+  const int level = commandLevel(input, dataset.mesh, a.level, cmd.count("--level") > 0);
+  o.level = level;
+  o.binding = std::move(input.binding);
+  const SurfaceMesh& surface = input.surface;
   o.scenario.parameters = scenarioParameters(
       cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
   AnimatedScene scene(dataset, surface, o);

@@ -9,12 +9,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "Commands.h"
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "ScenarioOptions.h"
-#include "tetskin/binding/BindSurface.h"
+#include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
@@ -22,7 +23,6 @@
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/SimulationFrame.h"
-#include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
@@ -51,7 +51,11 @@ ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
 
 void run(SimulateArgs& a, const CLI::App& cmd) {
   const Dataset dataset = loadDataset(a.dataset);
-  const int level = resolveLevel(dataset.mesh, a.level);
+  // A binding from `tetskin bind` follows as it is, on its level.
+  std::optional<SurfaceInput> input;
+  if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
+  const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
+                          : resolveLevel(dataset.mesh, a.level);
   a.options.solver = solverKindFromString(a.solver);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
@@ -69,10 +73,10 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   // The bound surface, if any, follows every frame.
   std::unique_ptr<BoundSurface> bound;
   std::unique_ptr<SurfaceDeformer> deformer;
-  if (!a.surface.empty()) {
+  if (input) {
     bound = std::make_unique<BoundSurface>();
-    bound->surface = readSurface(a.surface);
-    bound->binding = bindSurface(bound->surface, dataset.mesh, level);
+    bound->binding = bindingAt(*input, dataset.mesh, level);
+    bound->surface = std::move(input->surface);
     bound->dataset = a.dataset.generic_string();
     deformer =
         std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
@@ -204,7 +208,8 @@ void addSimulateCommand(CLI::App& app) {
   materialOption("--alpha", a->alpha, "Rayleigh mass damping, 1/s", defaults.massDamping);
   materialOption("--beta", a->beta, "Rayleigh stiffness damping, s", defaults.stiffnessDamping);
   cmd->add_option("--surface", a->surface,
-                  "also write this surface, bound (closest) and deformed, per frame")
+                  "also write this surface, bound (closest) and deformed, per frame; a binding "
+                  "from bind is used as it is, on its level")
       ->check(CLI::ExistingFile);
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
   cmd->callback([a, cmd] { run(*a, *cmd); });
