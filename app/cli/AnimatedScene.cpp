@@ -5,8 +5,6 @@
 
 #include <chrono>
 
-#include "tetskin/binding/BindSurface.h"
-
 namespace tetskin::cli {
 namespace {
 
@@ -16,14 +14,13 @@ double since(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
-AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface,
+AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
                              const SceneOptions& o)
     : dataset_(dataset),
-      level_(o.binding ? o.binding->level : resolveLevel(dataset.mesh, o.level)),
+      level_(commandLevel(input, dataset.mesh, o.level, false)),
       nodes_(dataset.mesh.nodes) {
-  const SurfaceBinding binding =
-      o.binding ? *o.binding : bindSurface(surface, dataset.mesh, level_);
-  surface_ = std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, o.path,
+  surface_ = std::make_unique<DeformableSurface>(dataset.mesh, input.surface,
+                                                 bindingAt(input, dataset.mesh, level_), o.path,
                                                  dataset.config.material, o.texture, o.fur);
   view_ = std::make_unique<OffscreenView>(o.width, o.height);
   surface_->addTo(view_->renderer());

@@ -6,10 +6,10 @@
 
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "ScenarioOptions.h"
+#include "SurfaceInput.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
@@ -20,9 +20,7 @@
 namespace tetskin::cli {
 
 struct SceneOptions {
-  int level = -1;
-  std::optional<SurfaceBinding> binding;  // drawn as it is, on its level; else the surface
-                                          // is bound to `level` (closest, normal offset)
+  int level = -1;  // (a binding's own level, when the surface input is one)
   RenderPath path = RenderPath::Cpu;
   ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
   int width = 800, height = 600;
@@ -43,7 +41,9 @@ struct FrameStats {
 
 class AnimatedScene {
  public:
-  AnimatedScene(const Dataset& dataset, const SurfaceMesh& surface, const SceneOptions& options);
+  // The input's binding is drawn as it is, on its level; a plain surface is
+  // bound to options.level.
+  AnimatedScene(const Dataset& dataset, const SurfaceInput& surface, const SceneOptions& options);
   ~AnimatedScene();
   // Simulates, deforms and draws `frames` frames (the first draw, which
   // compiles shaders, happens in the constructor and is not counted). The

@@ -67,7 +67,8 @@ void run(const BenchArgs& a) {
                 "gpu-2pass", "fur-cpu", "fur-gpu", "report 2005 (cpu/1p/2p/fur-cpu/fur-gpu)");
   }
   for (const ReportRow& row : kRows) {
-    const SurfaceMesh surface = readObj(a.data / row.surface);
+    const SurfaceInput input{a.data / row.surface, readObj(a.data / row.surface), std::nullopt};
+    const SurfaceMesh& surface = input.surface;
     o.level = row.level;
     o.texture = row.texture ? a.data / row.texture : std::filesystem::path();
     nlohmann::json entry = {
@@ -79,7 +80,7 @@ void run(const BenchArgs& a) {
     for (RenderPath path : {RenderPath::Cpu, RenderPath::Gpu1Pass, RenderPath::Gpu2Pass,
                             RenderPath::FurCpu, RenderPath::FurGpu}) {
       o.path = path;
-      AnimatedScene scene(dataset, surface, o);
+      AnimatedScene scene(dataset, input, o);
       const FrameStats s = scene.run(a.frames);
       fps[static_cast<int>(path)] = s.framesPerSecond();
       entry[toString(path)] = {{"fps", s.framesPerSecond()},

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
-#include <utility>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -83,14 +82,13 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
-  SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
+  const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
   const int level = commandLevel(input, dataset.mesh, a.level, cmd.count("--level") > 0);
   o.level = level;
-  o.binding = std::move(input.binding);
   const SurfaceMesh& surface = input.surface;
   o.scenario.parameters = scenarioParameters(
       cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
-  AnimatedScene scene(dataset, surface, o);
+  AnimatedScene scene(dataset, input, o);
   const FrameStats s = scene.run(a.frames);
   scene.view().writePng(a.output);
   if (a.frames > 0) {
