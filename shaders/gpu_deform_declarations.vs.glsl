@@ -4,5 +4,5 @@ uniform samplerBuffer tetskinControlPositions;  // xyz_ per dataset node
 uniform samplerBuffer tetskinControlNormals;    // xyz_ per dataset node
 in vec3 tetskinControlIds;  // exact as floats up to 2^24
 in vec3 tetskinWeights;
-in float tetskinDistance;
+in vec4 tetskinShift;  // x y z: the displacement offset's constant part; w: the normal offset d
 //VTK::CustomUniforms::Dec

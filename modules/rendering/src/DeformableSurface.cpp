@@ -3,6 +3,7 @@
 
 #include <vtkActor.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -41,6 +42,25 @@ void applyMaterial(vtkActor* actor, const Material& m) {
   p->SetAmbient(0.1);
 }
 
+// Per surface vertex the GPU paths' shift (x, y, z, d): the vertex is sum
+// w_i X_i + (x, y, z) + d n, n the deformed control triangle's unit normal.
+// (x, y, z) is the Displacement offset's constant part, d the Normal one's.
+std::vector<float> gpuShifts(const SurfaceBinding& binding, const Points3& restSurface,
+                             const Points3& controlRest) {
+  const Index n = binding.vertexCount();
+  const Points3 shifted = binding.offset == OffsetMode::Displacement
+                              ? displacementShifts(binding, restSurface, controlRest)
+                              : Points3::Zero(n, 3);
+  std::vector<float> shifts(static_cast<std::size_t>(4 * n), 0.0f);
+  for (Index v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k)
+      shifts[static_cast<std::size_t>(4 * v + k)] = static_cast<float>(shifted(v, k));
+    if (binding.offset == OffsetMode::Normal)
+      shifts[static_cast<std::size_t>(4 * v + 3)] = static_cast<float>(binding.distance[v]);
+  }
+  return shifts;
+}
+
 }  // namespace
 
 struct DeformableSurface::Impl {
@@ -69,15 +89,11 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
   Impl& s = *impl_;
   s.path = path;
   const RenderPath skin = skinPath(path);
-  // (gpu-1pass interpolates the control triangles' normals, which an
+  // (gpu-1pass interpolates the control triangles' vertex normals, which an
   // embedding tetrahedron has not; gpu-2pass computes the surface's own.)
   if (binding.method == BindingMethod::Embed && skin == RenderPath::Gpu1Pass)
     throw Error(
         "gpu-1pass draws triangle bindings (closest or seed), not embed: draw it with cpu or "
-        "gpu-2pass");
-  if (binding.offset != OffsetMode::Normal && skin == RenderPath::Gpu1Pass)
-    throw Error(
-        "gpu-1pass uses the normal offset: bind with --offset normal, or draw with cpu or "
         "gpu-2pass");
   BoundSurface bound{restSurface, binding, ""};
   bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
@@ -97,7 +113,19 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     s.boundaryAdjacency = vertexTriangleAdjacency(s.boundary, dataset.nodes.rows());
     s.boundaryScratch.resize(s.boundary.rows(), 3);
     s.controlNormals.resize(dataset.nodes.rows(), 3);
+    const std::vector<float> shifts = gpuShifts(binding, restSurface.positions, dataset.nodes);
+    using ShiftRows = Eigen::Matrix<float, Eigen::Dynamic, 4, Eigen::RowMajor>;
+    const Eigen::Map<const ShiftRows> shiftRows(shifts.data(), restSurface.vertexCount(), 4);
+    s.maxDistance = std::max<double>(s.maxDistance,  // (the bounds' margin)
+                                     shiftRows.leftCols<3>().rowwise().norm().maxCoeff());
     if (skin == RenderPath::Gpu1Pass) {
+      // The shifts as a vertex attribute (vtkTetSkinGpuDeformMapper).
+      auto shiftArray = vtkSmartPointer<vtkFloatArray>::New();
+      shiftArray->SetName(vtkTetSkinGpuDeformMapper::kShiftArray);
+      shiftArray->SetNumberOfComponents(4);
+      shiftArray->SetNumberOfTuples(restSurface.vertexCount());
+      std::copy(shifts.begin(), shifts.end(), shiftArray->GetPointer(0));
+      s.polyData->GetPointData()->AddArray(shiftArray);
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
       s.gpuMapper->SetInputData(s.polyData);
       s.gpuMapper->ScalarVisibilityOff();
@@ -107,24 +135,13 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       // The binding as SurfaceDeformer reads it, 4 values per vertex each.
       const Index n = restSurface.vertexCount();
       const int controls = binding.controlsPerVertex();
-      const Points3 shifted =
-          binding.offset == OffsetMode::Displacement
-              ? displacementShifts(binding, restSurface.positions, dataset.nodes)
-              : Points3::Zero(n, 3);
       std::vector<int> ids(static_cast<std::size_t>(4 * n), -1);
       std::vector<float> weights(static_cast<std::size_t>(4 * n), 0.0f);
-      std::vector<float> shifts(static_cast<std::size_t>(4 * n), 0.0f);
-      for (Index v = 0; v < n; ++v) {
-        const auto at = [v](int k) { return static_cast<std::size_t>(4 * v + k); };
+      for (Index v = 0; v < n; ++v)
         for (int k = 0; k < controls; ++k) {
-          ids[at(k)] = binding.controlIds(v, k);
-          weights[at(k)] = static_cast<float>(binding.weights(v, k));
+          ids[static_cast<std::size_t>(4 * v + k)] = binding.controlIds(v, k);
+          weights[static_cast<std::size_t>(4 * v + k)] = static_cast<float>(binding.weights(v, k));
         }
-        for (int k = 0; k < 3; ++k) shifts[at(k)] = static_cast<float>(shifted(v, k));
-        if (binding.offset == OffsetMode::Normal)
-          shifts[at(3)] = static_cast<float>(binding.distance[v]);
-      }
-      s.maxDistance = std::max(s.maxDistance, shifted.rowwise().norm().maxCoeff());
       const std::vector<int> triangles(restSurface.triangles.data(),
                                        restSurface.triangles.data() + restSurface.triangles.size());
       const VertexTriangleAdjacency ring =

@@ -16,7 +16,7 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   this->MapDataArrayToVertexAttribute("tetskinWeights", "Weights",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinDistance", "Distance",
+  this->MapDataArrayToVertexAttribute("tetskinShift", kShiftArray,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 

@@ -2,14 +2,16 @@
 #pragma once
 // A vtkOpenGLPolyDataMapper that deforms a bound surface on the GPU (the
 // report's "GPU 1-pass", section 4.3): rest positions, control ids, weights
-// and distances are vertex attributes uploaded once; per frame only the
+// and offsets are vertex attributes uploaded once; per frame only the
 // control mesh's positions and vertex normals go to the GPU, as texture
 // buffers; the vertex shader computes position and normal. It behaves like an
 // ordinary mapper: bounds are the deformed surface's (camera reset, culling),
 // and hardware picking sees the deformed surface.
 //
 // The input polydata must carry point arrays ControlIds (3), Weights (3),
-// Distance (1) and Normals (any: the shader replaces them).
+// kShiftArray (4: x, y, z, d; the vertex is sum w_i X_i + (x, y, z) + d n, n
+// the deformed control triangle's unit normal) and Normals (any: the shader
+// replaces them).
 
 #include <vector>
 
@@ -19,6 +21,8 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
  public:
   static vtkTetSkinGpuDeformMapper* New();
   vtkTypeMacro(vtkTetSkinGpuDeformMapper, vtkTetSkinBufferMapper)
+
+  static constexpr const char* kShiftArray = "TetSkinShift";
 
   // Control node positions and normals, xyz per node in the dataset's
   // numbering; uploaded at the next render.
