@@ -12,6 +12,7 @@
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
@@ -19,13 +20,19 @@ namespace tetskin::cli {
 SurfaceInput readSurfaceInput(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
   SurfaceInput input;
   input.path = path;
-  if (lowerExtension(path) == ".vtp" && isBinding(readVtp(path))) {
-    BoundSurface bound = readBinding(path, dataset);
-    input.surface = std::move(bound.surface);
-    input.binding = std::move(bound.binding);
-  } else {
+  if (lowerExtension(path) != ".vtp") {
     input.surface = readSurface(path);
+    return input;
   }
+  // (Read once: a plain .vtp is what readSurface makes of it.)
+  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+  if (!isBinding(data)) {
+    input.surface = fromVtkPolyData(data, path.string());
+    return input;
+  }
+  BoundSurface bound = bindingFromPolyData(data, path.string(), dataset);
+  input.surface = std::move(bound.surface);
+  input.binding = std::move(bound.binding);
   return input;
 }
 

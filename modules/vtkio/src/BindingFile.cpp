@@ -127,8 +127,12 @@ BoundSurface readBinding(const std::filesystem::path& path) {
 }
 
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
-  BoundSurface bound = readBinding(path);
-  const std::string name = path.string();
+  return bindingFromPolyData(readVtp(path), path.string(), dataset);
+}
+
+BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
+                                 const MultiLevelTetMesh& dataset) {
+  BoundSurface bound = bindingFromPolyData(data, name);
   const SurfaceBinding& b = bound.binding;
   validateBinding(b, bound.surface.vertexCount(), dataset.nodes.rows(), name);
   if (b.level < 0 || b.level >= dataset.levelCount())

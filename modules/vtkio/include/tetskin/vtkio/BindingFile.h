@@ -27,6 +27,9 @@ struct BoundSurface {
 // The surface (with `surface.normals` if present) plus the binding arrays.
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
+// The same, checked against `dataset` as readBinding(path, dataset) checks.
+BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName,
+                                 const MultiLevelTetMesh& dataset);
 // Whether `data` carries a binding's field data (a .vtp from `tetskin bind`
 // rather than a plain surface); bindingFromPolyData still checks the rest.
 bool isBinding(vtkPolyData* data);
