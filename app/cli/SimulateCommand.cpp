@@ -38,6 +38,11 @@ struct SimulateArgs {
   bool quiet = false;
 };
 
+// "x,y,z", as --gravity takes a vector.
+std::string commaSeparated(const Eigen::Vector3d& v) {
+  return formatNumber(v.x()) + "," + formatNumber(v.y()) + "," + formatNumber(v.z());
+}
+
 // The config's material with the options given on the command line over it.
 ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
   ElasticMaterial m = dataset.config.elasticity;
@@ -129,13 +134,11 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
                                   ? " for " + formatNumber(parameters.loadSeconds) + " s"
                                   : "";
     std::printf(
-        "%lld loaded (total force %s,%s,%s N%s), ",
+        "%lld loaded (total force %s N%s), ",
         static_cast<long long>((parameters.loads.rowwise().squaredNorm().array() > 0).count()),
-        formatNumber(total.x()).c_str(), formatNumber(total.y()).c_str(),
-        formatNumber(total.z()).c_str(), until.c_str());
+        commaSeparated(total.transpose()).c_str(), until.c_str());
   }
-  std::printf("gravity %s,%s,%s m/s^2", formatNumber(options.gravity.x()).c_str(),
-              formatNumber(options.gravity.y()).c_str(), formatNumber(options.gravity.z()).c_str());
+  std::printf("gravity %s m/s^2", commaSeparated(options.gravity).c_str());
   if (options.floorHeight)
     std::printf(", floor at y = %s", formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
