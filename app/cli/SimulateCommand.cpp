@@ -31,7 +31,7 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface;
   int steps = 120, level = -1, every = 1;
-  std::string solver = "auto", coarseOperators = "galerkin";
+  std::string solver = "auto", coarseOperators = "galerkin", tangent = "full";
   ScenarioArgs scenario;
   SimulationOptions options;
   std::optional<double> young, poisson, density, alpha, beta;  // over the config's elasticity
@@ -62,6 +62,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
                           : resolveLevel(dataset.mesh, a.level);
   a.options.solver = solverKindFromString(a.solver);
+  a.options.tangent = tangentFromString(a.tangent);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
   a.options.material = materialOf(a, dataset);
@@ -120,11 +121,13 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   }
   const Energies e = sim.energies();
   std::printf(
-      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s\n",
+      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s, "
+      "%s tangent\n",
       a.steps, options.timeStep, level, static_cast<long long>(sim.restMesh().elementCount()),
       scenario->name(), toString(options.solver),
       options.solver != SolverKind::ConjugateGradient ? ", " : "",
-      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "");
+      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "",
+      toString(options.tangent));
   std::printf("  material: %s\n", describe(options.material).c_str());
   std::printf("  %zu of %lld nodes fixed, ", sim.fixedNodes().size(),
               static_cast<long long>(sim.restMesh().nodeCount()));
@@ -177,6 +180,12 @@ void addSimulateCommand(CLI::App& app) {
                   "the two is faster here, timed every 120 steps)")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "cg", "multigrid"}));
+  cmd->add_option("--tangent", a->tangent,
+                  "the implicit step's stiffness: full (R K R^T and the rotation term: steady "
+                  "under large steps on stretched bodies) or warped (R K R^T alone, stiffness "
+                  "warping: a cheaper element pass)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"full", "warped"}));
   cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
       ->capture_default_str()
       ->check(positiveNumber());

@@ -298,6 +298,10 @@ QWidget* MainWindow::buildSimulationDock() {
   layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
   scenarioRows_ = new ScenarioRows(form, interactive_);
   solver_ = combo("solver", {"auto", "cg", "multigrid"});
+  tangent_ = combo("tangent", {"full", "warped"});
+  tangent_->setToolTip(
+      "full: R K R^T and the rotation term (steady under large steps on stretched bodies); "
+      "warped: R K R^T alone (stiffness warping, a cheaper element pass)");
   timeStep_ = new QDoubleSpinBox;
   timeStep_->setObjectName("timeStep");
   timeStep_->setDecimals(4);
@@ -315,6 +319,7 @@ QWidget* MainWindow::buildSimulationDock() {
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
   form->addRow("Solver", solver_);
+  form->addRow("Tangent", tangent_);
   form->addRow("Time step (s)", timeStep_);
   form->addRow("Young's modulus (Pa)", young_);
   form->addRow("Poisson's ratio", poisson_);
@@ -503,6 +508,7 @@ void MainWindow::resetSimulation() {
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());
+  options.tangent = tangentFromString(tangent_->currentText().toStdString());
   try {
     const ScenarioParameters parameters = scenarioRows_->parameters(level.nodeCount);
     runner_ = std::make_unique<SimulationRunner>(mesh, scene_->level(), options,

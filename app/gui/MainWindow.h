@@ -133,6 +133,7 @@ class MainWindow : public QMainWindow {
   ScenarioRows* scenarioRows_;
   QDoubleSpinBox *timeStep_, *young_, *poisson_;
   QComboBox* solver_;
+  QComboBox* tangent_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
   int framesSinceOverlay_ = 0;

@@ -39,6 +39,7 @@ struct Solver {
   int coarseReuse = 1;
   bool singlePrecisionCycle = true;
   int guessSolutions = SimulationOptions{}.guessSolutions;
+  Tangent tangent = Tangent::Full;
   std::string name() const {
     const char* base = kind == SolverKind::ConjugateGradient ? "cg"
                        : coarse == CoarseOperators::Galerkin ? "mg-galerkin"
@@ -46,8 +47,9 @@ struct Solver {
     char text[48];  // (snprintf: GCC's -Wrestrict misfires on string concatenation)
     char reuse[16] = "";
     if (coarseReuse > 1) std::snprintf(reuse, sizeof reuse, "/%d", coarseReuse);
-    std::snprintf(text, sizeof text, "%s%s%s%s", base, reuse, singlePrecisionCycle ? "" : " double",
-                  guessSolutions == 0 ? " plain" : "");
+    std::snprintf(text, sizeof text, "%s%s%s%s%s", base, reuse,
+                  singlePrecisionCycle ? "" : " double", guessSolutions == 0 ? " plain" : "",
+                  tangent == Tangent::Warped ? " warped" : "");
     return text;
   }
 };
@@ -61,6 +63,7 @@ Wobble wobble(const MultiLevelTetMesh& mesh, int level, const Solver& solver, do
   options.coarseReuse = solver.coarseReuse;
   options.singlePrecisionCycle = solver.singlePrecisionCycle;
   options.guessSolutions = solver.guessSolutions;
+  options.tangent = solver.tangent;
   options.tolerance = tolerance;
   Wobble run{std::make_unique<Simulation>(mesh, level, options), makeScenario("wobble")};
   run.scenario->setUp(*run.sim);
@@ -154,8 +157,9 @@ void rotations() {
 
 // The element pass (rotations, forces and the implicit step's matrix) on
 // `level`, with the vector kernel this CPU runs fastest against the baseline
-// kernel, alternating; the state drifts a little from call to call, as
-// between time steps, so the rotations take their usual Newton steps.
+// kernel, and with the full tangent (the default) against R K R^T alone,
+// alternating; the state drifts a little from call to call, as between time
+// steps, so the rotations take their usual Newton steps.
 void elementPasses(const MultiLevelTetMesh& mesh, int level) {
   const TetMesh rest = extractLevel(mesh, level);
   CorotatedFem fastest(rest, ElasticMaterial{}), baseline(rest, ElasticMaterial{});
@@ -165,13 +169,17 @@ void elementPasses(const MultiLevelTetMesh& mesh, int level) {
   Eigen::VectorXd force, diagonal = fastest.lumpedMass(),
                          velocity = Eigen::VectorXd::Random(fastest.dofCount());
   SparseMatrix A = fastest.pattern();
-  CorotatedFem::SystemTerms terms;
-  terms.stiffnessScale = 1.0 / 3600;
-  terms.diagonal = &diagonal;
-  terms.velocity = &velocity;
-  terms.velocityWeight = 1.0 / 60;
+  CorotatedFem::SystemTerms full;  // the step's terms at h = 1/60 s, beta = 0
+  full.stiffnessScale = 1.0 / 3600;
+  full.diagonal = &diagonal;
+  full.velocity = &velocity;
+  full.velocityWeight = 1.0 / 60;
+  full.rotationScale = 1.0 / 3600;
+  full.rotationVelocityWeight = 1.0 / 60;
+  CorotatedFem::SystemTerms warped = full;
+  warped.rotationScale = warped.rotationVelocityWeight = 0;
   constexpr int kRepeats = 50;
-  auto time = [&](CorotatedFem& fem) {
+  auto time = [&](CorotatedFem& fem, const CorotatedFem::SystemTerms& terms) {
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < kRepeats; ++i) {
       x += (i % 2 ? -1.0 : 1.0) * drift;
@@ -180,18 +188,23 @@ void elementPasses(const MultiLevelTetMesh& mesh, int level) {
     return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
            kRepeats;
   };
-  std::vector<double> vector, scalar;
+  std::vector<double> vector, scalar, vectorWarped;
   for (int round = 0; round < 5; ++round) {
-    vector.push_back(time(fastest));
-    scalar.push_back(time(baseline));
+    vector.push_back(time(fastest, full));
+    scalar.push_back(time(baseline, full));
+    vectorWarped.push_back(time(fastest, warped));
   }
-  std::nth_element(vector.begin(), vector.begin() + 2, vector.end());
-  std::nth_element(scalar.begin(), scalar.begin() + 2, scalar.end());
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + 2, v.end());
+    return v[2];
+  };
+  const double fast = median(vector), slow = median(scalar), warp = median(vectorWarped);
   std::printf(
       "element pass, bunny level %d (%lld elements), median of 5 x %d: %s kernel %.2f ms, "
-      "baseline kernel %.2f ms (%.2fx)\n",
+      "baseline kernel %.2f ms (%.2fx); warped tangent (no rotation term) %.2f ms (full costs "
+      "%.2fx)\n",
       level, static_cast<long long>(fastest.elementCount()), kRepeats,
-      usesAvx2Kernels() ? "AVX2" : "baseline", vector[2], scalar[2], scalar[2] / vector[2]);
+      usesAvx2Kernels() ? "AVX2" : "baseline", fast, slow, slow / fast, warp, fast / warp);
 }
 
 // CG's product on one system of `level` (rest shape perturbed, the implicit
@@ -256,7 +269,7 @@ int main(int argc, char** argv) {
       "(mg: rediscretized coarse operators, mg-galerkin: Galerkin products; /N: coarse "
       "operators rebuilt every N steps; V-cycles in single precision unless 'double'; each "
       "solve starts from the projection onto the last %d solutions, 'plain': from the last "
-      "solution as it is)\n",
+      "solution as it is; the full tangent unless 'warped': R K R^T alone)\n",
       SimulationOptions{}.guessSolutions);
   const Solver cg;
   const Solver mg{SolverKind::Multigrid, CoarseOperators::Rediscretized, 1};
@@ -266,6 +279,15 @@ int main(int argc, char** argv) {
   const Solver galerkin4double{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, false};
   const Solver cgPlain{SolverKind::ConjugateGradient, CoarseOperators::Rediscretized, 1, true, 0};
   const Solver galerkin4Plain{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, true, 0};
+  const int guess = SimulationOptions{}.guessSolutions;
+  const Solver cgWarped{SolverKind::ConjugateGradient,
+                        CoarseOperators::Rediscretized,
+                        1,
+                        true,
+                        guess,
+                        Tangent::Warped};
+  const Solver galerkin4Warped{SolverKind::Multigrid, CoarseOperators::Galerkin, 4, true, guess,
+                               Tangent::Warped};
   std::printf("wobble, bunny level 2, %d steps: trajectory against a 1e-8 solve\n", 4 * steps);
   for (const Solver& solver : {cg, cgPlain, mg, mg4, galerkin4})
     toleranceAccuracy(sample.mesh, 2, solver, 4 * steps);
@@ -273,8 +295,8 @@ int main(int argc, char** argv) {
               "steps/s", "(median)", "iter", "ms/step", "assembly", "setup", "solve");
   for (int level : {0, 2}) {
     const std::string name = "bunny level " + std::to_string(level);
-    for (const Solver& solver :
-         {cg, cgPlain, mg, mg4, galerkin, galerkin4, galerkin4Plain, galerkin4double})
+    for (const Solver& solver : {cg, cgPlain, cgWarped, mg, mg4, galerkin, galerkin4,
+                                 galerkin4Plain, galerkin4double, galerkin4Warped})
       if (level > 0 || solver.coarseReuse == 1)
         row(name.c_str(), sample.mesh, level, solver, steps);
   }
@@ -287,8 +309,8 @@ int main(int argc, char** argv) {
   options.maxElements = 100000;
   options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const BuildResult big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
-  for (const Solver& solver :
-       {cg, cgPlain, mg, mg4, galerkin, galerkin4, galerkin4Plain, galerkin4double})
+  for (const Solver& solver : {cg, cgPlain, cgWarped, mg, mg4, galerkin, galerkin4, galerkin4Plain,
+                               galerkin4double, galerkin4Warped})
     row("bunny 4 levels, finest", big.dataset.mesh, 3, solver, std::max(3, steps / 5));
   // Stiffer bodies: CG's iterations grow with the square root of the
   // condition number, the multigrid's hardly.

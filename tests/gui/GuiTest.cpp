@@ -247,6 +247,20 @@ TEST_F(Gui, SimulationTakesTheDatasetsMaterial) {
   EXPECT_EQ(window_->runner()->simulation().options().material.density, 100.0);
 }
 
+// The dock's solver and tangent reach the simulation on Reset.
+TEST_F(Gui, SimulationTakesTheDocksSolverAndTangent) {
+  openSample();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().options().solver, SolverKind::Automatic);
+  EXPECT_EQ(window_->runner()->simulation().options().tangent, Tangent::Full);
+  child<QComboBox>("solver")->setCurrentText("multigrid");
+  child<QComboBox>("tangent")->setCurrentText("warped");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().options().solver, SolverKind::Multigrid);
+  EXPECT_EQ(window_->runner()->simulation().options().tangent, Tangent::Warped);
+}
+
 // The dock's fixed base and node list reach the simulation on Reset; a bad
 // list is reported with its file and line.
 TEST_F(Gui, SimulationHoldsTheBaseShareAndTheListedNodes) {

@@ -19,6 +19,14 @@ ElasticMaterial material() {
   return m;
 }
 
+// The rest positions mapped by A, node by node.
+Eigen::VectorXd linearlyMapped(const CorotatedFem& fem, const Eigen::Matrix3d& A) {
+  Eigen::VectorXd x(fem.dofCount());
+  for (Index v = 0; v < fem.nodeCount(); ++v)
+    x.segment<3>(3 * v) = A * fem.restPositions().segment<3>(3 * v);
+  return x;
+}
+
 TEST(CorotatedFem, ElementStiffnessIsSymmetricPsdWithSixRigidModes) {
   TetMesh t = test::unitTetrahedron();
   t.nodes.row(3) << 0.2, 0.3, 1.1;
@@ -143,9 +151,7 @@ TEST(CorotatedFem, AssemblyEqualsTheSumOfRotatedElementMatrices) {
   std::normal_distribution<double> noise(0, 0.1);
   const Eigen::Matrix3d Q =
       Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
-  Eigen::VectorXd x(fem.dofCount());
-  for (Index v = 0; v < fem.nodeCount(); ++v)
-    x.segment<3>(3 * v) = Q * fem.restPositions().segment<3>(3 * v);
+  Eigen::VectorXd x = linearlyMapped(fem, Q);
   for (Index i = 0; i < x.size(); ++i) x[i] += noise(rng);
   Eigen::VectorXd f;
   SparseMatrix K = fem.pattern();
@@ -192,9 +198,7 @@ TEST(CorotatedFem, VectorAndBaselineKernelsAgreeWithTheSvdRotations) {
   std::normal_distribution<double> noise(0, 1);
   const Eigen::Matrix3d Q =
       Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.2, 1, 0.4).normalized()).toRotationMatrix();
-  Eigen::VectorXd x(fastest.dofCount()), v(fastest.dofCount()), D(fastest.dofCount());
-  for (Index n = 0; n < fastest.nodeCount(); ++n)
-    x.segment<3>(3 * n) = Q * fastest.restPositions().segment<3>(3 * n);
+  Eigen::VectorXd x = linearlyMapped(fastest, Q), v(fastest.dofCount()), D(fastest.dofCount());
   for (Index i = 0; i < x.size(); ++i) {
     x[i] += 0.1 * noise(rng);
     v[i] = noise(rng);
@@ -205,6 +209,8 @@ TEST(CorotatedFem, VectorAndBaselineKernelsAgreeWithTheSvdRotations) {
   terms.diagonal = &D;
   terms.velocity = &v;
   terms.velocityWeight = 0.2;
+  terms.rotationScale = 0.005;
+  terms.rotationVelocityWeight = 0.1;
   for (const double change : {0.0, 1e-3, 1e-5, 1e-8}) {  // cold, then warm steps
     for (Index i = 0; i < x.size(); ++i) x[i] += change * noise(rng);
     Eigen::VectorXd f, fBaseline;
@@ -231,8 +237,20 @@ TEST(CorotatedFem, VectorAndBaselineKernelsAgreeWithTheSvdRotations) {
   }
 }
 
-// The implicit step's terms assembled in the element pass: s K + D and
-// f_el - w K v equal the same built from the plain stiffness and force.
+// The element pass's matrix alone: s K + q K_rot (no diagonal, no velocity).
+Eigen::MatrixXd tangent(CorotatedFem& fem, const Eigen::VectorXd& x, double s, double q) {
+  Eigen::VectorXd f;
+  SparseMatrix A = fem.pattern();
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = s;
+  terms.rotationScale = q;
+  fem.update(x, f, A, terms);
+  return Eigen::MatrixXd(A);
+}
+
+// The implicit step's terms assembled in the element pass: s K + q K_rot + D
+// and f_el - w K v - u K_rot v equal the same built from the plain
+// stiffness, the rotation term alone and the force.
 TEST(CorotatedFem, SystemTermsEqualScaledStiffnessPlusDiagonalAndDampedForce) {
   const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
   CorotatedFem fem(mesh, material());
@@ -247,20 +265,83 @@ TEST(CorotatedFem, SystemTermsEqualScaledStiffnessPlusDiagonalAndDampedForce) {
   Eigen::VectorXd f, fTerms;
   SparseMatrix K = fem.pattern(), A = fem.pattern();
   fem.update(x, f, K);
+  const Eigen::MatrixXd rotationTerm = tangent(fem, x, 0, 1);
   CorotatedFem::SystemTerms terms;
   terms.stiffnessScale = 0.3;
   terms.diagonal = &D;
   terms.velocity = &v;
   terms.velocityWeight = 0.7;
+  terms.rotationScale = 0.2;
+  terms.rotationVelocityWeight = 0.4;
   fem.update(x, fTerms, A, terms);
-  const Eigen::MatrixXd expected = 0.3 * Eigen::MatrixXd(K) + Eigen::MatrixXd(D.asDiagonal());
+  const Eigen::MatrixXd expected =
+      0.3 * Eigen::MatrixXd(K) + 0.2 * rotationTerm + Eigen::MatrixXd(D.asDiagonal());
   EXPECT_LT((Eigen::MatrixXd(A) - expected).norm(), 1e-12 * expected.norm());
-  const Eigen::VectorXd expectedForce = f - 0.7 * (K * v);
+  const Eigen::VectorXd expectedForce = f - 0.7 * (K * v) - 0.4 * (rotationTerm * v);
   EXPECT_LT((fTerms - expectedForce).norm(), 1e-12 * expectedForce.norm());
-  EXPECT_GT((expectedForce - f).norm(), 0.1 * f.norm());  // the velocity term counts
+  EXPECT_GT((expectedForce - f).norm(), 0.1 * f.norm());             // the velocity terms count
+  EXPECT_GT(rotationTerm.norm(), 1e-3 * Eigen::MatrixXd(K).norm());  // and so does K_rot
   Eigen::VectorXd wrong(3);
   terms.velocity = &wrong;
   EXPECT_THROW(fem.update(x, fTerms, A, terms), Error);
+}
+
+// Rotated and stretched by 5% in every direction (plus a little noise), every
+// element is under tension, where no mode of the rotation term is dropped:
+// K + K_rot is then the exact derivative of the force, -df/dx, as central
+// differences of the force show, and K alone is off by K_rot.
+TEST(CorotatedFem, RotationTermCompletesTheTangentUnderTension) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0, 1);
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(0.8, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
+  Eigen::VectorXd x = linearlyMapped(fem, 1.05 * Q);
+  for (Index i = 0; i < x.size(); ++i) x[i] += 1e-3 * noise(rng);
+  const Eigen::MatrixXd full = tangent(fem, x, 1, 1), warped = tangent(fem, x, 1, 0);
+  for (int direction = 0; direction < 4; ++direction) {
+    Eigen::VectorXd d(fem.dofCount());
+    for (Index i = 0; i < d.size(); ++i) d[i] = noise(rng);
+    constexpr double h = 1e-6;
+    Eigen::VectorXd fPlus, fMinus;
+    SparseMatrix unused = fem.pattern();
+    fem.update(x + h * d, fPlus, unused);
+    fem.update(x - h * d, fMinus, unused);
+    const Eigen::VectorXd derivative = -(fPlus - fMinus) / (2 * h);
+    const double fullError = (full * d - derivative).norm() / derivative.norm();
+    const double warpedError = (warped * d - derivative).norm() / derivative.norm();
+    EXPECT_LT(fullError, 1e-6) << "direction " << direction;
+    EXPECT_GT(warpedError, 1e-3) << "direction " << direction;
+  }
+}
+
+// The rotation term is positive semidefinite however the elements are
+// deformed (its negative modes, under compression, are dropped), and so is
+// the whole tangent: zero at the rest shape and under uniform compression
+// (every mode negative), nonzero under uniform stretch and under large
+// random deformations that invert some elements.
+TEST(CorotatedFem, RotationTermIsPositiveSemidefinite) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  const Eigen::VectorXd X = fem.restPositions();
+  const double scale = tangent(fem, X, 1, 0).norm();
+  EXPECT_LT(tangent(fem, X, 0, 1).norm(), 1e-12 * scale);
+  EXPECT_LT(tangent(fem, 0.9 * X, 0, 1).norm(), 1e-12 * scale);
+  EXPECT_GT(tangent(fem, 1.1 * X, 0, 1).norm(), 1e-2 * scale);
+  std::mt19937 rng(9);
+  std::normal_distribution<double> noise(0, 0.4);
+  for (int trial = 0; trial < 4; ++trial) {
+    Eigen::VectorXd x = X;
+    for (Index i = 0; i < x.size(); ++i) x[i] += noise(rng);
+    for (const double s : {0.0, 1.0}) {
+      const Eigen::MatrixXd A = tangent(fem, x, s, 1);
+      const Eigen::VectorXd values =
+          Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+      EXPECT_GT(values.minCoeff(), -1e-12 * values.maxCoeff()) << "trial " << trial << " s " << s;
+      EXPECT_GT(values.maxCoeff(), 1e-2 * scale) << "trial " << trial << " s " << s;
+    }
+  }
 }
 
 TEST(CorotatedFem, LumpedMassSumsToTotalMass) {

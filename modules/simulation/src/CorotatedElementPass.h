@@ -22,8 +22,10 @@ struct PassArgs {
   const double* x;
   const double* velocity;  // null: no velocity term
   double velocityWeight;
-  double lambda, mu;      // the material's Lamé parameters
-  double stiffnessScale;  // s: the matrix is s K + D
+  double lambda, mu;              // the material's Lamé parameters
+  double stiffnessScale;          // s: the matrix is s K + D
+  double rotationScale;           // q: the matrix gains q K_rot
+  double rotationVelocityWeight;  // u: the force gains -u K_rot v
   double* force;
   double* values;     // the matrix's
   double* rotations;  // 9 per stored element, column-major (Eigen::Matrix3d)

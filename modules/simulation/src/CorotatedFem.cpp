@@ -298,6 +298,8 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, Spar
   args.lambda = material_.lameLambda();
   args.mu = material_.lameMu();
   args.stiffnessScale = terms.stiffnessScale;
+  args.rotationScale = terms.rotationScale;
+  args.rotationVelocityWeight = terms.rotationVelocityWeight;
   args.force = force.data();
   args.values = values;
   args.rotations = rotations_.data()->data();

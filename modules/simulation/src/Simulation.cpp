@@ -18,6 +18,16 @@ const char* toString(CoarseOperators kind) {
   return kind == CoarseOperators::Galerkin ? "galerkin" : "rediscretized";
 }
 
+const char* toString(Tangent tangent) {
+  return tangent == Tangent::Full ? "full" : "warped";
+}
+
+Tangent tangentFromString(const std::string& name) {
+  for (Tangent tangent : {Tangent::Full, Tangent::Warped})
+    if (name == toString(tangent)) return tangent;
+  throw Error("unknown tangent '" + name + "' (full or warped)");
+}
+
 // A coarser level of the rediscretized multigrid: its own corotated FEM at
 // positions interpolated from the next finer level's.
 struct Simulation::CoarseLevel {
@@ -305,15 +315,21 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     systemDiagonal_ = dampedMass_ + contactDiagonal_;
     diagonal = &systemDiagonal_;
   }
-  // A = (1 + h alpha) M + (h beta + h^2) K (+ contact) and f_el - (beta + h)
-  // K v, in one element pass; then b = h (f_el - (beta + h) K v + M g + f_ext
-  // - alpha M v + f_contact).
+  // A = (1 + h alpha) M + (h beta + h^2) K + h^2 K_rot (+ contact) and
+  // f_el - (beta + h) K v - h K_rot v, in one element pass (K_rot only with
+  // the full tangent; damping stays beta K, which leaves a stressed body's
+  // rigid rotation undamped); then b = h (f_el - (beta + h) K v - h K_rot v
+  // + M g + f_ext - alpha M v + f_contact).
   auto start = std::chrono::steady_clock::now();
   CorotatedFem::SystemTerms terms;
   terms.stiffnessScale = h * m.stiffnessDamping + h * h;
   terms.diagonal = diagonal;
   terms.velocity = &v_;
   terms.velocityWeight = m.stiffnessDamping + h;
+  if (options_.tangent == Tangent::Full) {
+    terms.rotationScale = h * h;
+    terms.rotationVelocityWeight = h;
+  }
   fem_.update(x_, force_, system_, terms);
   stats.assemblySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -341,6 +357,7 @@ void Simulation::buildCoarseSystems(double h) {
   const ElasticMaterial& m = options_.material;
   CorotatedFem::SystemTerms terms;
   terms.stiffnessScale = h * m.stiffnessDamping + h * h;
+  if (options_.tangent == Tangent::Full) terms.rotationScale = h * h;
   const Eigen::VectorXd* finer = &x_;
   const Eigen::VectorXd* finerContact = options_.floorHeight ? &contactDiagonal_ : nullptr;
   for (std::size_t l = 0; l < coarse_.size(); ++l) {

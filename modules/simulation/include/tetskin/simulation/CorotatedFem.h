@@ -69,14 +69,27 @@ class CorotatedFem {
   const SparseMatrix& pattern() const { return pattern_; }
 
   // What update() assembles besides the elastic force: an implicit step
-  // needs A = s K + D (D diagonal, e.g. the damped mass) and the force
-  // f_el - w K v, both in the same element pass (no separate K v product,
-  // no second pass over the matrix).
+  // needs A = s K + q K_rot + D (D diagonal, e.g. the damped mass) and the
+  // force f_el - w K v - u K_rot v, all in the same element pass (no
+  // separate products, no second pass over the matrix).
+  //
+  // K = sum_e R K_e R^T is the stiffness warping of Müller et al. (2002):
+  // the tangent of the corotated force with R held fixed. K_rot is the rest
+  // of the tangent, from the rotations' dependence on the positions (the
+  // derivative of the polar decomposition, McAdams et al. 2011). It stiffens
+  // rotations under tension: without it, the implicit step of a stretched
+  // body under large time steps overshoots them and blows up. Under
+  // compression it is negative; those modes are dropped per element (the
+  // projection of Teran et al. 2005), so K_rot is positive semidefinite and
+  // the system positive definite for any step. At the rest shape K_rot is
+  // zero.
   struct SystemTerms {
     double stiffnessScale = 1;                  // s
     const Eigen::VectorXd* diagonal = nullptr;  // D per dof; none = 0
     const Eigen::VectorXd* velocity = nullptr;  // v per dof; none = 0
     double velocityWeight = 0;                  // w
+    double rotationScale = 0;                   // q (0 and u = 0: K_rot is not computed)
+    double rotationVelocityWeight = 0;          // u
   };
 
   // For positions x (3n): rotations, elastic forces (3n) and the stiffness
@@ -85,8 +98,8 @@ class CorotatedFem {
   void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& stiffness) {
     update(x, force, stiffness, SystemTerms{});
   }
-  // The same with the terms above: `force` = f_el(x) - w K v and `matrix` =
-  // s K + D, K the corotated stiffness at x.
+  // The same with the terms above: `force` = f_el(x) - w K v - u K_rot v
+  // and `matrix` = s K + q K_rot + D at x.
   void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& matrix,
               const SystemTerms& terms);
   // Which version of the element pass's kernel update() runs (the same

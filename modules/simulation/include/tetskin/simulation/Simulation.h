@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The control mesh as an elastic body: corotated FEM, implicit (backward)
-// Euler steps (M + h C + h^2 K) dv = h (f - C v - h K v) with Rayleigh damping
-// C = alpha M + beta K, Dirichlet and kinematic nodes, gravity, external point
-// forces and a floor with penalty contact. Solved by block-Jacobi CG, by CG
+// Euler steps (M + h C + h^2 K_T) dv = h (f - C v - h K_T v) with Rayleigh
+// damping C = alpha M + beta K and the tangent K_T = K + K_rot (K = sum
+// R K_e R^T, K_rot the rotation term: CorotatedFem::SystemTerms), Dirichlet
+// and kinematic nodes, gravity, external point forces and a floor with
+// penalty contact. Solved by block-Jacobi CG, by CG
 // with a multigrid V-cycle over the dataset's coarser levels, or by whichever
 // of the two is faster on the running simulation (SolverChoice.h).
 //
@@ -33,6 +35,14 @@ class DirichletRows;
 enum class CoarseOperators { Galerkin, Rediscretized };
 const char* toString(CoarseOperators kind);
 
+// The implicit step's tangent stiffness: full (R K R^T and the rotation term
+// K_rot, CorotatedFem.h: steady under large steps on stretched bodies) or
+// warped (R K R^T alone, the stiffness warping of Müller et al. 2002: an
+// element pass about a quarter cheaper).
+enum class Tangent { Full, Warped };
+const char* toString(Tangent tangent);
+Tangent tangentFromString(const std::string& name);  // "full" or "warped"
+
 struct SimulationOptions {
   ElasticMaterial material;
   double timeStep = 1.0 / 60.0;
@@ -40,6 +50,7 @@ struct SimulationOptions {
   std::optional<double> floorHeight;  // floor plane y = height, normal +y
   double floorStiffness = 0;          // penalty; 0 = automatic (stiff enough for this mesh)
   double friction = 0.3;              // share of tangential velocity lost in contact
+  Tangent tangent = Tangent::Full;
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance = 1e-6;  // relative residual of the linear solve
   // The solve starts from the combination of the last this many solutions
