@@ -68,6 +68,12 @@ TETSKIN_LANES_INLINE void symmetricRotatedFrame(const Double4 R[9], const Double
     for (int j = 0; j < 3; ++j) R[3 * i + j] = rotation(i, j);
 }
 
+// (L R^T)_ab for row-major L and R.
+TETSKIN_LANES_INLINE Double4 timesTransposeEntry(const Double4 L[9], const Double4 R[9], int a,
+                                                 int b) {
+  return L[3 * a] * R[3 * b] + L[3 * a + 1] * R[3 * b + 1] + L[3 * a + 2] * R[3 * b + 2];
+}
+
 // The rotation term of the tangent (CorotatedLanes.h, rotationTermModes):
 // K_rot = (V / 2) sum_m h_m z_m z_m^T over the modes m, with z_m the 12
 // entries z_km = u_m x r_k, added to the blocks with weight q =
@@ -85,8 +91,8 @@ TETSKIN_LANES_INLINE void symmetricRotatedFrame(const Double4 R[9], const Double
 // element by the lumped mass left them at 53.6: at 1/60 s steps the mass is
 // far below h^2 times their size, and only the neighbours' stiffness,
 // which one element cannot see, keeps the system definite.)
-TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const ElementGroup& group,
-                                          const Double4 E[9], const Double4 R[9],
+TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const Double4 E[9],
+                                          const Double4* velocityGradient, const Double4 R[9],
                                           const Double4 r[4][3], Double4 volume, Double4 f[4][3],
                                           Double4 blocks[10][9]) {
   Double4 h[3], U[9];
@@ -112,16 +118,16 @@ TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const ElementGro
         for (int b = 0; b < 3; ++b)
           blocks[pair][3 * a + b] += w0 * z[j][0][b] + w1 * z[j][1][b] + w2 * z[j][2][b];
       }
-  if (!args.velocity || args.rotationVelocityWeight == 0) return;
-  Double4 modeVelocity[3] = {};  // z_m . v, then weighted
-  for (int k = 0; k < 4; ++k) {
-    const int* nodes = group.nodes[k];
-    for (int a = 0; a < 3; ++a) {
-      const Double4 vka{args.velocity[3 * nodes[0] + a], args.velocity[3 * nodes[1] + a],
-                        args.velocity[3 * nodes[2] + a], args.velocity[3 * nodes[3] + a]};
-      for (int m = 0; m < 3; ++m) modeVelocity[m] += z[k][m][a] * vka;
-    }
-  }
+  if (!velocityGradient || args.rotationVelocityWeight == 0) return;
+  // z_m . v = sum_k (u_m x r_k) . v_k = u_m . w with w = sum_k r_k x v_k, the
+  // axial vector of A - A^T for A = sum_k v_k r_k^T = L R^T, L the velocity
+  // gradient the pass already has.
+  const Double4* L = velocityGradient;
+  const Double4 w0 = timesTransposeEntry(L, R, 2, 1) - timesTransposeEntry(L, R, 1, 2),
+                w1 = timesTransposeEntry(L, R, 0, 2) - timesTransposeEntry(L, R, 2, 0),
+                w2 = timesTransposeEntry(L, R, 1, 0) - timesTransposeEntry(L, R, 0, 1);
+  Double4 modeVelocity[3];  // z_m . v, then weighted
+  for (int m = 0; m < 3; ++m) modeVelocity[m] = U[m] * w0 + U[3 + m] * w1 + U[6 + m] * w2;
   for (int m = 0; m < 3; ++m) modeVelocity[m] *= args.rotationVelocityWeight * halfVolume * h[m];
   for (int k = 0; k < 4; ++k)
     for (int a = 0; a < 3; ++a)
@@ -168,10 +174,11 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
   strain[8] -= 1;
   Double4 elasticStrain[9];  // before the velocity's share: the rotation term's E
   for (int k = 0; k < 9; ++k) elasticStrain[k] = strain[k];
+  Double4 velocityGradient[9];
   if (args.velocity) {
-    Double4 V[9], rate[9];
-    deformationGradients(group, args.velocity, V);
-    symmetricRotatedFrame(R, V, rate);
+    Double4 rate[9];
+    deformationGradients(group, args.velocity, velocityGradient);
+    symmetricRotatedFrame(R, velocityGradient, rate);
     for (int k = 0; k < 9; ++k) strain[k] += args.velocityWeight * rate[k];
   }
   const Double4 volume = load(group.volume);
@@ -208,7 +215,8 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
       }
     }
   if (args.rotationScale != 0 || args.rotationVelocityWeight != 0)
-    addRotationTerm(args, group, elasticStrain, R, r, volume, f, blocks);
+    addRotationTerm(args, elasticStrain, args.velocity ? velocityGradient : nullptr, R, r, volume,
+                    f, blocks);
 
   for (int l = 0; l < elements; ++l) {
     const std::size_t e = 4 * g + static_cast<std::size_t>(l);
