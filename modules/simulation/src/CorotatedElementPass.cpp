@@ -80,17 +80,22 @@ TETSKIN_LANES_INLINE Double4 timesTransposeEntry(const Double4 L[9], const Doubl
 // args.rotationScale, and -K_rot v to the forces with weight
 // args.rotationVelocityWeight.
 //
-// Its negative modes (compression) are dropped, as Teran et al. (2005)
-// project the element Hessian: K_rot stays positive semidefinite and the
-// system positive definite however large the step. (Kept as they are, they
-// cost fewer CG iterations in the bunny's 12.7k wobble, 39.6 against 52.6
-// per step, as the warped tangent's 39.5: presumably the clamp, switching
-// stiffness on and off as elements pass between tension and compression,
-// spoils the initial guess from the last solutions; but nothing would
-// keep a large step's system definite then. Bounding them element by
-// element by the lumped mass left them at 53.6: at 1/60 s steps the mass is
-// far below h^2 times their size, and only the neighbours' stiffness,
-// which one element cannot see, keeps the system definite.)
+// In the matrix its negative modes (compression) are dropped, as Teran et
+// al. (2005) project the element Hessian: K_rot stays positive
+// semidefinite and the system positive definite however large the step.
+// (Bounding them element by element by the lumped mass instead does not
+// do: at 1/60 s steps the mass is far below h^2 times their size, and only
+// the neighbours' stiffness, which one element cannot see, keeps the
+// system definite.)
+//
+// The force keeps every mode: -h K_rot v is part of the force's
+// linearization at the predicted positions, f(x + h v) = f(x) - h K_T v,
+// the step's right-hand side, which the matrix, an approximation of the
+// Jacobian that only has to be definite, does not constrain. With the
+// modes dropped there as well the bunny's 12.7k wobble took 52.6 CG
+// iterations per step against 41.9 (39.5 with R K R^T alone): switching
+// the velocity term on and off as elements pass between tension and
+// compression spoils the initial guess from the last solutions.
 TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const Double4 E[9],
                                           const Double4* velocityGradient, const Double4 R[9],
                                           const Double4 r[4][3], Double4 volume, Double4 f[4][3],
@@ -106,10 +111,10 @@ TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const Double4 E[
       z[k][m][2] = u0 * r[k][1] - u1 * r[k][0];
     }
   }
-  for (int m = 0; m < 3; ++m) h[m] = h[m] < 0 ? Double4{} : h[m];
   const Double4 halfVolume = 0.5 * volume;
-  Double4 weight[3];  // of each mode in the matrix
-  for (int m = 0; m < 3; ++m) weight[m] = args.rotationScale * halfVolume * h[m];
+  Double4 weight[3];  // of each mode in the matrix: compressive ones dropped
+  for (int m = 0; m < 3; ++m)
+    weight[m] = args.rotationScale * halfVolume * (h[m] < 0 ? Double4{} : h[m]);
   for (int i = 0, pair = 0; i < 4; ++i)
     for (int j = i; j < 4; ++j, ++pair)
       for (int a = 0; a < 3; ++a) {

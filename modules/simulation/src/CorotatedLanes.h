@@ -244,7 +244,7 @@ inline constexpr double kRotationTermMinimumStretchSum = 0.5;
 // E = S - I. H shares S's eigenvectors; its eigenvalues
 //     h_i = 2 ((lambda + mu) tr(E) - mu e_i) / (tr(S) - s_i)
 // (e_i, s_i = 1 + e_i those of E and S) are positive under tension and
-// negative under compression (the caller drops those, see
+// negative under compression (the caller drops those from the matrix, see
 // CorotatedElementPass.cpp). A denominator, the sum of two principal
 // stretches, below kRotationTermMinimumStretchSum (an element flattened or
 // inverted, where the polar decomposition's derivative grows without bound)

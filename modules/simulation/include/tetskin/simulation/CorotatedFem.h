@@ -79,9 +79,11 @@ class CorotatedFem {
   // derivative of the polar decomposition, McAdams et al. 2011). It stiffens
   // rotations under tension: without it, the implicit step of a stretched
   // body under large time steps overshoots them and blows up. Under
-  // compression it is negative; those modes are dropped per element (the
-  // projection of Teran et al. 2005), so K_rot is positive semidefinite and
-  // the system positive definite for any step. At the rest shape K_rot is
+  // compression it is negative; in the matrix those modes are dropped per
+  // element (the projection of Teran et al. 2005), so q K_rot is positive
+  // semidefinite and the system positive definite for any step. The force's
+  // u K_rot v keeps them: it is the exact linearization of the force along
+  // v, which nothing requires to be definite. At the rest shape K_rot is
   // zero.
   struct SystemTerms {
     double stiffnessScale = 1;                  // s
@@ -99,7 +101,8 @@ class CorotatedFem {
     update(x, force, stiffness, SystemTerms{});
   }
   // The same with the terms above: `force` = f_el(x) - w K v - u K_rot v
-  // and `matrix` = s K + q K_rot + D at x.
+  // (every mode) and `matrix` = s K + q K_rot + D (compressive modes
+  // dropped) at x.
   void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& matrix,
               const SystemTerms& terms);
   // Which version of the element pass's kernel update() runs (the same
