@@ -297,7 +297,7 @@ void Scene::rebind(BindingMethod method, int level) {
   binding_ = std::move(binding);
   level_ = resolved;
   try {
-    rebuildSurface();  // embed on a gpu path throws: keep the old binding
+    rebuildSurface();  // if the new one cannot be drawn, keep the old binding
   } catch (...) {
     binding_ = previous;
     level_ = previousLevel;

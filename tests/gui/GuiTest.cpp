@@ -437,14 +437,13 @@ TEST_F(Gui, BindingDiagnosticsColourHighlightAndRebind) {
   EXPECT_EQ(window_->runner()->simulation().level(), 1);  // the simulation follows
   EXPECT_TRUE(window_->scene().previousSummary().has_value());
   EXPECT_TRUE(child<QLabel>("comparison")->text().contains("before:"));
-  // gpu-1pass cannot draw embed: refused, the old binding stays; gpu-2pass can.
+  // Embed on the GPU paths too.
   window_->setRenderPath("gpu-1pass");
   child<QComboBox>("rebindMethod")->setCurrentText("embed");
   QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
-  EXPECT_TRUE(window_->lastError().contains("embed")) << window_->lastError().toStdString();
-  EXPECT_EQ(window_->scene().binding().method, BindingMethod::Seed);
+  EXPECT_EQ(window_->scene().binding().method, BindingMethod::Embed)
+      << window_->lastError().toStdString();
   window_->setRenderPath("gpu-2pass");
-  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
   EXPECT_EQ(window_->scene().binding().method, BindingMethod::Embed)
       << window_->lastError().toStdString();
 }

@@ -61,6 +61,24 @@ std::vector<float> gpuShifts(const SurfaceBinding& binding, const Points3& restS
   return shifts;
 }
 
+// Per surface vertex of an embed binding, its rest normal in the frame of
+// its tetrahedron: D^T n, D the tetrahedron's rest edges X_i - X_0 as
+// columns (gpu-1pass carries it to the deformed normal F^-T n = d^-T D^T n).
+std::vector<float> restFrameNormals(const SurfaceBinding& binding, const Points3& restNormals,
+                                    const Points3& controlRest) {
+  const Index n = binding.vertexCount();
+  std::vector<float> frameNormals(static_cast<std::size_t>(3 * n));
+  for (Index v = 0; v < n; ++v) {
+    const Eigen::Vector3d x0 = controlRest.row(binding.controlIds(v, 0)).transpose();
+    Eigen::Matrix3d edges;
+    for (int k = 0; k < 3; ++k)
+      edges.col(k) = controlRest.row(binding.controlIds(v, k + 1)).transpose() - x0;
+    const Eigen::Vector3d m = edges.transpose() * restNormals.row(v).transpose();
+    for (int k = 0; k < 3; ++k) frameNormals[static_cast<std::size_t>(3 * v + k)] = float(m[k]);
+  }
+  return frameNormals;
+}
+
 }  // namespace
 
 struct DeformableSurface::Impl {
@@ -70,6 +88,7 @@ struct DeformableSurface::Impl {
   std::unique_ptr<SurfaceDeformer> deformer;
   Points3 positions, normals;  // cpu path output
   vtkSmartPointer<vtkTetSkinGpuDeformMapper> gpuMapper;
+  bool embedded = false;  // gpu-1pass: an embed binding (no control normals needed)
   vtkSmartPointer<vtkTetSkinGpu2PassMapper> gpu2Mapper;
   // gpu path: control vertex normals over the bound level's boundary.
   Triangles boundary;
@@ -89,12 +108,6 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
   Impl& s = *impl_;
   s.path = path;
   const RenderPath skin = skinPath(path);
-  // (gpu-1pass interpolates the control triangles' vertex normals, which an
-  // embedding tetrahedron has not; gpu-2pass computes the surface's own.)
-  if (binding.method == BindingMethod::Embed && skin == RenderPath::Gpu1Pass)
-    throw Error(
-        "gpu-1pass draws triangle bindings (closest or seed), not embed: draw it with cpu or "
-        "gpu-2pass");
   BoundSurface bound{restSurface, binding, ""};
   bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
   s.polyData = bindingToPolyData(bound);
@@ -127,6 +140,20 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       std::copy(shifts.begin(), shifts.end(), shiftArray->GetPointer(0));
       s.polyData->GetPointData()->AddArray(shiftArray);
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
+      if (binding.method == BindingMethod::Embed) {
+        // (An embedding tetrahedron has no control vertex normals to
+        // interpolate: the shader carries the rest normal by its deformation.)
+        auto frameArray = vtkSmartPointer<vtkFloatArray>::New();
+        frameArray->SetName(vtkTetSkinGpuDeformMapper::kRestFrameNormalArray);
+        frameArray->SetNumberOfComponents(3);
+        frameArray->SetNumberOfTuples(restSurface.vertexCount());
+        const std::vector<float> frameNormals =
+            restFrameNormals(binding, bound.surface.normals, dataset.nodes);
+        std::copy(frameNormals.begin(), frameNormals.end(), frameArray->GetPointer(0));
+        s.polyData->GetPointData()->AddArray(frameArray);
+        s.gpuMapper->SetEmbedBinding(true);
+        s.embedded = true;
+      }
       s.gpuMapper->SetInputData(s.polyData);
       s.gpuMapper->ScalarVisibilityOff();
       s.actor->SetMapper(s.gpuMapper);
@@ -226,7 +253,8 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     return times;
   }
   s.controlPositionsF.assign(control.data(), control.data() + control.size());
-  if (s.gpuMapper) {
+  const bool controlNormalsNeeded = s.gpuMapper && !s.embedded;
+  if (controlNormalsNeeded) {
     computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
                          s.controlNormals);
     s.controlNormalsF.assign(s.controlNormals.data(),
@@ -245,7 +273,8 @@ FrameTimes DeformableSurface::update(const Points3& control) {
   times.deformSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
   if (s.gpuMapper) {
-    s.gpuMapper->SetControlState(s.controlPositionsF.data(), s.controlNormalsF.data(),
+    s.gpuMapper->SetControlState(s.controlPositionsF.data(),
+                                 controlNormalsNeeded ? s.controlNormalsF.data() : nullptr,
                                  control.rows());
     s.gpuMapper->SetDeformedBounds(s.bounds);
   } else {

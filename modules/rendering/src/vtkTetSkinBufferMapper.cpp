@@ -42,6 +42,12 @@ void vtkTetSkinBufferMapper::ComputeBounds() {
   this->Superclass::ComputeBounds();
 }
 
+void vtkTetSkinBufferMapper::SetShaderCode(const char* declarations, const char* implementation) {
+  this->Declarations = declarations;
+  this->Implementation = implementation;
+  this->Modified();
+}
+
 vtkOpenGLBufferObject* vtkTetSkinBufferMapper::Buffer(int k) {
   return this->Buffers[k];
 }
@@ -61,11 +67,13 @@ void vtkTetSkinBufferMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
   for (auto& texture : this->Textures) texture->SetContext(window);
   this->PrepareBuffers(window);
   this->Superclass::RenderPieceStart(ren, act);
-  for (auto& texture : this->Textures) texture->Activate();
+  for (auto& texture : this->Textures)
+    if (texture->GetHandle()) texture->Activate();
 }
 
 void vtkTetSkinBufferMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
-  for (auto& texture : this->Textures) texture->Deactivate();
+  for (auto& texture : this->Textures)
+    if (texture->GetHandle()) texture->Deactivate();
   this->Superclass::RenderPieceFinish(ren, act);
 }
 
@@ -88,5 +96,6 @@ void vtkTetSkinBufferMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, 
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   if (cellBO.Program)
     for (int k = 0; k < 2; ++k)
-      cellBO.Program->SetUniformi(this->Samplers[k], this->Textures[k]->GetTextureUnit());
+      if (this->Textures[k]->GetHandle())
+        cellBO.Program->SetUniformi(this->Samplers[k], this->Textures[k]->GetTextureUnit());
 }

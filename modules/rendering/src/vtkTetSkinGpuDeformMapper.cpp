@@ -20,14 +20,27 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
+void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
+  if (embed) {
+    this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
+                        tetskin::shaders::kGpuDeformEmbedImplVs);
+    this->MapDataArrayToVertexAttribute("tetskinRestFrameNormal", kRestFrameNormalArray,
+                                        vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  } else {
+    this->SetShaderCode(tetskin::shaders::kGpuDeformDeclarationsVs,
+                        tetskin::shaders::kGpuDeformImplVs);
+    this->RemoveVertexAttributeMapping("tetskinRestFrameNormal");
+  }
+}
+
 void vtkTetSkinGpuDeformMapper::SetControlState(const float* positions, const float* normals,
                                                 vtkIdType nodes) {
   this->Positions.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
-  this->Normals.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
+  this->Normals.assign(normals ? static_cast<std::size_t>(4 * nodes) : 0, 0.0f);
   for (vtkIdType v = 0; v < nodes; ++v)
     for (int k = 0; k < 3; ++k) {
       this->Positions[static_cast<std::size_t>(4 * v + k)] = positions[3 * v + k];
-      this->Normals[static_cast<std::size_t>(4 * v + k)] = normals[3 * v + k];
+      if (normals) this->Normals[static_cast<std::size_t>(4 * v + k)] = normals[3 * v + k];
     }
   this->StateChanged = true;
   this->Modified();
@@ -36,7 +49,7 @@ void vtkTetSkinGpuDeformMapper::SetControlState(const float* positions, const fl
 void vtkTetSkinGpuDeformMapper::PrepareBuffers(vtkOpenGLRenderWindow*) {
   if (!this->StateChanged || this->Positions.empty()) return;
   this->UploadTexels(0, this->Positions);
-  this->UploadTexels(1, this->Normals);
+  if (!this->Normals.empty()) this->UploadTexels(1, this->Normals);
   this->StateChanged = false;
 }
 

@@ -6,7 +6,8 @@
 // which every `* vertexMC` and the normal transform use the shader's
 // `deformedMC` and `deformedNormalMC`, and the deformed bounds the CPU knows.
 // Subclasses fill the buffers in PrepareBuffers() (called with the context
-// current, before the draw).
+// current, before the draw); a buffer never filled is not bound (its
+// shader need not declare the sampler).
 
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
@@ -37,6 +38,8 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
                          const char* firstSampler, const char* secondSampler);
   ~vtkTetSkinBufferMapper() override;
   virtual void PrepareBuffers(vtkOpenGLRenderWindow* window) = 0;
+  // Other shader code than the constructor's (before the first render).
+  void SetShaderCode(const char* declarations, const char* implementation);
   // Uploads `values` (4 floats per texel) into buffer k (0 or 1) and its texture.
   void UploadTexels(int k, const std::vector<float>& values);
   vtkOpenGLBufferObject* Buffer(int k);

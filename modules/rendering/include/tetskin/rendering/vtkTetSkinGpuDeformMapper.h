@@ -11,7 +11,14 @@
 // The input polydata must carry point arrays ControlIds (3), Weights (3),
 // kShiftArray (4: x, y, z, d; the vertex is sum w_i X_i + (x, y, z) + d n, n
 // the deformed control triangle's unit normal) and Normals (any: the shader
-// replaces them).
+// replaces them). The normal is the control vertex normals interpolated with
+// the weights (the report's method).
+//
+// With SetEmbedBinding(true), each vertex is bound to a tetrahedron instead:
+// ControlIds (4), Weights (4), kShiftArray (x, y, z; d unused) and
+// kRestFrameNormalArray (3: D^T n, D the rest tetrahedron's edges as
+// columns, n the rest normal); the normal is n carried by the
+// tetrahedron's deformation gradient, and no control normals are needed.
 
 #include <vector>
 
@@ -23,9 +30,15 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
   vtkTypeMacro(vtkTetSkinGpuDeformMapper, vtkTetSkinBufferMapper)
 
   static constexpr const char* kShiftArray = "TetSkinShift";
+  static constexpr const char* kRestFrameNormalArray = "TetSkinRestFrameNormal";
+
+  // Triangle bindings (the default) or embed bindings (see above); set
+  // before the first render.
+  void SetEmbedBinding(bool embed);
 
   // Control node positions and normals, xyz per node in the dataset's
-  // numbering; uploaded at the next render.
+  // numbering; uploaded at the next render. (Embed bindings: normals may be
+  // null, and are not used.)
   void SetControlState(const float* positions, const float* normals, vtkIdType nodes);
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
