@@ -6,7 +6,6 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -398,13 +397,7 @@ bool MainWindow::openFile(const QString& qpath) {
       const ElasticMaterial& material = scene_->dataset().config.elasticity;
       young_->setValue(material.youngsModulus);
       poisson_->setValue(material.poissonRatio);
-    } else if (ext == ".vtp") {
-      vtkSmartPointer<vtkPolyData> polyData = readVtp(path);
-      if (polyData->GetPointData()->GetArray("ControlIds"))
-        scene_->openBinding(path);
-      else
-        scene_->openSurface(path);
-    } else if (ext == ".obj" || ext == ".ply" || ext == ".stl") {
+    } else if (ext == ".vtp" || ext == ".obj" || ext == ".ply" || ext == ".stl") {
       scene_->openSurface(path);
     } else {
       throw Error(path.string(), 0,

@@ -112,25 +112,20 @@ void Scene::openDataset(const std::filesystem::path& path) {
 }
 
 void Scene::openSurface(const std::filesystem::path& path) {
-  if (!dataset_) throw Error(path.string(), 0, "open a dataset before a surface to bind");
-  SurfaceMesh surface = readSurface(path);
-  SurfaceBinding binding = bindSurface(surface, dataset_->mesh, level_);
-  surface_ = std::move(surface);
+  if (!dataset_)
+    throw Error(path.string(), 0, "open a dataset before a surface (a binding's own dataset)");
+  SurfaceOrBinding read = readSurfaceOrBinding(path, dataset_->mesh);
+  const bool bound = read.binding.has_value();
+  SurfaceBinding binding =
+      bound ? std::move(*read.binding) : bindSurface(read.surface, dataset_->mesh, level_);
+  surface_ = std::move(read.surface);
   binding_ = std::move(binding);
   previousSummary_.reset();
   picked_.reset();
-  rebuildSurface();
-}
-
-void Scene::openBinding(const std::filesystem::path& path) {
-  if (!dataset_) throw Error(path.string(), 0, "open the dataset the binding refers to first");
-  BoundSurface bound = readBinding(path, dataset_->mesh);
-  surface_ = std::move(bound.surface);
-  binding_ = std::move(bound.binding);
-  level_ = binding_.level;
-  previousSummary_.reset();
-  picked_.reset();
-  rebuildControl();
+  if (bound) {
+    level_ = binding_.level;
+    rebuildControl();
+  }
   rebuildSurface();
 }
 

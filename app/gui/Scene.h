@@ -50,8 +50,9 @@ class Scene {
   // Loading; each throws Error naming the file (and line) on bad input and
   // leaves the scene as it was.
   void openDataset(const std::filesystem::path& path);  // .json, .node or .ele
-  void openSurface(const std::filesystem::path& path);  // OBJ, PLY, STL, VTP; bound at once
-  void openBinding(const std::filesystem::path& path);  // a .vtp from tetskin bind
+  // OBJ, PLY, STL or VTP, bound at once to the current level; a .vtp from
+  // tetskin bind with its own binding (and level) as it is.
+  void openSurface(const std::filesystem::path& path);
   bool hasDataset() const { return dataset_.has_value(); }
   bool hasSurface() const { return surface_.has_value(); }
   const Dataset& dataset() const { return *dataset_; }

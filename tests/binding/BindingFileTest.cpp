@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <vtkFieldData.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 namespace {
@@ -91,6 +93,39 @@ TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
             "vertex 5 has a non-finite weight");
   EXPECT_EQ(error([](BoundSurface& b) { b.binding.controlIds(9, 2) = 99999; }),
             "vertex 9 is bound to node 99999, outside the dataset's 4331 nodes");
+}
+
+// What the applications open as a surface: a binding .vtp with its binding
+// (checked against the dataset), any other surface file without one,
+// whatever point arrays it carries.
+TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
+  test::ScratchDir dir;
+  const Dataset d = loadDataset(kData + "bunny.json");
+  BoundSurface bound;
+  bound.surface = readObj(kData + "bunny.obj");
+  bound.binding = bindSurface(bound.surface, d.mesh, 1);
+  bound.dataset = "bunny.json";
+  writeBinding(dir / "bound.vtp", bound);
+  const SurfaceOrBinding fromBinding = readSurfaceOrBinding(dir / "bound.vtp", d.mesh);
+  ASSERT_TRUE(fromBinding.binding.has_value());
+  EXPECT_EQ(fromBinding.binding->level, 1);
+  EXPECT_EQ(fromBinding.binding->controlIds, bound.binding.controlIds);
+  EXPECT_EQ(fromBinding.surface.positions, bound.surface.positions);
+  // The binding arrays without the field data: a plain surface.
+  vtkSmartPointer<vtkPolyData> arraysOnly = bindingToPolyData(bound);
+  arraysOnly->GetFieldData()->Initialize();
+  writeVtp(dir / "arrays.vtp", arraysOnly);
+  writeSurface(dir / "plain.vtp", bound.surface);
+  for (const char* name : {"arrays.vtp", "plain.vtp"}) {
+    const SurfaceOrBinding plain = readSurfaceOrBinding(dir / name, d.mesh);
+    EXPECT_FALSE(plain.binding.has_value()) << name;
+    EXPECT_EQ(plain.surface.triangles, bound.surface.triangles) << name;
+  }
+  EXPECT_FALSE(readSurfaceOrBinding(kData + "bunny.obj", d.mesh).binding.has_value());
+  // A binding that does not fit the dataset is an error, as readBinding's.
+  bound.binding.level = 7;
+  writeBinding(dir / "bad.vtp", bound);
+  EXPECT_THROW(readSurfaceOrBinding(dir / "bad.vtp", d.mesh), Error);
 }
 
 }  // namespace

@@ -409,6 +409,13 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   EXPECT_EQ(entries, 6u);  // control mesh and surface per frame
   EXPECT_EQ(readVtu(scratch("run_frames/control_00002.vtu"))->GetNumberOfCells(), 12713);
   EXPECT_FALSE(window_->exportFrame(QString::fromStdString(scratch("frame.txt").string())));
+  // File > Open takes the exported surface back as a binding, as it is: its
+  // ids and level, not a new binding of its (deformed) positions.
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(vtp.string())))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().binding().controlIds, back.binding.controlIds);
+  EXPECT_EQ(window_->scene().level(), back.binding.level);
+  EXPECT_TRUE(window_->scene().surface().positions.isApprox(back.surface.positions));
 }
 
 TEST_F(Gui, BindingDiagnosticsColourHighlightAndRebind) {

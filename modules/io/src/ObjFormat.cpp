@@ -7,6 +7,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "FanTriangulation.h"
 #include "NumberFormat.h"
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
@@ -107,9 +108,7 @@ class ObjParser {
     std::vector<Corner> polygon;
     polygon.reserve(lines_.size() - 1);
     for (std::size_t k = 1; k < lines_.size(); ++k) polygon.push_back(corner(lines_[k]));
-    // Fan triangulation: exact for the convex polygons OBJ exporters write.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
-      triangles_.push_back({polygon[0], polygon[k], polygon[k + 1]});
+    detail::appendFan(polygon, triangles_);
   }
 
   SurfaceMesh assemble(const ObjReadOptions& options) const {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "FanTriangulation.h"
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -436,9 +437,7 @@ class PlyParser {
   void face(const Values& values, const std::vector<int>& polygon) {
     if (polygon.size() < 3)
       values.fail("a face needs at least 3 vertices, found " + std::to_string(polygon.size()));
-    // Fan triangulation, as for OBJ polygons.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
-      triangles_.push_back({polygon[0], polygon[k], polygon[k + 1]});
+    detail::appendFan(polygon, triangles_);
   }
 
   std::string_view content_;

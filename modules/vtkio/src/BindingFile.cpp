@@ -8,7 +8,11 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <utility>
+
 #include "tetskin/core/Error.h"
+#include "tetskin/io/FileNames.h"
+#include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -128,6 +132,15 @@ BoundSurface readBinding(const std::filesystem::path& path) {
 
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
   return bindingFromPolyData(readVtp(path), path.string(), dataset);
+}
+
+SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
+                                      const MultiLevelTetMesh& dataset) {
+  if (lowerExtension(path) != ".vtp") return {readSurface(path), std::nullopt};
+  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+  if (!isBinding(data)) return {fromVtkPolyData(data, path.string()), std::nullopt};
+  BoundSurface bound = bindingFromPolyData(data, path.string(), dataset);
+  return {std::move(bound.surface), std::move(bound.binding)};
 }
 
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,

@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "tetskin/core/SurfaceBinding.h"
@@ -40,5 +41,16 @@ BoundSurface readBinding(const std::filesystem::path& path);
 // exists, every vertex is bound to nodes of that level, with finite
 // weights summing to 1 (validateBinding). Errors name `path`.
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset);
+
+// A surface file as the applications open it: a .vtp with a binding's field
+// data (isBinding) gives its surface and binding, checked against `dataset`
+// as readBinding checks; any other surface file (.obj, .ply, .stl, a plain
+// .vtp: readSurface) its surface alone. A .vtp is read once.
+struct SurfaceOrBinding {
+  SurfaceMesh surface;
+  std::optional<SurfaceBinding> binding;
+};
+SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
+                                      const MultiLevelTetMesh& dataset);
 
 }  // namespace tetskin
