@@ -47,6 +47,15 @@ TEST(BindingFile, WriteThenReadIsExact) {
   }
 }
 
+// bunny.obj bound to `level` of `d` (closest), its dataset named bunny.json.
+BoundSurface boundBunny(const Dataset& d, int level) {
+  BoundSurface bound;
+  bound.surface = readObj(kData + "bunny.obj");
+  bound.binding = bindSurface(bound.surface, d.mesh, level);
+  bound.dataset = "bunny.json";
+  return bound;
+}
+
 TEST(BindingFile, PlainSurfaceIsNotABinding) {
   test::ScratchDir dir;
   writeSurface(dir / "s.vtp", readObj(kData + "bunny.obj"));
@@ -63,10 +72,7 @@ TEST(BindingFile, PlainSurfaceIsNotABinding) {
 TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
   test::ScratchDir dir;
   const Dataset d = loadDataset(kData + "bunny.json");
-  BoundSurface good;
-  good.surface = readObj(kData + "bunny.obj");
-  good.binding = bindSurface(good.surface, d.mesh, 0);
-  good.dataset = "bunny.json";
+  const BoundSurface good = boundBunny(d, 0);
   writeBinding(dir / "good.vtp", good);
   EXPECT_EQ(readBinding(dir / "good.vtp", d.mesh).binding.controlIds, good.binding.controlIds);
   auto error = [&](const std::function<void(BoundSurface&)>& spoil) -> std::string {
@@ -101,10 +107,7 @@ TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
 TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   test::ScratchDir dir;
   const Dataset d = loadDataset(kData + "bunny.json");
-  BoundSurface bound;
-  bound.surface = readObj(kData + "bunny.obj");
-  bound.binding = bindSurface(bound.surface, d.mesh, 1);
-  bound.dataset = "bunny.json";
+  BoundSurface bound = boundBunny(d, 1);
   writeBinding(dir / "bound.vtp", bound);
   const SurfaceOrBinding fromBinding = readSurfaceOrBinding(dir / "bound.vtp", d.mesh);
   ASSERT_TRUE(fromBinding.binding.has_value());
