@@ -22,7 +22,6 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QLineEdit;
 class QLabel;
 class QMenu;
 class QPushButton;

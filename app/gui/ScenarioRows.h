@@ -7,7 +7,6 @@
 
 #include <QObject>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "tetskin/simulation/Scenario.h"
