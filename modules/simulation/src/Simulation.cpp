@@ -317,8 +317,9 @@ void Simulation::buildSystem(double h, StepStats& stats) {
   }
   // A = (1 + h alpha) M + (h beta + h^2) K + h^2 K_rot (+ contact) and
   // f_el - (beta + h) K v - h K_rot v, in one element pass (K_rot only with
-  // the full tangent; damping stays beta K, which leaves a stressed body's
-  // rigid rotation undamped); then b = h (f_el - (beta + h) K v - h K_rot v
+  // the full tangent, its compressive modes dropped from the matrix only:
+  // CorotatedFem::SystemTerms; damping stays beta K, which leaves a stressed
+  // body's rigid rotation undamped); then b = h (f_el - (beta + h) K v - h K_rot v
   // + M g + f_ext - alpha M v + f_contact).
   auto start = std::chrono::steady_clock::now();
   CorotatedFem::SystemTerms terms;
