@@ -3,7 +3,8 @@
 // The corotated element pass's kernel (CorotatedFem::update): groups of four
 // elements through the lane arithmetic of CorotatedLanes.h, compiled for
 // AVX2/FMA and for the baseline (SimdKernel.h), then added into the forces
-// and the matrix element by element.
+// element by element and into the matrix a block row of four elements at a
+// time.
 
 #include <cstddef>
 

@@ -17,7 +17,7 @@
 // share no node. Within a chunk, four elements at a time go through one
 // vector kernel (rotation, strain, stress, forces and blocks in the lanes of
 // four-double vectors; AVX2 where the CPU has it, SimdKernel.h), and their
-// results are added into the matrix one element after the other.
+// results are added into the matrix a block row of the four at a time.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
