@@ -118,35 +118,46 @@ void Scene::openSurface(const std::filesystem::path& path) {
   const bool bound = read.binding.has_value();
   SurfaceBinding binding =
       bound ? std::move(*read.binding) : bindSurface(read.surface, dataset_->mesh, level_);
+  std::optional<SurfaceMesh> previousSurface = std::move(surface_);
+  SurfaceBinding previousBinding = std::move(binding_);
+  const int previousLevel = level_;
   surface_ = std::move(read.surface);
   binding_ = std::move(binding);
-  previousSummary_.reset();
-  picked_.reset();
-  if (bound) {
-    level_ = binding_.level;
-    rebuildControl();
+  if (bound) level_ = binding_.level;
+  picked_.reset();  // (a vertex of the old surface)
+  try {
+    rebuildSurface();  // if the new one cannot be drawn, keep the old surface
+  } catch (...) {
+    surface_ = std::move(previousSurface);
+    binding_ = std::move(previousBinding);
+    level_ = previousLevel;
+    throw;
   }
-  rebuildSurface();
+  previousSummary_.reset();
+  if (bound) rebuildControl();
 }
 
 void Scene::rebuildSurface() {
+  std::unique_ptr<DeformableSurface> drawing;
+  if (surface_ && dataset_) {
+    std::filesystem::path texture;
+    const DatasetConfig& config = dataset_->config;
+    if (surface_->hasTexcoords()) {
+      if (hasFur(path_) && fur_.colorTexture)
+        texture = config.resolve(*fur_.colorTexture);
+      else if (config.texture)
+        texture = config.resolve(*config.texture);
+    }
+    drawing = std::make_unique<DeformableSurface>(dataset_->mesh, *surface_, binding_, path_,
+                                                  config.material, texture, fur_);
+  }
   if (surfaceDrawing_) {
     renderer_->RemoveActor(surfaceDrawing_->actor());
     if (FurLayer* fur = surfaceDrawing_->fur())
       for (vtkActor* a : fur->actors()) renderer_->RemoveActor(a);
-    surfaceDrawing_.reset();
   }
-  if (!surface_ || !dataset_) return;
-  std::filesystem::path texture;
-  const DatasetConfig& config = dataset_->config;
-  if (surface_->hasTexcoords()) {
-    if (hasFur(path_) && fur_.colorTexture)
-      texture = config.resolve(*fur_.colorTexture);
-    else if (config.texture)
-      texture = config.resolve(*config.texture);
-  }
-  surfaceDrawing_ = std::make_unique<DeformableSurface>(dataset_->mesh, *surface_, binding_, path_,
-                                                        config.material, texture, fur_);
+  surfaceDrawing_ = std::move(drawing);
+  if (!surfaceDrawing_) return;
   surfaceDrawing_->addTo(renderer_);
   surfaceDrawing_->update(nodes_);
   deformer_ = std::make_unique<SurfaceDeformer>(*surface_, binding_, dataset_->mesh.nodes);
@@ -174,17 +185,23 @@ void Scene::setRenderPath(RenderPath path) {
   const RenderPath before = path_;
   path_ = path;
   try {
-    rebuildSurface();
+    rebuildSurface();  // the old drawing stays if the new one cannot be made
   } catch (...) {
     path_ = before;
-    rebuildSurface();
     throw;
   }
 }
 
 void Scene::setFurParameters(const FurParameters& fur) {
+  const FurParameters before = fur_;
   fur_ = fur;
-  if (hasFur(path_)) rebuildSurface();
+  if (!hasFur(path_)) return;
+  try {
+    rebuildSurface();  // the old drawing stays if the new one cannot be made
+  } catch (...) {
+    fur_ = before;
+    throw;
+  }
 }
 
 void Scene::setControlStyle(std::optional<ControlMeshStyle> style) {
@@ -296,7 +313,6 @@ void Scene::rebind(BindingMethod method, int level) {
   } catch (...) {
     binding_ = previous;
     level_ = previousLevel;
-    rebuildSurface();
     throw;
   }
   previousSummary_ = before;

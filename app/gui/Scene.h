@@ -110,6 +110,10 @@ class Scene {
   BoundSurface deformedBoundSurface() const;
 
  private:
+  // Draws the surface anew from the scene's state (surface, binding, path,
+  // fur, texture). The new drawing is made before the old one is taken
+  // down: if it cannot be made (e.g. its texture file is gone), the old one
+  // stays and the error reaches the caller, which puts its state back.
   void rebuildSurface();
   void rebuildControl();
   void applyColoring();

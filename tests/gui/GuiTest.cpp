@@ -455,6 +455,60 @@ TEST_F(Gui, BindingDiagnosticsColourHighlightAndRebind) {
       << window_->lastError().toStdString();
 }
 
+// A dataset whose texture file goes missing after it was opened: a rebind,
+// another render path or another textured surface then cannot be drawn.
+// Each says why and leaves the scene as it was, the old surface drawn.
+TEST_F(Gui, AFailedRedrawKeepsTheSurfaceItHad) {
+  const std::filesystem::path dir = scratch("textured");
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path data = TETSKIN_SOURCE_DIR "/data";
+  for (const char* name : {"bunny.node", "bunny.ele"})
+    std::filesystem::copy_file(data / name, dir / name,
+                               std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(data / "bunny_texture.png", dir / "tex.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::stringstream config;
+  config << std::ifstream(data / "bunny.json").rdbuf();
+  std::string text = config.str();
+  const std::string untextured = "\"texture\": null";
+  ASSERT_NE(text.find(untextured), std::string::npos);
+  text.replace(text.find(untextured), untextured.size(), "\"texture\": \"tex.png\"");
+  std::ofstream(dir / "bunny.json") << text;
+  std::ofstream(dir / "triangle.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                         "f 1/1 2/2 3/3\n";
+  ASSERT_TRUE(window_->openFiles(
+      {QString::fromStdString((dir / "bunny.json").string()), kData + "bunny_8k_tex.obj"}))
+      << window_->lastError().toStdString();
+  const Scene& scene = window_->scene();
+  const Index vertices = scene.surface().vertexCount();
+  const BindingMethod method = scene.binding().method;
+  const int level = scene.level();
+  const auto drawn = window_->grabImage();
+  std::filesystem::remove(dir / "tex.png");
+
+  child<QComboBox>("rebindMethod")->setCurrentText("seed");
+  child<QSpinBox>("rebindLevel")->setValue(1);
+  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
+  EXPECT_TRUE(window_->lastError().contains("tex.png")) << window_->lastError().toStdString();
+  EXPECT_EQ(scene.binding().method, method);
+  EXPECT_EQ(scene.level(), level);
+  ASSERT_NE(scene.surfaceActor(), nullptr);
+  EXPECT_LT(changeFrom(drawn), 0.001);
+
+  window_->setRenderPath("gpu-1pass");
+  EXPECT_EQ(scene.renderPath(), RenderPath::Cpu);
+  EXPECT_EQ(child<QComboBox>("renderPath")->currentText(), "cpu");
+  ASSERT_NE(scene.surfaceActor(), nullptr);
+  EXPECT_LT(changeFrom(drawn), 0.001);
+
+  EXPECT_FALSE(window_->openFile(QString::fromStdString((dir / "triangle.obj").string())));
+  EXPECT_TRUE(window_->lastError().contains("tex.png")) << window_->lastError().toStdString();
+  EXPECT_EQ(scene.surface().vertexCount(), vertices);
+  EXPECT_EQ(scene.binding().vertexCount(), vertices);
+  ASSERT_NE(scene.surfaceActor(), nullptr);
+  EXPECT_LT(changeFrom(drawn), 0.001);
+}
+
 TEST_F(Gui, DroppedFilesOpenDatasetFirst) {
   QMimeData mime;
   mime.setUrls(
