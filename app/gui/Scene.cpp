@@ -118,39 +118,37 @@ void Scene::openSurface(const std::filesystem::path& path) {
   const bool bound = read.binding.has_value();
   SurfaceBinding binding =
       bound ? std::move(*read.binding) : bindSurface(read.surface, dataset_->mesh, level_);
-  std::optional<SurfaceMesh> previousSurface = std::move(surface_);
-  SurfaceBinding previousBinding = std::move(binding_);
-  const int previousLevel = level_;
+  std::unique_ptr<DeformableSurface> drawing = makeDrawing(read.surface, binding, path_, fur_);
   surface_ = std::move(read.surface);
   binding_ = std::move(binding);
   if (bound) level_ = binding_.level;
-  picked_.reset();  // (a vertex of the old surface)
-  try {
-    rebuildSurface();  // if the new one cannot be drawn, keep the old surface
-  } catch (...) {
-    surface_ = std::move(previousSurface);
-    binding_ = std::move(previousBinding);
-    level_ = previousLevel;
-    throw;
-  }
   previousSummary_.reset();
+  picked_.reset();
+  showDrawing(std::move(drawing));
   if (bound) rebuildControl();
 }
 
-void Scene::rebuildSurface() {
-  std::unique_ptr<DeformableSurface> drawing;
-  if (surface_ && dataset_) {
-    std::filesystem::path texture;
-    const DatasetConfig& config = dataset_->config;
-    if (surface_->hasTexcoords()) {
-      if (hasFur(path_) && fur_.colorTexture)
-        texture = config.resolve(*fur_.colorTexture);
-      else if (config.texture)
-        texture = config.resolve(*config.texture);
-    }
-    drawing = std::make_unique<DeformableSurface>(dataset_->mesh, *surface_, binding_, path_,
-                                                  config.material, texture, fur_);
+std::unique_ptr<DeformableSurface> Scene::makeDrawing(const SurfaceMesh& surface,
+                                                      const SurfaceBinding& binding,
+                                                      RenderPath path,
+                                                      const FurParameters& fur) const {
+  std::filesystem::path texture;
+  const DatasetConfig& config = dataset_->config;
+  if (surface.hasTexcoords()) {
+    if (hasFur(path) && fur.colorTexture)
+      texture = config.resolve(*fur.colorTexture);
+    else if (config.texture)
+      texture = config.resolve(*config.texture);
   }
+  return std::make_unique<DeformableSurface>(dataset_->mesh, surface, binding, path,
+                                             config.material, texture, fur);
+}
+
+void Scene::rebuildSurface() {
+  showDrawing(surface_ && dataset_ ? makeDrawing(*surface_, binding_, path_, fur_) : nullptr);
+}
+
+void Scene::showDrawing(std::unique_ptr<DeformableSurface> drawing) {
   if (surfaceDrawing_) {
     renderer_->RemoveActor(surfaceDrawing_->actor());
     if (FurLayer* fur = surfaceDrawing_->fur())
@@ -182,26 +180,20 @@ void Scene::rebuildControl() {
 }
 
 void Scene::setRenderPath(RenderPath path) {
-  const RenderPath before = path_;
+  std::unique_ptr<DeformableSurface> drawing =
+      surface_ && dataset_ ? makeDrawing(*surface_, binding_, path, fur_) : nullptr;
   path_ = path;
-  try {
-    rebuildSurface();  // the old drawing stays if the new one cannot be made
-  } catch (...) {
-    path_ = before;
-    throw;
-  }
+  showDrawing(std::move(drawing));
 }
 
 void Scene::setFurParameters(const FurParameters& fur) {
-  const FurParameters before = fur_;
-  fur_ = fur;
-  if (!hasFur(path_)) return;
-  try {
-    rebuildSurface();  // the old drawing stays if the new one cannot be made
-  } catch (...) {
-    fur_ = before;
-    throw;
+  if (!hasFur(path_) || !surface_ || !dataset_) {
+    fur_ = fur;
+    return;
   }
+  std::unique_ptr<DeformableSurface> drawing = makeDrawing(*surface_, binding_, path_, fur);
+  fur_ = fur;
+  showDrawing(std::move(drawing));
 }
 
 void Scene::setControlStyle(std::optional<ControlMeshStyle> style) {
@@ -303,20 +295,12 @@ void Scene::rebind(BindingMethod method, int level) {
   BindingOptions options;
   options.method = method;
   SurfaceBinding binding = bindSurface(*surface_, dataset_->mesh, resolved, options);
-  const BindingSummary before = summary_;
-  const SurfaceBinding previous = binding_;
-  const int previousLevel = level_;
+  std::unique_ptr<DeformableSurface> drawing = makeDrawing(*surface_, binding, path_, fur_);
+  previousSummary_ = summary_;
   binding_ = std::move(binding);
   level_ = resolved;
-  try {
-    rebuildSurface();  // if the new one cannot be drawn, keep the old binding
-  } catch (...) {
-    binding_ = previous;
-    level_ = previousLevel;
-    throw;
-  }
-  previousSummary_ = before;
   picked_.reset();
+  showDrawing(std::move(drawing));
   if (controlLevel_ != level_) {
     controlLevel_ = level_;
     rebuildControl();

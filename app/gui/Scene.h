@@ -110,15 +110,23 @@ class Scene {
   BoundSurface deformedBoundSurface() const;
 
  private:
-  // Draws the surface anew from the scene's state (surface, binding, path,
-  // fur, texture). The new drawing is made before the old one is taken
-  // down: if it cannot be made (e.g. its texture file is gone), the old one
-  // stays and the error reaches the caller, which puts its state back.
+  // The drawing of `surface` bound by `binding` on `path` with `fur` (and
+  // the dataset's texture where the surface has texture coordinates; a
+  // dataset must be open). It changes nothing: a change to the surface,
+  // binding, path or fur makes its drawing first and takes the new state on
+  // after, so one that cannot be drawn (e.g. its texture file is gone)
+  // throws with the scene as it was.
+  std::unique_ptr<DeformableSurface> makeDrawing(const SurfaceMesh& surface,
+                                                 const SurfaceBinding& binding, RenderPath path,
+                                                 const FurParameters& fur) const;
+  // Puts `drawing` (of the scene's current state; null: none) in place of
+  // the old one, with the deformer, summary and diagnostics that go with it.
+  void showDrawing(std::unique_ptr<DeformableSurface> drawing);
+  // showDrawing() of the current state's drawing (none without a surface).
   void rebuildSurface();
   void rebuildControl();
   void applyColoring();
   void updateDiagnostics();
-  void bindCurrent(BindingMethod method, int level);
 
   vtkRenderer* renderer_;
   std::optional<Dataset> dataset_;
