@@ -95,8 +95,11 @@ void Scene::openDataset(const std::filesystem::path& path) {
   }
   const int level = loaded.mesh.finestLevel();
   SurfaceBinding binding;
-  if (surface) binding = bindSurface(*surface, loaded.mesh, level);
-  surfaceDrawing_.reset();
+  std::unique_ptr<DeformableSurface> drawing;
+  if (surface) {
+    binding = bindSurface(*surface, loaded.mesh, level);
+    drawing = makeDrawing(loaded, *surface, binding, path_, loaded.config.fur);
+  }
   dataset_ = std::move(loaded);
   datasetPath_ = path;
   surface_ = std::move(surface);
@@ -107,7 +110,7 @@ void Scene::openDataset(const std::filesystem::path& path) {
   previousSummary_.reset();
   picked_.reset();
   rebuildControl();
-  rebuildSurface();
+  showDrawing(std::move(drawing));
   setCamera(CameraPreset::Iso);
 }
 
@@ -118,7 +121,8 @@ void Scene::openSurface(const std::filesystem::path& path) {
   const bool bound = read.binding.has_value();
   SurfaceBinding binding =
       bound ? std::move(*read.binding) : bindSurface(read.surface, dataset_->mesh, level_);
-  std::unique_ptr<DeformableSurface> drawing = makeDrawing(read.surface, binding, path_, fur_);
+  std::unique_ptr<DeformableSurface> drawing =
+      makeDrawing(*dataset_, read.surface, binding, path_, fur_);
   surface_ = std::move(read.surface);
   binding_ = std::move(binding);
   if (bound) level_ = binding_.level;
@@ -128,24 +132,26 @@ void Scene::openSurface(const std::filesystem::path& path) {
   if (bound) rebuildControl();
 }
 
-std::unique_ptr<DeformableSurface> Scene::makeDrawing(const SurfaceMesh& surface,
+std::unique_ptr<DeformableSurface> Scene::makeDrawing(const Dataset& dataset,
+                                                      const SurfaceMesh& surface,
                                                       const SurfaceBinding& binding,
                                                       RenderPath path,
                                                       const FurParameters& fur) const {
   std::filesystem::path texture;
-  const DatasetConfig& config = dataset_->config;
+  const DatasetConfig& config = dataset.config;
   if (surface.hasTexcoords()) {
     if (hasFur(path) && fur.colorTexture)
       texture = config.resolve(*fur.colorTexture);
     else if (config.texture)
       texture = config.resolve(*config.texture);
   }
-  return std::make_unique<DeformableSurface>(dataset_->mesh, surface, binding, path,
-                                             config.material, texture, fur);
+  return std::make_unique<DeformableSurface>(dataset.mesh, surface, binding, path, config.material,
+                                             texture, fur);
 }
 
 void Scene::rebuildSurface() {
-  showDrawing(surface_ && dataset_ ? makeDrawing(*surface_, binding_, path_, fur_) : nullptr);
+  showDrawing(surface_ && dataset_ ? makeDrawing(*dataset_, *surface_, binding_, path_, fur_)
+                                   : nullptr);
 }
 
 void Scene::showDrawing(std::unique_ptr<DeformableSurface> drawing) {
@@ -181,7 +187,7 @@ void Scene::rebuildControl() {
 
 void Scene::setRenderPath(RenderPath path) {
   std::unique_ptr<DeformableSurface> drawing =
-      surface_ && dataset_ ? makeDrawing(*surface_, binding_, path, fur_) : nullptr;
+      surface_ && dataset_ ? makeDrawing(*dataset_, *surface_, binding_, path, fur_) : nullptr;
   path_ = path;
   showDrawing(std::move(drawing));
 }
@@ -191,7 +197,8 @@ void Scene::setFurParameters(const FurParameters& fur) {
     fur_ = fur;
     return;
   }
-  std::unique_ptr<DeformableSurface> drawing = makeDrawing(*surface_, binding_, path_, fur);
+  std::unique_ptr<DeformableSurface> drawing =
+      makeDrawing(*dataset_, *surface_, binding_, path_, fur);
   fur_ = fur;
   showDrawing(std::move(drawing));
 }
@@ -295,7 +302,8 @@ void Scene::rebind(BindingMethod method, int level) {
   BindingOptions options;
   options.method = method;
   SurfaceBinding binding = bindSurface(*surface_, dataset_->mesh, resolved, options);
-  std::unique_ptr<DeformableSurface> drawing = makeDrawing(*surface_, binding, path_, fur_);
+  std::unique_ptr<DeformableSurface> drawing =
+      makeDrawing(*dataset_, *surface_, binding, path_, fur_);
   previousSummary_ = summary_;
   binding_ = std::move(binding);
   level_ = resolved;

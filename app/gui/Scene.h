@@ -110,13 +110,13 @@ class Scene {
   BoundSurface deformedBoundSurface() const;
 
  private:
-  // The drawing of `surface` bound by `binding` on `path` with `fur` (and
-  // the dataset's texture where the surface has texture coordinates; a
-  // dataset must be open). It changes nothing: a change to the surface,
+  // The drawing of `surface` bound by `binding` to `dataset` on `path` with
+  // `fur` (and the dataset's texture where the surface has texture
+  // coordinates). It changes nothing: a change to the dataset, surface,
   // binding, path or fur makes its drawing first and takes the new state on
   // after, so one that cannot be drawn (e.g. its texture file is gone)
   // throws with the scene as it was.
-  std::unique_ptr<DeformableSurface> makeDrawing(const SurfaceMesh& surface,
+  std::unique_ptr<DeformableSurface> makeDrawing(const Dataset& dataset, const SurfaceMesh& surface,
                                                  const SurfaceBinding& binding, RenderPath path,
                                                  const FurParameters& fur) const;
   // Puts `drawing` (of the scene's current state; null: none) in place of

@@ -507,6 +507,13 @@ TEST_F(Gui, AFailedRedrawKeepsTheSurfaceItHad) {
   EXPECT_EQ(scene.binding().vertexCount(), vertices);
   ASSERT_NE(scene.surfaceActor(), nullptr);
   EXPECT_LT(changeFrom(drawn), 0.001);
+
+  // The dataset again (the surface would be bound to it anew): it cannot be
+  // drawn either, so the scene keeps what it had on screen.
+  EXPECT_FALSE(window_->openFile(QString::fromStdString((dir / "bunny.json").string())));
+  EXPECT_TRUE(window_->lastError().contains("tex.png")) << window_->lastError().toStdString();
+  ASSERT_NE(scene.surfaceActor(), nullptr);
+  EXPECT_LT(changeFrom(drawn), 0.001);
 }
 
 TEST_F(Gui, DroppedFilesOpenDatasetFirst) {
