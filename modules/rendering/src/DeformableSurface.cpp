@@ -79,6 +79,18 @@ std::vector<float> restFrameNormals(const SurfaceBinding& binding, const Points3
   return frameNormals;
 }
 
+// Adds `values` (`components` per point, one tuple per point) to the points
+// of `poly` as the float array `name`: a vertex attribute of the GPU mappers.
+void addPointArray(vtkPolyData* poly, const char* name, int components,
+                   const std::vector<float>& values) {
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(poly->GetNumberOfPoints());
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  poly->GetPointData()->AddArray(array);
+}
+
 }  // namespace
 
 struct DeformableSurface::Impl {
@@ -133,24 +145,13 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
                                      shiftRows.leftCols<3>().rowwise().norm().maxCoeff());
     if (skin == RenderPath::Gpu1Pass) {
       // The shifts as a vertex attribute (vtkTetSkinGpuDeformMapper).
-      auto shiftArray = vtkSmartPointer<vtkFloatArray>::New();
-      shiftArray->SetName(vtkTetSkinGpuDeformMapper::kShiftArray);
-      shiftArray->SetNumberOfComponents(4);
-      shiftArray->SetNumberOfTuples(restSurface.vertexCount());
-      std::copy(shifts.begin(), shifts.end(), shiftArray->GetPointer(0));
-      s.polyData->GetPointData()->AddArray(shiftArray);
+      addPointArray(s.polyData, vtkTetSkinGpuDeformMapper::kShiftArray, 4, shifts);
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
       if (binding.method == BindingMethod::Embed) {
         // (An embedding tetrahedron has no control vertex normals to
         // interpolate: the shader carries the rest normal by its deformation.)
-        auto frameArray = vtkSmartPointer<vtkFloatArray>::New();
-        frameArray->SetName(vtkTetSkinGpuDeformMapper::kRestFrameNormalArray);
-        frameArray->SetNumberOfComponents(3);
-        frameArray->SetNumberOfTuples(restSurface.vertexCount());
-        const std::vector<float> frameNormals =
-            restFrameNormals(binding, bound.surface.normals, dataset.nodes);
-        std::copy(frameNormals.begin(), frameNormals.end(), frameArray->GetPointer(0));
-        s.polyData->GetPointData()->AddArray(frameArray);
+        addPointArray(s.polyData, vtkTetSkinGpuDeformMapper::kRestFrameNormalArray, 3,
+                      restFrameNormals(binding, bound.surface.normals, dataset.nodes));
         s.gpuMapper->SetEmbedBinding(true);
         s.embedded = true;
       }
