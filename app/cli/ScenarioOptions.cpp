@@ -93,8 +93,9 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
     }
   if (cmd.count("--loads-seconds") > 0 && a.loads.empty())
     throw Error("--loads-seconds: applies with --loads, which is not given");
+  // (Each number was checked as it was parsed; makeScenario() checks the
+  // whole set again for its other callers.)
   ScenarioParameters p = a.parameters;
-  validateScenarioParameters(p);
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   return p;

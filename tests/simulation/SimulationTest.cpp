@@ -724,6 +724,39 @@ TEST(Simulation, BadParametersAreErrors) {
   EXPECT_THROW(makeScenario("spin"), Error);
 }
 
+// makeScenario() refuses each scenario parameter out of its range, NaN
+// and infinity included, naming it and its value (the GUI passes what its
+// fields hold; the command line checked each number already).
+TEST(Simulation, ScenarioParametersOutOfRangeAreErrorsNamingTheParameter) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::function<void(ScenarioParameters&)>, std::string>> cases = {
+      {[](auto& p) { p.baseShare = 1; }, "the base share must be in [0, 1), got 1"},
+      {[](auto& p) { p.baseShare = -0.1; }, "the base share must be in [0, 1), got -0.1"},
+      {[&](auto& p) { p.baseShare = nan; }, "the base share"},
+      {[&](auto& p) { p.pushAcceleration = inf; }, "the push acceleration must be finite"},
+      {[](auto& p) { p.pushFrequency = 0; }, "the push frequency must be finite and > 0, got 0"},
+      {[](auto& p) { p.dropHeight = -1; }, "the drop height must be finite and >= 0, got -1"},
+      {[&](auto& p) { p.twistDegrees = nan; }, "the twist angle must be finite"},
+      {[&](auto& p) { p.twistSeconds = inf; }, "the twist time must be finite and > 0"},
+      {[&](auto& p) { p.loads = Points3::Constant(2, 3, nan); }, "the loads must be finite"},
+      {[](auto& p) { p.loadSeconds = 0; }, "the time the loads act must be > 0, got 0"},
+  };
+  for (const std::string& name : scenarioNames()) {
+    EXPECT_NO_THROW(makeScenario(name, ScenarioParameters{})) << name;
+    for (const auto& [spoil, message] : cases) {
+      ScenarioParameters p;
+      spoil(p);
+      try {
+        makeScenario(name, p);
+        ADD_FAILURE() << name << ": no error for '" << message << "'";
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(message, 0), 0u) << name << ": " << e.what();
+      }
+    }
+  }
+}
+
 // Each option out of its range, NaN and infinity included, is an error
 // that names it, and a valid set is not.
 TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {

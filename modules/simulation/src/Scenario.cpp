@@ -116,6 +116,23 @@ void Twist::drive(Simulation& sim, double time, Points3&) {
   sim.setKinematicTargets(top_, targets);
 }
 
+void validateScenarioParameters(const ScenarioParameters& p) {
+  auto require = [](bool ok, const char* what, double value, const char* range) {
+    if (!ok) throw Error(std::string(what) + " must be " + range + ", got " + formatNumber(value));
+  };
+  require(p.baseShare >= 0 && p.baseShare < 1, "the base share", p.baseShare, "in [0, 1)");
+  require(std::isfinite(p.pushAcceleration), "the push acceleration", p.pushAcceleration, "finite");
+  require(p.pushFrequency > 0 && std::isfinite(p.pushFrequency), "the push frequency",
+          p.pushFrequency, "finite and > 0");
+  require(p.dropHeight >= 0 && std::isfinite(p.dropHeight), "the drop height", p.dropHeight,
+          "finite and >= 0");
+  require(std::isfinite(p.twistDegrees), "the twist angle", p.twistDegrees, "finite");
+  require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
+          "finite and > 0");
+  if (!p.loads.allFinite()) throw Error("the loads must be finite");
+  require(p.loadSeconds > 0, "the time the loads act", p.loadSeconds, "> 0");
+}
+
 }  // namespace
 
 void Scenario::setUp(Simulation& sim) {
@@ -134,23 +151,6 @@ void Scenario::beforeStep(Simulation& sim, double time) {
   Points3 forces = loaded ? p_.loads : Points3::Zero(sim.restMesh().nodeCount(), 3);
   drive(sim, time, forces);
   sim.setExternalForces(forces);
-}
-
-void validateScenarioParameters(const ScenarioParameters& p) {
-  auto require = [](bool ok, const char* what, double value, const char* range) {
-    if (!ok) throw Error(std::string(what) + " must be " + range + ", got " + formatNumber(value));
-  };
-  require(p.baseShare >= 0 && p.baseShare < 1, "the base share", p.baseShare, "in [0, 1)");
-  require(std::isfinite(p.pushAcceleration), "the push acceleration", p.pushAcceleration, "finite");
-  require(p.pushFrequency > 0 && std::isfinite(p.pushFrequency), "the push frequency",
-          p.pushFrequency, "finite and > 0");
-  require(p.dropHeight >= 0 && std::isfinite(p.dropHeight), "the drop height", p.dropHeight,
-          "finite and >= 0");
-  require(std::isfinite(p.twistDegrees), "the twist angle", p.twistDegrees, "finite");
-  require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
-          "finite and > 0");
-  if (!p.loads.allFinite()) throw Error("the loads must be finite");
-  require(p.loadSeconds > 0, "the time the loads act", p.loadSeconds, "> 0");
 }
 
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {

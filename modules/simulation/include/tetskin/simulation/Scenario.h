@@ -49,11 +49,6 @@ enum class ScenarioParameter {
 std::vector<std::string> scenariosReading(ScenarioParameter parameter);
 bool scenarioReads(std::string_view name, ScenarioParameter parameter);
 
-// Throws Error naming the parameter whose value no scenario can use (e.g. a
-// base share outside [0, 1), a twist time <= 0, anything not finite; loads
-// of another level: setUp() checks their count).
-void validateScenarioParameters(const ScenarioParameters& parameters);
-
 class Scenario {
  public:
   virtual ~Scenario() = default;
@@ -85,7 +80,9 @@ SimulationOptions scenarioOptions(std::string_view name, SimulationOptions optio
 // against any fixed base. Empty when none does or there is no floor.
 std::string nodesBelowFloor(const Simulation& simulation);
 
-// Throws Error for an unknown name.
+// Throws Error for an unknown name, or naming the parameter whose value no
+// scenario can use (e.g. a base share outside [0, 1), a twist time <= 0,
+// anything not finite; loads of another level: setUp() checks their count).
 std::unique_ptr<Scenario> makeScenario(std::string_view name,
                                        const ScenarioParameters& parameters = {});
 std::vector<std::string> scenarioNames();
