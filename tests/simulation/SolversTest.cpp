@@ -3,6 +3,9 @@
 #include <tbb/global_control.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <numeric>
+#include <random>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
@@ -289,9 +292,87 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
   EXPECT_EQ(blocks.diagonalBlock(1), Eigen::Matrix3d::Zero());
 }
 
+// The copy in sweep order (the V-cycle's) holds the same blocks as the one
+// in column order, each node's split into the blocks of earlier-ranked
+// nodes, its own diagonal block, and those of later-ranked nodes (each
+// group by column): its product, diagonal blocks and row sums are the
+// sparse matrix's, and a plain assign() puts it back in column order.
+TEST(Solvers, NodeBlockMatrixInSweepOrderSplitsEachRowByRank) {
+  const Dataset d = loadDataset(kData + "bunny.json");
+  CorotatedFem fem(extractLevel(d.mesh, 1), ElasticMaterial{});
+  Eigen::VectorXd f, D = fem.lumpedMass();
+  SparseMatrix A = fem.pattern();
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 1e-4;
+  terms.diagonal = &D;
+  fem.update(fem.restPositions() + 0.01 * Eigen::VectorXd::Random(fem.dofCount()), f, A, terms);
+  const Index nodes = A.rows() / 3;
+  std::vector<int> rank(static_cast<std::size_t>(nodes));
+  std::iota(rank.begin(), rank.end(), 0);
+  std::shuffle(rank.begin(), rank.end(), std::mt19937(7));
+  const Eigen::VectorXd v = Eigen::VectorXd::Random(A.rows());
+  const Eigen::VectorXd expected = A * v;
+  NodeBlockMatrix blocks;
+  blocks.assignInSweepOrder(A, rank);
+  FloatNodeBlockMatrix single;
+  single.assignInSweepOrder(A, rank);
+  Eigen::VectorXd y;
+  multiply(blocks, v, y);
+  EXPECT_LT((y - expected).norm(), 1e-13 * expected.norm());
+  Eigen::VectorXf singleY;
+  multiply(single, v.cast<float>(), singleY);
+  EXPECT_LT((singleY.cast<double>() - expected).norm(), 1e-5 * expected.norm());
+  int withEarlier = 0, withLater = 0;
+  for (Index node = 0; node < nodes; ++node) {
+    const auto n = static_cast<std::size_t>(node);
+    const int start = blocks.blockStarts()[n], end = blocks.blockStarts()[n + 1];
+    const int later = blocks.laterBlocks(node);
+    ASSERT_GT(later, start) << "node " << node;
+    ASSERT_LE(later, end) << "node " << node;
+    ASSERT_EQ(single.laterBlocks(node), later);
+    EXPECT_EQ(blocks.columns()[static_cast<std::size_t>(later - 1)], 3 * node) << "node " << node;
+    for (int k = start; k < end; ++k) {
+      const int column = blocks.columns()[static_cast<std::size_t>(k)];
+      const int other = rank[static_cast<std::size_t>(column / 3)];
+      if (k < later - 1) {
+        EXPECT_LT(other, rank[n]) << "node " << node << ", block " << k;
+      }
+      if (k >= later) {
+        EXPECT_GT(other, rank[n]) << "node " << node << ", block " << k;
+      }
+      if (k + 1 < later - 1 || (k >= later && k + 1 < end)) {  // within a group
+        EXPECT_LT(column, blocks.columns()[static_cast<std::size_t>(k + 1)]) << "node " << node;
+      }
+    }
+    withEarlier += later - 1 > start;
+    withLater += later < end;
+    const Eigen::Matrix3d diagonal = A.block(3 * node, 3 * node, 3, 3).toDense();
+    ASSERT_EQ(blocks.diagonalBlock(node), diagonal) << "node " << node;
+    ASSERT_EQ(single.diagonalBlock(node), diagonal.cast<float>()) << "node " << node;
+    // The two groups' sums add up to the row without its diagonal block.
+    double earlierSums[3], laterSums[3];
+    blockRangeSum(blocks, start, later, v.data(), static_cast<int>(3 * node), earlierSums);
+    blockRangeSum(blocks, later, end, v.data(), -1, laterSums);
+    const Eigen::Vector3d withoutDiagonal =
+        expected.segment<3>(3 * node) - diagonal * v.segment<3>(3 * node);
+    EXPECT_LT((Eigen::Map<Eigen::Vector3d>(earlierSums) + Eigen::Map<Eigen::Vector3d>(laterSums) -
+               withoutDiagonal)
+                  .norm(),
+              1e-12 * expected.norm());
+  }
+  EXPECT_GT(withEarlier, nodes / 2);  // a shuffled rank splits most rows both ways
+  EXPECT_GT(withLater, nodes / 2);
+  blocks.assign(A);
+  EXPECT_EQ(blocks.laterBlocks(0), -1);
+  EXPECT_TRUE(std::is_sorted(blocks.columns().begin() + blocks.blockStarts()[0],
+                             blocks.columns().begin() + blocks.blockStarts()[1]));
+  EXPECT_THROW(blocks.assignInSweepOrder(A, std::vector<int>(3, 0)), Error);
+}
+
 // The V-cycle is a symmetric operator (forward sweeps before, the exact
 // backward sweeps after, P^T down and P up): u . M^-1 v = v . M^-1 u. CG
-// needs that; a sweep order that is not exactly reversed breaks it.
+// needs that; a sweep order that is not exactly reversed breaks it, and so
+// does a residual after the first sweep that is not b - A x.
 TEST(Solvers, MultigridCycleIsSymmetric) {
   const Dataset d = loadDataset(kData + "bunny.json");
   SimulationOptions options;
@@ -311,21 +392,26 @@ TEST(Solvers, MultigridCycleIsSymmetric) {
   }
   const Eigen::VectorXd u = Eigen::VectorXd::Random(A.rows());
   const Eigen::VectorXd v = Eigen::VectorXd::Random(A.rows());
-  std::vector<Eigen::VectorXd> results;
-  for (bool single : {false, true}) {
-    MultigridPreconditioner mg(prolongations);
-    mg.setSinglePrecision(single);
-    mg.setup(A);
-    Eigen::VectorXd Mu, Mv;
-    mg.apply(u, Mu);
-    mg.apply(v, Mv);
-    // Exactly symmetric in double; in float up to its rounding.
-    EXPECT_NEAR(u.dot(Mv), v.dot(Mu), (single ? 1e-5 : 1e-10) * std::abs(u.dot(Mv)));
-    EXPECT_GT(u.dot(Mu), 0);  // and positive
-    results.push_back(Mu);
+  // One sweep each way (the first from zero, fused with its residual) and
+  // two (the second a full sweep, the residual a product).
+  for (int sweeps : {1, 2}) {
+    std::vector<Eigen::VectorXd> results;
+    for (bool single : {false, true}) {
+      MultigridPreconditioner mg(prolongations, sweeps);
+      mg.setSinglePrecision(single);
+      mg.setup(A);
+      Eigen::VectorXd Mu, Mv;
+      mg.apply(u, Mu);
+      mg.apply(v, Mv);
+      // Symmetric in double up to rounding; in float up to its rounding.
+      EXPECT_NEAR(u.dot(Mv), v.dot(Mu), (single ? 1e-5 : 1e-10) * std::abs(u.dot(Mv)))
+          << sweeps << " sweeps";
+      EXPECT_GT(u.dot(Mu), 0);  // and positive
+      results.push_back(Mu);
+    }
+    // The float cycle is the double one up to rounding.
+    EXPECT_LT((results[1] - results[0]).norm(), 1e-5 * results[0].norm()) << sweeps << " sweeps";
   }
-  // The float cycle is the double one up to rounding.
-  EXPECT_LT((results[1] - results[0]).norm(), 1e-5 * results[0].norm());
 }
 
 }  // namespace

@@ -127,6 +127,10 @@ Eigen::Matrix3d diagonalBlock(const SparseMatrix& A, Index node) {
 // (measured on the 109k-element bunny: 2.1 against 4.5 ms).
 struct SweepOrder {
   std::vector<std::vector<int>> colours;  // per colour: the first nodes of its chunks
+  // Per node, its place in a forward sweep (colour by colour, the chunks of
+  // a colour in list order): coupled nodes are relaxed in rank order, since
+  // two chunks of one colour share no coupling.
+  std::vector<int> rank;
 };
 
 constexpr int kSweepChunk = 32;
@@ -158,6 +162,12 @@ SweepOrder sweepOrder(const SparseMatrix& A) {
     for (int v = first; v < last; ++v)
       forNeighbours(v, [&](int u) { covered[c][static_cast<std::size_t>(u)] = 1; });
   }
+  order.rank.resize(static_cast<std::size_t>(count));
+  int next = 0;
+  for (const std::vector<int>& chunks : order.colours)
+    for (int first : chunks)
+      for (int v = first; v < std::min(count, first + kSweepChunk); ++v)
+        order.rank[static_cast<std::size_t>(v)] = next++;
   return order;
 }
 
@@ -182,32 +192,17 @@ template <typename Scalar>
 // e.g. 3.1 against 1.2 ms per sweep on 2 threads, 6.0 against 2.2 on one).
 constexpr int kBackwardPrefetchNodes = 3;
 
-// One block Gauss-Seidel sweep: each node's 3 unknowns solved together
-// (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)) in the sweep order; `forward`
-// false runs it exactly backwards (colours, and nodes within each chunk), so
-// a forward and a backward sweep make a symmetric smoother.
-template <typename Scalar>
-void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
-                      const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal,
-                      const SweepOrder& order, const Scalar* b, Scalar* x, bool forward) {
-  auto relax = [&](int v) {
-    Scalar sums[3];  // sum_{u != v} A_vu x_u
-    blockRowSum(A, v, x, 3 * v, sums);
-    Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(x + 3 * v) =
-        inverseDiagonal[static_cast<std::size_t>(v)] *
-        Eigen::Matrix<Scalar, 3, 1>(b[3 * v] - sums[0], b[3 * v + 1] - sums[1],
-                                    b[3 * v + 2] - sums[2]);
-  };
-  const auto count = static_cast<int>(A.nodeCount());
+// Calls relax(v) for every node in the sweep order, or exactly backwards
+// (colours, and nodes within each chunk) where `forward` is false; the
+// chunks of a colour on both threads where the level is large enough.
+template <typename Relax>
+void sweepNodes(const SweepOrder& order, int count, bool forward, Relax&& relax) {
   auto sweepChunk = [&](int first) {
     const int last = std::min(count, first + kSweepChunk);
     if (forward)
       for (int v = first; v < last; ++v) relax(v);
     else
-      for (int v = last; v-- > first;) {
-        if (v >= kBackwardPrefetchNodes) prefetchBlockRow(A, v - kBackwardPrefetchNodes);
-        relax(v);
-      }
+      for (int v = last; v-- > first;) relax(v);
   };
   for (std::size_t i = 0; i < order.colours.size(); ++i) {
     const std::vector<int>& chunks = order.colours[forward ? i : order.colours.size() - 1 - i];
@@ -219,6 +214,64 @@ void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
       for (std::size_t c = range.begin(); c != range.end(); ++c) sweepChunk(chunks[c]);
     });
   }
+}
+
+// x_v = D_v^-1 (b_v - sums) for node v's 3 unknowns.
+template <typename Scalar>
+[[gnu::always_inline]] inline void solveNode(
+    const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal, int v, const Scalar* b,
+    const Scalar sums[3], Scalar* x) {
+  Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(x + 3 * v) =
+      inverseDiagonal[static_cast<std::size_t>(v)] *
+      Eigen::Matrix<Scalar, 3, 1>(b[3 * v] - sums[0], b[3 * v + 1] - sums[1],
+                                  b[3 * v + 2] - sums[2]);
+}
+
+// One block Gauss-Seidel sweep: each node's 3 unknowns solved together
+// (x_v = D_v^-1 (b_v - sum_{u != v} A_vu x_u)) in the sweep order; `forward`
+// false runs it exactly backwards, so a forward and a backward sweep make a
+// symmetric smoother.
+template <typename Scalar>
+void blockGaussSeidel(const BasicNodeBlockMatrix<Scalar>& A,
+                      const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal,
+                      const SweepOrder& order, const Scalar* b, Scalar* x, bool forward) {
+  sweepNodes(order, static_cast<int>(A.nodeCount()), forward, [&](int v) {
+    if (!forward && v >= kBackwardPrefetchNodes) prefetchBlockRow(A, v - kBackwardPrefetchNodes);
+    Scalar sums[3];  // sum_{u != v} A_vu x_u
+    blockRowSum(A, v, x, 3 * v, sums);
+    solveNode(inverseDiagonal, v, b, sums, x);
+  });
+}
+
+// The first forward sweep from x = 0 on a copy in sweep order
+// (assignInSweepOrder): the nodes not yet relaxed hold zero, so each node
+// reads only its earlier neighbours' blocks, and x need not be cleared
+// first. The residual b - A x after it is, node by node, minus the sum
+// over the later neighbours' blocks (b_v - D_v x_v - the earlier ones is
+// zero up to rounding by the sweep's own equation): the two read each block
+// once between them, where a sweep and a product read every block twice.
+template <typename Scalar>
+void forwardSweepFromZero(const BasicNodeBlockMatrix<Scalar>& A,
+                          const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal,
+                          const SweepOrder& order, const Scalar* b, Scalar* x) {
+  sweepNodes(order, static_cast<int>(A.nodeCount()), true, [&](int v) {
+    Scalar sums[3];
+    blockRangeSum(A, A.blockStarts()[static_cast<std::size_t>(v)], A.laterBlocks(v), x, 3 * v,
+                  sums);
+    solveNode(inverseDiagonal, v, b, sums, x);
+  });
+}
+
+template <typename Scalar>
+void residualAfterSweepFromZero(const BasicNodeBlockMatrix<Scalar>& A, const Scalar* x, Scalar* r) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      Scalar sums[3];
+      blockRangeSum(A, A.laterBlocks(v), A.blockStarts()[static_cast<std::size_t>(v) + 1], x, -1,
+                    sums);
+      for (int a = 0; a < 3; ++a) r[3 * v + a] = -sums[a];
+    }
+  });
 }
 
 template <typename Scalar>
@@ -264,8 +317,8 @@ struct Cycle {
   // the copy: on the 109k-element level 1.7-1.8 ms against 2.6-3.5 ms from
   // A's rows. In float the inverse is that of the rounded blocks, the ones
   // the sweeps use.)
-  void prepare(const SparseMatrix& A, std::size_t l) {
-    blocks[l].assign(A);
+  void prepare(const SparseMatrix& A, std::size_t l, const SweepOrder& order) {
+    blocks[l].assignInSweepOrder(A, order.rank);
     invertDiagonalBlocks(blocks[l], inverseDiagonals[l]);
   }
 };
@@ -322,14 +375,20 @@ void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
   s.b[0] = r.cast<Scalar>();
   // Down: pre-smooth from zero, restrict the residual.
   for (std::size_t l = 0; l < last; ++l) {
-    s.x[l].setZero(s.b[l].size());
+    s.x[l].resize(s.b[l].size());
     s.r[l].resize(s.b[l].size());
     s.b[l + 1].resize(3 * restrictions[l].rows());
-    for (int i = 0; i < sweepCount; ++i)
+    forwardSweepFromZero(s.blocks[l], s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
+                         s.x[l].data());
+    for (int i = 1; i < sweepCount; ++i)
       blockGaussSeidel(s.blocks[l], s.inverseDiagonals[l], sweeps[l], s.b[l].data(), s.x[l].data(),
                        true);
-    multiply(s.blocks[l], s.x[l], s.r[l]);
-    s.r[l] = s.b[l] - s.r[l];
+    if (sweepCount == 1) {
+      residualAfterSweepFromZero(s.blocks[l], s.x[l].data(), s.r[l].data());
+    } else {
+      multiply(s.blocks[l], s.x[l], s.r[l]);
+      s.r[l] = s.b[l] - s.r[l];
+    }
     multiplyNodalBlocks(restrictions[l], s.r[l].data(), s.b[l + 1].data());
   }
   s.x[last] = coarsest.solve(s.b[last].template cast<double>()).template cast<Scalar>();
@@ -440,9 +499,9 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
   auto prepare = [&](std::size_t l) {
     if (l + 1 == levels_.size()) return;  // the coarsest is factorized below instead
     if (single_)
-      impl_->single.prepare(level(l), l);
+      impl_->single.prepare(level(l), l, impl_->sweeps[l]);
     else
-      impl_->twin.prepare(level(l), l);
+      impl_->twin.prepare(level(l), l, impl_->sweeps[l]);
   };
   prepare(0);
   // (With one level the coarsest is the system itself: always new.)

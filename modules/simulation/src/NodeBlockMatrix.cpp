@@ -28,7 +28,7 @@ bool hasNodeRowLengths(const SparseMatrix& A, Index* badNode) {
 }
 
 template <typename Scalar>
-void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
+void BasicNodeBlockMatrix<Scalar>::allocate(const SparseMatrix& A) {
   Index badNode = -1;
   if (!hasNodeRowLengths(A, &badNode))
     throw Error(badNode < 0 ? "node-block matrix: the system is not square, compressed and 3 "
@@ -45,22 +45,69 @@ void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
   const auto blocks = static_cast<std::size_t>(blockStarts_.back());
   columns_.resize(blocks);
   values_.resize(12 * blocks);
-  const int* inner = A.innerIndexPtr();
-  const double* entries = A.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nodes, 256), [&](const auto& range) {
+}
+
+namespace {
+
+// Block b of node v's rows of A into slot `slot` of the copy: its first
+// column and its entries column by column, each column padded to four.
+template <typename Scalar>
+[[gnu::always_inline]] inline void copyBlock(const SparseMatrix& A, Index v, int b, int* columns,
+                                             Scalar* values, std::size_t slot) {
+  const int* outer = A.outerIndexPtr();
+  columns[slot] = A.innerIndexPtr()[outer[3 * v] + 3 * b];
+  Scalar* block = values + 12 * slot;
+  for (int c = 0; c < 3; ++c) {
+    for (int a = 0; a < 3; ++a)
+      block[4 * c + a] = static_cast<Scalar>(A.valuePtr()[outer[3 * v + a] + 3 * b + c]);
+    block[4 * c + 3] = 0;
+  }
+}
+
+}  // namespace
+
+template <typename Scalar>
+void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
+  allocate(A);
+  laterStarts_.clear();
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 256), [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
-      const int start = outer[3 * v];
       const int first = blockStarts_[static_cast<std::size_t>(v)];
       const int count = blockStarts_[static_cast<std::size_t>(v) + 1] - first;
-      for (int b = 0; b < count; ++b) {
-        columns_[static_cast<std::size_t>(first + b)] = inner[start + 3 * b];
-        Scalar* block = values_.data() + 12 * static_cast<std::size_t>(first + b);
-        for (int c = 0; c < 3; ++c) {
-          for (int a = 0; a < 3; ++a)
-            block[4 * c + a] = static_cast<Scalar>(entries[outer[3 * v + a] + 3 * b + c]);
-          block[4 * c + 3] = 0;
-        }
-      }
+      for (int b = 0; b < count; ++b)
+        copyBlock(A, v, b, columns_.data(), values_.data(), static_cast<std::size_t>(first + b));
+    }
+  });
+}
+
+template <typename Scalar>
+void BasicNodeBlockMatrix<Scalar>::assignInSweepOrder(const SparseMatrix& A,
+                                                      const std::vector<int>& rank) {
+  allocate(A);
+  if (rank.size() != static_cast<std::size_t>(nodeCount()))
+    throw Error("node-block matrix: the sweep ranks do not fit the matrix");
+  laterStarts_.resize(static_cast<std::size_t>(nodeCount()));
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 256), [&](const auto& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const auto node = static_cast<std::size_t>(v);
+      const int first = blockStarts_[node];
+      const int count = blockStarts_[node + 1] - first;
+      const int own = rank[node];
+      auto ranked = [&](int b) {
+        return rank[static_cast<std::size_t>(inner[outer[3 * v] + 3 * b] / 3)];
+      };
+      // Earlier nodes, then v itself, then later ones: passes over the
+      // column-sorted row, each keeping column order.
+      auto slot = static_cast<std::size_t>(first);
+      for (int b = 0; b < count; ++b)
+        if (ranked(b) < own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
+      for (int b = 0; b < count; ++b)
+        if (ranked(b) == own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
+      laterStarts_[node] = static_cast<int>(slot);
+      for (int b = 0; b < count; ++b)
+        if (ranked(b) > own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
     }
   });
 }
@@ -70,9 +117,12 @@ Eigen::Matrix<Scalar, 3, 3> BasicNodeBlockMatrix<Scalar>::diagonalBlock(Index v)
   const auto node = static_cast<std::size_t>(v);
   const auto begin = columns_.begin() + blockStarts_[node];
   const auto end = columns_.begin() + blockStarts_[node + 1];
-  const auto found = std::lower_bound(begin, end, static_cast<int>(3 * v));
+  // In column order a search; in sweep order the last block before the
+  // later nodes' (v ranks after its earlier neighbours, before its later).
+  const auto found = laterStarts_.empty() ? std::lower_bound(begin, end, static_cast<int>(3 * v))
+                                          : columns_.begin() + (laterStarts_[node] - 1);
   Eigen::Matrix<Scalar, 3, 3> block = Eigen::Matrix<Scalar, 3, 3>::Zero();
-  if (found == end || *found != 3 * v) return block;
+  if (found < begin || found == end || *found != 3 * v) return block;
   const Scalar* entries = values_.data() + 12 * (found - columns_.begin());
   for (int c = 0; c < 3; ++c)
     for (int a = 0; a < 3; ++a) block(a, c) = entries[4 * c + a];

@@ -69,7 +69,9 @@ class BlockJacobi : public Preconditioner {
 // the fine one). Block (3x3 per node) Gauss-Seidel smoothing over coloured
 // chunks of neighbouring nodes (chunks of a colour relax in parallel),
 // forward before and exactly backward after (the cycle is a symmetric
-// preconditioner); an exact Cholesky solve on the coarsest level. Fixed
+// preconditioner; the first forward sweep, from zero, and the residual
+// after it read each block once between them); an exact Cholesky solve on
+// the coarsest level. Fixed
 // nodes (Dirichlet) receive no coarse correction. The sweeps and residuals
 // run on copies of the level matrices in padded 3x3 blocks
 // (NodeBlockMatrix.h), in single precision by default (half the memory

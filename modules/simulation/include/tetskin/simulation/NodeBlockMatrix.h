@@ -10,7 +10,8 @@
 // 12.7k-element level the AVX2 product takes about 0.6 of the SparseMatrix
 // one and the copy, once per step, about 1.5 products (simulation_bench
 // prints both in one run). The multigrid's V-cycle keeps float copies in the
-// same layout: there a block column is one 4-wide SSE operation everywhere.
+// same layout (each node's blocks in its sweep's order): there a block
+// column is one 4-wide SSE operation everywhere.
 
 #include <vector>
 
@@ -37,6 +38,14 @@ class BasicNodeBlockMatrix {
   // triples, which a CorotatedFem pattern always has, are not). Reuses the
   // storage when the shape is unchanged.
   void assign(const SparseMatrix& A);
+  // The same copy with each node v's blocks in the order of a sweep that
+  // visits the nodes by ascending `rank` (one per node, distinct among
+  // coupled nodes): first the blocks of the nodes ranked before v, then
+  // v's own diagonal block, then those of the nodes ranked after it (by
+  // column within each group). A sweep from zero then reads only the
+  // first group, and the residual after it only the last
+  // (LinearSolvers.cpp).
+  void assignInSweepOrder(const SparseMatrix& A, const std::vector<int>& rank);
 
   Index rows() const { return 3 * nodeCount(); }
   Index nodeCount() const { return static_cast<Index>(blockStarts_.size()) - 1; }
@@ -50,6 +59,14 @@ class BasicNodeBlockMatrix {
   const std::vector<int>& columns() const { return columns_; }
   const std::vector<Scalar>& values() const { return values_; }
 
+  // After assignInSweepOrder(): node v's blocks of earlier-ranked nodes are
+  // blockStarts()[v] .. laterBlocks(v)-1 less its diagonal block, the last
+  // of them where there is one; those of later-ranked nodes laterBlocks(v)
+  // .. blockStarts()[v+1]-1. (After assign(), in column order, -1.)
+  int laterBlocks(Index v) const {
+    return laterStarts_.empty() ? -1 : laterStarts_[static_cast<std::size_t>(v)];
+  }
+
   // Node v's diagonal block (zero where the pattern has none): its row's
   // blocks are contiguous, so this reads one short column list and one
   // block, where the sparse matrix needs a search in one row and entries
@@ -60,6 +77,9 @@ class BasicNodeBlockMatrix {
   std::vector<int> blockStarts_{0};
   std::vector<int> columns_;
   std::vector<Scalar> values_;
+  std::vector<int> laterStarts_;  // per node, in sweep order only (laterBlocks())
+  // The shape of A (row lengths checked) into blockStarts_, columns_, values_.
+  void allocate(const SparseMatrix& A);
 };
 
 using NodeBlockMatrix = BasicNodeBlockMatrix<double>;
@@ -91,20 +111,20 @@ template <typename Lanes, typename Scalar>
   for (int c = 0; c < 3; ++c) __builtin_memcpy(&columns[c], block + 4 * c, sizeof(Lanes));
 }
 
-// sums = sum of A_vu x_u over node v's blocks, leaving out column
-// `skipColumn` (a node's first dof, e.g. 3 v for Gauss-Seidel; -1 for none),
-// with each block column one `Lanes` vector of four Scalar (GCC's vector
-// extension: left to itself the compiler computes the three rows as 2 + 1
-// lanes). Inline for callers with their own loop over nodes; always
-// inlined, so that in a caller compiled for AVX2 it is AVX2 code.
+// sums = sum of A_vu x_u over blocks first .. last-1 of A (some or all of
+// node v's), leaving out column `skipColumn` (a node's first dof, e.g. 3 v
+// for Gauss-Seidel; -1 for none), with each block column one `Lanes`
+// vector of four Scalar (GCC's vector extension: left to itself the
+// compiler computes the three rows as 2 + 1 lanes). Inline for callers with
+// their own loop over nodes; always inlined, so that in a caller compiled
+// for AVX2 it is AVX2 code.
 template <typename Lanes, typename Scalar>
-[[gnu::always_inline]] inline void blockRowSumLanes(const BasicNodeBlockMatrix<Scalar>& A, Index v,
-                                                    const Scalar* x, int skipColumn,
-                                                    Scalar sums[3]) {
+[[gnu::always_inline]] inline void blockRangeSumLanes(const BasicNodeBlockMatrix<Scalar>& A,
+                                                      int first, int last, const Scalar* x,
+                                                      int skipColumn, Scalar sums[3]) {
   Lanes total = {0, 0, 0, 0};
   const int* columns = A.columns().data();
-  for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
-       k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
+  for (int k = first; k < last; ++k) {
     if (columns[k] == skipColumn) continue;
     const Scalar* xc = x + columns[k];
     Lanes c[3];
@@ -114,24 +134,33 @@ template <typename Lanes, typename Scalar>
   for (int a = 0; a < 3; ++a) sums[a] = total[a];
 }
 
-// The row kernels of the products below. Float: four lanes are one SSE
-// register on every x86-64 CPU.
-inline void blockRowSum(const FloatNodeBlockMatrix& A, Index v, const float* x, int skipColumn,
-                        float sums[3]) {
+// The same over all of node v's blocks.
+template <typename Lanes, typename Scalar>
+[[gnu::always_inline]] inline void blockRowSumLanes(const BasicNodeBlockMatrix<Scalar>& A, Index v,
+                                                    const Scalar* x, int skipColumn,
+                                                    Scalar sums[3]) {
+  const auto node = static_cast<std::size_t>(v);
+  blockRangeSumLanes<Lanes>(A, A.blockStarts()[node], A.blockStarts()[node + 1], x, skipColumn,
+                            sums);
+}
+
+// The range kernels of the products and sweeps. Float: four lanes are one
+// SSE register on every x86-64 CPU.
+inline void blockRangeSum(const FloatNodeBlockMatrix& A, int first, int last, const float* x,
+                          int skipColumn, float sums[3]) {
   using Float4 = float __attribute__((vector_size(16)));
-  blockRowSumLanes<Float4>(A, v, x, skipColumn, sums);
+  blockRangeSumLanes<Float4>(A, first, last, x, skipColumn, sums);
 }
 
 // Double, baseline: four double lanes would be two SSE2 registers, which
 // measured slower than the compiler's own vectorization of this loop (the
 // AVX2 product uses blockRowSumLanes with one AVX register).
-inline void blockRowSum(const NodeBlockMatrix& A, Index v, const double* x, int skipColumn,
-                        double sums[3]) {
+inline void blockRangeSum(const NodeBlockMatrix& A, int first, int last, const double* x,
+                          int skipColumn, double sums[3]) {
   double total[4] = {0, 0, 0, 0};
   const int* columns = A.columns().data();
   const double* values = A.values().data();
-  for (int k = A.blockStarts()[static_cast<std::size_t>(v)];
-       k < A.blockStarts()[static_cast<std::size_t>(v) + 1]; ++k) {
+  for (int k = first; k < last; ++k) {
     if (columns[k] == skipColumn) continue;
     const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
     const double* xc = x + columns[k];
@@ -139,6 +168,14 @@ inline void blockRowSum(const NodeBlockMatrix& A, Index v, const double* x, int 
       total[a] += block[a] * xc[0] + block[4 + a] * xc[1] + block[8 + a] * xc[2];
   }
   for (int a = 0; a < 3; ++a) sums[a] = total[a];
+}
+
+// The row kernels: all of node v's blocks.
+template <typename Scalar>
+inline void blockRowSum(const BasicNodeBlockMatrix<Scalar>& A, Index v, const Scalar* x,
+                        int skipColumn, Scalar sums[3]) {
+  const auto node = static_cast<std::size_t>(v);
+  blockRangeSum(A, A.blockStarts()[node], A.blockStarts()[node + 1], x, skipColumn, sums);
 }
 
 }  // namespace tetskin
