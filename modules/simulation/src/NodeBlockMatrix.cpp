@@ -95,19 +95,30 @@ void BasicNodeBlockMatrix<Scalar>::assignInSweepOrder(const SparseMatrix& A,
       const int first = blockStarts_[node];
       const int count = blockStarts_[node + 1] - first;
       const int own = rank[node];
-      auto ranked = [&](int b) {
-        return rank[static_cast<std::size_t>(inner[outer[3 * v] + 3 * b] / 3)];
-      };
-      // Earlier nodes, then v itself, then later ones: passes over the
-      // column-sorted row, each keeping column order.
-      auto slot = static_cast<std::size_t>(first);
-      for (int b = 0; b < count; ++b)
-        if (ranked(b) < own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
-      for (int b = 0; b < count; ++b)
-        if (ranked(b) == own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
-      laterStarts_[node] = static_cast<int>(slot);
-      for (int b = 0; b < count; ++b)
-        if (ranked(b) > own) copyBlock(A, v, b, columns_.data(), values_.data(), slot++);
+      const int* columns = inner + outer[3 * v];
+      auto ranked = [&](int b) { return rank[static_cast<std::size_t>(columns[3 * b] / 3)]; };
+      // Earlier nodes, then v itself, then later ones, each group in column
+      // order. The slots are counted first and chosen by arithmetic, not
+      // branches: a neighbour is earlier or later about as often as not,
+      // and branching on it made this copy 2.7 times as slow as assign() at
+      // 109k elements in float (2.4 against 0.9 ms; now 1.3-1.5 against
+      // 1.0-1.1).
+      int earlier = 0, itself = 0;  // blocks of earlier nodes; of v (1, or 0 without one)
+      for (int b = 0; b < count; ++b) {
+        earlier += ranked(b) < own;
+        itself += ranked(b) == own;
+      }
+      int nextEarlier = first, diagonal = first + earlier, nextLater = diagonal + itself;
+      laterStarts_[node] = nextLater;
+      for (int b = 0; b < count; ++b) {
+        const int r = ranked(b);
+        const auto isEarlier = static_cast<int>(r < own), isLater = static_cast<int>(r > own);
+        const int slot =
+            isEarlier * nextEarlier + isLater * nextLater + (1 - isEarlier - isLater) * diagonal;
+        nextEarlier += isEarlier;
+        nextLater += isLater;
+        copyBlock(A, v, b, columns_.data(), values_.data(), static_cast<std::size_t>(slot));
+      }
     }
   });
 }
