@@ -129,7 +129,7 @@ void Scene::openSurface(const std::filesystem::path& path) {
   previousSummary_.reset();
   picked_.reset();
   showDrawing(std::move(drawing));
-  if (bound) rebuildControl();
+  if (bound) showControlAtBindingLevel();
 }
 
 std::unique_ptr<DeformableSurface> Scene::makeDrawing(const Dataset& dataset,
@@ -309,10 +309,13 @@ void Scene::rebind(BindingMethod method, int level) {
   level_ = resolved;
   picked_.reset();
   showDrawing(std::move(drawing));
-  if (controlLevel_ != level_) {
-    controlLevel_ = level_;
-    rebuildControl();
-  }
+  showControlAtBindingLevel();
+}
+
+void Scene::showControlAtBindingLevel() {
+  if (controlLevel_ == level_) return;
+  controlLevel_ = level_;
+  rebuildControl();
 }
 
 std::string Scene::comparisonText() const {

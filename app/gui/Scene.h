@@ -125,6 +125,9 @@ class Scene {
   // showDrawing() of the current state's drawing (none without a surface).
   void rebuildSurface();
   void rebuildControl();
+  // The control mesh drawn at the binding's level (after a new binding;
+  // the simulation moves the control mesh of that level only).
+  void showControlAtBindingLevel();
   void applyColoring();
   void updateDiagnostics();
 

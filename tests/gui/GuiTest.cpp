@@ -418,6 +418,25 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   EXPECT_TRUE(window_->scene().surface().positions.isApprox(back.surface.positions));
 }
 
+// Opening a binding of another level moves the control mesh to that level,
+// as a rebind does, and the control level field says so.
+TEST_F(Gui, OpeningABindingShowsTheControlMeshOfItsLevel) {
+  openSample();
+  child<QSpinBox>("rebindLevel")->setValue(1);
+  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
+  ASSERT_EQ(window_->scene().level(), 1) << window_->lastError().toStdString();
+  const std::filesystem::path vtp = scratch("level1.vtp");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtp.string())));
+  child<QSpinBox>("rebindLevel")->setValue(2);
+  QTest::mouseClick(window_->findChild<QPushButton*>("rebind"), Qt::LeftButton);
+  ASSERT_EQ(window_->scene().controlLevel(), 2);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(vtp.string())))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().level(), 1);
+  EXPECT_EQ(window_->scene().controlLevel(), 1);
+  EXPECT_EQ(child<QSpinBox>("controlLevel")->value(), 1);
+}
+
 TEST_F(Gui, BindingDiagnosticsColourHighlightAndRebind) {
   openSample();
   child<QComboBox>("colorBy")->setCurrentText("MinBarycentric");
