@@ -266,24 +266,21 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
       for (int a = 0; a < 3; ++a) args.force[3 * group.nodes[k][l] + a] += f[k][a][l];
   }
   const ElementScatter* scatter = args.scatter + 4 * g;
+  // Row `row` of block (i, j) of each element, its three entries given one
+  // lane per element.
+  auto addBlockRow = [&](int i, int j, int row, Double4 e0, Double4 e1, Double4 e2) {
+    Double4 rows[4];
+    transposeRows(e0, e1, e2, rows);
+    for (int l = 0; l < elements; ++l)
+      addRow(args.values + scatter[l].slots[i * 4 + j] + row * scatter[l].rowLengths[i], rows[l]);
+  };
   for (int i = 0, pair = 0; i < 4; ++i)
     for (int j = i; j < 4; ++j, ++pair) {
       const Double4* B = blocks[pair];
-      for (int a = 0; a < 3; ++a) {
-        // Row a of block (i, j) for each element: entries (a, 0..2).
-        Double4 rows[4];
-        transposeRows(B[3 * a], B[3 * a + 1], B[3 * a + 2], rows);
-        for (int l = 0; l < elements; ++l)
-          addRow(args.values + scatter[l].slots[i * 4 + j] + a * scatter[l].rowLengths[i], rows[l]);
-      }
+      for (int a = 0; a < 3; ++a) addBlockRow(i, j, a, B[3 * a], B[3 * a + 1], B[3 * a + 2]);
       if (j == i) continue;
-      for (int b = 0; b < 3; ++b) {
-        // Row b of block (j, i), the transpose: entries (0..2, b).
-        Double4 rows[4];
-        transposeRows(B[b], B[3 + b], B[6 + b], rows);
-        for (int l = 0; l < elements; ++l)
-          addRow(args.values + scatter[l].slots[j * 4 + i] + b * scatter[l].rowLengths[j], rows[l]);
-      }
+      // Block (j, i) is the transpose: its row b is column b of (i, j).
+      for (int b = 0; b < 3; ++b) addBlockRow(j, i, b, B[b], B[3 + b], B[6 + b]);
     }
 }
 
