@@ -90,6 +90,18 @@ void expectEnd(TextLines& lines) {
   if (lines.next()) lines.fail("unexpected data after the last item");
 }
 
+// `count` lines "INDEX X Y Z", each a point inside a hole (of the whole
+// domain or of one facet), into `holes`.
+void parseHolePoints(TextLines& lines, long long count, const char* nextExpected, const char* what,
+                     Points3& holes) {
+  holes.resize(static_cast<Index>(count), 3);
+  for (Index h = 0; h < holes.rows(); ++h) {
+    nextLine(lines, nextExpected);
+    lines.expectTokens(4, 4, what);
+    for (int k = 0; k < 3; ++k) holes(h, k) = lines.toDouble(lines[1 + k], "coordinate");
+  }
+}
+
 }  // namespace
 
 NodeFile parseNode(std::string_view content, const std::string& sourceName) {
@@ -193,12 +205,7 @@ PolyFile parsePoly(std::string_view content, const std::string& sourceName, int 
       for (std::size_t k = 1; k < lines.size(); ++k)
         polygon.push_back(toNodeIndex(lines, lines[k], base));
     }
-    facet.holes.resize(static_cast<Index>(holeCount), 3);
-    for (Index h = 0; h < facet.holes.rows(); ++h) {
-      nextLine(lines, "a facet hole");
-      lines.expectTokens(4, 4, "facet hole");
-      for (int k = 0; k < 3; ++k) facet.holes(h, k) = lines.toDouble(lines[1 + k], "coordinate");
-    }
+    parseHolePoints(lines, holeCount, "a facet hole", "facet hole", facet.holes);
   }
 
   // The hole and region lists are optional at the end of the file.
@@ -206,12 +213,7 @@ PolyFile parsePoly(std::string_view content, const std::string& sourceName, int 
   lines.expectTokens(1, 1, "hole count");
   const long long holeCount = lines.toInteger(lines[0], "hole count");
   lines.checkCount(holeCount, 2, "hole count");
-  poly.holes.resize(static_cast<Index>(holeCount), 3);
-  for (Index h = 0; h < poly.holes.rows(); ++h) {
-    nextLine(lines, "a hole");
-    lines.expectTokens(4, 4, "hole");
-    for (int k = 0; k < 3; ++k) poly.holes(h, k) = lines.toDouble(lines[1 + k], "coordinate");
-  }
+  parseHolePoints(lines, holeCount, "a hole", "hole", poly.holes);
   if (!lines.next()) return poly;
   lines.expectTokens(1, 1, "region count");
   const long long regionCount = lines.toInteger(lines[0], "region count");
