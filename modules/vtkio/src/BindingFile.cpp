@@ -58,9 +58,7 @@ vtkDataArray* pointArray(vtkPolyData* data, const char* name, int components,
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
-  const SurfaceBinding& b = bound.binding;
-  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
+void addBindingArrays(vtkPolyData* data, const SurfaceBinding& b) {
   const int k = b.controlsPerVertex();
   vtkPointData* pd = data->GetPointData();
   pd->AddArray(columns<vtkIntArray>("ControlIds", b.controlIds, k));
@@ -69,13 +67,18 @@ vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
   pd->AddArray(columns<vtkDoubleArray>("MinBarycentric", b.minBarycentric, 1));
   pd->AddArray(columns<vtkIntArray>("FaceId", b.faceId, 1));
   vtkFieldData* fd = data->GetFieldData();
-  addString(fd, "Dataset", bound.dataset);
   addString(fd, "Method", toString(b.method));
   addString(fd, "Offset", toString(b.offset));
   auto level = vtkSmartPointer<vtkIntArray>::New();
   level->SetName("Level");
   level->InsertNextValue(b.level);
   fd->AddArray(level);
+}
+
+vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
+  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
+  addBindingArrays(data, bound.binding);
+  addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;
 }
 
@@ -85,12 +88,10 @@ bool isBinding(vtkPolyData* data) {
          fd->GetAbstractArray("Level");
 }
 
-BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
-  BoundSurface bound;
-  bound.surface = fromVtkPolyData(data, source);
+SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& source) {
+  if (!data) throw Error(source, 0, "no surface");
   vtkFieldData* fd = data->GetFieldData();
-  bound.dataset = getString(fd, "Dataset", source);
-  SurfaceBinding& b = bound.binding;
+  SurfaceBinding b;
   const auto method = parseBindingMethod(getString(fd, "Method", source));
   const auto offset = parseOffsetMode(getString(fd, "Offset", source));
   if (!method || !offset) throw Error(source, 0, "unknown binding method or offset mode");
@@ -101,8 +102,6 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
     throw Error(source, 0, "field data 'Level' is missing");
   b.level = level->GetValue(0);
   const Index n = data->GetNumberOfPoints();
-  if (n != bound.surface.vertexCount())
-    throw Error(source, 0, "the binding's points were merged or dropped on reading");
   b.resize(n);
   const int k = b.controlsPerVertex();
   vtkDataArray* ids = pointArray(data, "ControlIds", k, source);
@@ -119,6 +118,16 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
     b.minBarycentric[v] = minBary->GetComponent(v, 0);
     b.faceId[v] = static_cast<int>(face->GetComponent(v, 0));
   }
+  return b;
+}
+
+BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
+  BoundSurface bound;
+  bound.surface = fromVtkPolyData(data, source);
+  bound.dataset = getString(data->GetFieldData(), "Dataset", source);
+  if (data->GetNumberOfPoints() != bound.surface.vertexCount())
+    throw Error(source, 0, "the binding's points were merged or dropped on reading");
+  bound.binding = bindingArraysFromPolyData(data, source);
   return bound;
 }
 

@@ -27,19 +27,6 @@ vtkSmartPointer<vtkPoints> toVtkPoints(const Points3& points) {
   return out;
 }
 
-Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
-  const Index n = points ? points->GetNumberOfPoints() : 0;
-  Points3 out(n, 3);
-  for (Index i = 0; i < n; ++i) {
-    double p[3];
-    points->GetPoint(i, p);
-    out.row(i) << p[0], p[1], p[2];
-    const std::string problem = coordinateProblem(out.row(i));
-    if (!problem.empty()) throw Error(sourceName, 0, "point " + std::to_string(i) + " " + problem);
-  }
-  return out;
-}
-
 // Fixed-size connectivity: offsets 0, k, 2k, ... and the flattened ids.
 template <int K, typename Matrix>
 vtkSmartPointer<vtkCellArray> toCells(const Matrix& cells) {
@@ -56,6 +43,19 @@ vtkSmartPointer<vtkCellArray> toCells(const Matrix& cells) {
 }
 
 }  // namespace
+
+Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
+  const Index n = points ? points->GetNumberOfPoints() : 0;
+  Points3 out(n, 3);
+  for (Index i = 0; i < n; ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    out.row(i) << p[0], p[1], p[2];
+    const std::string problem = coordinateProblem(out.row(i));
+    if (!problem.empty()) throw Error(sourceName, 0, "point " + std::to_string(i) + " " + problem);
+  }
+  return out;
+}
 
 vtkSmartPointer<vtkPolyData> toVtkPolyData(const SurfaceMesh& mesh) {
   auto out = vtkSmartPointer<vtkPolyData>::New();

@@ -25,7 +25,15 @@ struct BoundSurface {
   std::string dataset;  // the dataset config the ids refer to, as written
 };
 
-// The surface (with `surface.normals` if present) plus the binding arrays.
+// The binding's point arrays (ControlIds, Weights, Distance, MinBarycentric,
+// FaceId) and field data (Method, Offset, Level) added to `data`, whose
+// points are the bound vertices; and read back, checked for presence and
+// size (not against a mesh: validateBinding). Errors name `source`.
+void addBindingArrays(vtkPolyData* data, const SurfaceBinding& binding);
+SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& source);
+
+// The surface (with `surface.normals` if present) plus the binding arrays
+// and the field data 'Dataset'.
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
 // The same, checked against `dataset` as readBinding(path, dataset) checks.

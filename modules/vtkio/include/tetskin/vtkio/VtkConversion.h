@@ -10,10 +10,15 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
+class vtkPoints;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
 namespace tetskin {
+
+// Throws Error naming `sourceName` and the point when a coordinate is not
+// finite; no points (nullptr) give an empty matrix.
+Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName);
 
 // Triangles as polys; normals become the active point normals ("Normals"),
 // texture coordinates the active TCoords ("TCoords").

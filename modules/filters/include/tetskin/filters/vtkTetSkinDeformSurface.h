@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Surface deformation as a VTK filter (the kernel is SurfaceDeformer, report
+// sections 4.1-4.2): a bound surface follows a deformed control mesh.
+//
+// Input 0: a bound surface: the output of vtkTetSkinBindSurface or a .vtp
+// written by `tetskin bind` (the surface at rest with the binding's arrays).
+// Input 1: the control mesh, deformed (any vtkPointSet: its points are the
+// node positions, e.g. a frame of `tetskin simulate`). ControlIds minus
+// ControlIdOffset are point ids of input 1.
+// Output: input 0 with the deformed points and their smooth unit normals
+// (the active normals, "Normals"); its other arrays are passed on.
+// The displacement offset needs the control mesh at rest too: from the
+// optional input 2 (a vtkPointSet numbered as input 1), otherwise from
+// input 1's point array "Displacement" (rest = points - Displacement, as
+// `tetskin simulate` writes it).
+// Bad input (missing or malformed binding arrays, an id that is no point of
+// input 1, weights not summing to 1) is a vtkErrorMacro naming the input
+// and the vertex, and an empty output.
+
+#include <vtkPolyDataAlgorithm.h>
+
+class vtkAlgorithmOutput;
+class vtkPointSet;
+
+class vtkTetSkinDeformSurface : public vtkPolyDataAlgorithm {
+ public:
+  static vtkTetSkinDeformSurface* New();
+  vtkTypeMacro(vtkTetSkinDeformSurface, vtkPolyDataAlgorithm)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  // The deformed control mesh: input port 1.
+  void SetControlMeshConnection(vtkAlgorithmOutput* output);
+  void SetControlMeshData(vtkPointSet* points);
+  // The control mesh at rest (displacement offset only): input port 2.
+  void SetRestControlMeshConnection(vtkAlgorithmOutput* output);
+  void SetRestControlMeshData(vtkPointSet* points);
+
+  // Subtracted from ControlIds to give point ids of input 1. A binding from
+  // `tetskin bind` numbers nodes as the dataset does; a frame of `tetskin
+  // simulate` (or a level from `tetskin convert`) numbers them from 0 within
+  // its level: set this to the level's first node, the sum of the node
+  // counts of the levels below it (`tetskin info DATASET.json` lists
+  // them). Default 0.
+  vtkSetClampMacro(ControlIdOffset, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(ControlIdOffset, vtkIdType);
+
+ protected:
+  vtkTetSkinDeformSurface();
+  ~vtkTetSkinDeformSurface() override = default;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputs,
+                  vtkInformationVector* output) override;
+
+ private:
+  vtkTetSkinDeformSurface(const vtkTetSkinDeformSurface&) = delete;
+  void operator=(const vtkTetSkinDeformSurface&) = delete;
+  vtkIdType ControlIdOffset = 0;
+};

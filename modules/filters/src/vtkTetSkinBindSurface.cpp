@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/filters/vtkTetSkinBindSurface.h"
+
+#include <vtkAlgorithmOutput.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <exception>
+
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
+
+vtkStandardNewMacro(vtkTetSkinBindSurface);
+
+vtkTetSkinBindSurface::vtkTetSkinBindSurface() {
+  SetNumberOfInputPorts(2);
+}
+
+void vtkTetSkinBindSurface::SetControlMeshConnection(vtkAlgorithmOutput* output) {
+  SetInputConnection(1, output);
+}
+
+void vtkTetSkinBindSurface::SetControlMeshData(vtkUnstructuredGrid* grid) {
+  SetInputData(1, grid);
+}
+
+int vtkTetSkinBindSurface::FillInputPortInformation(int port, vtkInformation* info) {
+  if (port == 0) return Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+int vtkTetSkinBindSurface::RequestData(vtkInformation*, vtkInformationVector** inputs,
+                                       vtkInformationVector* outputs) {
+  vtkPolyData* surfaceIn = vtkPolyData::GetData(inputs[0]);
+  vtkUnstructuredGrid* controlIn = vtkUnstructuredGrid::GetData(inputs[1]);
+  vtkPolyData* out = vtkPolyData::GetData(outputs);
+  try {
+    using namespace tetskin;
+    const SurfaceMesh surface = fromVtkPolyData(surfaceIn, "input 0 (surface)");
+    TetMesh control = fromVtkUnstructuredGrid(controlIn, "input 1 (control mesh)");
+    // One level: control ids are point ids of input 1.
+    MultiLevelTetMesh mesh;
+    mesh.levels = {LevelRange{0, control.nodes.rows(), 0, control.elements.rows()}};
+    mesh.nodes = std::move(control.nodes);
+    mesh.elements = std::move(control.elements);
+    BindingOptions options;
+    options.method = Method == SEED    ? BindingMethod::Seed
+                     : Method == EMBED ? BindingMethod::Embed
+                                       : BindingMethod::Closest;
+    options.offset = OffsetMode == DISPLACEMENT ? tetskin::OffsetMode::Displacement
+                                                : tetskin::OffsetMode::Normal;
+    options.tieTolerance = TieTolerance;
+    const SurfaceBinding binding = bindSurface(surface, mesh, 0, options);
+    out->ShallowCopy(surfaceIn);
+    addBindingArrays(out, binding);
+  } catch (const std::exception& e) {
+    vtkErrorMacro(<< e.what());
+    out->Initialize();
+    return 0;
+  }
+  return 1;
+}
+
+void vtkTetSkinBindSurface::PrintSelf(ostream& os, vtkIndent indent) {
+  Superclass::PrintSelf(os, indent);
+  const char* methods[] = {"closest", "seed", "embed"};
+  os << indent << "Method: " << methods[Method] << "\n";
+  os << indent << "OffsetMode: " << (OffsetMode == DISPLACEMENT ? "displacement" : "normal")
+     << "\n";
+  os << indent << "TieTolerance: " << TieTolerance << "\n";
+}

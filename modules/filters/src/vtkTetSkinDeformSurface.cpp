@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/filters/vtkTetSkinDeformSurface.h"
+
+#include <vtkAlgorithmOutput.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <exception>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
+
+vtkStandardNewMacro(vtkTetSkinDeformSurface);
+
+namespace {
+
+constexpr const char* kBound = "input 0 (bound surface)";
+constexpr const char* kControl = "input 1 (control mesh)";
+constexpr const char* kRest = "input 2 (control mesh at rest)";
+
+// What the displacement offset needs: the control nodes at rest, from input
+// 2 or from input 1's Displacement array.
+tetskin::Points3 restPositions(vtkPointSet* control, vtkPointSet* rest,
+                               const tetskin::Points3& deformed) {
+  using tetskin::Error;
+  if (rest) {
+    tetskin::Points3 points = tetskin::fromVtkPoints(rest->GetPoints(), kRest);
+    if (points.rows() != deformed.rows())
+      throw Error(kRest, 0,
+                  "has " + std::to_string(points.rows()) + " points, input 1 has " +
+                      std::to_string(deformed.rows()));
+    return points;
+  }
+  vtkDataArray* d = control->GetPointData()->GetArray("Displacement");
+  if (!d)
+    throw Error(kControl, 0,
+                "the displacement offset needs the control mesh at rest: connect it to input 2, "
+                "or give input 1 a point array 'Displacement'");
+  if (d->GetNumberOfComponents() != 3 || d->GetNumberOfTuples() != deformed.rows())
+    throw Error(kControl, 0, "point array 'Displacement' is not one 3-vector per point");
+  tetskin::Points3 points = deformed;
+  for (tetskin::Index i = 0; i < points.rows(); ++i)
+    for (int k = 0; k < 3; ++k) points(i, k) -= d->GetComponent(i, k);
+  return points;
+}
+
+}  // namespace
+
+vtkTetSkinDeformSurface::vtkTetSkinDeformSurface() {
+  SetNumberOfInputPorts(3);
+}
+
+void vtkTetSkinDeformSurface::SetControlMeshConnection(vtkAlgorithmOutput* output) {
+  SetInputConnection(1, output);
+}
+void vtkTetSkinDeformSurface::SetControlMeshData(vtkPointSet* points) {
+  SetInputData(1, points);
+}
+void vtkTetSkinDeformSurface::SetRestControlMeshConnection(vtkAlgorithmOutput* output) {
+  SetInputConnection(2, output);
+}
+void vtkTetSkinDeformSurface::SetRestControlMeshData(vtkPointSet* points) {
+  SetInputData(2, points);
+}
+
+int vtkTetSkinDeformSurface::FillInputPortInformation(int port, vtkInformation* info) {
+  if (port == 0) return Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  if (port == 2) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector** inputs,
+                                         vtkInformationVector* outputs) {
+  vtkPolyData* boundIn = vtkPolyData::GetData(inputs[0]);
+  vtkPointSet* controlIn = vtkPointSet::GetData(inputs[1]);
+  vtkPointSet* restIn =
+      inputs[2]->GetNumberOfInformationObjects() > 0 ? vtkPointSet::GetData(inputs[2]) : nullptr;
+  vtkPolyData* out = vtkPolyData::GetData(outputs);
+  try {
+    using namespace tetskin;
+    const SurfaceMesh surface = fromVtkPolyData(boundIn, kBound);
+    SurfaceBinding binding = bindingArraysFromPolyData(boundIn, kBound);
+    const int k = binding.controlsPerVertex();
+    binding.controlIds.leftCols(k).array() -= static_cast<int>(ControlIdOffset);
+    const Points3 deformed = fromVtkPoints(controlIn->GetPoints(), kControl);
+    validateBinding(
+        binding, surface.vertexCount(), deformed.rows(),
+        std::string(kBound) + " with ControlIdOffset " + std::to_string(ControlIdOffset));
+    // The normal offset reads no rest positions.
+    const Points3 rest = binding.offset == tetskin::OffsetMode::Displacement
+                             ? restPositions(controlIn, restIn, deformed)
+                             : deformed;
+    SurfaceDeformer deformer(surface, binding, rest);
+    Points3 positions, normals;
+    deformer.deform(deformed, positions, normals);
+
+    out->ShallowCopy(boundIn);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(positions.rows());
+    for (Index i = 0; i < positions.rows(); ++i)
+      points->SetPoint(i, positions(i, 0), positions(i, 1), positions(i, 2));
+    out->SetPoints(points);
+    auto normalArray = vtkSmartPointer<vtkDoubleArray>::New();
+    normalArray->SetName("Normals");
+    normalArray->SetNumberOfComponents(3);
+    normalArray->SetNumberOfTuples(normals.rows());
+    for (Index i = 0; i < normals.rows(); ++i)
+      for (int c = 0; c < 3; ++c) normalArray->SetTypedComponent(i, c, normals(i, c));
+    out->GetPointData()->SetNormals(normalArray);
+  } catch (const std::exception& e) {
+    vtkErrorMacro(<< e.what());
+    out->Initialize();
+    return 0;
+  }
+  return 1;
+}
+
+void vtkTetSkinDeformSurface::PrintSelf(ostream& os, vtkIndent indent) {
+  Superclass::PrintSelf(os, indent);
+  os << indent << "ControlIdOffset: " << ControlIdOffset << "\n";
+}

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+#include <vtkCellArray.h>
+#include <vtkFieldData.h>
+#include <vtkHexahedron.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+
+#include <cmath>
+#include <limits>
+
+#include "FilterTestData.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/filters/vtkTetSkinBindSurface.h"
+#include "tetskin/vtkio/BindingFile.h"
+
+namespace tetskin {
+namespace {
+
+using test::bunnySurface;
+using test::controlLevelGrid;
+using test::ErrorLog;
+using test::kBoundLevel;
+using test::sampleDataset;
+
+TEST(BindSurfaceFilter, EqualsTheBindingOfTheCommandLineInTheGridsNumbering) {
+  const vtkSmartPointer<vtkPolyData> surface = toVtkPolyData(bunnySurface());
+  vtkNew<vtkIntArray> custom;  // an array of the user's, to be passed on
+  custom->SetName("Custom");
+  custom->SetNumberOfTuples(surface->GetNumberOfPoints());
+  custom->FillValue(7);
+  surface->GetPointData()->AddArray(custom);
+
+  for (int method : {vtkTetSkinBindSurface::CLOSEST, vtkTetSkinBindSurface::SEED,
+                     vtkTetSkinBindSurface::EMBED}) {
+    SCOPED_TRACE("method " + std::to_string(method));
+    vtkNew<vtkTetSkinBindSurface> bind;
+    bind->SetInputData(surface);
+    bind->SetControlMeshData(controlLevelGrid());
+    bind->SetMethod(method);
+    bind->Update();
+    vtkPolyData* out = bind->GetOutput();
+    ASSERT_EQ(out->GetNumberOfPoints(), surface->GetNumberOfPoints());
+    EXPECT_EQ(out->GetNumberOfPolys(), surface->GetNumberOfPolys());
+    ASSERT_NE(out->GetPointData()->GetArray("Custom"), nullptr);
+    const SurfaceBinding fromFilter = bindingArraysFromPolyData(out, "filter output");
+
+    // `tetskin bind` on the whole dataset: the same choices, its ids shifted
+    // by the level's first node.
+    BindingOptions options;
+    options.method = method == vtkTetSkinBindSurface::SEED    ? BindingMethod::Seed
+                     : method == vtkTetSkinBindSurface::EMBED ? BindingMethod::Embed
+                                                              : BindingMethod::Closest;
+    const SurfaceBinding reference =
+        bindSurface(bunnySurface(), sampleDataset().mesh, kBoundLevel, options);
+    const int k = reference.controlsPerVertex();
+    ASSERT_EQ(fromFilter.controlsPerVertex(), k);
+    const int first = static_cast<int>(sampleDataset().mesh.levels[kBoundLevel].firstNode);
+    ASSERT_GT(first, 0);
+    EXPECT_EQ(fromFilter.controlIds.leftCols(k),
+              (reference.controlIds.leftCols(k).array() - first).matrix());
+    EXPECT_EQ(fromFilter.weights, reference.weights);
+    EXPECT_EQ(fromFilter.distance, reference.distance);
+    // Embed's FaceId is the element: a cell id of the grid.
+    const int firstElement =
+        method == vtkTetSkinBindSurface::EMBED
+            ? static_cast<int>(sampleDataset().mesh.levels[kBoundLevel].firstElement)
+            : 0;
+    EXPECT_EQ(fromFilter.faceId, (reference.faceId.array() - firstElement).matrix());
+    EXPECT_EQ(fromFilter.level, 0);
+    EXPECT_EQ(fromFilter.method, reference.method);
+  }
+  // The input is left as it was.
+  EXPECT_EQ(surface->GetPointData()->GetArray("ControlIds"), nullptr);
+  EXPECT_EQ(surface->GetFieldData()->GetAbstractArray("Method"), nullptr);
+}
+
+TEST(BindSurfaceFilter, ParametersReachTheKernelAndRerunThePipeline) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  bind->Update();
+  EXPECT_EQ(bindingArraysFromPolyData(bind->GetOutput(), "out").offset, OffsetMode::Normal);
+  bind->SetOffsetModeToDisplacement();
+  bind->Update();  // a changed parameter runs the filter again
+  EXPECT_EQ(bindingArraysFromPolyData(bind->GetOutput(), "out").offset, OffsetMode::Displacement);
+  bind->SetMethod(99);  // clamped, as VTK's Set macros clamp
+  EXPECT_EQ(bind->GetMethod(), vtkTetSkinBindSurface::EMBED);
+}
+
+TEST(BindSurfaceFilter, BadInputIsAnErrorNamingTheInputAndElementAndAnEmptyOutput) {
+  {  // a control mesh cell that is not a tetrahedron
+    vtkSmartPointer<vtkUnstructuredGrid> grid = controlLevelGrid();
+    vtkNew<vtkHexahedron> hex;
+    for (int i = 0; i < 8; ++i) hex->GetPointIds()->SetId(i, i);
+    grid->InsertNextCell(hex->GetCellType(), hex->GetPointIds());
+    vtkNew<vtkTetSkinBindSurface> bind;
+    const ErrorLog errors(bind);
+    bind->SetInputData(toVtkPolyData(bunnySurface()));
+    bind->SetControlMeshData(grid);
+    bind->Update();
+    EXPECT_NE(
+        errors.text().find("input 1 (control mesh): cell " +
+                           std::to_string(grid->GetNumberOfCells() - 1) + " is a vtkHexahedron"),
+        std::string::npos)
+        << errors.text();
+    EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  {  // a surface point that is not a number
+    const vtkSmartPointer<vtkPolyData> surface = toVtkPolyData(bunnySurface());
+    surface->GetPoints()->SetPoint(5, std::numeric_limits<double>::quiet_NaN(), 0, 0);
+    vtkNew<vtkTetSkinBindSurface> bind;
+    const ErrorLog errors(bind);
+    bind->SetInputData(surface);
+    bind->SetControlMeshData(controlLevelGrid());
+    bind->Update();
+    EXPECT_NE(errors.text().find("input 0 (surface): point 5"), std::string::npos) << errors.text();
+    EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  {  // no triangles at all
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkTetSkinBindSurface> bind;
+    const ErrorLog errors(bind);
+    bind->SetInputData(empty);
+    bind->SetControlMeshData(controlLevelGrid());
+    bind->Update();
+    EXPECT_NE(errors.text().find("input 0 (surface): contains no triangles"), std::string::npos)
+        << errors.text();
+  }
+}
+
+}  // namespace
+}  // namespace tetskin

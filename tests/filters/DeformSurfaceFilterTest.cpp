@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <gtest/gtest.h>
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkTransform.h>
+#include <vtkTransformFilter.h>
+
+#include <cmath>
+
+#include "FilterTestData.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/filters/vtkTetSkinBindSurface.h"
+#include "tetskin/filters/vtkTetSkinDeformSurface.h"
+#include "tetskin/vtkio/BindingFile.h"
+
+namespace tetskin {
+namespace {
+
+using test::bunnySurface;
+using test::controlLevelGrid;
+using test::ErrorLog;
+using test::kBoundLevel;
+using test::sampleDataset;
+
+Points3 pointsOf(vtkPointSet* data) {
+  return fromVtkPoints(data->GetPoints(), "test");
+}
+
+Points3 normalsOf(vtkPolyData* data) {
+  vtkDataArray* n = data->GetPointData()->GetNormals();
+  EXPECT_NE(n, nullptr);
+  Points3 out(data->GetNumberOfPoints(), 3);
+  for (Index i = 0; i < out.rows(); ++i)
+    for (int k = 0; k < 3; ++k) out(i, k) = n ? n->GetComponent(i, k) : 0.0;
+  return out;
+}
+
+// Rows of `points` moved by `transform`'s rotation only (normals) or in full.
+Points3 transformed(vtkTransform* transform, const Points3& points, bool rotationOnly) {
+  Points3 out(points.rows(), 3);
+  for (Index i = 0; i < points.rows(); ++i) {
+    double in[3] = {points(i, 0), points(i, 1), points(i, 2)}, moved[3];
+    if (rotationOnly)
+      transform->TransformVector(in, moved);
+    else
+      transform->TransformPoint(in, moved);
+    for (int k = 0; k < 3; ++k) out(i, k) = moved[k];
+  }
+  return out;
+}
+
+double diagonal(const Points3& p) {
+  return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
+}
+
+// A grid whose points are moved by a smooth field, with the Displacement
+// array `tetskin simulate` writes.
+vtkSmartPointer<vtkUnstructuredGrid> bentGrid(bool withDisplacementArray) {
+  vtkSmartPointer<vtkUnstructuredGrid> grid = controlLevelGrid();
+  vtkPoints* points = grid->GetPoints();
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("Displacement");
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(points->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    const double d[3] = {0.3 * std::sin(0.4 * p[1]), 0.05 * p[0] * p[2], -0.2 * std::cos(p[1])};
+    displacement->SetTuple(i, d);
+    points->SetPoint(i, p[0] + d[0], p[1] + d[1], p[2] + d[2]);
+  }
+  if (withDisplacementArray) grid->GetPointData()->AddArray(displacement);
+  return grid;
+}
+
+TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  vtkNew<vtkTransform> motion;
+  vtkNew<vtkTransformFilter> move;
+  move->SetInputData(controlLevelGrid());
+  move->SetTransform(motion);
+  vtkNew<vtkTetSkinDeformSurface> deform;
+  deform->SetInputConnection(bind->GetOutputPort());
+  deform->SetControlMeshConnection(move->GetOutputPort());
+
+  deform->Update();  // at rest: the normal offset gives back the surface
+  const Points3 rest = pointsOf(deform->GetOutput());
+  const Points3 restNormals = normalsOf(deform->GetOutput());
+  const double tolerance = 1e-9 * diagonal(rest);
+  EXPECT_LT((rest - bunnySurface().positions).cwiseAbs().maxCoeff(), tolerance);
+  for (Index i = 0; i < restNormals.rows(); ++i)
+    ASSERT_NEAR(restNormals.row(i).norm(), 1.0, 1e-12) << "vertex " << i;
+
+  for (double angle : {30.0, 130.0}) {  // the pipeline reruns when the transform changes
+    SCOPED_TRACE("angle " + std::to_string(angle));
+    motion->Identity();
+    motion->Translate(1.5, -2.0, 0.25);
+    motion->RotateWXYZ(angle, 0.3, 1.0, -0.2);
+    deform->Update();
+    EXPECT_LT(
+        (pointsOf(deform->GetOutput()) - transformed(motion, rest, false)).cwiseAbs().maxCoeff(),
+        tolerance);
+    EXPECT_LT((normalsOf(deform->GetOutput()) - transformed(motion, restNormals, true))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-9);
+  }
+  // The binding arrays travel on, so a deformed surface can be inspected.
+  EXPECT_NE(deform->GetOutput()->GetPointData()->GetArray("MinBarycentric"), nullptr);
+}
+
+TEST(DeformSurfaceFilter, DisplacementOffsetTakesTheRestFromInputTwoOrTheDisplacementArray) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  bind->SetOffsetModeToDisplacement();
+  bind->Update();
+
+  // The kernel on the same data.
+  const SurfaceBinding binding = bindingArraysFromPolyData(bind->GetOutput(), "binding");
+  const vtkSmartPointer<vtkUnstructuredGrid> rest = controlLevelGrid();
+  SurfaceDeformer kernel(bunnySurface(), binding, pointsOf(rest));
+  Points3 expected, expectedNormals;
+  kernel.deform(pointsOf(bentGrid(true)), expected, expectedNormals);
+  ASSERT_GT((expected - bunnySurface().positions).cwiseAbs().maxCoeff(), 0.1);
+
+  {  // rest = points - Displacement
+    vtkNew<vtkTetSkinDeformSurface> deform;
+    deform->SetInputConnection(bind->GetOutputPort());
+    deform->SetControlMeshData(bentGrid(true));
+    deform->Update();
+    EXPECT_LT((pointsOf(deform->GetOutput()) - expected).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((normalsOf(deform->GetOutput()) - expectedNormals).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  {  // rest from input 2
+    vtkNew<vtkTetSkinDeformSurface> deform;
+    deform->SetInputConnection(bind->GetOutputPort());
+    deform->SetControlMeshData(bentGrid(false));
+    deform->SetRestControlMeshData(rest);
+    deform->Update();
+    EXPECT_LT((pointsOf(deform->GetOutput()) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  {  // neither: an error that says what is missing
+    vtkNew<vtkTetSkinDeformSurface> deform;
+    const ErrorLog errors(deform);
+    deform->SetInputConnection(bind->GetOutputPort());
+    deform->SetControlMeshData(bentGrid(false));
+    deform->Update();
+    EXPECT_NE(errors.text().find("the displacement offset needs the control mesh at rest"),
+              std::string::npos)
+        << errors.text();
+    EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
+  }
+}
+
+TEST(DeformSurfaceFilter, TakesABindingFromTheCommandLineWithTheLevelsFirstNodeAsOffset) {
+  // What `tetskin bind --level 1` writes: ids in the dataset's numbering.
+  BoundSurface bound;
+  bound.surface = bunnySurface();
+  bound.binding = bindSurface(bunnySurface(), sampleDataset().mesh, kBoundLevel);
+  bound.dataset = "bunny.json";
+  const vtkSmartPointer<vtkPolyData> file = bindingToPolyData(bound);
+  // A level-local frame, as `tetskin simulate` writes it, moved rigidly.
+  vtkNew<vtkTransform> motion;
+  motion->Translate(0.0, 3.0, -1.0);
+  vtkNew<vtkTransformFilter> move;
+  move->SetInputData(controlLevelGrid());
+  move->SetTransform(motion);
+
+  vtkNew<vtkTetSkinDeformSurface> deform;
+  const ErrorLog errors(deform);
+  deform->SetInputData(file);
+  deform->SetControlMeshConnection(move->GetOutputPort());
+  deform->Update();  // offset 0: the dataset's ids run past the level's points
+  EXPECT_NE(errors.text().find("input 0 (bound surface) with ControlIdOffset 0"), std::string::npos)
+      << errors.text();
+  EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
+
+  deform->SetControlIdOffset(sampleDataset().mesh.levels[kBoundLevel].firstNode);
+  deform->Update();
+  const Points3 moved = pointsOf(deform->GetOutput());
+  ASSERT_EQ(moved.rows(), bunnySurface().vertexCount());
+  EXPECT_LT((moved - transformed(motion, bunnySurface().positions, false)).cwiseAbs().maxCoeff(),
+            1e-9 * diagonal(moved));
+}
+
+TEST(DeformSurfaceFilter, AMalformedBindingIsAnErrorNamingTheArray) {
+  const vtkSmartPointer<vtkPolyData> plain = toVtkPolyData(bunnySurface());
+  vtkNew<vtkTetSkinDeformSurface> deform;
+  const ErrorLog errors(deform);
+  deform->SetInputData(plain);
+  deform->SetControlMeshData(controlLevelGrid());
+  deform->Update();
+  EXPECT_NE(errors.text().find("input 0 (bound surface): is not a TetSkin binding"),
+            std::string::npos)
+      << errors.text();
+  EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+}  // namespace
+}  // namespace tetskin
