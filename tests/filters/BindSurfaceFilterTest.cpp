@@ -14,15 +14,10 @@
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/filters/vtkTetSkinBindSurface.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
-namespace tetskin {
+namespace tetskin::test {
 namespace {
-
-using test::bunnySurface;
-using test::controlLevelGrid;
-using test::ErrorLog;
-using test::kBoundLevel;
-using test::sampleDataset;
 
 TEST(BindSurfaceFilter, EqualsTheBindingOfTheCommandLineInTheGridsNumbering) {
   const vtkSmartPointer<vtkPolyData> surface = toVtkPolyData(bunnySurface());
@@ -96,39 +91,40 @@ TEST(BindSurfaceFilter, BadInputIsAnErrorNamingTheInputAndElementAndAnEmptyOutpu
     for (int i = 0; i < 8; ++i) hex->GetPointIds()->SetId(i, i);
     grid->InsertNextCell(hex->GetCellType(), hex->GetPointIds());
     vtkNew<vtkTetSkinBindSurface> bind;
-    const ErrorLog errors(bind);
+    const VtkErrorCapture errors(bind);
     bind->SetInputData(toVtkPolyData(bunnySurface()));
     bind->SetControlMeshData(grid);
     bind->Update();
     EXPECT_NE(
-        errors.text().find("input 1 (control mesh): cell " +
-                           std::to_string(grid->GetNumberOfCells() - 1) + " is a vtkHexahedron"),
+        errors.message().find("input 1 (control mesh): cell " +
+                              std::to_string(grid->GetNumberOfCells() - 1) + " is a vtkHexahedron"),
         std::string::npos)
-        << errors.text();
+        << errors.message();
     EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), 0);
   }
   {  // a surface point that is not a number
     const vtkSmartPointer<vtkPolyData> surface = toVtkPolyData(bunnySurface());
     surface->GetPoints()->SetPoint(5, std::numeric_limits<double>::quiet_NaN(), 0, 0);
     vtkNew<vtkTetSkinBindSurface> bind;
-    const ErrorLog errors(bind);
+    const VtkErrorCapture errors(bind);
     bind->SetInputData(surface);
     bind->SetControlMeshData(controlLevelGrid());
     bind->Update();
-    EXPECT_NE(errors.text().find("input 0 (surface): point 5"), std::string::npos) << errors.text();
+    EXPECT_NE(errors.message().find("input 0 (surface): point 5"), std::string::npos)
+        << errors.message();
     EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), 0);
   }
   {  // no triangles at all
     vtkNew<vtkPolyData> empty;
     vtkNew<vtkTetSkinBindSurface> bind;
-    const ErrorLog errors(bind);
+    const VtkErrorCapture errors(bind);
     bind->SetInputData(empty);
     bind->SetControlMeshData(controlLevelGrid());
     bind->Update();
-    EXPECT_NE(errors.text().find("input 0 (surface): contains no triangles"), std::string::npos)
-        << errors.text();
+    EXPECT_NE(errors.message().find("input 0 (surface): contains no triangles"), std::string::npos)
+        << errors.message();
   }
 }
 
 }  // namespace
-}  // namespace tetskin
+}  // namespace tetskin::test

@@ -14,15 +14,10 @@
 #include "tetskin/filters/vtkTetSkinBindSurface.h"
 #include "tetskin/filters/vtkTetSkinDeformSurface.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
-namespace tetskin {
+namespace tetskin::test {
 namespace {
-
-using test::bunnySurface;
-using test::controlLevelGrid;
-using test::ErrorLog;
-using test::kBoundLevel;
-using test::sampleDataset;
 
 Points3 pointsOf(vtkPointSet* data) {
   return fromVtkPoints(data->GetPoints(), "test");
@@ -146,13 +141,13 @@ TEST(DeformSurfaceFilter, DisplacementOffsetTakesTheRestFromInputTwoOrTheDisplac
   }
   {  // neither: an error that says what is missing
     vtkNew<vtkTetSkinDeformSurface> deform;
-    const ErrorLog errors(deform);
+    const VtkErrorCapture errors(deform);
     deform->SetInputConnection(bind->GetOutputPort());
     deform->SetControlMeshData(bentGrid(false));
     deform->Update();
-    EXPECT_NE(errors.text().find("the displacement offset needs the control mesh at rest"),
+    EXPECT_NE(errors.message().find("the displacement offset needs the control mesh at rest"),
               std::string::npos)
-        << errors.text();
+        << errors.message();
     EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
   }
 }
@@ -172,12 +167,13 @@ TEST(DeformSurfaceFilter, TakesABindingFromTheCommandLineWithTheLevelsFirstNodeA
   move->SetTransform(motion);
 
   vtkNew<vtkTetSkinDeformSurface> deform;
-  const ErrorLog errors(deform);
+  const VtkErrorCapture errors(deform);
   deform->SetInputData(file);
   deform->SetControlMeshConnection(move->GetOutputPort());
   deform->Update();  // offset 0: the dataset's ids run past the level's points
-  EXPECT_NE(errors.text().find("input 0 (bound surface) with ControlIdOffset 0"), std::string::npos)
-      << errors.text();
+  EXPECT_NE(errors.message().find("input 0 (bound surface) with ControlIdOffset 0"),
+            std::string::npos)
+      << errors.message();
   EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
 
   deform->SetControlIdOffset(sampleDataset().mesh.levels[kBoundLevel].firstNode);
@@ -191,15 +187,15 @@ TEST(DeformSurfaceFilter, TakesABindingFromTheCommandLineWithTheLevelsFirstNodeA
 TEST(DeformSurfaceFilter, AMalformedBindingIsAnErrorNamingTheArray) {
   const vtkSmartPointer<vtkPolyData> plain = toVtkPolyData(bunnySurface());
   vtkNew<vtkTetSkinDeformSurface> deform;
-  const ErrorLog errors(deform);
+  const VtkErrorCapture errors(deform);
   deform->SetInputData(plain);
   deform->SetControlMeshData(controlLevelGrid());
   deform->Update();
-  EXPECT_NE(errors.text().find("input 0 (bound surface): is not a TetSkin binding"),
+  EXPECT_NE(errors.message().find("input 0 (bound surface): is not a TetSkin binding"),
             std::string::npos)
-      << errors.text();
+      << errors.message();
   EXPECT_EQ(deform->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 }  // namespace
-}  // namespace tetskin
+}  // namespace tetskin::test

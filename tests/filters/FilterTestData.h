@@ -1,11 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // What the filter tests share: the sample dataset, its level 1 as a VTK grid
-// numbered from 0, bunny_8k as VTK poly data, and an error observer.
+// numbered from 0, and bunny_8k as VTK poly data.
 
-#include <vtkCallbackCommand.h>
-#include <vtkNew.h>
-#include <vtkObject.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -36,22 +33,5 @@ inline const SurfaceMesh& bunnySurface() {
 inline vtkSmartPointer<vtkUnstructuredGrid> controlLevelGrid() {
   return toVtkUnstructuredGrid(extractLevel(sampleDataset().mesh, kBoundLevel));
 }
-
-// Collects the error messages an object reports (and keeps them off stderr).
-class ErrorLog {
- public:
-  explicit ErrorLog(vtkObject* object) {
-    callback_->SetClientData(&text_);
-    callback_->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-      *static_cast<std::string*>(client) += static_cast<const char*>(call);
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, callback_);
-  }
-  const std::string& text() const { return text_; }
-
- private:
-  std::string text_;
-  vtkNew<vtkCallbackCommand> callback_;
-};
 
 }  // namespace tetskin::test

@@ -104,19 +104,8 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
     deformer.deform(deformed, positions, normals);
 
     out->ShallowCopy(boundIn);
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(positions.rows());
-    for (Index i = 0; i < positions.rows(); ++i)
-      points->SetPoint(i, positions(i, 0), positions(i, 1), positions(i, 2));
-    out->SetPoints(points);
-    auto normalArray = vtkSmartPointer<vtkDoubleArray>::New();
-    normalArray->SetName("Normals");
-    normalArray->SetNumberOfComponents(3);
-    normalArray->SetNumberOfTuples(normals.rows());
-    for (Index i = 0; i < normals.rows(); ++i)
-      for (int c = 0; c < 3; ++c) normalArray->SetTypedComponent(i, c, normals(i, c));
-    out->GetPointData()->SetNormals(normalArray);
+    out->SetPoints(toVtkPoints(positions));
+    out->GetPointData()->SetNormals(toVtkVectors("Normals", normals));
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     out->Initialize();

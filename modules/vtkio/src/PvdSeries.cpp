@@ -7,9 +7,9 @@
 #include <cmath>
 #include <iomanip>
 
-#include "VtkErrorCapture.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin {
 namespace {
@@ -44,7 +44,7 @@ PvdSeries PvdSeries::read(const std::filesystem::path& pvdPath) {
   const std::string file = pvdPath.string();
   if (!std::filesystem::is_regular_file(pvdPath)) throw Error(file, 0, "cannot open for reading");
   auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
-  detail::VtkErrorCapture errors(parser);
+  VtkErrorCapture errors(parser);
   parser->SetFileName(pvdPath.c_str());
   if (!parser->Parse() || !parser->GetRootElement())
     throw Error(file, 0, "is not a readable XML file: " + errors.message("no root element"));

@@ -10,27 +10,14 @@
 #include "tetskin/vtkio/VtkConversion.h"
 
 namespace tetskin {
-namespace {
-
-vtkSmartPointer<vtkDoubleArray> vectors(const char* name, const Points3& values) {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(values.rows());
-  for (Index i = 0; i < values.rows(); ++i) a->SetTuple(i, values.row(i).data());
-  return a;
-}
-
-}  // namespace
-
 vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
                                                      const Points3& velocities,
                                                      const Eigen::VectorXd& vonMisesStress,
                                                      int level) {
   TetMesh deformed{positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
-  grid->GetPointData()->AddArray(vectors("Displacement", positions - rest.nodes));
-  grid->GetPointData()->AddArray(vectors("Velocity", velocities));
+  grid->GetPointData()->AddArray(toVtkVectors("Displacement", positions - rest.nodes));
+  grid->GetPointData()->AddArray(toVtkVectors("Velocity", velocities));
   auto stress = vtkSmartPointer<vtkDoubleArray>::New();
   stress->SetName("VonMisesStress");
   auto ratio = vtkSmartPointer<vtkDoubleArray>::New();

@@ -5,13 +5,13 @@
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 
-#include "VtkErrorCapture.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/PlyFormat.h"
 #include "tetskin/vtkio/VtkConversion.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -22,7 +22,7 @@ SurfaceMesh readWithVtk(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
   auto reader = vtkSmartPointer<Reader>::New();
-  detail::VtkErrorCapture errors(reader);
+  VtkErrorCapture errors(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
   if (errors.failed() || reader->GetOutput()->GetNumberOfPolys() == 0)
@@ -35,7 +35,7 @@ void writeWithVtk(const std::filesystem::path& path, const SurfaceMesh& mesh) {
   vtkSmartPointer<vtkPolyData> data = toVtkPolyData(mesh);
   writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
     auto writer = vtkSmartPointer<Writer>::New();
-    detail::VtkErrorCapture errors(writer);
+    VtkErrorCapture errors(writer);
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(data);
     writer->SetFileTypeToBinary();

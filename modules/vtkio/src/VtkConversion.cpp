@@ -18,15 +18,6 @@
 namespace tetskin {
 namespace {
 
-vtkSmartPointer<vtkPoints> toVtkPoints(const Points3& points) {
-  auto out = vtkSmartPointer<vtkPoints>::New();
-  out->SetDataTypeToDouble();
-  out->SetNumberOfPoints(points.rows());
-  for (Index i = 0; i < points.rows(); ++i)
-    out->SetPoint(i, points(i, 0), points(i, 1), points(i, 2));
-  return out;
-}
-
 // Fixed-size connectivity: offsets 0, k, 2k, ... and the flattened ids.
 template <int K, typename Matrix>
 vtkSmartPointer<vtkCellArray> toCells(const Matrix& cells) {
@@ -43,6 +34,24 @@ vtkSmartPointer<vtkCellArray> toCells(const Matrix& cells) {
 }
 
 }  // namespace
+
+vtkSmartPointer<vtkPoints> toVtkPoints(const Points3& points) {
+  auto out = vtkSmartPointer<vtkPoints>::New();
+  out->SetDataTypeToDouble();
+  out->SetNumberOfPoints(points.rows());
+  for (Index i = 0; i < points.rows(); ++i)
+    out->SetPoint(i, points(i, 0), points(i, 1), points(i, 2));
+  return out;
+}
+
+vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& values) {
+  auto out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->SetName(name);
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(values.rows());
+  for (Index i = 0; i < values.rows(); ++i) out->SetTuple(i, values.row(i).data());
+  return out;
+}
 
 Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
   const Index n = points ? points->GetNumberOfPoints() : 0;
@@ -61,15 +70,7 @@ vtkSmartPointer<vtkPolyData> toVtkPolyData(const SurfaceMesh& mesh) {
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(toVtkPoints(mesh.positions));
   out->SetPolys(toCells<3>(mesh.triangles));
-  if (mesh.hasNormals()) {
-    auto normals = vtkSmartPointer<vtkDoubleArray>::New();
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(mesh.normals.rows());
-    for (Index i = 0; i < mesh.normals.rows(); ++i)
-      normals->SetTuple(i, mesh.normals.row(i).data());
-    out->GetPointData()->SetNormals(normals);
-  }
+  if (mesh.hasNormals()) out->GetPointData()->SetNormals(toVtkVectors("Normals", mesh.normals));
   if (mesh.hasTexcoords()) {
     auto tcoords = vtkSmartPointer<vtkDoubleArray>::New();
     tcoords->SetName("TCoords");

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "VtkErrorCapture.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkLogger.h>
 #include <vtkObject.h>
 #include <vtkStringOutputWindow.h>
 
-namespace tetskin::detail {
+namespace tetskin {
 namespace {
 
 // VTK messages read "ERROR: In <file>, line N\n<class> (<address>): text";
@@ -55,4 +55,4 @@ std::string VtkErrorCapture::message(const std::string& fallback) const {
   return printed.empty() ? fallback : printed;
 }
 
-}  // namespace tetskin::detail
+}  // namespace tetskin

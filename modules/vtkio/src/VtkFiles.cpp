@@ -15,10 +15,10 @@
 #include <fstream>
 #include <string>
 
-#include "VtkErrorCapture.h"
 #include "VtkXmlHeader.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin {
 namespace {
@@ -27,7 +27,7 @@ template <typename Writer, typename Data>
 void writeXml(const std::filesystem::path& path, Data* data) {
   writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
     auto writer = vtkSmartPointer<Writer>::New();
-    detail::VtkErrorCapture errors(writer);
+    VtkErrorCapture errors(writer);
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(data);
     writer->SetDataModeToAppended();
@@ -43,7 +43,7 @@ vtkSmartPointer<Data> readXml(const std::filesystem::path& path) {
     throw Error(path.string(), 0, "cannot open for reading");
   detail::checkVtkXmlHeader(path);
   auto reader = vtkSmartPointer<Reader>::New();
-  detail::VtkErrorCapture errors(reader);
+  VtkErrorCapture errors(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkSmartPointer<Data> out = reader->GetOutput();

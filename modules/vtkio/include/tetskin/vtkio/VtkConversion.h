@@ -10,15 +10,21 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
+class vtkDoubleArray;
 class vtkPoints;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
 namespace tetskin {
 
-// Throws Error naming `sourceName` and the point when a coordinate is not
-// finite; no points (nullptr) give an empty matrix.
+// Rows as double points, and back: the way back throws Error naming
+// `sourceName` and the point when a coordinate is not finite; no points
+// (nullptr) give an empty matrix.
+vtkSmartPointer<vtkPoints> toVtkPoints(const Points3& points);
 Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName);
+
+// Rows as a named 3-component double array (normals, displacements).
+vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& values);
 
 // Triangles as polys; normals become the active point normals ("Normals"),
 // texture coordinates the active TCoords ("TCoords").

@@ -3,8 +3,9 @@
 // Collects what a VTK algorithm or parser reports (its error events, and
 // whatever VTK prints through the output window meanwhile: executive errors,
 // parser messages) instead of printing it, so a failed read or write becomes
-// one tetskin::Error naming the file. Not thread-safe: VTK's output window
-// is global.
+// one tetskin::Error naming the file (and, in tests, so an algorithm's
+// reported error can be checked). Not thread-safe: VTK's output window is
+// global.
 
 #include <vtkSmartPointer.h>
 
@@ -14,7 +15,7 @@ class vtkObject;
 class vtkOutputWindow;
 class vtkStringOutputWindow;
 
-namespace tetskin::detail {
+namespace tetskin {
 
 class VtkErrorCapture {
  public:
@@ -36,4 +37,4 @@ class VtkErrorCapture {
   vtkSmartPointer<vtkStringOutputWindow> window_;
 };
 
-}  // namespace tetskin::detail
+}  // namespace tetskin
