@@ -8,6 +8,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <chrono>
 #include <cstdio>
@@ -18,9 +19,11 @@
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/filters/vtkTetSkinDeformSurface.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/spatial/TriangleDistance.h"
+#include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 
 using namespace tetskin;
@@ -96,6 +99,58 @@ void deformationRow(const char* name, const SurfaceMesh& surface, const SurfaceB
               1e3 * copy, frame / copy, static_cast<double>(bytes) / 1e6);
 }
 
+// The deform filter's update per frame (the control mesh's points change,
+// the bound surface does not) against the kernel alone and against the
+// filter with its bound surface marked modified every frame, so that all it
+// derives from input 0 is derived again.
+void deformFilterRow(const char* name, const SurfaceMesh& surface, SurfaceBinding binding,
+                     OffsetMode offset, const Dataset& d) {
+  binding.offset = offset;
+  vtkSmartPointer<vtkPolyData> bound = toVtkPolyData(surface);
+  addBindingArrays(bound, binding);
+  auto rest = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  rest->SetPoints(toVtkPoints(d.mesh.nodes));
+  auto control = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  control->SetPoints(toVtkPoints(d.mesh.nodes));
+  auto filter = vtkSmartPointer<vtkTetSkinDeformSurface>::New();
+  filter->SetInputData(0, bound);
+  filter->SetControlMeshData(control);
+  filter->SetRestControlMeshData(rest);
+  const Points3 moved = d.mesh.nodes * 1.01;
+  vtkPoints* points = control->GetPoints();
+  auto nextFrame = [&, frame = 0]() mutable {
+    const double scale = 1.0 + 1e-3 * (++frame % 2);
+    for (Index i = 0; i < moved.rows(); ++i)
+      points->SetPoint(i, scale * moved(i, 0), scale * moved(i, 1), scale * moved(i, 2));
+    points->Modified();
+  };
+  const int repeat = surface.vertexCount() > 200000 ? 10 : 50;
+  nextFrame();
+  filter->Update();  // warm up
+  const double pointsOnly = seconds(nextFrame, repeat);
+  const double cached = seconds(
+                            [&] {
+                              nextFrame();
+                              filter->Update();
+                            },
+                            repeat) -
+                        pointsOnly;
+  const double rebuilt = seconds(
+                             [&] {
+                               nextFrame();
+                               bound->Modified();
+                               filter->Update();
+                             },
+                             repeat) -
+                         pointsOnly;
+  SurfaceDeformer deformer(surface, binding, d.mesh.nodes);
+  Points3 positions, normals;
+  deformer.deform(moved, positions, normals);
+  const double kernel = seconds([&] { deformer.deform(moved, positions, normals); }, repeat);
+  std::printf("%-22s %-12s %10.2f %10.2f %10.2f %9.2fx %9.2fx\n", name, toString(offset),
+              1e3 * cached, 1e3 * rebuilt, 1e3 * kernel, rebuilt / cached, cached / kernel);
+}
+
 }  // namespace
 
 int main() {
@@ -151,5 +206,15 @@ int main() {
               "copy ms", "vs copy", "MB");
   deformationRow("bunny_64k", fine, closest, d);
   deformationRow("1M (bunny_8k, Loop x4)", million, millionBinding, d);
+
+  std::printf(
+      "\nvtkTetSkinDeformSurface per frame (control points changed): its update against the\n"
+      "same with input 0 marked modified (all derived from it again) and the kernel alone\n");
+  std::printf("%-22s %-12s %10s %10s %10s %10s %10s\n", "surface", "offset", "update ms",
+              "rebuilt ms", "kernel ms", "rebuilt/", "/kernel");
+  for (OffsetMode offset : {OffsetMode::Normal, OffsetMode::Displacement})
+    deformFilterRow("bunny_64k", fine, closest, offset, d);
+  for (OffsetMode offset : {OffsetMode::Normal, OffsetMode::Displacement})
+    deformFilterRow("1M (bunny_8k, Loop x4)", million, millionBinding, offset, d);
   return 0;
 }

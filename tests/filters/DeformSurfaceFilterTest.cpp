@@ -152,6 +152,80 @@ TEST(DeformSurfaceFilter, DisplacementOffsetTakesTheRestFromInputTwoOrTheDisplac
   }
 }
 
+// Points of `grid` (and its Displacement array, if any) moved by `shift`.
+void translate(vtkPointSet* grid, const Eigen::RowVector3d& shift, bool displacementToo) {
+  vtkPoints* points = grid->GetPoints();
+  vtkDataArray* displacement = grid->GetPointData()->GetArray("Displacement");
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    points->SetPoint(i, p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]);
+    if (displacementToo)
+      for (int k = 0; k < 3; ++k)
+        displacement->SetComponent(i, k, displacement->GetComponent(i, k) + shift[k]);
+  }
+  points->Modified();
+  if (displacementToo) displacement->Modified();
+}
+
+TEST(DeformSurfaceFilter, WhatItKeepsBetweenUpdatesFollowsChangesOfItsInputs) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  bind->SetOffsetModeToDisplacement();
+  bind->Update();
+  vtkNew<vtkPolyData> bound;
+  bound->DeepCopy(bind->GetOutput());
+  const SurfaceBinding binding = bindingArraysFromPolyData(bound, "binding");
+
+  // Each update against the kernel made afresh for that update's inputs.
+  auto expectKernelResult = [&](vtkTetSkinDeformSurface* deform, const Points3& controlRest,
+                                const char* what) {
+    SCOPED_TRACE(what);
+    deform->Update();
+    SurfaceDeformer kernel(fromVtkPolyData(bound, "bound"), binding, controlRest);
+    Points3 expected, expectedNormals;
+    kernel.deform(pointsOf(vtkPointSet::SafeDownCast(deform->GetInputDataObject(1, 0))), expected,
+                  expectedNormals);
+    ASSERT_EQ(deform->GetOutput()->GetNumberOfPoints(), expected.rows());
+    EXPECT_LT((pointsOf(deform->GetOutput()) - expected).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((normalsOf(deform->GetOutput()) - expectedNormals).cwiseAbs().maxCoeff(), 1e-12);
+  };
+  const Eigen::RowVector3d up(0.0, 0.0, 0.5);
+
+  {  // rest from input 2
+    const vtkSmartPointer<vtkUnstructuredGrid> control = bentGrid(false);
+    const vtkSmartPointer<vtkUnstructuredGrid> rest = controlLevelGrid();
+    vtkNew<vtkTetSkinDeformSurface> deform;
+    deform->SetInputData(bound);
+    deform->SetControlMeshData(control);
+    deform->SetRestControlMeshData(rest);
+    expectKernelResult(deform, pointsOf(rest), "first update");
+    translate(control, up, false);
+    expectKernelResult(deform, pointsOf(rest), "the control mesh moved");
+    translate(rest, up, false);
+    expectKernelResult(deform, pointsOf(rest), "the rest moved");
+    const Points3 before = pointsOf(deform->GetOutput());
+    translate(bound, up, false);  // the surface's rest positions feed the shifts
+    expectKernelResult(deform, pointsOf(rest), "the bound surface moved");
+    const Points3 moved = pointsOf(deform->GetOutput()) - before;
+    EXPECT_LT((moved.rowwise() - up).cwiseAbs().maxCoeff(), 1e-12);
+    translate(bound, -up, false);
+  }
+  {  // rest from the Displacement array, from frame to frame
+    const vtkSmartPointer<vtkUnstructuredGrid> control = bentGrid(true);
+    vtkNew<vtkTetSkinDeformSurface> deform;
+    deform->SetInputData(bound);
+    deform->SetControlMeshData(control);
+    const Points3 rest = pointsOf(controlLevelGrid());
+    expectKernelResult(deform, rest, "first frame");
+    translate(control, up, true);  // the same rest, displaced further
+    expectKernelResult(deform, rest, "second frame");
+    translate(control, up, false);  // the rest moved: points moved, displacements not
+    expectKernelResult(deform, rest.rowwise() + up, "a frame with another rest");
+  }
+}
+
 TEST(DeformSurfaceFilter, TakesABindingFromTheCommandLineWithTheLevelsFirstNodeAsOffset) {
   // What `tetskin bind --level 1` writes: ids in the dataset's numbering.
   BoundSurface bound;

@@ -3,6 +3,7 @@
 
 #include <vtkAlgorithmOutput.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -11,7 +12,9 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <exception>
+#include <optional>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -52,11 +55,36 @@ tetskin::Points3 restPositions(vtkPointSet* control, vtkPointSet* rest,
   return points;
 }
 
+// Whether the displacement offset's shifts made from `kept` serve `rest`:
+// the same positions to within rounding (rest positions taken from a
+// Displacement array, points - Displacement, differ from frame to frame in
+// the last bits), 1e-10 of the largest coordinate.
+bool sameRest(const tetskin::Points3& rest, const tetskin::Points3& kept) {
+  if (rest.rows() != kept.rows()) return false;
+  if (rest.size() == 0) return true;
+  const double scale = std::max(rest.cwiseAbs().maxCoeff(), kept.cwiseAbs().maxCoeff());
+  return (rest - kept).cwiseAbs().maxCoeff() <= 1e-10 * scale;
+}
+
 }  // namespace
+
+struct vtkTetSkinDeformSurface::Derived {
+  const vtkPolyData* bound = nullptr;  // identity only, with its time
+  vtkMTimeType boundTime = 0;
+  vtkIdType controlIdOffset = 0;
+  tetskin::SurfaceMesh surface;
+  tetskin::SurfaceBinding binding;          // ids minus controlIdOffset
+  tetskin::Index checkedControlCount = -1;  // the binding was validated against it
+  tetskin::Points3 rest;                    // the deformer's shifts came from it
+  std::optional<tetskin::SurfaceDeformer> deformer;
+  tetskin::Points3 positions, normals;
+};
 
 vtkTetSkinDeformSurface::vtkTetSkinDeformSurface() {
   SetNumberOfInputPorts(3);
 }
+
+vtkTetSkinDeformSurface::~vtkTetSkinDeformSurface() = default;
 
 void vtkTetSkinDeformSurface::SetControlMeshConnection(vtkAlgorithmOutput* output) {
   SetInputConnection(1, output);
@@ -87,27 +115,49 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
   vtkPolyData* out = vtkPolyData::GetData(outputs);
   try {
     using namespace tetskin;
-    const SurfaceMesh surface = fromVtkPolyData(boundIn, kBound);
-    SurfaceBinding binding = bindingArraysFromPolyData(boundIn, kBound);
-    const int k = binding.controlsPerVertex();
-    binding.controlIds.leftCols(k).array() -= static_cast<int>(ControlIdOffset);
+    const vtkMTimeType boundTime =
+        std::max(boundIn->GetMTime(), boundIn->GetFieldData()->GetMTime());
+    if (!Kept || Kept->bound != boundIn || Kept->boundTime != boundTime ||
+        Kept->controlIdOffset != ControlIdOffset) {
+      Kept.reset();
+      auto derived = std::make_unique<Derived>();
+      derived->surface = fromVtkPolyData(boundIn, kBound);
+      derived->binding = bindingArraysFromPolyData(boundIn, kBound);
+      const int k = derived->binding.controlsPerVertex();
+      derived->binding.controlIds.leftCols(k).array() -= static_cast<int>(ControlIdOffset);
+      derived->bound = boundIn;
+      derived->boundTime = boundTime;
+      derived->controlIdOffset = ControlIdOffset;
+      Kept = std::move(derived);
+    }
+    Derived& kept = *Kept;
     const Points3 deformed = fromVtkPoints(controlIn->GetPoints(), kControl);
-    validateBinding(
-        binding, surface.vertexCount(), deformed.rows(),
-        std::string(kBound) + " with ControlIdOffset " + std::to_string(ControlIdOffset));
-    // The normal offset reads no rest positions.
-    const Points3 rest = binding.offset == tetskin::OffsetMode::Displacement
-                             ? restPositions(controlIn, restIn, deformed)
-                             : deformed;
-    SurfaceDeformer deformer(surface, binding, rest);
-    Points3 positions, normals;
-    deformer.deform(deformed, positions, normals);
+    if (deformed.rows() != kept.checkedControlCount) {
+      kept.deformer.reset();
+      validateBinding(
+          kept.binding, kept.surface.vertexCount(), deformed.rows(),
+          std::string(kBound) + " with ControlIdOffset " + std::to_string(ControlIdOffset));
+      kept.checkedControlCount = deformed.rows();
+    }
+    if (kept.binding.offset == OffsetMode::Displacement) {
+      Points3 rest = restPositions(controlIn, restIn, deformed);
+      if (kept.deformer && !sameRest(rest, kept.rest)) kept.deformer.reset();
+      if (!kept.deformer) {
+        kept.deformer.emplace(kept.surface, kept.binding, rest);
+        kept.rest = std::move(rest);
+      }
+    } else if (!kept.deformer) {
+      // The normal offset reads no rest positions.
+      kept.deformer.emplace(kept.surface, kept.binding, deformed);
+    }
+    kept.deformer->deform(deformed, kept.positions, kept.normals);
 
     out->ShallowCopy(boundIn);
-    out->SetPoints(toVtkPoints(positions));
-    out->GetPointData()->SetNormals(toVtkVectors("Normals", normals));
+    out->SetPoints(toVtkPoints(kept.positions));
+    out->GetPointData()->SetNormals(toVtkVectors("Normals", kept.normals));
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
+    Kept.reset();
     out->Initialize();
     return 0;
   }

@@ -17,8 +17,14 @@
 // Bad input (missing or malformed binding arrays, an id that is no point of
 // input 1, weights not summing to 1) is a vtkErrorMacro naming the input
 // and the vertex, and an empty output.
+// Per frame only input 1's points are read: what the filter derives from
+// input 0 (the surface, the binding, its checks, the deformer's records) is
+// kept until input 0, ControlIdOffset or input 1's point count changes, and
+// the displacement offset's shifts until the rest positions do.
 
 #include <vtkPolyDataAlgorithm.h>
+
+#include <memory>
 
 class vtkAlgorithmOutput;
 class vtkPointSet;
@@ -47,7 +53,7 @@ class vtkTetSkinDeformSurface : public vtkPolyDataAlgorithm {
 
  protected:
   vtkTetSkinDeformSurface();
-  ~vtkTetSkinDeformSurface() override = default;
+  ~vtkTetSkinDeformSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputs,
                   vtkInformationVector* output) override;
@@ -56,4 +62,6 @@ class vtkTetSkinDeformSurface : public vtkPolyDataAlgorithm {
   vtkTetSkinDeformSurface(const vtkTetSkinDeformSurface&) = delete;
   void operator=(const vtkTetSkinDeformSurface&) = delete;
   vtkIdType ControlIdOffset = 0;
+  struct Derived;  // what is kept from input 0 between updates
+  std::unique_ptr<Derived> Kept;
 };
