@@ -21,6 +21,7 @@
 
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/simulation/Prolongation.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -176,13 +177,27 @@ void Scene::showDrawing(std::unique_ptr<DeformableSurface> drawing) {
 void Scene::rebuildControl() {
   if (control_) renderer_->RemoveActor(control_->actor());
   control_.reset();
-  if (!dataset_ || !controlStyle_) return;
+  controlTransfer_ = SparseMatrix();
+  if (!dataset_) return;
   const TetMesh rest = extractLevel(dataset_->mesh, controlLevel_);
+  if (controlLevel_ != level_)
+    controlTransfer_ = nodalProlongation(extractLevel(dataset_->mesh, level_), rest.nodes);
+  if (!controlStyle_) return;
   control_ = std::make_unique<ControlMeshActor>(rest, *controlStyle_);
   control_->actor()->PickableOff();
   renderer_->AddActor(control_->actor());
-  const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(controlLevel_)];
-  control_->update(nodes_.middleRows(r.firstNode, r.nodeCount));
+  control_->update(shownControlPositions());
+}
+
+Points3 Scene::shownControlPositions() const {
+  if (!dataset_) return Points3();
+  const MultiLevelTetMesh& mesh = dataset_->mesh;
+  const LevelRange& shown = mesh.levels[static_cast<std::size_t>(controlLevel_)];
+  if (controlLevel_ == level_) return nodes_.middleRows(shown.firstNode, shown.nodeCount);
+  const LevelRange& simulated = mesh.levels[static_cast<std::size_t>(level_)];
+  const Points3 displacement = nodes_.middleRows(simulated.firstNode, simulated.nodeCount) -
+                               mesh.nodes.middleRows(simulated.firstNode, simulated.nodeCount);
+  return mesh.nodes.middleRows(shown.firstNode, shown.nodeCount) + controlTransfer_ * displacement;
 }
 
 void Scene::setRenderPath(RenderPath path) {
@@ -379,7 +394,7 @@ FrameTimes Scene::showControlState(const Points3& levelPositions) {
   nodes_.middleRows(r.firstNode, r.nodeCount) = levelPositions;
   deformedValid_ = false;
   if (surfaceDrawing_) times = surfaceDrawing_->update(nodes_);
-  if (control_ && controlLevel_ == level_) control_->update(levelPositions);
+  if (control_) control_->update(shownControlPositions());
   updateDiagnostics();
   return times;
 }

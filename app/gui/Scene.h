@@ -21,6 +21,7 @@
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/vtkio/BindingFile.h"
 
 class vtkActor;
@@ -68,8 +69,14 @@ class Scene {
   void setFurParameters(const FurParameters& fur);
   void setControlStyle(std::optional<ControlMeshStyle> style);  // nullopt: hidden
   std::optional<ControlMeshStyle> controlStyle() const { return controlStyle_; }
-  void setControlLevel(int level);  // the shown level; other than level() it stays at rest
+  // The shown control level. Another level than level() follows the
+  // simulated one: each of its nodes moves with the simulated level's
+  // displacement interpolated at its rest position (barycentric in the
+  // simulated level's tetrahedra, as the multigrid's transfer operators).
+  void setControlLevel(int level);
   int controlLevel() const { return controlLevel_; }
+  // The shown control level's node positions this frame (level-local).
+  Points3 shownControlPositions() const;
   void setSurfaceVisible(bool visible);
   bool surfaceVisible() const { return surfaceVisible_; }
   // The fur of the fur paths on its own (the skin stays).
@@ -125,8 +132,7 @@ class Scene {
   // showDrawing() of the current state's drawing (none without a surface).
   void rebuildSurface();
   void rebuildControl();
-  // The control mesh drawn at the binding's level (after a new binding;
-  // the simulation moves the control mesh of that level only).
+  // The control mesh drawn at the binding's level (after a new binding).
   void showControlAtBindingLevel();
   void applyColoring();
   void updateDiagnostics();
@@ -152,6 +158,9 @@ class Scene {
   std::unique_ptr<SurfaceDeformer> deformer_;
   std::unique_ptr<DeformableSurface> surfaceDrawing_;
   std::unique_ptr<ControlMeshActor> control_;
+  // Shown level's nodes x simulated level's nodes (empty when they are one
+  // level): nodalProlongation at the shown level's rest nodes.
+  SparseMatrix controlTransfer_;
   vtkSmartPointer<vtkActor> problems_, triangle_;
   vtkSmartPointer<vtkScalarBarActor> legend_;
   vtkSmartPointer<vtkTextActor> overlay_;

@@ -5,6 +5,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <gtest/gtest.h>
 #include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
@@ -420,6 +421,55 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
 
 // Opening a binding of another level moves the control mesh to that level,
 // as a rebind does, and the control level field says so.
+// A control level other than the simulated one follows it: a rigid motion
+// of the simulated level moves the shown level's nodes (and the drawn mesh)
+// rigidly, and simulated steps move them.
+TEST_F(Gui, AnotherControlLevelFollowsTheSimulatedLevel) {
+  openSample();
+  Scene& scene = window_->scene();
+  ASSERT_EQ(scene.level(), 2);
+  child<QSpinBox>("controlLevel")->setValue(0);
+  ASSERT_EQ(scene.controlLevel(), 0);
+  const MultiLevelTetMesh& mesh = scene.dataset().mesh;
+  const LevelRange& shown = mesh.levels[0];
+  const LevelRange& simulated = mesh.levels[2];
+  const Points3 shownRest = mesh.nodes.middleRows(shown.firstNode, shown.nodeCount);
+  EXPECT_LT((scene.shownControlPositions() - shownRest).cwiseAbs().maxCoeff(), 1e-12);
+
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.2, 1.0, -0.3).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d shift(0.4, -1.2, 2.0);
+  auto moved = [&](const Points3& p) -> Points3 {
+    return (p * turn.transpose()).rowwise() + shift;
+  };
+  scene.showControlState(moved(mesh.nodes.middleRows(simulated.firstNode, simulated.nodeCount)));
+  const Points3 expected = moved(shownRest);
+  const double size = (shownRest.colwise().maxCoeff() - shownRest.colwise().minCoeff()).norm();
+  EXPECT_LT((scene.shownControlPositions() - expected).cwiseAbs().maxCoeff(), 1e-9 * size);
+  // What is drawn: the control actor is the renderer's actor whose bounds
+  // are those of the moved level.
+  double drawnBounds[6] = {0, 0, 0, 0, 0, 0};
+  bool found = false;
+  vtkActorCollection* actors = window_->renderer()->GetActors();
+  actors->InitTraversal();
+  for (vtkActor* a = actors->GetNextActor(); a; a = actors->GetNextActor())
+    if (a != scene.surfaceActor() && a->GetVisibility() && a->GetMapper()->GetInput() &&
+        a->GetMapper()->GetInput()->GetNumberOfPoints() == shown.nodeCount) {
+      a->GetBounds(drawnBounds);
+      found = true;
+    }
+  ASSERT_TRUE(found);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(drawnBounds[2 * k], expected.col(k).minCoeff(), 1e-9 * size) << k;
+    EXPECT_NEAR(drawnBounds[2 * k + 1], expected.col(k).maxCoeff(), 1e-9 * size) << k;
+  }
+
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_LT((scene.shownControlPositions() - shownRest).cwiseAbs().maxCoeff(), 1e-12);
+  for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_GT((scene.shownControlPositions() - shownRest).cwiseAbs().maxCoeff(), 1e-6 * size);
+}
+
 TEST_F(Gui, OpeningABindingShowsTheControlMeshOfItsLevel) {
   openSample();
   child<QSpinBox>("rebindLevel")->setValue(1);
