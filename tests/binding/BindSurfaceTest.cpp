@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "SampleData.h"
 #include "Shapes.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
@@ -13,12 +14,8 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
-
-const Dataset& sampleDataset() {
-  static const Dataset d = loadDataset(kData + "bunny.json");
-  return d;
-}
+using test::kSampleData;
+using test::sampleDataset;
 
 void expectWeightsSumToOne(const SurfaceBinding& b) {
   const int k = b.controlsPerVertex();
@@ -27,7 +24,7 @@ void expectWeightsSumToOne(const SurfaceBinding& b) {
 }
 
 TEST(BindSurface, ClosestEqualsBruteForceOnTheBunny) {
-  const SurfaceMesh surface = readObj(kData + "bunny_8k.obj");
+  const SurfaceMesh surface = readObj(kSampleData + "bunny_8k.obj");
   for (int level = 0; level < sampleDataset().mesh.levelCount(); ++level) {
     SCOPED_TRACE("level " + std::to_string(level));
     const SurfaceBinding fast = bindSurface(surface, sampleDataset().mesh, level);
@@ -83,7 +80,7 @@ TEST(BindSurface, VertexOnAControlTriangleGetsThatTriangle) {
 }
 
 TEST(BindSurface, EveryMethodGivesValidWeights) {
-  const SurfaceMesh surface = readObj(kData + "bunny.obj");
+  const SurfaceMesh surface = readObj(kSampleData + "bunny.obj");
   for (BindingMethod method : {BindingMethod::Closest, BindingMethod::Seed, BindingMethod::Embed}) {
     SCOPED_TRACE(toString(method));
     BindingOptions options;
@@ -123,17 +120,17 @@ TEST(BindSurface, EmbedInsidePointsHaveNonNegativeWeights) {
 TEST(BindSurface, BadInputIsAClearError) {
   SurfaceMesh empty;
   EXPECT_THROW(bindSurface(empty, sampleDataset().mesh, 0), Error);
-  SurfaceMesh nan = readObj(kData + "bunny.obj");
+  SurfaceMesh nan = readObj(kSampleData + "bunny.obj");
   nan.positions(5, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(bindSurface(nan, sampleDataset().mesh, 0), Error);
-  EXPECT_THROW(bindSurface(readObj(kData + "bunny.obj"), sampleDataset().mesh, 7), Error);
+  EXPECT_THROW(bindSurface(readObj(kSampleData + "bunny.obj"), sampleDataset().mesh, 7), Error);
   // A level whose boundary is all degenerate (collinear nodes).
   MultiLevelTetMesh flat;
   TetMesh t = test::unitTetrahedron();
   t.nodes.col(1).setZero();
   t.nodes.col(2).setZero();
   appendLevel(flat, t);
-  EXPECT_THROW(bindSurface(readObj(kData + "bunny.obj"), flat, 0), Error);
+  EXPECT_THROW(bindSurface(readObj(kSampleData + "bunny.obj"), flat, 0), Error);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 
+#include "SampleData.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
@@ -16,7 +17,8 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
 Points3 apply(const Points3& points, const Map& f) {
@@ -55,17 +57,11 @@ Errors followError(const SurfaceMesh& surface, const Dataset& d, int level, Bind
 class BindingAccuracy : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dataset_ = new Dataset(loadDataset(kData + "bunny.json"));
-    surface_ = new SurfaceMesh(readObj(kData + "bunny_8k.obj"));
+    surface_ = new SurfaceMesh(readObj(kSampleData + "bunny_8k.obj"));
   }
-  static void TearDownTestSuite() {
-    delete dataset_;
-    delete surface_;
-  }
-  static Dataset* dataset_;
+  static void TearDownTestSuite() { delete surface_; }
   static SurfaceMesh* surface_;
 };
-Dataset* BindingAccuracy::dataset_ = nullptr;
 SurfaceMesh* BindingAccuracy::surface_ = nullptr;
 
 const Map kRigid = [](const Eigen::Vector3d& p) {
@@ -77,7 +73,8 @@ TEST_F(BindingAccuracy, RigidMotionIsExactWithTheNormalOffset) {
   for (int level : {0, 2})
     for (BindingMethod method :
          {BindingMethod::Closest, BindingMethod::Seed, BindingMethod::Embed}) {
-      const Errors e = followError(*surface_, *dataset_, level, method, OffsetMode::Normal, kRigid);
+      const Errors e =
+          followError(*surface_, sampleDataset(), level, method, OffsetMode::Normal, kRigid);
       EXPECT_LT(e.max, 1e-5) << toString(method) << " level " << level;
     }
 }
@@ -85,9 +82,9 @@ TEST_F(BindingAccuracy, RigidMotionIsExactWithTheNormalOffset) {
 TEST_F(BindingAccuracy, TheReportsDisplacementFormulaIsNotRotationInvariant) {
   // Formula 4.1 adds interpolated displacements to the rest position: the
   // offset from the control triangle does not rotate with it.
-  const Errors normal =
-      followError(*surface_, *dataset_, 0, BindingMethod::Closest, OffsetMode::Normal, kRigid);
-  const Errors displacement = followError(*surface_, *dataset_, 0, BindingMethod::Closest,
+  const Errors normal = followError(*surface_, sampleDataset(), 0, BindingMethod::Closest,
+                                    OffsetMode::Normal, kRigid);
+  const Errors displacement = followError(*surface_, sampleDataset(), 0, BindingMethod::Closest,
                                           OffsetMode::Displacement, kRigid);
   std::printf(
       "35 deg rotation, level 0, closest: max error / diagonal: normal %.2e, displacement %.2e\n",
@@ -114,9 +111,10 @@ TEST_F(BindingAccuracy, SmoothDeformationsReportTheirError) {
     for (int level : {0, 2})
       for (BindingMethod method :
            {BindingMethod::Closest, BindingMethod::Seed, BindingMethod::Embed}) {
-        const Errors n = followError(*surface_, *dataset_, level, method, OffsetMode::Normal, f);
+        const Errors n =
+            followError(*surface_, sampleDataset(), level, method, OffsetMode::Normal, f);
         const Errors d =
-            followError(*surface_, *dataset_, level, method, OffsetMode::Displacement, f);
+            followError(*surface_, sampleDataset(), level, method, OffsetMode::Displacement, f);
         std::printf("%-6s %-6d %-8s %.2e (%.2e)      %.2e (%.2e)\n", name, level, toString(method),
                     n.rms, n.max, d.rms, d.max);
         // Linear interpolation over a coarse mesh cannot follow a curved map

@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "SampleData.h"
 #include "TestFiles.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
@@ -19,14 +20,15 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 
 TEST(BindingFile, WriteThenReadIsExact) {
   test::ScratchDir dir;
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   for (BindingMethod method : {BindingMethod::Closest, BindingMethod::Embed}) {
     BoundSurface bound;
-    bound.surface = readObj(kData + "bunny.obj");
+    bound.surface = readObj(kSampleData + "bunny.obj");
     BindingOptions options;
     options.method = method;
     options.offset = OffsetMode::Displacement;
@@ -50,7 +52,7 @@ TEST(BindingFile, WriteThenReadIsExact) {
 // bunny.obj bound to `level` of `d` (closest), its dataset named bunny.json.
 BoundSurface boundBunny(const Dataset& d, int level) {
   BoundSurface bound;
-  bound.surface = readObj(kData + "bunny.obj");
+  bound.surface = readObj(kSampleData + "bunny.obj");
   bound.binding = bindSurface(bound.surface, d.mesh, level);
   bound.dataset = "bunny.json";
   return bound;
@@ -58,7 +60,7 @@ BoundSurface boundBunny(const Dataset& d, int level) {
 
 TEST(BindingFile, PlainSurfaceIsNotABinding) {
   test::ScratchDir dir;
-  writeSurface(dir / "s.vtp", readObj(kData + "bunny.obj"));
+  writeSurface(dir / "s.vtp", readObj(kSampleData + "bunny.obj"));
   try {
     readBinding(dir / "s.vtp");
     FAIL();
@@ -71,7 +73,7 @@ TEST(BindingFile, PlainSurfaceIsNotABinding) {
 // naming the file: a level it lacks, nodes of another level, a broken weight.
 TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
   test::ScratchDir dir;
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const BoundSurface good = boundBunny(d, 0);
   writeBinding(dir / "good.vtp", good);
   EXPECT_EQ(readBinding(dir / "good.vtp", d.mesh).binding.controlIds, good.binding.controlIds);
@@ -106,7 +108,7 @@ TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
 // whatever point arrays it carries.
 TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   test::ScratchDir dir;
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   BoundSurface bound = boundBunny(d, 1);
   writeBinding(dir / "bound.vtp", bound);
   const SurfaceOrBinding fromBinding = readSurfaceOrBinding(dir / "bound.vtp", d.mesh);
@@ -124,7 +126,7 @@ TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
     EXPECT_FALSE(plain.binding.has_value()) << name;
     EXPECT_EQ(plain.surface.triangles, bound.surface.triangles) << name;
   }
-  EXPECT_FALSE(readSurfaceOrBinding(kData + "bunny.obj", d.mesh).binding.has_value());
+  EXPECT_FALSE(readSurfaceOrBinding(kSampleData + "bunny.obj", d.mesh).binding.has_value());
   // A binding that does not fit the dataset is an error, as readBinding's.
   bound.binding.level = 7;
   writeBinding(dir / "bad.vtp", bound);

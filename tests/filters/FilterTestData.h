@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// What the filter tests share: the sample dataset, its level 1 as a VTK grid
+// What the filter tests share besides the sample dataset: its level 1 as a VTK grid
 // numbered from 0, and bunny_8k as VTK poly data.
 
 #include <vtkPolyData.h>
@@ -9,22 +9,17 @@
 
 #include <string>
 
+#include "SampleData.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/vtkio/VtkConversion.h"
 
 namespace tetskin::test {
 
-inline const std::string kFilterData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
 constexpr int kBoundLevel = 1;
 
-inline const Dataset& sampleDataset() {
-  static const Dataset d = loadDataset(kFilterData + "bunny.json");
-  return d;
-}
-
 inline const SurfaceMesh& bunnySurface() {
-  static const SurfaceMesh s = readObj(kFilterData + "bunny_8k.obj");
+  static const SurfaceMesh s = readObj(kSampleData + "bunny_8k.obj");
   return s;
 }
 

@@ -20,6 +20,7 @@
 #include <filesystem>
 
 #include "ImageCompare.h"
+#include "SampleData.h"
 #include "Shapes.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
@@ -37,7 +38,8 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 
 // The known deformation frame: the control nodes twisted about y.
 Points3 twisted(const Points3& nodes) {
@@ -55,8 +57,7 @@ class Rendering : public ::testing::Test {
   void SetUp() override {
     if (const std::string problem = xDisplayProblem(); !problem.empty())
       GTEST_SKIP() << "needs an X display (run under xvfb-run): " << problem;
-    dataset_ = loadDataset(kData + "bunny.json");
-    surface_ = readObj(kData + "bunny_8k.obj");
+    surface_ = readObj(kSampleData + "bunny_8k.obj");
     binding_ = bindSurface(surface_, dataset_.mesh, 1);
   }
 
@@ -97,7 +98,7 @@ class Rendering : public ::testing::Test {
     test::expectMatchesBaseline(image, TETSKIN_BASELINE_DIR, TETSKIN_ACTUAL_DIR, name);
   }
 
-  Dataset dataset_;
+  const Dataset& dataset_ = sampleDataset();
   SurfaceMesh surface_;
   SurfaceBinding binding_;
 };
@@ -265,11 +266,11 @@ TEST_F(Rendering, HardwarePickingSeesTheDeformedSurface) {
 }
 
 TEST_F(Rendering, TextureIsDrawnAlikeByCpuAndGpu2Pass) {
-  const SurfaceMesh textured = readObj(kData + "bunny_8k_tex.obj");
+  const SurfaceMesh textured = readObj(kSampleData + "bunny_8k_tex.obj");
   ASSERT_TRUE(textured.hasTexcoords());
   const SurfaceBinding binding = bindSurface(textured, dataset_.mesh, 1);
   const Points3 control = twisted(dataset_.mesh.nodes);
-  const std::string texturePng = kData + "bunny_texture.png";
+  const std::string texturePng = kSampleData + "bunny_texture.png";
   auto draw = [&](RenderPath path, bool withTexture) {
     return render(path, control, textured, binding, withTexture ? texturePng : std::string());
   };
@@ -294,8 +295,8 @@ TEST_F(Rendering, TextureIsDrawnAlikeByCpuAndGpu2Pass) {
   };
   EXPECT_EQ(error(surface_, binding_, texturePng),
             "cannot be applied: the surface has no texture coordinates (OBJ 'vt')");
-  EXPECT_EQ(error(textured, binding, kData + "no_such.png"), "cannot open for reading");
-  EXPECT_EQ(error(textured, binding, kData + "bunny.obj"), "is not a PNG image");
+  EXPECT_EQ(error(textured, binding, kSampleData + "no_such.png"), "cannot open for reading");
+  EXPECT_EQ(error(textured, binding, kSampleData + "bunny.obj"), "is not a PNG image");
 }
 
 TEST_F(Rendering, PathsAgree) {
@@ -357,12 +358,12 @@ TEST_F(Rendering, DynamicFurTrailsTheMotionOnBothPaths) {
 }
 
 TEST_F(Rendering, ColourTextureAlphaMasksTheFur) {
-  const SurfaceMesh textured = readObj(kData + "bunny_8k_tex.obj");
+  const SurfaceMesh textured = readObj(kSampleData + "bunny_8k_tex.obj");
   const SurfaceBinding binding = bindSurface(textured, dataset_.mesh, 1);
   const Points3 control = twisted(dataset_.mesh.nodes);
   // The bundled texture with its alpha cleared in the left half (u < 0.5),
   // and cleared everywhere.
-  const vtkSmartPointer<vtkImageData> texture = readPng(kData + "bunny_texture.png");
+  const vtkSmartPointer<vtkImageData> texture = readPng(kSampleData + "bunny_texture.png");
   auto masked = [&](bool half) {
     vtkImageData* in = texture;
     int dims[3];

@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
 
+#include "SampleData.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/simulation/ProjectedInitialGuess.h"
@@ -12,11 +13,12 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 
 // An implicit-step-like SPD system M + h^2 K on the sample's level 1.
 SparseMatrix stepSystem() {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   CorotatedFem fem(extractLevel(d.mesh, 1), ElasticMaterial{});
   Eigen::VectorXd f;
   SparseMatrix A = fem.pattern();

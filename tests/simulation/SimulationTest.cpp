@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "SampleData.h"
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
@@ -21,7 +22,8 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 
 MultiLevelTetMesh oneLevel(const TetMesh& mesh) {
   MultiLevelTetMesh m;
@@ -259,7 +261,7 @@ TEST(Simulation, InvertedElementsRecoverWithoutNaN) {
 }
 
 TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   {
     SimulationOptions options;
     Simulation sim(d.mesh, 0, options);
@@ -306,7 +308,7 @@ TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
 // body then falls freely), the push scales with its acceleration, and
 // values no scenario can use are refused.
 TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh rest = extractLevel(d.mesh, 0);
   Index top = 0, bottom = 0;
   rest.nodes.col(1).maxCoeff(&top);
@@ -422,7 +424,7 @@ TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
   EXPECT_LT(tip, expected * 1.02);
 
   // Weight as loads: m_i g on every node with gravity off, against gravity.
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh rest = extractLevel(d.mesh, 0);
   auto sagged = [&](const SimulationOptions& o, const ScenarioParameters& p) {
     Simulation s(d.mesh, 0, o);
@@ -509,7 +511,7 @@ TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
 // exactly the scenarios it names (the command line refuses, and the GUI
 // hides, it for the others).
 TEST(Simulation, ScenarioParametersChangeExactlyTheScenariosThatReadThem) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh rest = extractLevel(d.mesh, 0);
   auto run = [&](const std::string& name, const ScenarioParameters& p) {
     Simulation sim(d.mesh, 0, scenarioOptions(name, SimulationOptions{}, rest));
@@ -547,7 +549,7 @@ TEST(Simulation, ScenarioParametersChangeExactlyTheScenariosThatReadThem) {
 }
 
 TEST(Simulation, WobbleMovesTheTopBackAndForth) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   for (SolverKind solver : {SolverKind::ConjugateGradient, SolverKind::Multigrid}) {
     SimulationOptions options;
     options.solver = solver;
@@ -578,7 +580,7 @@ TEST(Simulation, WobbleMovesTheTopBackAndForth) {
 // finest level with a floor, exercises the contact springs that the
 // rediscretized coarse levels take over lumped.
 TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   for (const char* name : {"wobble", "drop"}) {
     std::vector<Points3> ends;
     std::vector<int> contacts;
@@ -631,7 +633,7 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
 // tolerance, in far fewer iterations on a smooth motion (the wobble; CG
 // counts are deterministic, so this is no timing test).
 TEST(Simulation, ProjectedInitialGuessKeepsTheTrajectoryInFewerIterations) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   std::vector<Points3> ends;
   std::vector<long> iterations;
   for (int solutions : {0, 5}) {
@@ -661,7 +663,7 @@ TEST(Simulation, ProjectedInitialGuessKeepsTheTrajectoryInFewerIterations) {
 // Inside, nodes are renumbered breadth first; everything the caller sees
 // uses the level's own numbering.
 TEST(Simulation, CallersSeeTheLevelsNodeNumbering) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   Simulation sim(d.mesh, 1, SimulationOptions{});
   const TetMesh& rest = sim.restMesh();
   const TetMesh level = extractLevel(d.mesh, 1);
@@ -689,7 +691,7 @@ TEST(Simulation, CallersSeeTheLevelsNodeNumbering) {
 }
 
 TEST(Simulation, StateCanBeReadWhileAnotherThreadSteps) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   Simulation sim(d.mesh, 0, SimulationOptions{});
   makeScenario("sag")->setUp(sim);
   std::atomic<bool> done{false};

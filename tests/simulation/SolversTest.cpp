@@ -7,6 +7,7 @@
 #include <numeric>
 #include <random>
 
+#include "SampleData.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/simulation/LinearSolvers.h"
@@ -17,10 +18,11 @@
 namespace tetskin {
 namespace {
 
-const std::string kData = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+using test::kSampleData;
+using test::sampleDataset;
 
 TEST(Prolongation, RowsSumToOneAndLinearFieldsAreExact) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh coarse = extractLevel(d.mesh, 0);
   const TetMesh fine = extractLevel(d.mesh, 1);
   const SparseMatrix P = nodalProlongation(coarse, fine.nodes);
@@ -42,7 +44,7 @@ TEST(Prolongation, RowsSumToOneAndLinearFieldsAreExact) {
 
 // One implicit step's system of the sample dataset's level 1, solved three ways.
 TEST(Solvers, CgAndMultigridAgreeWithADirectSolve) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   SimulationOptions options;
   options.solver = SolverKind::Multigrid;
   Simulation sim(d.mesh, 1, options);
@@ -132,7 +134,7 @@ class WholeVectorJacobi : public Preconditioner {
 // itself by recurrence), is the true one; the preconditioner's per-node path
 // and its whole-vector path agree.
 TEST(Solvers, ConjugateGradientIsReproducibleAndItsResidualIsTrue) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh mesh = extractLevel(d.mesh, 2);  // 3270 nodes: 26 chunks
   ElasticMaterial material;
   material.youngsModulus = 2e7;  // stiff: a few hundred iterations
@@ -180,7 +182,7 @@ TEST(Solvers, ConjugateGradientIsReproducibleAndItsResidualIsTrue) {
 // The node-block kernels equal Eigen's product; the layout check accepts the
 // FEM pattern and refuses a matrix whose node rows differ.
 TEST(Solvers, NodeBlockProductEqualsTheSparseProduct) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   const TetMesh mesh = extractLevel(d.mesh, 1);
   CorotatedFem fem(mesh, ElasticMaterial{});
   Eigen::VectorXd x = fem.restPositions() + 0.01 * Eigen::VectorXd::Random(fem.dofCount());
@@ -213,7 +215,7 @@ TEST(Solvers, NodeBlockProductEqualsTheSparseProduct) {
 // storage of another shape equals a fresh one, and matrices that are not in
 // the node-block layout or vectors of the wrong size are refused.
 TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   NodeBlockMatrix blocks;
   for (int level : {1, 0}) {  // the second assign shrinks the storage
     CorotatedFem fem(extractLevel(d.mesh, level), ElasticMaterial{});
@@ -298,7 +300,7 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
 // group by column): its product, diagonal blocks and row sums are the
 // sparse matrix's, and a plain assign() puts it back in column order.
 TEST(Solvers, NodeBlockMatrixInSweepOrderSplitsEachRowByRank) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   CorotatedFem fem(extractLevel(d.mesh, 1), ElasticMaterial{});
   Eigen::VectorXd f, D = fem.lumpedMass();
   SparseMatrix A = fem.pattern();
@@ -374,7 +376,7 @@ TEST(Solvers, NodeBlockMatrixInSweepOrderSplitsEachRowByRank) {
 // needs that; a sweep order that is not exactly reversed breaks it, and so
 // does a residual after the first sweep that is not b - A x.
 TEST(Solvers, MultigridCycleIsSymmetric) {
-  const Dataset d = loadDataset(kData + "bunny.json");
+  const Dataset& d = sampleDataset();
   SimulationOptions options;
   Simulation sim(d.mesh, 2, options);
   CorotatedFem fem(sim.restMesh(), options.material);
