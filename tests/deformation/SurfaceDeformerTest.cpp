@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -75,6 +77,39 @@ TEST(SurfaceDeformer, OutputIsReusedWithoutReallocation) {
   deformer.deform(f.control.nodes, positions, normals);
   EXPECT_EQ(positions.data(), p);
   EXPECT_EQ(normals.data(), n);
+}
+
+// Rows owned elsewhere (a VTK array's buffer in the filter and the CPU render
+// path): the same values as into a Points3, here through rows 4 wide, so a
+// kernel that assumed 3 doubles a row would write the wrong places.
+TEST(SurfaceDeformer, WritesIntoRowsOwnedElsewhere) {
+  using WideRows = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
+  for (OffsetMode offset : {OffsetMode::Normal, OffsetMode::Displacement}) {
+    Fixture f(offset);
+    SurfaceDeformer deformer(f.surface, f.binding, f.control.nodes);
+    Points3 moved = (f.control.nodes * Eigen::Vector3d(1.5, 0.7, 1.2).asDiagonal()).rowwise() +
+                    Eigen::RowVector3d(0.1, -0.2, 0.3);
+    moved(3, 0) += 0.4;
+    Points3 positions, normals;
+    deformer.deform(moved, positions, normals);
+    WideRows widePositions = WideRows::Constant(3, 4, 7.0), wideNormals = widePositions;
+    deformer.deform(moved, widePositions.leftCols<3>(), wideNormals.leftCols<3>());
+    EXPECT_EQ(Points3(widePositions.leftCols<3>()), positions) << toString(offset);
+    EXPECT_EQ(Points3(wideNormals.leftCols<3>()), normals) << toString(offset);
+    EXPECT_TRUE((widePositions.col(3).array() == 7.0).all()) << toString(offset);
+    EXPECT_TRUE((wideNormals.col(3).array() == 7.0).all()) << toString(offset);
+  }
+}
+
+TEST(SurfaceDeformer, RowsOwnedElsewhereMustMatchTheVertexCount) {
+  Fixture f(OffsetMode::Normal);
+  SurfaceDeformer deformer(f.surface, f.binding, f.control.nodes);
+  std::vector<double> buffer(4 * 3, 7.0);
+  Eigen::Map<Points3> four(buffer.data(), 4, 3), three(buffer.data(), 3, 3);
+  EXPECT_THROW(deformer.deform(f.control.nodes, four, three), Error);
+  EXPECT_THROW(deformer.deform(f.control.nodes, three, four), Error);
+  EXPECT_THROW(deformer.deformPositions(f.control.nodes, four), Error);
+  for (double x : buffer) EXPECT_EQ(x, 7.0);
 }
 
 TEST(SurfaceDeformer, StateTooSmallIsAnError) {

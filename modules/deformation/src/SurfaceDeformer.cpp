@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
+#include <string>
 
 #include "tetskin/core/Error.h"
 
@@ -41,19 +42,35 @@ Points3 displacementShifts(const SurfaceBinding& binding, const Points3& restSur
   return shifts;
 }
 
+namespace {
+
+void requireRows(const char* what, Index rows, Index vertexCount) {
+  if (rows != vertexCount)
+    throw Error("the " + std::string(what) + " to deform into have " + std::to_string(rows) +
+                " rows, the bound surface " + std::to_string(vertexCount) + " vertices");
+}
+
+}  // namespace
+
 void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions) const {
+  if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
+  deformPositions(control, Points3Ref(positions));
+}
+
+void SurfaceDeformer::deformPositions(const Points3& control, Points3Ref positions) const {
   if (control.rows() <= maxControlId_)
     throw Error("the control state has " + std::to_string(control.rows()) +
                 " nodes, but the binding refers to node " + std::to_string(maxControlId_));
-  if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
+  requireRows("positions", positions.rows(), vertexCount());
   const Record* records = records_.data();
   const double* x = control.data();
   double* out = positions.data();
+  const Index stride = positions.outerStride();
   auto node = [x](int id) { return Eigen::Map<const Eigen::Vector3d>(x + 3 * id); };
   auto kernel = [&](const tbb::blocked_range<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Record& r = records[v];
-      Eigen::Map<Eigen::Vector3d> p(out + 3 * v);
+      Eigen::Map<Eigen::Vector3d> p(out + stride * v);
       if (offset_ == OffsetMode::Displacement) {
         p = shifts_.row(v).transpose();
         for (int c = 0; c < controls_; ++c) p += r.w[c] * node(r.ids[c]);
@@ -73,8 +90,14 @@ void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions
 }
 
 void SurfaceDeformer::deform(const Points3& control, Points3& positions, Points3& normals) {
-  deformPositions(control, positions);
+  if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
   if (normals.rows() != vertexCount()) normals.resize(vertexCount(), 3);
+  deform(control, Points3Ref(positions), Points3Ref(normals));
+}
+
+void SurfaceDeformer::deform(const Points3& control, Points3Ref positions, Points3Ref normals) {
+  requireRows("normals", normals.rows(), vertexCount());
+  deformPositions(control, positions);
   computeVertexNormals(positions, triangles_, adjacency_, faceScratch_, normals);
 }
 

@@ -23,9 +23,9 @@ VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Inde
   return a;
 }
 
-void computeVertexNormals(const Points3& positions, const Triangles& triangles,
+void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& triangles,
                           const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
-                          Points3& normals) {
+                          Points3Ref normals) {
   constexpr Index kGrain = 4096;
   tbb::parallel_for(tbb::blocked_range<Index>(0, triangles.rows(), kGrain), [&](const auto& r) {
     for (Index t = r.begin(); t != r.end(); ++t) {

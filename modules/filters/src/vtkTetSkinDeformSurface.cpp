@@ -77,7 +77,6 @@ struct vtkTetSkinDeformSurface::Derived {
   tetskin::Index checkedControlCount = -1;  // the binding was validated against it
   tetskin::Points3 rest;                    // the deformer's shifts came from it
   std::optional<tetskin::SurfaceDeformer> deformer;
-  tetskin::Points3 positions, normals;
 };
 
 vtkTetSkinDeformSurface::vtkTetSkinDeformSurface() {
@@ -150,11 +149,24 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
       // The normal offset reads no rest positions.
       kept.deformer.emplace(kept.surface, kept.binding, deformed);
     }
-    kept.deformer->deform(deformed, kept.positions, kept.normals);
+    // New arrays each update (a consumer may still hold the last ones), the
+    // kernel writing into their buffers.
+    const Index n = kept.deformer->vertexCount();
+    auto positions = vtkSmartPointer<vtkDoubleArray>::New();
+    auto normals = vtkSmartPointer<vtkDoubleArray>::New();
+    for (vtkDoubleArray* a : {positions.Get(), normals.Get()}) {
+      a->SetNumberOfComponents(3);
+      a->SetNumberOfTuples(n);
+    }
+    kept.deformer->deform(deformed, Eigen::Map<Points3>(positions->GetPointer(0), n, 3),
+                          Eigen::Map<Points3>(normals->GetPointer(0), n, 3));
+    normals->SetName("Normals");
 
     out->ShallowCopy(boundIn);
-    out->SetPoints(toVtkPoints(kept.positions));
-    out->GetPointData()->SetNormals(toVtkVectors("Normals", kept.normals));
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetData(positions);
+    out->SetPoints(points);
+    out->GetPointData()->SetNormals(normals);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     Kept.reset();

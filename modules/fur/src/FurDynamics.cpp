@@ -15,7 +15,8 @@ Eigen::Vector3d furShellOffset(const Eigen::Vector3d& n, const Eigen::Vector3d& 
   return rise * n + shift;
 }
 
-void furVelocities(const Points3& previous, const Points3& current, double seconds, Points3& out) {
+void furVelocities(const Points3& previous, const ConstPoints3Ref& current, double seconds,
+                   Points3& out) {
   out.setZero(current.rows(), 3);
   if (seconds <= 0 || previous.rows() != current.rows()) return;
   out = (current - previous) / seconds;

@@ -78,9 +78,9 @@ FurMesh finMesh(const Points3& positions, const Triangles& triangles, double til
   return m;
 }
 
-void furPoints(const Points3& positions, const Points3& normals, const Points3& velocities,
-               const FurMesh& mesh, double length, const FurDynamicsOptions& dynamics,
-               Points3& out) {
+void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
+               const Points3& velocities, const FurMesh& mesh, double length,
+               const FurDynamicsOptions& dynamics, Points3& out) {
   const Index n = mesh.vertexCount();
   out.resize(n, 3);
   tbb::parallel_for(tbb::blocked_range<Index>(0, n, 4096), [&](const tbb::blocked_range<Index>& r) {

@@ -98,7 +98,6 @@ struct DeformableSurface::Impl {
   vtkSmartPointer<vtkPolyData> polyData;
   vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
   std::unique_ptr<SurfaceDeformer> deformer;
-  Points3 positions, normals;  // cpu path output
   vtkSmartPointer<vtkTetSkinGpuDeformMapper> gpuMapper;
   bool embedded = false;  // gpu-1pass: an embed binding (no control normals needed)
   vtkSmartPointer<vtkTetSkinGpu2PassMapper> gpu2Mapper;
@@ -237,15 +236,18 @@ FrameTimes DeformableSurface::update(const Points3& control) {
   FrameTimes times;
   auto start = std::chrono::steady_clock::now();
   if (s.deformer) {
-    s.deformer->deform(control, s.positions, s.normals);
-    if (s.fur) s.fur->update(s.positions, s.normals);
+    // The kernel writes into the drawn arrays (double, made by
+    // bindingToPolyData), the fur reading them there.
+    vtkPoints* points = s.polyData->GetPoints();
+    auto* positions = vtkDoubleArray::SafeDownCast(points->GetData());
+    auto* normals = vtkDoubleArray::SafeDownCast(s.polyData->GetPointData()->GetNormals());
+    const Index n = s.deformer->vertexCount();
+    Eigen::Map<Points3> positionRows(positions->GetPointer(0), n, 3);
+    Eigen::Map<Points3> normalRows(normals->GetPointer(0), n, 3);
+    s.deformer->deform(control, positionRows, normalRows);
+    if (s.fur) s.fur->update(positionRows, normalRows);
     times.deformSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
-    vtkPoints* points = s.polyData->GetPoints();
-    auto* normals = vtkDoubleArray::SafeDownCast(s.polyData->GetPointData()->GetNormals());
-    std::copy(s.positions.data(), s.positions.data() + s.positions.size(),
-              static_cast<double*>(points->GetVoidPointer(0)));
-    std::copy(s.normals.data(), s.normals.data() + s.normals.size(), normals->GetPointer(0));
     points->Modified();
     normals->Modified();
     s.polyData->Modified();

@@ -216,7 +216,7 @@ void FurLayer::setFrameSeconds(double seconds) {
       gpu->SetDynamics(s.length, seconds, s.dynamics.drag, s.dynamics.maxBend, s.dynamics.minLift);
 }
 
-void FurLayer::update(const Points3& positions, const Points3& normals) {
+void FurLayer::update(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals) {
   Impl& s = *impl_;
   if (s.gpu) return;
   if (s.havePrevious)

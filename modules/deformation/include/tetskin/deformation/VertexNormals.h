@@ -21,9 +21,9 @@ VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Inde
 
 // `faceScratch` must have triangles.rows() rows and `normals` positions.rows();
 // nothing is allocated. A vertex with no area around it gets the zero vector.
-void computeVertexNormals(const Points3& positions, const Triangles& triangles,
+void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& triangles,
                           const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
-                          Points3& normals);
+                          Points3Ref normals);
 
 // Convenience for one-off use (allocates).
 Points3 vertexNormals(const Points3& positions, const Triangles& triangles);

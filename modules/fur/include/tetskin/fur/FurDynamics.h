@@ -24,6 +24,7 @@ Eigen::Vector3d furShellOffset(const Eigen::Vector3d& unitNormal, const Eigen::V
 
 // (current - previous) / seconds, row by row (resizes `out`); zero when
 // seconds <= 0 or the shapes differ (the first frame).
-void furVelocities(const Points3& previous, const Points3& current, double seconds, Points3& out);
+void furVelocities(const Points3& previous, const ConstPoints3Ref& current, double seconds,
+                   Points3& out);
 
 }  // namespace tetskin

@@ -37,9 +37,9 @@ FurMesh finMesh(const Points3& positions, const Triangles& triangles, double til
 
 // Positions of all fur vertices: skin point + furShellOffset (threaded).
 // `normals` unit, `velocities` per surface vertex (resizes `out`).
-void furPoints(const Points3& positions, const Points3& normals, const Points3& velocities,
-               const FurMesh& mesh, double length, const FurDynamicsOptions& dynamics,
-               Points3& out);
+void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
+               const Points3& velocities, const FurMesh& mesh, double length,
+               const FurDynamicsOptions& dynamics, Points3& out);
 
 // Shells worth drawing when the fur is `furPixels` pixels tall on screen: one
 // per pixel of height, within [minShells, maxShells].

@@ -38,7 +38,7 @@ class FurLayer {
   // Seconds between two updates (velocities of dynamic fur); default 1/60.
   void setFrameSeconds(double seconds);
   // fur-cpu: the deformed skin of this frame (positions, unit normals).
-  void update(const Points3& positions, const Points3& normals);
+  void update(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals);
   // Fur length in model units.
   double length() const;
   // Shells drawn in the last frame (fur-gpu: as of the last render).
