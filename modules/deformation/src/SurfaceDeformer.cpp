@@ -12,13 +12,13 @@
 namespace tetskin {
 
 SurfaceDeformer::SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBinding& binding,
-                                 const Points3& controlRest)
+                                 const Points3& controlRest, const std::string& bindingName)
     : offset_(binding.offset),
       controls_(binding.controlsPerVertex()),
       triangles_(restSurface.triangles),
       adjacency_(vertexTriangleAdjacency(restSurface.triangles, restSurface.vertexCount())),
       faceScratch_(restSurface.triangleCount(), 3) {
-  validateBinding(binding, restSurface.vertexCount(), controlRest.rows(), "binding");
+  validateBinding(binding, restSurface.vertexCount(), controlRest.rows(), bindingName);
   records_.resize(static_cast<std::size_t>(restSurface.vertexCount()));
   for (Index v = 0; v < restSurface.vertexCount(); ++v) {
     Record& r = records_[static_cast<std::size_t>(v)];

@@ -73,9 +73,9 @@ struct vtkTetSkinDeformSurface::Derived {
   vtkMTimeType boundTime = 0;
   vtkIdType controlIdOffset = 0;
   tetskin::SurfaceMesh surface;
-  tetskin::SurfaceBinding binding;          // ids minus controlIdOffset
-  tetskin::Index checkedControlCount = -1;  // the binding was validated against it
-  tetskin::Points3 rest;                    // the deformer's shifts came from it
+  tetskin::SurfaceBinding binding;           // ids minus controlIdOffset
+  tetskin::Index deformerControlCount = -1;  // the deformer (and its checks) were made for it
+  tetskin::Points3 rest;                     // the deformer's shifts came from it
   std::optional<tetskin::SurfaceDeformer> deformer;
 };
 
@@ -131,24 +131,23 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
     }
     Derived& kept = *Kept;
     const Points3 deformed = fromVtkPoints(controlIn->GetPoints(), kControl);
-    if (deformed.rows() != kept.checkedControlCount) {
-      kept.deformer.reset();
-      validateBinding(
-          kept.binding, kept.surface.vertexCount(), deformed.rows(),
-          std::string(kBound) + " with ControlIdOffset " + std::to_string(ControlIdOffset));
-      kept.checkedControlCount = deformed.rows();
-    }
+    if (deformed.rows() != kept.deformerControlCount) kept.deformer.reset();
+    // The deformer validates the binding against the control mesh when it
+    // is made.
+    const std::string bindingName =
+        std::string(kBound) + " with ControlIdOffset " + std::to_string(ControlIdOffset);
     if (kept.binding.offset == OffsetMode::Displacement) {
       Points3 rest = restPositions(controlIn, restIn, deformed);
       if (kept.deformer && !sameRest(rest, kept.rest)) kept.deformer.reset();
       if (!kept.deformer) {
-        kept.deformer.emplace(kept.surface, kept.binding, rest);
+        kept.deformer.emplace(kept.surface, kept.binding, rest, bindingName);
         kept.rest = std::move(rest);
       }
     } else if (!kept.deformer) {
       // The normal offset reads no rest positions.
-      kept.deformer.emplace(kept.surface, kept.binding, deformed);
+      kept.deformer.emplace(kept.surface, kept.binding, deformed, bindingName);
     }
+    kept.deformerControlCount = deformed.rows();
     // New arrays each update (a consumer may still hold the last ones), the
     // kernel writing into their buffers.
     const Index n = kept.deformer->vertexCount();

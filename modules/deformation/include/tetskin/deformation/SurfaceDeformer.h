@@ -19,8 +19,10 @@ class SurfaceDeformer {
  public:
   // `restSurface`: the bound surface at rest; `controlRest`: the dataset's
   // nodes at rest (dataset numbering, needed by the Displacement offset).
+  // Validates the binding against both (validateBinding), naming
+  // `bindingName` in the Error.
   SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBinding& binding,
-                  const Points3& controlRest);
+                  const Points3& controlRest, const std::string& bindingName = "binding");
 
   // `control`: deformed node positions in dataset numbering. Writes the
   // deformed positions and unit normals (resized only if their size differs).
