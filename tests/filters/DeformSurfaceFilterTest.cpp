@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 #include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkTransform.h>
 #include <vtkTransformFilter.h>
+#include <vtkUnstructuredGridAlgorithm.h>
 
 #include <cmath>
 
@@ -68,6 +73,75 @@ vtkSmartPointer<vtkUnstructuredGrid> bentGrid(bool withDisplacementArray) {
   }
   if (withDisplacementArray) grid->GetPointData()->AddArray(displacement);
   return grid;
+}
+
+// A time series of control meshes, as a reader of a simulate run's frames
+// gives: time steps 0, 1, 2, the mesh at time t shifted by t along x.
+class ShiftedControlSeries : public vtkUnstructuredGridAlgorithm {
+ public:
+  static ShiftedControlSeries* New();
+  vtkTypeMacro(ShiftedControlSeries, vtkUnstructuredGridAlgorithm)
+  static constexpr double kTimes[3] = {0.0, 1.0, 2.0};
+
+ protected:
+  ShiftedControlSeries() { SetNumberOfInputPorts(0); }
+  int RequestInformation(vtkInformation*, vtkInformationVector**,
+                         vtkInformationVector* outputs) override {
+    vtkInformation* out = outputs->GetInformationObject(0);
+    out->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), kTimes, 3);
+    const double range[2] = {kTimes[0], kTimes[2]};
+    out->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    return 1;
+  }
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputs) override {
+    vtkInformation* info = outputs->GetInformationObject(0);
+    const double time = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                            ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                            : 0.0;
+    vtkUnstructuredGrid* out = vtkUnstructuredGrid::GetData(outputs);
+    out->DeepCopy(controlLevelGrid());
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
+      double p[3];
+      out->GetPoint(i, p);
+      out->GetPoints()->SetPoint(i, p[0] + time, p[1], p[2]);
+    }
+    ++Executions;
+    return 1;
+  }
+
+ public:
+  int Executions = 0;
+};
+vtkStandardNewMacro(ShiftedControlSeries);
+
+TEST(DeformSurfaceFilter, AsksATimeSeriesOfControlMeshesForEachTimeItIsAskedFor) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  vtkNew<ShiftedControlSeries> series;
+  vtkNew<vtkTetSkinDeformSurface> deform;
+  deform->SetInputConnection(bind->GetOutputPort());
+  deform->SetControlMeshConnection(series->GetOutputPort());
+
+  // The output offers the series' time steps (the bound surface has none).
+  deform->UpdateInformation();
+  vtkInformation* out = deform->GetOutputInformation(0);
+  ASSERT_TRUE(out->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  ASSERT_EQ(out->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 3);
+  EXPECT_EQ(out->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[2], 2.0);
+
+  // Each time asked for, back and forth, moves the surface with that frame.
+  const Points3& rest = bunnySurface().positions;
+  const double tolerance = 1e-9 * diagonal(rest);
+  for (double time : {2.0, 0.0, 1.0, 2.0}) {
+    SCOPED_TRACE("time " + std::to_string(time));
+    ASSERT_TRUE(deform->UpdateTimeStep(time));
+    const Points3 moved = pointsOf(deform->GetOutput());
+    ASSERT_EQ(moved.rows(), rest.rows());
+    EXPECT_LT((moved - (rest.rowwise() + Eigen::RowVector3d(time, 0, 0))).cwiseAbs().maxCoeff(),
+              tolerance);
+  }
+  EXPECT_EQ(series->Executions, 4);
 }
 
 TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {

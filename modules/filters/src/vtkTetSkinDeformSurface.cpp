@@ -11,6 +11,7 @@
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
 #include <exception>
@@ -102,6 +103,21 @@ int vtkTetSkinDeformSurface::FillInputPortInformation(int port, vtkInformation* 
   if (port == 0) return Superclass::FillInputPortInformation(port, info);
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
   if (port == 2) info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkTetSkinDeformSurface::RequestInformation(vtkInformation*, vtkInformationVector** inputs,
+                                                vtkInformationVector* outputs) {
+  // The pipeline's default gives the output input 0's time steps only; the
+  // bound surface is static, so a time series of control meshes on input 1
+  // would be asked for its first frame alone, and a change of time would
+  // not run this filter again.
+  vtkInformation* control = inputs[1]->GetInformationObject(0);
+  vtkInformation* out = outputs->GetInformationObject(0);
+  if (control && control->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())) {
+    out->CopyEntry(control, vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    out->CopyEntry(control, vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
   return 1;
 }
 

@@ -17,6 +17,9 @@
 // Bad input (missing or malformed binding arrays, an id that is no point of
 // input 1, weights not summing to 1) is a vtkErrorMacro naming the input
 // and the vertex, and an empty output.
+// Time: the output has input 1's time steps (a time series of control
+// meshes, such as a simulate run's frames, makes a deforming surface);
+// input 0's only where input 1 has none.
 // Per frame only input 1's points are read: what the filter derives from
 // input 0 (the surface, the binding, its checks, the deformer's records) is
 // kept until input 0, ControlIdOffset or input 1's point count changes, and
@@ -55,6 +58,8 @@ class vtkTetSkinDeformSurface : public vtkPolyDataAlgorithm {
   vtkTetSkinDeformSurface();
   ~vtkTetSkinDeformSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputs,
+                         vtkInformationVector* output) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputs,
                   vtkInformationVector* output) override;
 
