@@ -2,7 +2,8 @@
 # TetSkin's one entry point on a Debian bookworm machine.
 #   ./tetskin.sh demo   install what is missing, build, run the main job on the bundled bunny
 #   ./tetskin.sh test   install what is missing, build, run the whole test suite
-#   ./tetskin.sh build  install what is missing and build (Release, in build/)
+#   ./tetskin.sh build  install what is missing and build (Release, in build/), the
+#                       ParaView plugin included
 #   ./tetskin.sh deps   only install the Debian packages
 # Environment: BUILD_DIR (default build), JOBS (default: all cores).
 set -euo pipefail
@@ -20,6 +21,7 @@ DEPS=(
   libtet1.5-dev libnglib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth assimp-testmodels netgen-doc paraview
+  paraview-dev qtxmlpatterns5-dev-tools
 )
 
 log() { printf '\n==> %s\n' "$*" >&2; }
@@ -55,7 +57,8 @@ build() {
 
 # ParaView's Python packages conflict with the VTK development packages, so
 # they are unpacked into the build folder, never installed
-# (shared/design/VTK-NOTES.md); the tests run Debian's pvpython with them.
+# (shared/design/VTK-NOTES.md); the tests run Debian's pvpython with them, and
+# the ParaView plugin's build reads ParaView's class hierarchies from them.
 paraview_python() {
   local root=$ROOT/$BUILD_DIR/paraview-python
   if [ ! -x "$root/usr/bin/pvpython" ]; then
@@ -141,7 +144,11 @@ run_tests() {
 
 case "${1:-}" in
   deps) install_deps ;;
-  build) build ;;
+  build)
+    install_deps
+    mkdir -p "$BUILD_DIR"
+    build -DTETSKIN_PARAVIEW_ROOT="$(paraview_python)"
+    ;;
   demo) demo ;;
   test) run_tests ;;
   *)
