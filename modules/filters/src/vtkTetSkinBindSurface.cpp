@@ -43,12 +43,9 @@ int vtkTetSkinBindSurface::RequestData(vtkInformation*, vtkInformationVector** i
   try {
     using namespace tetskin;
     const SurfaceMesh surface = fromVtkPolyData(surfaceIn, "input 0 (surface)");
-    TetMesh control = fromVtkUnstructuredGrid(controlIn, "input 1 (control mesh)");
     // One level: control ids are point ids of input 1.
     MultiLevelTetMesh mesh;
-    mesh.levels = {LevelRange{0, control.nodes.rows(), 0, control.elements.rows()}};
-    mesh.nodes = std::move(control.nodes);
-    mesh.elements = std::move(control.elements);
+    appendLevel(mesh, fromVtkUnstructuredGrid(controlIn, "input 1 (control mesh)"));
     BindingOptions options;
     options.method = Method == SEED    ? BindingMethod::Seed
                      : Method == EMBED ? BindingMethod::Embed
