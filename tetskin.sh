@@ -15,7 +15,7 @@ export CCACHE_BASEDIR="$ROOT"
 JOBS=${JOBS:-$(nproc)}
 
 DEPS=(
-  cmake ninja-build g++ pkg-config ccache
+  cmake ninja-build g++ pkg-config ccache dpkg-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
   libvtk9-qt-dev qtbase5-dev libglew-dev libpng-dev
   libtet1.5-dev libnglib-dev

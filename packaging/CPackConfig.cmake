@@ -1,5 +1,6 @@
-# CPack: `cpack -G DEB` in the build folder makes a Debian package with the
-# executables, the bundled data and a desktop entry.
+# CPack: `cpack -G DEB` in the build folder makes the Debian package tetskin
+# (the executables, the bundled data, a desktop entry) and, where the ParaView
+# plugin was built, tetskin-paraview-plugin (the filters for ParaView 5.11).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION share/tetskin/data
   PATTERN "tools" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/tetskin.desktop DESTINATION share/applications)
@@ -25,4 +26,11 @@ if(TETSKIN_WITH_NETGEN)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${nglib_dir})
 endif()
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+# One package per install component.
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_DEBIAN_TETSKIN_PACKAGE_NAME tetskin)
+set(CPACK_DEBIAN_PARAVIEW_PLUGIN_PACKAGE_NAME tetskin-paraview-plugin)
+set(CPACK_DEBIAN_PARAVIEW_PLUGIN_PACKAGE_SECTION science)
+set(CPACK_COMPONENT_PARAVIEW_PLUGIN_DESCRIPTION
+  "TetSkin's Bind Surface and Deform Surface filters as a ParaView 5.11 plugin")
 include(CPack)

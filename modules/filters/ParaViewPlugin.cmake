@@ -32,3 +32,8 @@ ExternalProject_Add(paraview_plugin
   BUILD_ALWAYS ON  # its sources are TetSkin's: let its own build decide what is stale
   BUILD_BYPRODUCTS "${plugin}")
 set(TETSKIN_PARAVIEW_PLUGIN "${plugin}" CACHE INTERNAL "the built ParaView plugin")
+# Beside ParaView's own plugins, in a package of its own
+# (tetskin-paraview-plugin, which depends on paraview; tetskin does not).
+install(FILES "${plugin}"
+  DESTINATION lib/${CMAKE_LIBRARY_ARCHITECTURE}/paraview-5.11/plugins/TetSkinFilters
+  COMPONENT paraview_plugin)
