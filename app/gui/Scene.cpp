@@ -186,7 +186,18 @@ void Scene::rebuildControl() {
   control_ = std::make_unique<ControlMeshActor>(rest, *controlStyle_);
   control_->actor()->PickableOff();
   renderer_->AddActor(control_->actor());
-  control_->update(shownControlPositions());
+  updateControlActor();
+}
+
+void Scene::updateControlActor() {
+  if (!control_ || !dataset_) return;
+  if (controlLevel_ != level_) {
+    control_->update(shownControlPositions());
+    return;
+  }
+  // The simulated level itself: its rows of nodes_, not copied.
+  const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(level_)];
+  control_->update(nodes_.middleRows(r.firstNode, r.nodeCount));
 }
 
 Points3 Scene::shownControlPositions() const {
@@ -394,7 +405,7 @@ FrameTimes Scene::showControlState(const Points3& levelPositions) {
   nodes_.middleRows(r.firstNode, r.nodeCount) = levelPositions;
   deformedValid_ = false;
   if (surfaceDrawing_) times = surfaceDrawing_->update(nodes_);
-  if (control_) control_->update(shownControlPositions());
+  updateControlActor();
   updateDiagnostics();
   return times;
 }

@@ -132,6 +132,8 @@ class Scene {
   // showDrawing() of the current state's drawing (none without a surface).
   void rebuildSurface();
   void rebuildControl();
+  // The control actor to the shown level's positions this frame.
+  void updateControlActor();
   // The control mesh drawn at the binding's level (after a new binding).
   void showControlAtBindingLevel();
   void applyColoring();

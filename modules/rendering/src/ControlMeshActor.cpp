@@ -59,8 +59,11 @@ vtkActor* ControlMeshActor::actor() const {
   return impl_->actor;
 }
 
-void ControlMeshActor::update(const Points3& positions) {
+void ControlMeshActor::update(const ConstPoints3Ref& positions) {
   vtkPoints* points = impl_->grid->GetPoints();
+  if (positions.rows() != points->GetNumberOfPoints())
+    throw Error("control mesh: " + std::to_string(positions.rows()) + " positions for " +
+                std::to_string(points->GetNumberOfPoints()) + " nodes");
   for (Index v = 0; v < positions.rows(); ++v)
     points->SetPoint(v, positions(v, 0), positions(v, 1), positions(v, 2));
   points->Modified();

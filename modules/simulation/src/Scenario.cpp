@@ -148,9 +148,12 @@ void Scenario::setUp(Simulation& sim) {
 
 void Scenario::beforeStep(Simulation& sim, double time) {
   const bool loaded = p_.loads.size() > 0 && time < p_.loadSeconds;
-  Points3 forces = loaded ? p_.loads : Points3::Zero(sim.restMesh().nodeCount(), 3);
-  drive(sim, time, forces);
-  sim.setExternalForces(forces);
+  if (loaded)
+    forces_ = p_.loads;
+  else
+    forces_.setZero(sim.restMesh().nodeCount(), 3);
+  drive(sim, time, forces_);
+  sim.setExternalForces(forces_);
 }
 
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {

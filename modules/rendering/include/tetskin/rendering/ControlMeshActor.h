@@ -29,8 +29,9 @@ class ControlMeshActor {
   ControlMeshActor(const TetMesh& rest, ControlMeshStyle style);
   ~ControlMeshActor();
   vtkActor* actor() const;
-  // Level-local node positions.
-  void update(const Points3& positions);
+  // Level-local node positions, one row per node of `rest` (throws Error
+  // otherwise).
+  void update(const ConstPoints3Ref& positions);
 
  private:
   struct Impl;

@@ -69,6 +69,9 @@ class Scenario {
   // targets; returns the nodes it fixes (setUp() adds the held ones).
   virtual std::vector<int> prepare(Simulation& simulation) = 0;
   ScenarioParameters p_;
+
+ private:
+  Points3 forces_;  // beforeStep()'s, kept between steps (no allocation per step)
 };
 
 // The simulation options a scenario needs (e.g. drop adds a floor).
