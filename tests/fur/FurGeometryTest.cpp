@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "Shapes.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/fur/FurGeometry.h"
 
@@ -41,6 +44,32 @@ TEST(FurGeometry, FurPointsRiseAlongTheStitchedNormals) {
           m.height[static_cast<std::size_t>(i)] == m.height[static_cast<std::size_t>(j)]) {
         EXPECT_EQ(out.row(i), out.row(j));
       }
+}
+
+TEST(FurGeometry, FurPointsAndNormalsWriteIntoRowsOwnedElsewhere) {
+  const SurfaceMesh cube = test::box({-1, -1, -1}, {1, 1, 1});
+  const BoxTexturedSurface box = boxTexcoords(cube.positions, cube.triangles, 0.5);
+  const FurMesh m = shellMesh(box, shellHeights(3));
+  const Points3 normals = vertexNormals(cube.positions, cube.triangles);
+  const Points3 velocities = Points3::Constant(8, 3, 0.5);
+  Points3 expected;
+  furPoints(cube.positions, normals, velocities, m, 0.1, {}, expected);
+  // Rows of a larger buffer, as a VTK array's memory is to the caller.
+  const Index n = m.vertexCount();
+  std::vector<double> buffer(static_cast<std::size_t>(3 * (n + 2)), -7.0);
+  furPoints(cube.positions, normals, velocities, m, 0.1, {},
+            Eigen::Map<Points3>(buffer.data() + 3, n, 3));
+  EXPECT_EQ(Eigen::Map<Points3>(buffer.data() + 3, n, 3), expected);
+  EXPECT_EQ(buffer.front(), -7.0);  // nothing outside the rows
+  EXPECT_EQ(buffer[static_cast<std::size_t>(3 * (n + 1))], -7.0);
+  Points3 furNormalRows(n, 3);
+  furNormals(normals, m, furNormalRows);
+  for (Index i = 0; i < n; ++i)
+    EXPECT_EQ(furNormalRows.row(i), normals.row(m.source[static_cast<std::size_t>(i)]));
+  Points3 tooFew(n - 1, 3);
+  EXPECT_THROW(furPoints(cube.positions, normals, velocities, m, 0.1, {}, Points3Ref(tooFew)),
+               Error);
+  EXPECT_THROW(furNormals(normals, m, tooFew), Error);
 }
 
 TEST(FurGeometry, OneFinPerEdgeFromRootToTip) {

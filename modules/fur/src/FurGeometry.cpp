@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <unordered_map>
+
+#include "tetskin/core/Error.h"
 
 namespace tetskin {
 
@@ -81,8 +84,17 @@ FurMesh finMesh(const Points3& positions, const Triangles& triangles, double til
 void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
                const Points3& velocities, const FurMesh& mesh, double length,
                const FurDynamicsOptions& dynamics, Points3& out) {
+  out.resize(mesh.vertexCount(), 3);
+  furPoints(positions, normals, velocities, mesh, length, dynamics, Points3Ref(out));
+}
+
+void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
+               const Points3& velocities, const FurMesh& mesh, double length,
+               const FurDynamicsOptions& dynamics, Points3Ref out) {
   const Index n = mesh.vertexCount();
-  out.resize(n, 3);
+  if (out.rows() != n)
+    throw Error("fur points: " + std::to_string(out.rows()) + " rows for " + std::to_string(n) +
+                " fur vertices");
   tbb::parallel_for(tbb::blocked_range<Index>(0, n, 4096), [&](const tbb::blocked_range<Index>& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       const Index v = mesh.source[static_cast<std::size_t>(i)];
@@ -90,6 +102,17 @@ void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
       out.row(i) = p + furShellOffset(normals.row(v), velocities.row(v),
                                       mesh.height[static_cast<std::size_t>(i)], length, dynamics);
     }
+  });
+}
+
+void furNormals(const ConstPoints3Ref& normals, const FurMesh& mesh, Points3Ref out) {
+  const Index n = mesh.vertexCount();
+  if (out.rows() != n)
+    throw Error("fur normals: " + std::to_string(out.rows()) + " rows for " + std::to_string(n) +
+                " fur vertices");
+  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 8192), [&](const tbb::blocked_range<Index>& r) {
+    for (Index i = r.begin(); i != r.end(); ++i)
+      out.row(i) = normals.row(mesh.source[static_cast<std::size_t>(i)]);
   });
 }
 

@@ -82,7 +82,7 @@ struct FurLayer::Impl {
   vtkSmartPointer<vtkActor> shellActor, finActor;
   vtkSmartPointer<vtkTetSkinFurMapper> shellMapper, finMapper;
   vtkWeakPointer<vtkRenderer> renderer;
-  Points3 previous, velocities, furPositions;
+  Points3 previous, velocities;
   bool havePrevious = false;
   double bounds[6] = {0, -1, 0, -1, 0, -1};
 
@@ -232,19 +232,17 @@ void FurLayer::update(const ConstPoints3Ref& positions, const ConstPoints3Ref& n
   }
   const int wanted = s.wantedShells();
   if (wanted != s.shellCount) s.buildShells(wanted);
+  // Straight into the drawn arrays (double, made by furPolyData).
   auto place = [&](const FurMesh& mesh, vtkPolyData* poly) {
-    furPoints(positions, normals, s.velocities, mesh, s.length, s.dynamics, s.furPositions);
+    const Index n = mesh.vertexCount();
     vtkPoints* points = poly->GetPoints();
-    std::copy(s.furPositions.data(), s.furPositions.data() + s.furPositions.size(),
-              static_cast<double*>(points->GetVoidPointer(0)));
-    auto* n = vtkDoubleArray::SafeDownCast(poly->GetPointData()->GetNormals());
-    double* out = n->GetPointer(0);
-    for (Index i = 0; i < mesh.vertexCount(); ++i) {
-      const Index v = mesh.source[static_cast<std::size_t>(i)];
-      for (int k = 0; k < 3; ++k) out[3 * i + k] = normals(v, k);
-    }
+    auto* pointArray = vtkDoubleArray::SafeDownCast(points->GetData());
+    auto* normalArray = vtkDoubleArray::SafeDownCast(poly->GetPointData()->GetNormals());
+    furPoints(positions, normals, s.velocities, mesh, s.length, s.dynamics,
+              Eigen::Map<Points3>(pointArray->GetPointer(0), n, 3));
+    furNormals(normals, mesh, Eigen::Map<Points3>(normalArray->GetPointer(0), n, 3));
     points->Modified();
-    n->Modified();
+    normalArray->Modified();
     poly->Modified();
   };
   place(s.shells, s.shellPoly);

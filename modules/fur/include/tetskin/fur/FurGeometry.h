@@ -40,6 +40,14 @@ FurMesh finMesh(const Points3& positions, const Triangles& triangles, double til
 void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
                const Points3& velocities, const FurMesh& mesh, double length,
                const FurDynamicsOptions& dynamics, Points3& out);
+// The same into rows owned elsewhere (e.g. the drawn vtkPoints' buffer), one
+// per fur vertex (throws Error otherwise).
+void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
+               const Points3& velocities, const FurMesh& mesh, double length,
+               const FurDynamicsOptions& dynamics, Points3Ref out);
+// Normals of all fur vertices: each its skin vertex's (threaded), into rows
+// owned elsewhere, one per fur vertex (throws Error otherwise).
+void furNormals(const ConstPoints3Ref& normals, const FurMesh& mesh, Points3Ref out);
 
 // Shells worth drawing when the fur is `furPixels` pixels tall on screen: one
 // per pixel of height, within [minShells, maxShells].
