@@ -182,6 +182,50 @@ TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
   EXPECT_NE(deform->GetOutput()->GetPointData()->GetArray("MinBarycentric"), nullptr);
 }
 
+TEST(DeformSurfaceFilter, AConsumerKeepsTheOutputItHoldsWhileUnheldArraysAreWrittenAgain) {
+  vtkNew<vtkTetSkinBindSurface> bind;
+  bind->SetInputData(toVtkPolyData(bunnySurface()));
+  bind->SetControlMeshData(controlLevelGrid());
+  vtkNew<vtkTransform> motion;
+  vtkNew<vtkTransformFilter> move;
+  move->SetInputData(controlLevelGrid());
+  move->SetTransform(motion);
+  vtkNew<vtkTetSkinDeformSurface> deform;
+  deform->SetInputConnection(bind->GetOutputPort());
+  deform->SetControlMeshConnection(move->GetOutputPort());
+  auto shiftTo = [&](double x) {
+    motion->Identity();
+    motion->Translate(x, 0, 0);
+    deform->Update();
+  };
+
+  // A consumer holds the output of x = 1 (as a cache or a shallow copy
+  // downstream would): the next update must not write into its arrays.
+  shiftTo(1.0);
+  vtkNew<vtkPolyData> held;
+  held->ShallowCopy(deform->GetOutput());
+  const Points3 heldPoints = pointsOf(held), heldNormals = normalsOf(held);
+  shiftTo(2.0);
+  EXPECT_EQ(pointsOf(held), heldPoints);
+  EXPECT_EQ(normalsOf(held), heldNormals);
+  EXPECT_NE(deform->GetOutput()->GetPoints()->GetData(), held->GetPoints()->GetData());
+  const Points3 atTwo = pointsOf(deform->GetOutput());
+  EXPECT_LT((atTwo - (heldPoints.rowwise() + Eigen::RowVector3d(1, 0, 0))).cwiseAbs().maxCoeff(),
+            1e-9 * diagonal(atTwo));
+
+  // Held by no one, the last arrays are written again, with the new values.
+  vtkDataArray* points = deform->GetOutput()->GetPoints()->GetData();
+  vtkDataArray* normals = deform->GetOutput()->GetPointData()->GetNormals();
+  shiftTo(3.0);
+  EXPECT_EQ(deform->GetOutput()->GetPoints()->GetData(), points);
+  EXPECT_EQ(deform->GetOutput()->GetPointData()->GetNormals(), normals);
+  EXPECT_LT((pointsOf(deform->GetOutput()) - (atTwo.rowwise() + Eigen::RowVector3d(1, 0, 0)))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-9 * diagonal(atTwo));
+  EXPECT_LT((normalsOf(deform->GetOutput()) - heldNormals).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(DeformSurfaceFilter, DisplacementOffsetTakesTheRestFromInputTwoOrTheDisplacementArray) {
   vtkNew<vtkTetSkinBindSurface> bind;
   bind->SetInputData(toVtkPolyData(bunnySurface()));

@@ -23,7 +23,10 @@
 // Per frame only input 1's points are read: what the filter derives from
 // input 0 (the surface, the binding, its checks, the deformer's records) is
 // kept until input 0, ControlIdOffset or input 1's point count changes, and
-// the displacement offset's shifts until the rest positions do.
+// the displacement offset's shifts until the rest positions do. The output's
+// points and normals are the last update's arrays written again where
+// nothing else holds them; a consumer holding an earlier output (a cache, a
+// shallow copy) keeps its values, and the filter makes new arrays then.
 
 #include <vtkPolyDataAlgorithm.h>
 
