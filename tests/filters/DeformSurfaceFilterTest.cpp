@@ -144,17 +144,27 @@ TEST(DeformSurfaceFilter, AsksATimeSeriesOfControlMeshesForEachTimeItIsAskedFor)
   EXPECT_EQ(series->Executions, 4);
 }
 
-TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
+// bind -> deform, the control mesh moved by `motion` through a transform
+// filter: a pipeline as a VTK user builds it.
+struct MovedControlPipeline {
   vtkNew<vtkTetSkinBindSurface> bind;
-  bind->SetInputData(toVtkPolyData(bunnySurface()));
-  bind->SetControlMeshData(controlLevelGrid());
   vtkNew<vtkTransform> motion;
   vtkNew<vtkTransformFilter> move;
-  move->SetInputData(controlLevelGrid());
-  move->SetTransform(motion);
   vtkNew<vtkTetSkinDeformSurface> deform;
-  deform->SetInputConnection(bind->GetOutputPort());
-  deform->SetControlMeshConnection(move->GetOutputPort());
+  MovedControlPipeline() {
+    bind->SetInputData(toVtkPolyData(bunnySurface()));
+    bind->SetControlMeshData(controlLevelGrid());
+    move->SetInputData(controlLevelGrid());
+    move->SetTransform(motion);
+    deform->SetInputConnection(bind->GetOutputPort());
+    deform->SetControlMeshConnection(move->GetOutputPort());
+  }
+};
+
+TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
+  MovedControlPipeline pipeline;
+  vtkTransform* motion = pipeline.motion;
+  vtkTetSkinDeformSurface* deform = pipeline.deform;
 
   deform->Update();  // at rest: the normal offset gives back the surface
   const Points3 rest = pointsOf(deform->GetOutput());
@@ -183,16 +193,9 @@ TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
 }
 
 TEST(DeformSurfaceFilter, AConsumerKeepsTheOutputItHoldsWhileUnheldArraysAreWrittenAgain) {
-  vtkNew<vtkTetSkinBindSurface> bind;
-  bind->SetInputData(toVtkPolyData(bunnySurface()));
-  bind->SetControlMeshData(controlLevelGrid());
-  vtkNew<vtkTransform> motion;
-  vtkNew<vtkTransformFilter> move;
-  move->SetInputData(controlLevelGrid());
-  move->SetTransform(motion);
-  vtkNew<vtkTetSkinDeformSurface> deform;
-  deform->SetInputConnection(bind->GetOutputPort());
-  deform->SetControlMeshConnection(move->GetOutputPort());
+  MovedControlPipeline pipeline;
+  vtkTransform* motion = pipeline.motion;
+  vtkTetSkinDeformSurface* deform = pipeline.deform;
   auto shiftTo = [&](double x) {
     motion->Identity();
     motion->Translate(x, 0, 0);
