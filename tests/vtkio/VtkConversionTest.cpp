@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -39,6 +41,20 @@ TEST(VtkConversion, SurfaceRoundTripKeepsAttributes) {
   EXPECT_EQ(back.triangles, m.triangles);
   EXPECT_EQ(back.normals, m.normals);
   EXPECT_EQ(back.texcoords, m.texcoords);
+}
+
+TEST(VtkConversion, VectorRowsAreTheArraysOwnBuffer) {
+  const Points3 values = (Points3(2, 3) << 1, 2, 3, 4, 5, 6).finished();
+  const vtkSmartPointer<vtkDoubleArray> array = toVtkVectors("Normals", values);
+  Eigen::Map<Points3> rows = vectorRows(array);
+  EXPECT_EQ(rows, values);
+  rows(1, 2) = 7;  // written through, not into a copy
+  EXPECT_EQ(array->GetComponent(1, 2), 7.0);
+  vtkNew<vtkDoubleArray> pairs;
+  pairs->SetNumberOfComponents(2);
+  pairs->SetNumberOfTuples(3);
+  EXPECT_THROW(vectorRows(pairs), Error);
+  EXPECT_THROW(vectorRows(nullptr), Error);
 }
 
 TEST(VtkConversion, QuadsAreTriangulated) {

@@ -192,8 +192,7 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
     const Index n = kept.deformer->vertexCount();
     makeWritable(kept.positions, n);
     makeWritable(kept.normals, n);
-    kept.deformer->deform(deformed, Eigen::Map<Points3>(kept.positions->GetPointer(0), n, 3),
-                          Eigen::Map<Points3>(kept.normals->GetPointer(0), n, 3));
+    kept.deformer->deform(deformed, vectorRows(kept.positions), vectorRows(kept.normals));
     kept.normals->SetName("Normals");
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetData(kept.positions);

@@ -23,6 +23,7 @@
 #include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
 #include "tetskin/spatial/Aabb.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -241,9 +242,8 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     vtkPoints* points = s.polyData->GetPoints();
     auto* positions = vtkDoubleArray::SafeDownCast(points->GetData());
     auto* normals = vtkDoubleArray::SafeDownCast(s.polyData->GetPointData()->GetNormals());
-    const Index n = s.deformer->vertexCount();
-    Eigen::Map<Points3> positionRows(positions->GetPointer(0), n, 3);
-    Eigen::Map<Points3> normalRows(normals->GetPointer(0), n, 3);
+    Eigen::Map<Points3> positionRows = vectorRows(positions);
+    Eigen::Map<Points3> normalRows = vectorRows(normals);
     s.deformer->deform(control, positionRows, normalRows);
     if (s.fur) s.fur->update(positionRows, normalRows);
     times.deformSeconds = secondsSince(start);

@@ -17,6 +17,7 @@
 #include "tetskin/fur/FurTexture.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/rendering/vtkTetSkinGpuFurMapper.h"
+#include "tetskin/vtkio/VtkConversion.h"
 
 namespace tetskin {
 namespace {
@@ -234,13 +235,11 @@ void FurLayer::update(const ConstPoints3Ref& positions, const ConstPoints3Ref& n
   if (wanted != s.shellCount) s.buildShells(wanted);
   // Straight into the drawn arrays (double, made by furPolyData).
   auto place = [&](const FurMesh& mesh, vtkPolyData* poly) {
-    const Index n = mesh.vertexCount();
     vtkPoints* points = poly->GetPoints();
     auto* pointArray = vtkDoubleArray::SafeDownCast(points->GetData());
     auto* normalArray = vtkDoubleArray::SafeDownCast(poly->GetPointData()->GetNormals());
-    furPoints(positions, normals, s.velocities, mesh, s.length, s.dynamics,
-              Eigen::Map<Points3>(pointArray->GetPointer(0), n, 3));
-    furNormals(normals, mesh, Eigen::Map<Points3>(normalArray->GetPointer(0), n, 3));
+    furPoints(positions, normals, s.velocities, mesh, s.length, s.dynamics, vectorRows(pointArray));
+    furNormals(normals, mesh, vectorRows(normalArray));
     points->Modified();
     normalArray->Modified();
     poly->Modified();

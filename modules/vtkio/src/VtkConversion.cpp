@@ -53,6 +53,14 @@ vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& va
   return out;
 }
 
+Eigen::Map<Points3> vectorRows(vtkDoubleArray* array) {
+  if (!array || array->GetNumberOfComponents() != 3)
+    throw Error("vector rows: " +
+                (array ? std::to_string(array->GetNumberOfComponents()) + " components instead of 3"
+                       : std::string("no double array")));
+  return Eigen::Map<Points3>(array->GetPointer(0), array->GetNumberOfTuples(), 3);
+}
+
 Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
   const Index n = points ? points->GetNumberOfPoints() : 0;
   Points3 out(n, 3);

@@ -25,6 +25,10 @@ Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName);
 
 // Rows as a named 3-component double array (normals, displacements).
 vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& values);
+// The other way without a copy: a 3-component double array's buffer seen as
+// rows, one per tuple, for a kernel to write in place (Points3Ref). Throws
+// Error for a null array or another component count.
+Eigen::Map<Points3> vectorRows(vtkDoubleArray* array);
 
 // Triangles as polys; normals become the active point normals ("Normals"),
 // texture coordinates the active TCoords ("TCoords").
