@@ -130,10 +130,16 @@ sanitized_io_tests() {
     --output-on-failure --no-tests=error)
 }
 
-run_tests() {
+# The build with the ParaView plugin and tests: ParaView's Python packages
+# are unpacked (they need the installed packages first) into the build folder.
+build_with_paraview() {
   install_deps
   mkdir -p "$BUILD_DIR"
   build -DTETSKIN_PARAVIEW_ROOT="$(paraview_python)"
+}
+
+run_tests() {
+  build_with_paraview
   sanitized_io_tests
   log "the whole test suite"
   # --repeat until-pass:3: a test that fails is run again, up to 3 times in all
@@ -144,11 +150,7 @@ run_tests() {
 
 case "${1:-}" in
   deps) install_deps ;;
-  build)
-    install_deps
-    mkdir -p "$BUILD_DIR"
-    build -DTETSKIN_PARAVIEW_ROOT="$(paraview_python)"
-    ;;
+  build) build_with_paraview ;;
   demo) demo ;;
   test) run_tests ;;
   *)
