@@ -5,6 +5,7 @@
 
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/io/LoadCurveFile.h"
 #include "tetskin/io/NodeList.h"
 
 namespace tetskin::cli {
@@ -61,6 +62,12 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "(newtons), # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
+  cmd.add_option("--load-curve", a.loadCurve,
+                 "with --loads: scale them over time by a text file of lines TIME FACTOR "
+                 "(seconds, increasing; linear between, held before the first and after the "
+                 "last), # comments")
+      ->check(CLI::ExistingFile)
+      ->group(kGroup);
   cmd.add_option("--loads-seconds", p.loadSeconds,
                  "with --loads: they act for this many seconds, then let go (default: the whole "
                  "run)")
@@ -91,13 +98,15 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
       throw Error(std::string(option) + ": applies to the " + joined(scenarios) + " scenario" +
                   (scenarios.size() > 1 ? "s" : "") + ", not to " + a.name);
     }
-  if (cmd.count("--loads-seconds") > 0 && a.loads.empty())
-    throw Error("--loads-seconds: applies with --loads, which is not given");
+  for (const char* option : {"--load-curve", "--loads-seconds"})
+    if (cmd.count(option) > 0 && a.loads.empty())
+      throw Error(std::string(option) + ": applies with --loads, which is not given");
   // (Each number was checked as it was parsed; makeScenario() checks the
   // whole set again for its other callers.)
   ScenarioParameters p = a.parameters;
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
+  if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
   return p;
 }
 

@@ -18,6 +18,7 @@ struct ScenarioArgs {
   ScenarioParameters parameters;
   std::filesystem::path fixedNodes;  // a node list (io NodeList.h), or empty
   std::filesystem::path loads;       // node forces (io NodeList.h), or empty
+  std::filesystem::path loadCurve;   // scales the loads (io LoadCurveFile.h), or empty
   std::vector<double> gravity;       // x, y, z; empty: the default
   std::optional<double> floor;       // height of a floor plane
 };
@@ -29,8 +30,8 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
 // (--scenario itself not counted).
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
-// The scenario's parameters with the held nodes and the loads read (a level of
-// `nodeCount` nodes). Throws Error for an option of another scenario than
+// The scenario's parameters with the held nodes, the loads and their curve
+// read (a level of `nodeCount` nodes). Throws Error for an option of another scenario than
 // the chosen one (e.g. --push with drop): it would change nothing.
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
                                       Index nodeCount);

@@ -133,9 +133,11 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
               static_cast<long long>(sim.restMesh().nodeCount()));
   if (parameters.loads.size() > 0) {
     const Eigen::RowVector3d total = parameters.loads.colwise().sum();
-    const std::string until = std::isfinite(parameters.loadSeconds)
-                                  ? " for " + formatNumber(parameters.loadSeconds) + " s"
-                                  : "";
+    std::string until = std::isfinite(parameters.loadSeconds)
+                            ? " for " + formatNumber(parameters.loadSeconds) + " s"
+                            : "";
+    if (!parameters.loadCurve.empty())
+      until += ", scaled by a load curve of " + describe(parameters.loadCurve);
     std::printf(
         "%lld loaded (total force %s N%s), ",
         static_cast<long long>((parameters.loads.rowwise().squaredNorm().array() > 0).count()),

@@ -11,6 +11,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 
+#include "tetskin/io/LoadCurveFile.h"
 #include "tetskin/io/NodeList.h"
 
 namespace tetskin::gui {
@@ -68,7 +69,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
     connect(choose, &QPushButton::clicked, this, [edit, title, interactive] {
       if (!interactive) return;
       const QString file = QFileDialog::getOpenFileName(edit->window(), title, {},
-                                                        "Node files (*.txt);;All files (*)");
+                                                        "Text files (*.txt);;All files (*)");
       if (!file.isEmpty()) edit->setText(file);
     });
     return row;
@@ -79,6 +80,10 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   QHBoxLayout* loadsRow = fileRow(loads_, "loads", "Loads",
                                   "a text file of lines NODE FX FY FZ: constant forces (newtons) "
                                   "on nodes of the simulated level, in any scenario");
+  QHBoxLayout* loadCurveRow =
+      fileRow(loadCurve_, "loadCurve", "Load curve",
+              "a text file of lines TIME FACTOR (seconds, increasing) that scales the loads: "
+              "linear between the points, held before the first and after the last");
 
   loadSeconds_ =
       numberBox("loadSeconds", 0, 1e4, 2, 0, "the loads act for this many seconds, then let go");
@@ -114,6 +119,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
   form_->addRow("Fixed nodes", fixedRow);
   form_->addRow("Loads", loadsRow);
+  form_->addRow("Load curve", loadCurveRow);
   form_->addRow("Loads act for (s)", loadSeconds_);
   form_->addRow("Gravity (m/s\u00b2)", gravityRow);
   form_->addRow("Floor", floorRow);
@@ -153,6 +159,7 @@ ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
   if (!fixedNodes_->text().isEmpty())
     p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
   if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
+  if (!loadCurve_->text().isEmpty()) p.loadCurve = readLoadCurve(loadCurve_->text().toStdString());
   if (loadSeconds_->value() > 0) p.loadSeconds = loadSeconds_->value();
   return p;
 }

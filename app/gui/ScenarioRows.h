@@ -29,7 +29,7 @@ class ScenarioRows : public QObject {
   ScenarioRows(QFormLayout* form, bool interactive);
 
   std::string scenario() const;
-  // The parameters, the held nodes and the loads read from their files (a
+  // The parameters, the held nodes, the loads and their curve read from their files (a
   // level of `nodeCount` nodes); throws Error naming the file and line.
   ScenarioParameters parameters(Index nodeCount) const;
   // `options` with the panel's gravity and floor.
@@ -54,6 +54,7 @@ class ScenarioRows : public QObject {
       *gravity_[3], *floorHeight_, *loadSeconds_;
   QLineEdit* fixedNodes_;  // a node list file (io NodeList.h), or empty
   QLineEdit* loads_;       // a node forces file (io NodeList.h), or empty
+  QLineEdit* loadCurve_;   // a load curve file (io LoadCurveFile.h), or empty
   QCheckBox* floor_;
   // The rows of the parameters only some scenarios read, in form order.
   std::vector<ParameterRow> parameterRows_;

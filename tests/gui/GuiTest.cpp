@@ -353,6 +353,25 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
             Eigen::RowVector3d(0, -3, 0));
   child<QPushButton>("step")->click();  // starts at 1/60 s > 0.01 s
   EXPECT_EQ(window_->runner()->simulation().externalForces().norm(), 0.0);
+  // ... scaled over time by a load curve (0 at 0 s, 1 at 0.03 s).
+  child<QDoubleSpinBox>("loadSeconds")->setValue(0);  // the whole run
+  child<QLineEdit>("loadCurve")
+      ->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/load_curve.txt");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  for (int i = 0; i < 3; ++i) {
+    const double start = window_->runner()->simulation().state().time;  // 0, dt, 2 dt > 0.03
+    child<QPushButton>("step")->click();
+    EXPECT_NEAR(window_->runner()->simulation().externalForces().colwise().sum().y(),
+                -3 * std::min(start / 0.03, 1.0), 1e-12)
+        << "step " << i;
+  }
+  // A bad curve is an error naming its file and line, and no run starts.
+  child<QLineEdit>("loadCurve")
+      ->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/bad_load_curve.txt");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_TRUE(window_->lastError().contains("bad_load_curve.txt:4: the times must increase"))
+      << window_->lastError().toStdString();
 }
 
 TEST_F(Gui, ShiftDragPullsTheBody) {

@@ -42,6 +42,72 @@ std::vector<int> nodesWithXBelow(const TetMesh& mesh, double x) {
 // linear tetrahedra are too stiff in bending and converge from below (under
 // its own weight 40x4x4 cubes give -17%, 60x6x6 -8%, 80x8x8 -4.4%).
 constexpr double kBeamLength = 10, kBeamWidth = 1, kBeamHeight = 1;
+constexpr double kBeamInertia = kBeamWidth * kBeamHeight * kBeamHeight * kBeamHeight / 12;  // I
+
+// The nodes of the free end (x = L).
+std::vector<Index> freeEnd(const TetMesh& beam) {
+  std::vector<Index> end;
+  for (Index v = 0; v < beam.nodeCount(); ++v)
+    if (beam.nodes(v, 0) >= kBeamLength - 1e-9) end.push_back(v);
+  return end;
+}
+
+// The beam clamped at x = 0 (no base: it is a share of the height) with a
+// load of P newtons down spread over the free end.
+ScenarioParameters tipLoaded(const TetMesh& beam, double P) {
+  ScenarioParameters p;
+  p.baseShare = 0;
+  p.heldNodes = nodesWithXBelow(beam, 1e-9);
+  p.loads = Points3::Zero(beam.nodeCount(), 3);
+  const std::vector<Index> end = freeEnd(beam);
+  for (Index v : end) p.loads(v, 1) = -P / static_cast<double>(end.size());
+  return p;
+}
+
+// The free end's mean downward deflection.
+double tipDeflection(const TetMesh& beam, const Points3& positions) {
+  const std::vector<Index> end = freeEnd(beam);
+  double tip = 0;
+  for (Index v : end) tip += beam.nodes(v, 1) - positions(v, 1);
+  return tip / static_cast<double>(end.size());
+}
+
+// The beams' material: E = 1e6 Pa, no Poisson effect (Euler-Bernoulli
+// has none), density 1, damping by the mass only.
+ElasticMaterial beamMaterial(double massDamping) {
+  ElasticMaterial material;
+  material.youngsModulus = 1e6;
+  material.poissonRatio = 0.0;
+  material.density = 1;
+  material.massDamping = massDamping;
+  material.stiffnessDamping = 0;
+  return material;
+}
+
+// The dynamics tests' beam: weightless and undamped but for backward
+// Euler's own damping, about 60 steps per period of its first mode.
+SimulationOptions swingingBeamOptions() {
+  SimulationOptions options;
+  options.material = beamMaterial(0);
+  options.gravity.setZero();
+  options.timeStep = 0.01;
+  options.tolerance = 1e-7;
+  return options;
+}
+
+// Euler-Bernoulli's first natural frequency of the cantilever,
+// (1.8751^2 / 2 pi) sqrt(E I / (rho A L^4)), in Hz.
+double firstNaturalFrequency(const ElasticMaterial& material) {
+  const double A = kBeamWidth * kBeamHeight;
+  return 1.8751 * 1.8751 / (2 * M_PI) *
+         std::sqrt(material.youngsModulus * kBeamInertia /
+                   (material.density * A * std::pow(kBeamLength, 4)));
+}
+
+// Euler-Bernoulli's tip deflection under a tip load P, P L^3 / (3 E I).
+double tipLoadDeflection(const ElasticMaterial& material, double P) {
+  return P * std::pow(kBeamLength, 3) / (3 * material.youngsModulus * kBeamInertia);
+}
 
 TetMesh cantilever() {
   return test::tetGrid(80, 8, 8, {kBeamLength, kBeamHeight, kBeamWidth});
@@ -50,11 +116,7 @@ TetMesh cantilever() {
 // Large implicit steps, heavily damped, march to the static equilibrium.
 SimulationOptions staticBeamOptions() {
   SimulationOptions options;
-  options.material.youngsModulus = 1e6;
-  options.material.poissonRatio = 0.0;
-  options.material.density = 1;
-  options.material.massDamping = 5;
-  options.material.stiffnessDamping = 0;
+  options.material = beamMaterial(5);
   options.timeStep = 1.0;
   options.tolerance = 1e-10;
   options.solver = SolverKind::ConjugateGradient;
@@ -70,15 +132,7 @@ double settledTipDeflection(Simulation& sim, Scenario* scenario) {
   for (int i = 0; i < 60; ++i) {
     if (scenario) scenario->beforeStep(sim, sim.state().time);
     sim.step();
-    const Points3 x = sim.state().positions;
-    tip = 0;
-    int count = 0;
-    for (Index v = 0; v < x.rows(); ++v)
-      if (beam.nodes(v, 0) >= kBeamLength - 1e-9) {
-        tip += beam.nodes(v, 1) - x(v, 1);
-        ++count;
-      }
-    tip /= count;
+    tip = tipDeflection(beam, sim.state().positions);
     if (std::abs(tip - previous) < 1e-9 * std::abs(tip)) break;
     previous = tip;
   }
@@ -95,8 +149,7 @@ TEST(Simulation, CantileverMatchesEulerBernoulli) {
   sim.setFixedNodes(nodesWithXBelow(beam, 1e-9));
   const double tip = settledTipDeflection(sim, nullptr);
   const double q = options.material.density * 9.81 * b * h;
-  const double I = b * h * h * h / 12;
-  const double expected = q * std::pow(L, 4) / (8 * options.material.youngsModulus * I);
+  const double expected = q * std::pow(L, 4) / (8 * options.material.youngsModulus * kBeamInertia);
   std::printf("cantilever tip deflection: simulated %.5f, Euler-Bernoulli %.5f (%.1f%%)\n", tip,
               expected, 100 * (tip - expected) / expected);
   EXPECT_NEAR(tip, expected, 0.1 * expected);
@@ -404,20 +457,10 @@ TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
   const TetMesh beam = cantilever();
   SimulationOptions options = staticBeamOptions();
   options.gravity.setZero();
-  const double P = 0.5;
-  ScenarioParameters clamped;
-  clamped.baseShare = 0;  // (the base is a share of the height: clamp the end instead)
-  clamped.heldNodes = nodesWithXBelow(beam, 1e-9);
-  clamped.loads = Points3::Zero(beam.nodeCount(), 3);
-  std::vector<Index> end;
-  for (Index v = 0; v < beam.nodeCount(); ++v)
-    if (beam.nodes(v, 0) >= kBeamLength - 1e-9) end.push_back(v);
-  for (Index v : end) clamped.loads(v, 1) = -P / static_cast<double>(end.size());
   Simulation sim(oneLevel(beam), 0, options);
-  const auto sag = makeScenario("sag", clamped);
+  const auto sag = makeScenario("sag", tipLoaded(beam, 0.5));
   const double tip = settledTipDeflection(sim, sag.get());
-  const double I = kBeamWidth * std::pow(kBeamHeight, 3) / 12;
-  const double expected = P * std::pow(kBeamLength, 3) / (3 * options.material.youngsModulus * I);
+  const double expected = tipLoadDeflection(options.material, 0.5);
   std::printf("tip load deflection: simulated %.5f, Euler-Bernoulli %.5f (%.1f%%)\n", tip, expected,
               100 * (tip - expected) / expected);
   EXPECT_NEAR(tip, expected, 0.1 * expected);
@@ -459,23 +502,8 @@ TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
 // natural frequency, (1.8751^2 / 2 pi) sqrt(E I / (rho A L^4)).
 TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
   const TetMesh beam = test::tetGrid(60, 6, 6, {kBeamLength, kBeamHeight, kBeamWidth});
-  SimulationOptions options;
-  options.material.youngsModulus = 1e6;
-  options.material.poissonRatio = 0.0;
-  options.material.density = 1;
-  options.material.massDamping = 0;  // (backward Euler damps on its own)
-  options.material.stiffnessDamping = 0;
-  options.gravity.setZero();
-  options.timeStep = 0.01;  // about 60 steps per period
-  options.tolerance = 1e-7;
-  ScenarioParameters plucked;
-  plucked.baseShare = 0;
-  plucked.heldNodes = nodesWithXBelow(beam, 1e-9);
-  plucked.loads = Points3::Zero(beam.nodeCount(), 3);
-  std::vector<Index> end;
-  for (Index v = 0; v < beam.nodeCount(); ++v)
-    if (beam.nodes(v, 0) >= kBeamLength - 1e-9) end.push_back(v);
-  for (Index v : end) plucked.loads(v, 1) = -0.5 / static_cast<double>(end.size());
+  const SimulationOptions options = swingingBeamOptions();
+  ScenarioParameters plucked = tipLoaded(beam, 0.5);
   plucked.loadSeconds = 0.2;
   Simulation sim(oneLevel(beam), 0, options);
   const auto sag = makeScenario("sag", plucked);
@@ -486,9 +514,7 @@ TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
   while (sim.state().time < 2.0) {
     sag->beforeStep(sim, sim.state().time);
     sim.step();
-    double tip = 0;
-    for (Index v : end) tip += sim.state().positions(v, 1) - beam.nodes(v, 1);
-    tip /= static_cast<double>(end.size());
+    const double tip = -tipDeflection(beam, sim.state().positions);  // up
     const double t = sim.state().time;
     if (t > plucked.loadSeconds + options.timeStep && previous < 0 && tip >= 0)
       crossings.push_back(t - options.timeStep * tip / (tip - previous));
@@ -497,14 +523,57 @@ TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
   ASSERT_GE(crossings.size(), 3u) << "the free end did not swing";
   const double period =
       (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  const double I = kBeamWidth * std::pow(kBeamHeight, 3) / 12;
-  const double A = kBeamWidth * kBeamHeight;
-  const double expected = 1.8751 * 1.8751 / (2 * M_PI) *
-                          std::sqrt(options.material.youngsModulus * I /
-                                    (options.material.density * A * std::pow(kBeamLength, 4)));
+  const double expected = firstNaturalFrequency(options.material);
   std::printf("first natural frequency: simulated %.4f Hz, Euler-Bernoulli %.4f Hz (%.1f%%)\n",
               1 / period, expected, 100 * (1 / period - expected) / expected);
   EXPECT_NEAR(1 / period, expected, 0.1 * expected);
+}
+
+// Load curves (ScenarioParameters::loadCurve, `simulate --load-curve`),
+// against structural dynamics' known answer for an undamped beam: a load
+// put on at once swings the tip to twice its static deflection (less the
+// damping of backward Euler itself), one ramped up over a natural period T
+// or longer barely past it (the peak factor of a ramp of rise time t_r is
+// 1 + |sin(pi t_r / T)| / (pi t_r / T): 1 at t_r = T). Each step's external
+// forces are the loads times the curve's factor at the step's start.
+TEST(Simulation, LoadCurveRampsALoadOnWithoutTheOvershootOfASuddenOne) {
+  const TetMesh beam = test::tetGrid(60, 6, 6, {kBeamLength, kBeamHeight, kBeamWidth});
+  const SimulationOptions options = swingingBeamOptions();
+  const ScenarioParameters loaded = tipLoaded(beam, 0.5);
+  const double period = 1 / firstNaturalFrequency(options.material);
+  const double staticTip = tipLoadDeflection(options.material, 0.5);
+  // The largest downward tip deflection within 1.5 periods after the ramp.
+  auto peakTip = [&](const ScenarioParameters& p, double rise) {
+    Simulation sim(oneLevel(beam), 0, options);
+    const auto sag = makeScenario("sag", p);
+    sag->setUp(sim);
+    double peak = 0;
+    while (sim.state().time < rise + 1.5 * period) {
+      const double t = sim.state().time;
+      sag->beforeStep(sim, t);
+      const Points3 forces = sim.externalForces();
+      EXPECT_TRUE(forces.isApprox(p.loadCurve.factorAt(t) * p.loads)) << "t = " << t;
+      sim.step();
+      peak = std::max(peak, tipDeflection(beam, sim.state().positions));
+    }
+    return peak;
+  };
+  const double sudden = peakTip(loaded, 0) / staticTip;
+  ScenarioParameters ramped = loaded;
+  ramped.loadCurve = LoadCurve({{0, 0}, {period, 1}});
+  const double ramp = peakTip(ramped, period) / staticTip;
+  ScenarioParameters halved = loaded;  // a constant factor scales the answer
+  halved.loadCurve = LoadCurve({{0, 0.5}});
+  const double half = peakTip(halved, 0) / staticTip;
+  std::printf(
+      "peak tip over Euler-Bernoulli's static deflection: sudden load %.3f, ramped over T %.3f, "
+      "half load %.3f\n",
+      sudden, ramp, half);
+  EXPECT_GT(sudden, 1.6);
+  EXPECT_LT(sudden, 2.0);
+  EXPECT_GT(ramp, 0.85);
+  EXPECT_LT(ramp, 1.1);
+  EXPECT_NEAR(half, sudden / 2, 0.01 * sudden);
 }
 
 // scenariosReading() tells the truth: a parameter changes the run of
@@ -743,6 +812,10 @@ TEST(Simulation, ScenarioParametersOutOfRangeAreErrorsNamingTheParameter) {
       {[&](auto& p) { p.twistSeconds = inf; }, "the twist time must be finite and > 0"},
       {[&](auto& p) { p.loads = Points3::Constant(2, 3, nan); }, "the loads must be finite"},
       {[](auto& p) { p.loadSeconds = 0; }, "the time the loads act must be > 0, got 0"},
+      {[](auto& p) {
+         p.loadCurve = LoadCurve({{0, 1}});
+       },
+       "a load curve scales the loads, but there are none"},
   };
   for (const std::string& name : scenarioNames()) {
     EXPECT_NO_THROW(makeScenario(name, ScenarioParameters{})) << name;

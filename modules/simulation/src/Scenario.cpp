@@ -130,6 +130,8 @@ void validateScenarioParameters(const ScenarioParameters& p) {
   require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
           "finite and > 0");
   if (!p.loads.allFinite()) throw Error("the loads must be finite");
+  if (!p.loadCurve.empty() && p.loads.size() == 0)
+    throw Error("a load curve scales the loads, but there are none");
   require(p.loadSeconds > 0, "the time the loads act", p.loadSeconds, "> 0");
 }
 
@@ -149,7 +151,7 @@ void Scenario::setUp(Simulation& sim) {
 void Scenario::beforeStep(Simulation& sim, double time) {
   const bool loaded = p_.loads.size() > 0 && time < p_.loadSeconds;
   if (loaded)
-    forces_ = p_.loads;
+    forces_ = p_.loadCurve.factorAt(time) * p_.loads;  // (same size: no allocation)
   else
     forces_.setZero(sim.restMesh().nodeCount(), 3);
   drive(sim, time, forces_);

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tetskin/core/LoadCurve.h"
 #include "tetskin/simulation/Simulation.h"
 
 namespace tetskin {
@@ -28,6 +29,7 @@ struct ScenarioParameters {
   std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
   Points3 loads;                 // every scenario: a constant force on each node of the
                                  // level (N; nodeCount rows), or empty for none
+  LoadCurve loadCurve;           // scales the loads over time (empty: by 1)
   double loadSeconds =
       std::numeric_limits<double>::infinity();  // the loads act in the
                                                 // steps that start before this time, then let go
@@ -57,8 +59,9 @@ class Scenario {
   // Fixed nodes (the scenario's own and the held ones) and the initial
   // state: called once before the first step.
   void setUp(Simulation& simulation);
-  // Sets the external forces (the scenario's and the loads) and kinematic
-  // targets for the step that starts at `time`.
+  // Sets the external forces (the scenario's, and the loads times the load
+  // curve's factor at `time`) and kinematic targets for the step that
+  // starts at `time`.
   void beforeStep(Simulation& simulation, double time);
 
  protected:
@@ -85,7 +88,8 @@ std::string nodesBelowFloor(const Simulation& simulation);
 
 // Throws Error for an unknown name, or naming the parameter whose value no
 // scenario can use (e.g. a base share outside [0, 1), a twist time <= 0,
-// anything not finite; loads of another level: setUp() checks their count).
+// anything not finite, a load curve without loads; loads of another level:
+// setUp() checks their count).
 std::unique_ptr<Scenario> makeScenario(std::string_view name,
                                        const ScenarioParameters& parameters = {});
 std::vector<std::string> scenarioNames();
