@@ -1,27 +1,24 @@
 // TetSkin gpu-1pass, embed bindings: position = sum w_i x_i + s over the
 // four nodes of the embedding tetrahedron (s the displacement offset's
 // constant part), as the CPU computes it. The normal is the rest normal
-// carried by the tetrahedron's deformation gradient F = d D^-1 (d, D its
-// deformed and rest edges), as normals transform: F^-T n = d^-T (D^T n).
-// Exact under rigid motion; under other deformations it is constant over
-// each tetrahedron (the CPU path recomputes the surface's own).
+// turned by sum w_i G_i, G_i the nodes' normal transforms (deformation
+// NormalTransforms.h: each node's volume-weighted mean of its tetrahedra's
+// cof(F)): continuous across the tetrahedra, exact under any affine
+// deformation (the CPU path recomputes the surface's own normals).
 ivec4 tetskinIds = ivec4(round(tetskinControlIds));
-vec3 tetskinX0 = texelFetch(tetskinControlPositions, tetskinIds.x).xyz;
-vec3 tetskinX1 = texelFetch(tetskinControlPositions, tetskinIds.y).xyz;
-vec3 tetskinX2 = texelFetch(tetskinControlPositions, tetskinIds.z).xyz;
-vec3 tetskinX3 = texelFetch(tetskinControlPositions, tetskinIds.w).xyz;
-vec4 deformedMC = vec4(tetskinWeights.x * tetskinX0 + tetskinWeights.y * tetskinX1 +
-                       tetskinWeights.z * tetskinX2 + tetskinWeights.w * tetskinX3 +
+vec4 deformedMC = vec4(tetskinWeights.x * texelFetch(tetskinControlPositions, tetskinIds.x).xyz +
+                       tetskinWeights.y * texelFetch(tetskinControlPositions, tetskinIds.y).xyz +
+                       tetskinWeights.z * texelFetch(tetskinControlPositions, tetskinIds.z).xyz +
+                       tetskinWeights.w * texelFetch(tetskinControlPositions, tetskinIds.w).xyz +
                        tetskinShift.xyz, 1.0);
-// d^-T m = cof(d) m / det(d), cof(d) the cofactor matrix: its columns are
-// the cross products of d's columns. (Dividing by det, not taking its
-// absolute value, keeps the normal's side through an inversion.)
-vec3 tetskinE1 = tetskinX1 - tetskinX0;
-vec3 tetskinE2 = tetskinX2 - tetskinX0;
-vec3 tetskinE3 = tetskinX3 - tetskinX0;
-mat3 tetskinCofactor = mat3(cross(tetskinE2, tetskinE3), cross(tetskinE3, tetskinE1),
-                            cross(tetskinE1, tetskinE2));
-float tetskinDet = dot(tetskinE1, tetskinCofactor[0]);
-vec3 tetskinNormal = tetskinCofactor * tetskinRestFrameNormal;
-vec3 deformedNormalMC = tetskinDet < 0.0 ? -normalize(tetskinNormal) : normalize(tetskinNormal);
+vec3 tetskinNormal = vec3(0.0);
+for (int tetskinK = 0; tetskinK < 4; ++tetskinK) {
+  int tetskinFirst = 3 * tetskinIds[tetskinK];
+  tetskinNormal += tetskinWeights[tetskinK] *
+                   mat3(texelFetch(tetskinNormalTransforms, tetskinFirst).xyz,
+                        texelFetch(tetskinNormalTransforms, tetskinFirst + 1).xyz,
+                        texelFetch(tetskinNormalTransforms, tetskinFirst + 2).xyz) *
+                   tetskinRestNormal;
+}
+vec3 deformedNormalMC = normalize(tetskinNormal);
 //VTK::CustomBegin::Impl

@@ -18,7 +18,9 @@
 
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/deformation/NormalTransforms.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/filters/vtkTetSkinDeformSurface.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
@@ -216,5 +218,27 @@ int main() {
     deformFilterRow("bunny_64k", fine, closest, offset, d);
   for (OffsetMode offset : {OffsetMode::Normal, OffsetMode::Displacement})
     deformFilterRow("1M (bunny_8k, Loop x4)", million, millionBinding, offset, d);
+
+  // gpu-1pass's CPU work per frame for the control mesh, before the upload:
+  // triangle bindings need the level's boundary vertex normals, embed
+  // bindings its nodes' normal transforms.
+  const LevelRange& finest = d.mesh.levels[static_cast<std::size_t>(level)];
+  const Points3 control = d.mesh.nodes * 1.01;
+  const Triangles boundary =
+      boundaryFaces(extractLevel(d.mesh, level), static_cast<int>(finest.firstNode)).faces;
+  const VertexTriangleAdjacency adjacency = vertexTriangleAdjacency(boundary, control.rows());
+  Points3 faceScratch(boundary.rows(), 3), controlNormals(control.rows(), 3);
+  const NodeNormalTransforms transforms(
+      d.mesh.elements.middleRows(finest.firstElement, finest.elementCount), d.mesh.nodes);
+  NormalTransformRows nodeTransforms(control.rows(), 9);
+  const double tNormals = seconds(
+      [&] { computeVertexNormals(control, boundary, adjacency, faceScratch, controlNormals); },
+      200);
+  const double tTransforms = seconds([&] { transforms.compute(control, nodeTransforms); }, 200);
+  std::printf(
+      "\ngpu-1pass per frame, level %d: control vertex normals (%lld boundary triangles) %.3f ms; "
+      "node normal transforms (embed bindings, %lld tetrahedra) %.3f ms, %.2fx\n",
+      level, static_cast<long long>(boundary.rows()), 1e3 * tNormals,
+      static_cast<long long>(finest.elementCount), 1e3 * tTransforms, tTransforms / tNormals);
   return 0;
 }

@@ -14,20 +14,38 @@
 
 namespace tetskin::test {
 
-double differingPixelShare(vtkImageData* a, vtkImageData* b) {
+namespace {
+
+// Calls visit(d) with each pixel's largest channel difference d; false
+// (after a test failure) when the images differ in size.
+template <typename Visit>
+bool forEachPixelDifference(vtkImageData* a, vtkImageData* b, Visit&& visit) {
   EXPECT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
-  if (a->GetNumberOfPoints() != b->GetNumberOfPoints()) return 1.0;
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints()) return false;
   vtkDataArray* pa = a->GetPointData()->GetScalars();
   vtkDataArray* pb = b->GetPointData()->GetScalars();
   const int channels = std::min({3, pa->GetNumberOfComponents(), pb->GetNumberOfComponents()});
-  vtkIdType differing = 0;
   for (vtkIdType i = 0; i < pa->GetNumberOfTuples(); ++i) {
     double largest = 0;
     for (int c = 0; c < channels; ++c)
       largest = std::max(largest, std::abs(pa->GetComponent(i, c) - pb->GetComponent(i, c)));
-    differing += largest > 24 ? 1 : 0;
+    visit(largest);
   }
-  return static_cast<double>(differing) / static_cast<double>(pa->GetNumberOfTuples());
+  return true;
+}
+
+}  // namespace
+
+double differingPixelShare(vtkImageData* a, vtkImageData* b) {
+  vtkIdType differing = 0;
+  if (!forEachPixelDifference(a, b, [&](double d) { differing += d > 24 ? 1 : 0; })) return 1.0;
+  return static_cast<double>(differing) / static_cast<double>(a->GetNumberOfPoints());
+}
+
+double meanPixelDifference(vtkImageData* a, vtkImageData* b) {
+  double sum = 0;
+  if (!forEachPixelDifference(a, b, [&](double d) { sum += d; })) return 255.0;
+  return sum / static_cast<double>(a->GetNumberOfPoints());
 }
 
 void expectMatchesBaseline(vtkImageData* image, const std::filesystem::path& baselineDir,

@@ -15,6 +15,11 @@ namespace tetskin::test {
 // (vtkImageDifference's default tolerance would pass very different images).
 double differingPixelShare(vtkImageData* a, vtkImageData* b);
 
+// The mean over all pixels of the largest channel difference, in 255ths:
+// for differences too faint for differingPixelShare() to count, such as
+// shading that shows a mesh's facets.
+double meanPixelDifference(vtkImageData* a, vtkImageData* b);
+
 // Writes `image` to actualDir/name and compares it with baselineDir/name
 // (fails the test above `tolerance`); TETSKIN_UPDATE_BASELINES=1 rewrites the baseline.
 void expectMatchesBaseline(vtkImageData* image, const std::filesystem::path& baselineDir,

@@ -24,6 +24,7 @@
 #include "Shapes.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/deformation/NormalTransforms.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/io/Dataset.h"
@@ -48,6 +49,20 @@ Points3 twisted(const Points3& nodes) {
     const double angle = 0.08 * nodes(v, 1);
     const Eigen::AngleAxisd turn(angle, Eigen::Vector3d::UnitY());
     out.row(v) = (turn * Eigen::Vector3d(nodes.row(v).transpose())).transpose();
+  }
+  return out;
+}
+
+// A deformation far from affine within each coarse tetrahedron: the
+// nodes moved sideways in waves along the height (two per `box` height, of
+// a tenth of it).
+Points3 waved(const Points3& nodes, const BoundingBox& box) {
+  const double height = box.extent().y();
+  Points3 out = nodes;
+  for (Index v = 0; v < nodes.rows(); ++v) {
+    const double phase = 2 * M_PI * (nodes(v, 1) - box.min.y()) / (0.5 * height);
+    out(v, 0) += 0.1 * height * std::sin(phase);
+    out(v, 2) += 0.1 * height * std::cos(phase);
   }
   return out;
 }
@@ -214,11 +229,11 @@ TEST_F(Rendering, Gpu2PassDrawsAnEmbedBindingAsTheCpuPath) {
 }
 
 // An embed binding drawn by gpu-1pass: the same positions as the CPU's, and
-// normals carried by each tetrahedron's deformation gradient. Under a rigid
-// motion those are the CPU's normals; twisted they are constant over each
-// tetrahedron where the CPU recomputes the surface's own, which at this
-// twist no pixel shows. (With the rest frame's normal left undeformed, both
-// comparisons differ in about 22% of the pixels.)
+// normals turned by the nodes' normal transforms. Under a rigid motion
+// those are the CPU's normals; twisted they are interpolated where the CPU
+// recomputes the surface's own, which at this twist no pixel shows. (With
+// the rest normal left unturned, the two comparisons differ in 18% and 13%
+// of the pixels.)
 TEST_F(Rendering, Gpu1PassDrawsAnEmbedBindingAsTheCpuPath) {
   const SurfaceBinding embed =
       bindSurface(surface_, dataset_.mesh, 1, {BindingMethod::Embed, OffsetMode::Displacement});
@@ -244,6 +259,85 @@ TEST_F(Rendering, Gpu1PassDrawsAnEmbedBindingAsTheCpuPath) {
   EXPECT_LT(rigid, 0.002);
   EXPECT_LT(twist, 0.002);
   EXPECT_GT(moved, 0.05);
+}
+
+// Under a wave, far from affine within each coarse tetrahedron, gpu-1pass
+// shades an embed binding nearly as the CPU, which recomputes the deformed
+// surface's own normals (the normals themselves: the next test).
+TEST_F(Rendering, Gpu1PassShadesAnEmbedBindingSmoothlyUnderAWave) {
+  const SurfaceBinding embed =
+      bindSurface(surface_, dataset_.mesh, 1, {BindingMethod::Embed, OffsetMode::Displacement});
+  const Points3& rest = dataset_.mesh.nodes;
+  const Points3 wave = waved(rest, boundingBox(extractLevel(dataset_.mesh, 1).nodes));
+  const auto cpu = render(RenderPath::Cpu, wave, surface_, embed, "");
+  const auto gpu = render(RenderPath::Gpu1Pass, wave, surface_, embed, "");
+  write(cpu, std::filesystem::path(TETSKIN_ACTUAL_DIR) / "embed_wave_cpu.png");
+  write(gpu, std::filesystem::path(TETSKIN_ACTUAL_DIR) / "embed_wave_gpu1pass.png");
+  const auto still = render(RenderPath::Cpu, rest, surface_, embed, "");
+  const double paths = difference(cpu, gpu), moved = difference(still, cpu);
+  const double pathsMean = test::meanPixelDifference(cpu, gpu);
+  const double movedMean = test::meanPixelDifference(still, cpu);
+  std::printf(
+      "embed cpu vs gpu-1pass waved: %.3f%% of the pixels differ by > 24/255, mean difference "
+      "%.3f/255; rest vs waved %.2f%%, %.3f/255\n",
+      100 * paths, pathsMean, 100 * moved, movedMean);
+  EXPECT_GT(moved, 0.05);
+  EXPECT_LT(paths, 0.02);  // (1.2% and 1.57/255 with the normals of each tetrahedron)
+  EXPECT_LT(pathsMean, 2.5);
+}
+
+// gpu-1pass's normals for an embed binding under that wave, against the
+// deformed surface's own (the CPU's): each vertex's rest normal turned by
+// its tetrahedron's nodes' normal transforms (NormalTransforms.h) as the
+// shader does, and, as gpu-1pass did before, by its tetrahedron's own
+// cof(F). Per tetrahedron the normals jump across the tetrahedra's faces
+// and some point away from the surface's (up to 180 degrees); the nodes'
+// means are continuous and stay within 60 degrees.
+TEST(EmbedNormals, NodeTransformsFollowTheSurfaceWithoutTheOutliersOfPerTetrahedronNormals) {
+  const Dataset& d = sampleDataset();
+  const SurfaceMesh surface = readObj(kSampleData + "bunny_8k.obj");
+  const SurfaceBinding embed =
+      bindSurface(surface, d.mesh, 1, {BindingMethod::Embed, OffsetMode::Displacement});
+  const Points3& rest = d.mesh.nodes;
+  const Points3 wave = waved(rest, boundingBox(extractLevel(d.mesh, 1).nodes));
+  SurfaceDeformer deformer(surface, embed, rest);
+  Points3 positions(surface.vertexCount(), 3), normals(surface.vertexCount(), 3);
+  deformer.deform(wave, positions, normals);
+  const Points3 restNormals = vertexNormals(surface.positions, surface.triangles);
+  const LevelRange& level = d.mesh.levels[1];
+  const NodeNormalTransforms transforms(
+      d.mesh.elements.middleRows(level.firstElement, level.elementCount), rest);
+  NormalTransformRows nodeTransforms(rest.rows(), 9);
+  transforms.compute(wave, nodeTransforms);
+  std::vector<double> perTetrahedron, nodeMeans;  // degrees from the CPU's normal
+  auto degrees = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / M_PI;
+  };
+  for (Index v = 0; v < surface.vertexCount(); ++v) {
+    Eigen::Matrix3d D, deformed, G = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int first = embed.controlIds(v, 0), other = embed.controlIds(v, k + 1);
+      D.col(k) = (rest.row(other) - rest.row(first)).transpose();
+      deformed.col(k) = (wave.row(other) - wave.row(first)).transpose();
+    }
+    for (int k = 0; k < 4; ++k)
+      G += embed.weights(v, k) *
+           Eigen::Map<const Eigen::Matrix3d>(nodeTransforms.row(embed.controlIds(v, k)).data());
+    const Eigen::Vector3d n = restNormals.row(v).transpose(), cpu = normals.row(v).transpose();
+    perTetrahedron.push_back(degrees(deformed.inverse().transpose() * D.transpose() * n, cpu));
+    nodeMeans.push_back(degrees(G * n, cpu));
+  }
+  auto percentile = [](std::vector<double> angles, double share) {
+    std::sort(angles.begin(), angles.end());
+    return angles[static_cast<std::size_t>(share * static_cast<double>(angles.size() - 1))];
+  };
+  for (const auto& [name, angles] :
+       {std::pair{"node means", nodeMeans}, std::pair{"per tetrahedron", perTetrahedron}})
+    std::printf("%s: degrees from the surface's own normals: median %.2f, 99%% %.2f, max %.2f\n",
+                name, percentile(angles, 0.5), percentile(angles, 0.99), percentile(angles, 1));
+  EXPECT_LT(percentile(nodeMeans, 1), 60);
+  EXPECT_LT(percentile(nodeMeans, 0.99), percentile(perTetrahedron, 0.99));
+  EXPECT_LT(percentile(nodeMeans, 0.5), 5);
 }
 
 TEST_F(Rendering, HardwarePickingSeesTheDeformedSurface) {

@@ -14,9 +14,11 @@
 #include <vtkTexture.h>
 
 #include <chrono>
+#include <optional>
 
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/deformation/NormalTransforms.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
@@ -62,24 +64,6 @@ std::vector<float> gpuShifts(const SurfaceBinding& binding, const Points3& restS
   return shifts;
 }
 
-// Per surface vertex of an embed binding, its rest normal in the frame of
-// its tetrahedron: D^T n, D the tetrahedron's rest edges X_i - X_0 as
-// columns (gpu-1pass carries it to the deformed normal F^-T n = d^-T D^T n).
-std::vector<float> restFrameNormals(const SurfaceBinding& binding, const Points3& restNormals,
-                                    const Points3& controlRest) {
-  const Index n = binding.vertexCount();
-  std::vector<float> frameNormals(static_cast<std::size_t>(3 * n));
-  for (Index v = 0; v < n; ++v) {
-    const Eigen::Vector3d x0 = controlRest.row(binding.controlIds(v, 0)).transpose();
-    Eigen::Matrix3d edges;
-    for (int k = 0; k < 3; ++k)
-      edges.col(k) = controlRest.row(binding.controlIds(v, k + 1)).transpose() - x0;
-    const Eigen::Vector3d m = edges.transpose() * restNormals.row(v).transpose();
-    for (int k = 0; k < 3; ++k) frameNormals[static_cast<std::size_t>(3 * v + k)] = float(m[k]);
-  }
-  return frameNormals;
-}
-
 // Adds `values` (`components` per point, one tuple per point) to the points
 // of `poly` as the float array `name`: a vertex attribute of the GPU mappers.
 void addPointArray(vtkPolyData* poly, const char* name, int components,
@@ -100,7 +84,10 @@ struct DeformableSurface::Impl {
   vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
   std::unique_ptr<SurfaceDeformer> deformer;
   vtkSmartPointer<vtkTetSkinGpuDeformMapper> gpuMapper;
-  bool embedded = false;  // gpu-1pass: an embed binding (no control normals needed)
+  // gpu-1pass with an embed binding: the control nodes' normal transforms
+  // instead of control normals.
+  std::optional<NodeNormalTransforms> normalTransforms;
+  NormalTransformRows normalTransformRows;
   vtkSmartPointer<vtkTetSkinGpu2PassMapper> gpu2Mapper;
   // gpu path: control vertex normals over the bound level's boundary.
   Triangles boundary;
@@ -149,11 +136,15 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
       if (binding.method == BindingMethod::Embed) {
         // (An embedding tetrahedron has no control vertex normals to
-        // interpolate: the shader carries the rest normal by its deformation.)
-        addPointArray(s.polyData, vtkTetSkinGpuDeformMapper::kRestFrameNormalArray, 3,
-                      restFrameNormals(binding, bound.surface.normals, dataset.nodes));
+        // interpolate: the shader turns the rest normal by the nodes' normal
+        // transforms.)
+        const Points3& normals = bound.surface.normals;
+        addPointArray(s.polyData, vtkTetSkinGpuDeformMapper::kRestNormalArray, 3,
+                      std::vector<float>(normals.data(), normals.data() + normals.size()));
         s.gpuMapper->SetEmbedBinding(true);
-        s.embedded = true;
+        s.normalTransforms.emplace(dataset.elements.middleRows(r.firstElement, r.elementCount),
+                                   dataset.nodes);
+        s.normalTransformRows.resize(dataset.nodes.rows(), 9);
       }
       s.gpuMapper->SetInputData(s.polyData);
       s.gpuMapper->ScalarVisibilityOff();
@@ -256,7 +247,8 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     return times;
   }
   s.controlPositionsF.assign(control.data(), control.data() + control.size());
-  const bool controlNormalsNeeded = s.gpuMapper && !s.embedded;
+  if (s.normalTransforms) s.normalTransforms->compute(control, s.normalTransformRows);
+  const bool controlNormalsNeeded = s.gpuMapper && !s.normalTransforms;
   if (controlNormalsNeeded) {
     computeVertexNormals(control, s.boundary, s.boundaryAdjacency, s.boundaryScratch,
                          s.controlNormals);
@@ -276,9 +268,12 @@ FrameTimes DeformableSurface::update(const Points3& control) {
   times.deformSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
   if (s.gpuMapper) {
-    s.gpuMapper->SetControlState(s.controlPositionsF.data(),
-                                 controlNormalsNeeded ? s.controlNormalsF.data() : nullptr,
+    if (s.normalTransforms)
+      s.gpuMapper->SetEmbedState(s.controlPositionsF.data(), s.normalTransformRows.data(),
                                  control.rows());
+    else
+      s.gpuMapper->SetControlState(s.controlPositionsF.data(), s.controlNormalsF.data(),
+                                   control.rows());
     s.gpuMapper->SetDeformedBounds(s.bounds);
   } else {
     s.gpu2Mapper->SetControlPositions(s.controlPositionsF.data(), control.rows());

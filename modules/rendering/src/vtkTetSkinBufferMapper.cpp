@@ -42,9 +42,11 @@ void vtkTetSkinBufferMapper::ComputeBounds() {
   this->Superclass::ComputeBounds();
 }
 
-void vtkTetSkinBufferMapper::SetShaderCode(const char* declarations, const char* implementation) {
+void vtkTetSkinBufferMapper::SetShaderCode(const char* declarations, const char* implementation,
+                                           const char* secondSampler) {
   this->Declarations = declarations;
   this->Implementation = implementation;
+  this->Samplers[1] = secondSampler;
   this->Modified();
 }
 

@@ -8,10 +8,15 @@
 
 vtkStandardNewMacro(vtkTetSkinGpuDeformMapper)
 
+namespace {
+constexpr const char* kControlNormalsSampler = "tetskinControlNormals";
+constexpr const char* kNormalTransformsSampler = "tetskinNormalTransforms";
+}  // namespace
+
 vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
     : vtkTetSkinBufferMapper(tetskin::shaders::kGpuDeformDeclarationsVs,
                              tetskin::shaders::kGpuDeformImplVs, "tetskinControlPositions",
-                             "tetskinControlNormals") {
+                             kControlNormalsSampler) {
   this->MapDataArrayToVertexAttribute("tetskinControlIds", "ControlIds",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   this->MapDataArrayToVertexAttribute("tetskinWeights", "Weights",
@@ -23,25 +28,41 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
 void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
   if (embed) {
     this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
-                        tetskin::shaders::kGpuDeformEmbedImplVs);
-    this->MapDataArrayToVertexAttribute("tetskinRestFrameNormal", kRestFrameNormalArray,
+                        tetskin::shaders::kGpuDeformEmbedImplVs, kNormalTransformsSampler);
+    this->MapDataArrayToVertexAttribute("tetskinRestNormal", kRestNormalArray,
                                         vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   } else {
     this->SetShaderCode(tetskin::shaders::kGpuDeformDeclarationsVs,
-                        tetskin::shaders::kGpuDeformImplVs);
-    this->RemoveVertexAttributeMapping("tetskinRestFrameNormal");
+                        tetskin::shaders::kGpuDeformImplVs, kControlNormalsSampler);
+    this->RemoveVertexAttributeMapping("tetskinRestNormal");
   }
 }
 
 void vtkTetSkinGpuDeformMapper::SetControlState(const float* positions, const float* normals,
                                                 vtkIdType nodes) {
-  this->Positions.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
+  this->SetPositions(positions, nodes);
   this->Normals.assign(normals ? static_cast<std::size_t>(4 * nodes) : 0, 0.0f);
+  if (normals)
+    for (vtkIdType v = 0; v < nodes; ++v)
+      for (int k = 0; k < 3; ++k)
+        this->Normals[static_cast<std::size_t>(4 * v + k)] = normals[3 * v + k];
+}
+
+void vtkTetSkinGpuDeformMapper::SetEmbedState(const float* positions,
+                                              const double* normalTransforms, vtkIdType nodes) {
+  this->SetPositions(positions, nodes);
+  this->Normals.assign(static_cast<std::size_t>(12 * nodes), 0.0f);
+  for (vtkIdType c = 0; c < 3 * nodes; ++c)  // a column of a node's G per texel
+    for (int k = 0; k < 3; ++k)
+      this->Normals[static_cast<std::size_t>(4 * c + k)] =
+          static_cast<float>(normalTransforms[3 * c + k]);
+}
+
+void vtkTetSkinGpuDeformMapper::SetPositions(const float* positions, vtkIdType nodes) {
+  this->Positions.assign(static_cast<std::size_t>(4 * nodes), 0.0f);
   for (vtkIdType v = 0; v < nodes; ++v)
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3; ++k)
       this->Positions[static_cast<std::size_t>(4 * v + k)] = positions[3 * v + k];
-      if (normals) this->Normals[static_cast<std::size_t>(4 * v + k)] = normals[3 * v + k];
-    }
   this->StateChanged = true;
   this->Modified();
 }

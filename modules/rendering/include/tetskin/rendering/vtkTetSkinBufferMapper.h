@@ -38,8 +38,10 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
                          const char* firstSampler, const char* secondSampler);
   ~vtkTetSkinBufferMapper() override;
   virtual void PrepareBuffers(vtkOpenGLRenderWindow* window) = 0;
-  // Other shader code than the constructor's (before the first render).
-  void SetShaderCode(const char* declarations, const char* implementation);
+  // Other shader code than the constructor's, and the sampler of the
+  // second buffer it reads (before the first render).
+  void SetShaderCode(const char* declarations, const char* implementation,
+                     const char* secondSampler);
   // Uploads `values` (4 floats per texel) into buffer k (0 or 1) and its texture.
   void UploadTexels(int k, const std::vector<float>& values);
   vtkOpenGLBufferObject* Buffer(int k);

@@ -16,9 +16,9 @@
 //
 // With SetEmbedBinding(true), each vertex is bound to a tetrahedron instead:
 // ControlIds (4), Weights (4), kShiftArray (x, y, z; d unused) and
-// kRestFrameNormalArray (3: D^T n, D the rest tetrahedron's edges as
-// columns, n the rest normal); the normal is n carried by the
-// tetrahedron's deformation gradient, and no control normals are needed.
+// kRestNormalArray (3: the rest normal n); per frame SetEmbedState() gives
+// the control nodes' normal transforms G (deformation NormalTransforms.h)
+// instead of their normals, and the normal is (sum w_i G_i) n.
 
 #include <vector>
 
@@ -30,16 +30,18 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
   vtkTypeMacro(vtkTetSkinGpuDeformMapper, vtkTetSkinBufferMapper)
 
   static constexpr const char* kShiftArray = "TetSkinShift";
-  static constexpr const char* kRestFrameNormalArray = "TetSkinRestFrameNormal";
+  static constexpr const char* kRestNormalArray = "TetSkinRestNormal";
 
   // Triangle bindings (the default) or embed bindings (see above); set
   // before the first render.
   void SetEmbedBinding(bool embed);
 
-  // Control node positions and normals, xyz per node in the dataset's
-  // numbering; uploaded at the next render. (Embed bindings: normals may be
-  // null, and are not used.)
+  // Triangle bindings: control node positions and normals, xyz per node in
+  // the dataset's numbering; uploaded at the next render.
   void SetControlState(const float* positions, const float* normals, vtkIdType nodes);
+  // Embed bindings: positions as above and each node's normal transform, its
+  // three columns (9 numbers per node).
+  void SetEmbedState(const float* positions, const double* normalTransforms, vtkIdType nodes);
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
  protected:
@@ -50,6 +52,9 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
  private:
   vtkTetSkinGpuDeformMapper(const vtkTetSkinGpuDeformMapper&) = delete;
   void operator=(const vtkTetSkinGpuDeformMapper&) = delete;
-  std::vector<float> Positions, Normals;  // xyz_ per node
+  void SetPositions(const float* positions, vtkIdType nodes);
+  // xyz_ per node; Normals: for embed bindings three texels per node, the
+  // columns of its normal transform.
+  std::vector<float> Positions, Normals;
   bool StateChanged = false;
 };
