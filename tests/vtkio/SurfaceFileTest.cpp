@@ -4,7 +4,9 @@
 #include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkPolyData.h>
+#include <vtkSphereSource.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cstring>
@@ -185,6 +187,35 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
   test::expectErrorAt([&] { readVtu(path); }, path.string(),
                       1 + static_cast<long>(std::count(vtu.begin(), vtu.begin() + type, '\n')),
                       "Cells offsets: type 'Float32' is not an integer type");
+}
+
+// A foreign file with inline ASCII data (VTK's writer in ASCII mode, as
+// other tools write): the check reads past megabytes of numbers between
+// the tags, in chunks, and still names the line of a bad attribute after
+// them; the good file reads.
+TEST(VtkFiles, InlineAsciiDataIsReadPastToTheAttributesAfterIt) {
+  test::ScratchDir dir;
+  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+  sphere->SetThetaResolution(400);
+  sphere->SetPhiResolution(400);
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputConnection(sphere->GetOutputPort());
+  writer->SetDataModeToAscii();
+  writer->SetFileName((dir / "ascii.vtp").string().c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  std::string text = test::readText(dir / "ascii.vtp");
+  const auto polys = text.find("<Polys>");
+  ASSERT_NE(polys, std::string::npos);
+  ASSERT_GT(polys, std::size_t{2} << 20);  // more than two of the check's 1 MiB chunks before
+  EXPECT_EQ(readVtp(dir / "ascii.vtp")->GetNumberOfPoints(), 400 * 398 + 2);
+  const auto offsets = text.find("Name=\"offsets\"", polys);
+  ASSERT_NE(offsets, std::string::npos);
+  const auto type = text.rfind("type=\"", offsets) + 6;
+  text.replace(type, text.find('"', type) - type, "Float64");
+  const auto path = dir.write("bad.vtp", text);
+  test::expectErrorAt([&] { readVtp(path); }, path.string(),
+                      1 + static_cast<long>(std::count(text.begin(), text.begin() + type, '\n')),
+                      "Polys offsets: type 'Float64' is not an integer type");
 }
 
 // File names with XML's special characters are legal on disk: the .pvd

@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <fstream>
+#include <istream>
 #include <limits>
 #include <optional>
 #include <string>
@@ -49,6 +50,62 @@ bool isWholeNumber(std::string_view text, long long minimum,
          value <= maximum;
 }
 
+// The tags of a VTK XML file's XML part, one at a time, with the line each
+// starts on. The text between tags (inline data, possibly most of the file)
+// is read past in chunks and not kept; the XML part ends at the end of the
+// file, at an unclosed tag (VTK's parser reports it) or at <AppendedData
+// (the raw bytes after it are not XML).
+class XmlTags {
+ public:
+  explicit XmlTags(std::istream& in) : in_(in) {}
+
+  // The next tag's text from '<' up to its '>' (excluded); false at the end.
+  bool next(std::string& tag, long& line) {
+    if (!skipTo('<')) return false;
+    line = line_;
+    tag.clear();
+    for (;;) {
+      if (at_ == chunk_.size() && !refill()) return false;
+      const std::string_view rest(chunk_.data() + at_, chunk_.size() - at_);
+      const std::size_t end = rest.find('>');
+      const std::string_view part = rest.substr(0, end);
+      line_ += static_cast<long>(std::count(part.begin(), part.end(), '\n'));
+      tag += part;
+      at_ += part.size();
+      if (end != std::string_view::npos) {
+        ++at_;  // past '>'
+        return tag.rfind("<AppendedData", 0) != 0;
+      }
+    }
+  }
+
+ private:
+  bool refill() {
+    chunk_.resize(1 << 20);
+    in_.read(chunk_.data(), static_cast<std::streamsize>(chunk_.size()));
+    chunk_.resize(static_cast<std::size_t>(in_.gcount()));
+    at_ = 0;
+    return !chunk_.empty();
+  }
+  // Reads past the text before the next `c`, counting its lines.
+  bool skipTo(char c) {
+    for (;;) {
+      if (at_ == chunk_.size() && !refill()) return false;
+      const std::string_view rest(chunk_.data() + at_, chunk_.size() - at_);
+      const std::size_t found = rest.find(c);
+      const std::string_view skipped = rest.substr(0, found);
+      line_ += static_cast<long>(std::count(skipped.begin(), skipped.end(), '\n'));
+      at_ += skipped.size();
+      if (found != std::string_view::npos) return true;
+    }
+  }
+
+  std::istream& in_;
+  std::string chunk_;
+  std::size_t at_ = 0;
+  long line_ = 1;
+};
+
 // More components than any array TetSkin or ParaView users write (VTK hung
 // on 99999999999).
 constexpr long long kMaxComponents = 4096;
@@ -58,34 +115,21 @@ constexpr long long kMaxComponents = 4096;
 void checkVtkXmlHeader(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string(), 0, "cannot open for reading");
-  // The XML before the appended (binary) data; all of it when there is none.
-  std::string xml;
-  for (std::string line; std::getline(in, line);) {
-    if (line.find("<AppendedData") != std::string::npos) break;
-    xml += line;
-    xml += '\n';
-  }
   const std::string file = path.string();
   // Inside a cell section (Cells of a .vtu; Verts, Lines, Strips, Polys of
   // a .vtp), whose offsets and connectivity must be integers: VTK crashed
   // on float offsets in a .vtu.
-  std::string_view cellSection;
-  long line = 1;
-  std::size_t counted = 0;  // newlines counted up to here
-  std::size_t at = 0;
-  while ((at = xml.find('<', at)) != std::string::npos) {
-    const std::size_t end = xml.find('>', at);
-    if (end == std::string::npos) break;  // VTK's parser reports it
-    const std::string_view tag(xml.data() + at, end - at);
-    line += static_cast<long>(std::count(xml.begin() + static_cast<std::ptrdiff_t>(counted),
-                                         xml.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
-    counted = at;
+  std::string cellSection;
+  XmlTags tags(in);
+  std::string tagText;
+  long line = 0;
+  while (tags.next(tagText, line)) {
+    const std::string_view tag(tagText);
     const std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/") - 1);
     if (tag.substr(0, 2) == "</") {  // a closing tag
       if (std::find(kCellSections.begin(), kCellSections.end(), tag.substr(2)) !=
           kCellSections.end())
-        cellSection = {};
-      at = end;
+        cellSection.clear();
       continue;
     }
     if (std::find(kCellSections.begin(), kCellSections.end(), name) != kCellSections.end())
@@ -125,7 +169,6 @@ void checkVtkXmlHeader(const std::filesystem::path& path) {
                       "Piece: " + std::string(size) + " '" + std::string(*n) +
                           "' is not a whole number >= 0");
     }
-    at = end;
   }
 }
 
