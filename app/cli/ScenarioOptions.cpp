@@ -65,7 +65,7 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   cmd.add_option("--load-curve", a.loadCurve,
                  "with --loads: scale them over time by a text file of lines TIME FACTOR "
                  "(seconds, increasing; linear between, held before the first and after the "
-                 "last), # comments")
+                 "last, or repeated after it with a last line 'repeat'), # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
   cmd.add_option("--loads-seconds", p.loadSeconds,

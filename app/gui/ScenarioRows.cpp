@@ -83,7 +83,8 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   QHBoxLayout* loadCurveRow =
       fileRow(loadCurve_, "loadCurve", "Load curve",
               "a text file of lines TIME FACTOR (seconds, increasing) that scales the loads: "
-              "linear between the points, held before the first and after the last");
+              "linear between the points, held before the first and after the last (or "
+              "repeated after it, with a last line 'repeat')");
 
   loadSeconds_ =
       numberBox("loadSeconds", 0, 1e4, 2, 0, "the loads act for this many seconds, then let go");

@@ -34,6 +34,29 @@ TEST(LoadCurve, EmptyIsOneAndOnePointIsConstant) {
   EXPECT_EQ(describe(half), "constant 0.5");
 }
 
+// Repeated, the curve's span from its first point to its last is the
+// period: one period's points make periodic forcing.
+TEST(LoadCurve, RepeatedAfterItsLastPointWithItsSpanAsThePeriod) {
+  const LoadCurve saw({{1, 0}, {2, 1}, {3, -1}}, LoadCurve::After::Repeat);
+  EXPECT_EQ(saw.factorAt(0), 0);  // before the first: its factor, as held curves
+  EXPECT_DOUBLE_EQ(saw.factorAt(1.5), 0.5);
+  for (int period : {1, 2, 7})
+    for (double t : {1.25, 1.5, 2.0, 2.5})
+      EXPECT_NEAR(saw.factorAt(t + 2 * period), saw.factorAt(t), 1e-12) << t;
+  EXPECT_NEAR(saw.factorAt(2.999999), -1, 1e-5);
+  EXPECT_EQ(saw.factorAt(3), 0);  // the next period's start
+  EXPECT_EQ(describe(saw), "3 points from 1 to 3 s, factors -1 to 1, repeated every 2 s");
+  const LoadCurve held({{1, 0}, {2, 1}, {3, -1}});
+  EXPECT_EQ(held.factorAt(4.5), -1);
+  try {
+    LoadCurve lone({{0, 1}}, LoadCurve::After::Repeat);
+    ADD_FAILURE() << "a repeated one-point curve";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "a repeated load curve needs two points or more (its period is their span)");
+  }
+}
+
 TEST(LoadCurve, BadPointsAreErrorsNamingThePoint) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   auto expectError = [](std::vector<LoadCurve::Point> points, const std::string& message) {

@@ -25,6 +25,17 @@ TEST(LoadCurveFile, PointsInOrderWithComments) {
   EXPECT_EQ(curve.factorAt(3), 0);
 }
 
+TEST(LoadCurveFile, RepeatOnTheLastLineRepeatsTheCurve) {
+  const test::ScratchDir dir;
+  const LoadCurve pulses = readLoadCurve(dir.write("pulses.txt",
+                                                   "# a pulse every second\n"
+                                                   "0 0\n0.1 1\n0.2 0\n1 0\n"
+                                                   "repeat  # forever\n"));
+  EXPECT_EQ(pulses.after(), LoadCurve::After::Repeat);
+  EXPECT_NEAR(pulses.factorAt(5.05), 0.5, 1e-12);
+  EXPECT_EQ(readLoadCurve(dir.write("held.txt", "0 0\n0.1 1\n")).after(), LoadCurve::After::Hold);
+}
+
 TEST(LoadCurveFile, BadPointsNameTheFileAndLine) {
   const test::ScratchDir dir;
   auto expectError = [&](const std::string& content, long line, const std::string& what) {
@@ -39,6 +50,10 @@ TEST(LoadCurveFile, BadPointsNameTheFileAndLine) {
   expectError("0 nan\n", 1, "factor 'nan'");
   expectError("0 1e999\n", 1, "factor '1e999'");
   expectError("# none\n", 0, "no points in the file");
+  expectError("0 0\nrepeat\n", 2, "'repeat' needs two points or more before it");
+  expectError("0 0\n1 1\nrepeat\n2 0\n", 4, "nothing may follow 'repeat'");
+  expectError("0 0\n1 1\nrepeat\nrepeat\n", 4, "nothing may follow 'repeat'");
+  expectError("0 0\nrepeat 2\n", 2, "time 'repeat' is not a number");
   test::expectErrorAt([&] { readLoadCurve(dir / "absent.txt"); }, (dir / "absent.txt").string(), 0,
                       "cannot open");
 }

@@ -13,7 +13,16 @@ LoadCurve readLoadCurve(const std::filesystem::path& path) {
   const std::string content = detail::readWholeFile(path);
   detail::TextLines lines(content, path.string());
   std::vector<LoadCurve::Point> points;
+  auto after = LoadCurve::After::Hold;
   while (lines.next()) {
+    if (after == LoadCurve::After::Repeat)
+      lines.fail("nothing may follow 'repeat' (it ends the curve)");
+    if (lines.size() == 1 && lines[0] == "repeat") {
+      if (points.size() < 2)
+        lines.fail("'repeat' needs two points or more before it (their span is the period)");
+      after = LoadCurve::After::Repeat;
+      continue;
+    }
     lines.expectTokens(2, 2, "load curve point (TIME FACTOR)");
     const LoadCurve::Point point{lines.toDouble(lines[0], "time"),
                                  lines.toDouble(lines[1], "factor")};
@@ -22,7 +31,7 @@ LoadCurve readLoadCurve(const std::filesystem::path& path) {
     points.push_back(point);
   }
   if (points.empty()) throw Error(path.string(), 0, "no points in the file (lines TIME FACTOR)");
-  return LoadCurve(std::move(points));
+  return LoadCurve(std::move(points), after);
 }
 
 }  // namespace tetskin
