@@ -101,8 +101,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       bound->surface.positions = surfacePositions;
       bound->surface.normals = surfaceNormals;
     }
-    recorder.addFrame(s.time, sim.restMesh(), s.positions, s.velocities, sim.vonMisesStress(),
-                      level, deformer ? bound.get() : nullptr);
+    recorder.addFrame(s.time, sim.restMesh(), s.positions, s.velocities, s.externalForces,
+                      sim.vonMisesStress(), level, deformer ? bound.get() : nullptr);
   };
 
   Progress progress(a.quiet);

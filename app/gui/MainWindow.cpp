@@ -526,7 +526,7 @@ void MainWindow::showLatestState() {
       Simulation& sim = runner_->simulation();
       const BoundSurface surface = scene_->deformedBoundSurface();
       recorder_->addFrame(state.time, sim.restMesh(), state.positions, state.velocities,
-                          sim.vonMisesStress(), scene_->level(), &surface);
+                          state.externalForces, sim.vonMisesStress(), scene_->level(), &surface);
     } catch (const std::exception& e) {
       stopRecording();
       fail(QString::fromStdString(e.what()));
@@ -745,7 +745,7 @@ bool MainWindow::exportFrame(const QString& qpath) {
       if (!runner_) throw Error("open a dataset first");
       Simulation& sim = runner_->simulation();
       const SimulationState s = runner_->state();
-      writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities,
+      writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities, s.externalForces,
                                      sim.vonMisesStress(), scene_->level()));
     } else if (ext == ".vtp") {
       writeBinding(path, scene_->deformedBoundSurface());

@@ -56,6 +56,15 @@ for index, time in enumerate([times[0], times[-1]]):
     stress = array_range(grid, "cell", "VonMisesStress")
     levels = array_range(grid, "cell", "Level")
     ratio = array_range(grid, "cell", "VolumeRatio")
+    # The wobble pushes sideways (x) only; nothing acts before the first step.
+    push = array_range(grid, "point", "ExternalForce", 0)
+    for component in (1, 2):
+        if array_range(grid, "point", "ExternalForce", component) != (0.0, 0.0):
+            fail("ExternalForce has a component %d: the wobble pushes along x only" % component)
+    if index == 0 and push != (0.0, 0.0):
+        fail("ExternalForce before the first step: %s" % (push,))
+    if index == 1 and not (push[0] < 0.0 or push[1] > 0.0):
+        fail("ExternalForce: no push in the last frame")
     if levels != (level, level):
         fail("Level should be %d everywhere, is %s" % (level, levels))
     if index == 0 and displacement[1] != 0.0:

@@ -616,6 +616,27 @@ TEST(Simulation, RepeatedLoadCurveDrivesTheCantileverIntoResonance) {
   EXPECT_LT(slow, 1.6);
 }
 
+// The state reports the external forces of the step that led to it (what
+// the exported frames show as ExternalForce): none before the first step,
+// and forces set for the next step only once it is taken.
+TEST(Simulation, StateHoldsTheExternalForcesOfTheLastStep) {
+  const Dataset& d = sampleDataset();
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  const Index n = sim.restMesh().nodeCount();
+  EXPECT_EQ(sim.state().externalForces, Points3::Zero(n, 3));
+  Points3 first = Points3::Zero(n, 3), second = Points3::Zero(n, 3);
+  first.row(7) << 1, -2, 3;
+  second.row(9) << 0, 5, 0;
+  sim.setExternalForces(first);
+  EXPECT_EQ(sim.state().externalForces, Points3::Zero(n, 3));  // not taken yet
+  sim.step();
+  EXPECT_EQ(sim.state().externalForces, first);
+  sim.setExternalForces(second);
+  EXPECT_EQ(sim.state().externalForces, first);
+  sim.step();
+  EXPECT_EQ(sim.state().externalForces, second);
+}
+
 // scenariosReading() tells the truth: a parameter changes the run of
 // exactly the scenarios it names (the command line refuses, and the GUI
 // hides, it for the others).

@@ -163,6 +163,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   x_ = fem_.restPositions();
   v_.setZero(fem_.dofCount());
   external_.setZero(fem_.dofCount());
+  appliedExternal_.setZero(fem_.dofCount());
   dv_.setZero(fem_.dofCount());
   prescribedDv_.setZero(fem_.dofCount());
   fixedDofs_.assign(static_cast<std::size_t>(fem_.dofCount()), 0);
@@ -292,10 +293,9 @@ void Simulation::setVelocities(const Points3& velocities) {
 void Simulation::buildSystem(double h, StepStats& stats) {
   const ElasticMaterial& m = options_.material;
   const Eigen::VectorXd& mass = fem_.lumpedMass();
-  Eigen::VectorXd external;
   {
     std::lock_guard lock(mutex_);
-    external = external_;
+    stepExternal_ = external_;
   }
   // Floor contact: a penalty spring on every node below the plane, its
   // stiffness on the system's diagonal like the mass.
@@ -336,7 +336,7 @@ void Simulation::buildSystem(double h, StepStats& stats) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rhs_.resize(force_.size());
   for (Index v = 0; v < rest_.nodeCount(); ++v)
-    rhs_.segment<3>(3 * v) = h * (force_.segment<3>(3 * v) + external.segment<3>(3 * v) +
+    rhs_.segment<3>(3 * v) = h * (force_.segment<3>(3 * v) + stepExternal_.segment<3>(3 * v) +
                                   mass.segment<3>(3 * v).cwiseProduct(
                                       options_.gravity - m.massDamping * v_.segment<3>(3 * v)));
   if (options_.floorHeight) rhs_ += h * contactForce_;
@@ -433,6 +433,7 @@ StepStats Simulation::step() {
   std::lock_guard lock(mutex_);
   x_ = std::move(x);
   v_ = std::move(v);
+  appliedExternal_.swap(stepExternal_);
   time_ += h;
   ++steps_;
   return stats;
@@ -440,7 +441,7 @@ StepStats Simulation::step() {
 
 SimulationState Simulation::state() const {
   std::lock_guard lock(mutex_);
-  return {toOutside(x_), toOutside(v_), time_, steps_};
+  return {toOutside(x_), toOutside(v_), toOutside(appliedExternal_), time_, steps_};
 }
 
 Energies Simulation::energies() const {

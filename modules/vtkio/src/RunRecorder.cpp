@@ -26,12 +26,13 @@ RunRecorder::RunRecorder(std::filesystem::path pvd)
 }
 
 void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& positions,
-                           const Points3& velocities, const Eigen::VectorXd& vonMisesStress,
-                           int level, const BoundSurface* deformedSurface) {
+                           const Points3& velocities, const Points3& externalForces,
+                           const Eigen::VectorXd& vonMisesStress, int level,
+                           const BoundSurface* deformedSurface) {
   char name[64];
   std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
   writeVtu(directory_ / framesName_ / name,
-           simulationFrame(rest, positions, velocities, vonMisesStress, level));
+           simulationFrame(rest, positions, velocities, externalForces, vonMisesStress, level));
   series_.add(time, 0, framesName_ + "/" + name);
   if (deformedSurface) {
     std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));

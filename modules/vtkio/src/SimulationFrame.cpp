@@ -12,12 +12,14 @@
 namespace tetskin {
 vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
                                                      const Points3& velocities,
+                                                     const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
                                                      int level) {
   TetMesh deformed{positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
   grid->GetPointData()->AddArray(toVtkVectors("Displacement", positions - rest.nodes));
   grid->GetPointData()->AddArray(toVtkVectors("Velocity", velocities));
+  grid->GetPointData()->AddArray(toVtkVectors("ExternalForce", externalForces));
   auto stress = vtkSmartPointer<vtkDoubleArray>::New();
   stress->SetName("VonMisesStress");
   auto ratio = vtkSmartPointer<vtkDoubleArray>::New();

@@ -80,6 +80,9 @@ struct StepStats {
 struct SimulationState {
   Points3 positions;  // level-local node numbering
   Points3 velocities;
+  // The external forces (loads, scenario forces, pulls; not gravity) that
+  // acted in the step that led to this state; zero before the first step.
+  Points3 externalForces;
   double time = 0;
   Index steps = 0;
 };
@@ -146,8 +149,10 @@ class Simulation {
   std::optional<SolverChoice> choice_;                  // auto
   Index lastMultigridStep_ = -1;                        // steps_ of multigrid's last step
 
-  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_
+  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_, appliedExternal_
   Eigen::VectorXd x_, v_, external_;
+  Eigen::VectorXd stepExternal_;     // external_ as the step being taken reads it
+  Eigen::VectorXd appliedExternal_;  // stepExternal_ of the last step taken
   double time_ = 0;
   Index steps_ = 0;
 

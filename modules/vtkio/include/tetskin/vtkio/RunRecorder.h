@@ -19,10 +19,11 @@ class RunRecorder {
   explicit RunRecorder(std::filesystem::path pvd);
   const std::filesystem::path& path() const { return series_.path(); }
   Index frames() const { return frames_; }
-  // The control level's state (level-local nodes) and, if given, the bound
-  // surface already deformed to this frame.
+  // The control level's state (level-local nodes; SimulationFrame.h) and,
+  // if given, the bound surface already deformed to this frame.
   void addFrame(double time, const TetMesh& rest, const Points3& positions,
-                const Points3& velocities, const Eigen::VectorXd& vonMisesStress, int level,
+                const Points3& velocities, const Points3& externalForces,
+                const Eigen::VectorXd& vonMisesStress, int level,
                 const BoundSurface* deformedSurface = nullptr);
 
  private:

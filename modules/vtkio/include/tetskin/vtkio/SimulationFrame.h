@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // One simulated frame of the control mesh as a vtkUnstructuredGrid for
-// ParaView: tetrahedra at the deformed positions, point arrays Displacement
-// and Velocity, cell arrays VonMisesStress, VolumeRatio (current / rest
-// volume, < 0 for inverted elements) and Level.
+// ParaView: tetrahedra at the deformed positions, point arrays
+// Displacement, Velocity and ExternalForce (N per node: loads, scenario
+// forces, pulls; not gravity), cell arrays VonMisesStress, VolumeRatio
+// (current / rest volume, < 0 for inverted elements) and Level.
 
 #include <vtkSmartPointer.h>
 
@@ -17,6 +18,7 @@ namespace tetskin {
 
 vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
                                                      const Points3& velocities,
+                                                     const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
                                                      int level);
 
