@@ -58,7 +58,7 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
       ->check(CLI::ExistingFile)
       ->group(kGroup);
   cmd.add_option("--loads", a.loads,
-                 "constant forces on nodes of the level: a text file of lines NODE FX FY FZ "
+                 "forces on nodes of the level: a text file of lines NODE FX FY FZ "
                  "(newtons), # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);

@@ -78,7 +78,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
       fixedNodes_, "fixedNodes", "Fixed nodes",
       "a text file of node numbers of the simulated level, from 0, held still in any scenario");
   QHBoxLayout* loadsRow = fileRow(loads_, "loads", "Loads",
-                                  "a text file of lines NODE FX FY FZ: constant forces (newtons) "
+                                  "a text file of lines NODE FX FY FZ: forces (newtons) "
                                   "on nodes of the simulated level, in any scenario");
   QHBoxLayout* loadCurveRow =
       fileRow(loadCurve_, "loadCurve", "Load curve",

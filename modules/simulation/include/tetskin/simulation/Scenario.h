@@ -27,8 +27,8 @@ struct ScenarioParameters {
   double twistDegrees = 90;      // twist: final angle of the top
   double twistSeconds = 1.0;     // twist: time to reach it
   std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
-  Points3 loads;                 // every scenario: a constant force on each node of the
-                                 // level (N; nodeCount rows), or empty for none
+  Points3 loads;                 // every scenario: a force on each node of the level
+                                 // (N; nodeCount rows), or empty for none
   LoadCurve loadCurve;           // scales the loads over time (empty: by 1)
   double loadSeconds =
       std::numeric_limits<double>::infinity();  // the loads act in the
