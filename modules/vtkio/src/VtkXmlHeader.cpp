@@ -61,22 +61,12 @@ class XmlTags {
 
   // The next tag's text from '<' up to its '>' (excluded); false at the end.
   bool next(std::string& tag, long& line) {
-    if (!skipTo('<')) return false;
+    if (!readUntil('<', nullptr)) return false;
     line = line_;
     tag.clear();
-    for (;;) {
-      if (at_ == chunk_.size() && !refill()) return false;
-      const std::string_view rest(chunk_.data() + at_, chunk_.size() - at_);
-      const std::size_t end = rest.find('>');
-      const std::string_view part = rest.substr(0, end);
-      line_ += static_cast<long>(std::count(part.begin(), part.end(), '\n'));
-      tag += part;
-      at_ += part.size();
-      if (end != std::string_view::npos) {
-        ++at_;  // past '>'
-        return tag.rfind("<AppendedData", 0) != 0;
-      }
-    }
+    if (!readUntil('>', &tag)) return false;
+    ++at_;  // past '>'
+    return tag.rfind("<AppendedData", 0) != 0;
   }
 
  private:
@@ -87,15 +77,17 @@ class XmlTags {
     at_ = 0;
     return !chunk_.empty();
   }
-  // Reads past the text before the next `c`, counting its lines.
-  bool skipTo(char c) {
+  // Reads up to the next `c` (left unread), counting lines and appending
+  // the text to `kept` if given; false at the end of the file.
+  bool readUntil(char c, std::string* kept) {
     for (;;) {
       if (at_ == chunk_.size() && !refill()) return false;
       const std::string_view rest(chunk_.data() + at_, chunk_.size() - at_);
       const std::size_t found = rest.find(c);
-      const std::string_view skipped = rest.substr(0, found);
-      line_ += static_cast<long>(std::count(skipped.begin(), skipped.end(), '\n'));
-      at_ += skipped.size();
+      const std::string_view part = rest.substr(0, found);
+      line_ += static_cast<long>(std::count(part.begin(), part.end(), '\n'));
+      if (kept) *kept += part;
+      at_ += part.size();
       if (found != std::string_view::npos) return true;
     }
   }
