@@ -72,7 +72,7 @@ FrameStats AnimatedScene::run(int frames) {
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
-    scenario_->beforeStep(*simulation_, simulation_->state().time);
+    scenario_->beforeStep(*simulation_, simulation_->time());
     simulation_->step();
     const Points3 positions = simulation_->state().positions;
     nodes_.middleRows(range.firstNode, range.nodeCount) = positions;

@@ -110,7 +110,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   double stepSeconds = 0;
   long iterations = 0, multigridSteps = 0;
   for (int i = 0; i < a.steps; ++i) {
-    scenario->beforeStep(sim, sim.state().time);
+    scenario->beforeStep(sim, sim.time());
     const auto start = std::chrono::steady_clock::now();
     const StepStats stats = sim.step();
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -38,7 +38,7 @@ void SimulationRunner::step() {
 }
 
 Index SimulationRunner::steps() const {
-  return simulation_->state().steps;
+  return simulation_->steps();
 }
 
 void SimulationRunner::pull(const std::vector<int>& nodes, const Points3& forces) {
@@ -57,7 +57,7 @@ void SimulationRunner::stepOnce() {
   std::lock_guard<std::mutex> lock(stepMutex_);
   const auto start = std::chrono::steady_clock::now();
   // The scenario's forces (set anew each step) plus the user's pull.
-  scenario_->beforeStep(*simulation_, simulation_->state().time);
+  scenario_->beforeStep(*simulation_, simulation_->time());
   {
     std::lock_guard<std::mutex> pullLock(pullMutex_);
     simulation_->setExternalForces(simulation_->externalForces() + pull_);

@@ -27,7 +27,7 @@ struct Wobble {
   std::unique_ptr<Simulation> sim;
   std::unique_ptr<Scenario> scenario;
   StepStats step() {
-    scenario->beforeStep(*sim, sim->state().time);
+    scenario->beforeStep(*sim, sim->time());
     return sim->step();
   }
 };

@@ -360,7 +360,7 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
   for (int i = 0; i < 3; ++i) {
-    const double start = window_->runner()->simulation().state().time;  // 0, dt, 2 dt > 0.03
+    const double start = window_->runner()->simulation().time();  // 0, dt, 2 dt > 0.03
     child<QPushButton>("step")->click();
     EXPECT_NEAR(window_->runner()->simulation().externalForces().colwise().sum().y(),
                 -3 * std::min(start / 0.03, 1.0), 1e-12)

@@ -130,7 +130,7 @@ double settledTipDeflection(Simulation& sim, Scenario* scenario) {
   if (scenario) scenario->setUp(sim);
   double previous = 0, tip = 0;
   for (int i = 0; i < 60; ++i) {
-    if (scenario) scenario->beforeStep(sim, sim.state().time);
+    if (scenario) scenario->beforeStep(sim, sim.time());
     sim.step();
     tip = tipDeflection(beam, sim.state().positions);
     if (std::abs(tip - previous) < 1e-9 * std::abs(tip)) break;
@@ -321,7 +321,7 @@ TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
     auto twist = makeScenario("twist");
     twist->setUp(sim);
     for (int i = 0; i < 70; ++i) {
-      twist->beforeStep(sim, sim.state().time);
+      twist->beforeStep(sim, sim.time());
       sim.step();
     }
     EXPECT_TRUE(sim.state().positions.allFinite());
@@ -345,7 +345,7 @@ TEST(Simulation, TwistReachesItsTargetAndDropLandsOnTheFloor) {
     EXPECT_GT(start, *options.floorHeight + 1);
     int contacts = 0;
     for (int i = 0; i < 240; ++i) {
-      drop->beforeStep(sim, sim.state().time);
+      drop->beforeStep(sim, sim.time());
       contacts = std::max(contacts, sim.step().contacts);
     }
     EXPECT_GT(contacts, 0);
@@ -381,7 +381,7 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
         << name;
     const Points3 start = sim.state().positions;
     for (int i = 0; i < 10; ++i) {
-      scenario->beforeStep(sim, sim.state().time);
+      scenario->beforeStep(sim, sim.time());
       sim.step();
     }
     // Twist turns the top (its fixed nodes follow targets); elsewhere held is held.
@@ -420,7 +420,7 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
       auto wobble = makeScenario("wobble", p);
       wobble->setUp(sim);
       for (int i = 0; i < 8; ++i) {
-        wobble->beforeStep(sim, sim.state().time);
+        wobble->beforeStep(sim, sim.time());
         sim.step();
       }
       return sim.state().positions(top, 0) - rest.nodes(top, 0);
@@ -474,7 +474,7 @@ TEST(Simulation, LoadsBendACantileverAndActAsWeight) {
     const auto scenario = makeScenario("sag", p);
     scenario->setUp(s);
     for (int i = 0; i < 8; ++i) {
-      scenario->beforeStep(s, s.state().time);
+      scenario->beforeStep(s, s.time());
       s.step();
     }
     return Points3(s.state().positions);
@@ -511,11 +511,11 @@ TEST(Simulation, ReleasedCantileverVibratesAtItsFirstNaturalFrequency) {
   // Upward zero crossings of the free end's mean height after the release.
   std::vector<double> crossings;
   double previous = 0;
-  while (sim.state().time < 2.0) {
-    sag->beforeStep(sim, sim.state().time);
+  while (sim.time() < 2.0) {
+    sag->beforeStep(sim, sim.time());
     sim.step();
     const double tip = -tipDeflection(beam, sim.state().positions);  // up
-    const double t = sim.state().time;
+    const double t = sim.time();
     if (t > plucked.loadSeconds + options.timeStep && previous < 0 && tip >= 0)
       crossings.push_back(t - options.timeStep * tip / (tip - previous));
     previous = tip;
@@ -548,8 +548,8 @@ TEST(Simulation, LoadCurveRampsALoadOnWithoutTheOvershootOfASuddenOne) {
     const auto sag = makeScenario("sag", p);
     sag->setUp(sim);
     double peak = 0;
-    while (sim.state().time < rise + 1.5 * period) {
-      const double t = sim.state().time;
+    while (sim.time() < rise + 1.5 * period) {
+      const double t = sim.time();
       sag->beforeStep(sim, t);
       const Points3 forces = sim.externalForces();
       EXPECT_TRUE(forces.isApprox(p.loadCurve.factorAt(t) * p.loads)) << "t = " << t;
@@ -599,10 +599,10 @@ TEST(Simulation, RepeatedLoadCurveDrivesTheCantileverIntoResonance) {
     const auto sag = makeScenario("sag", driven);
     sag->setUp(sim);
     double peak = 0;
-    while (sim.state().time < 2.5) {
-      sag->beforeStep(sim, sim.state().time);
+    while (sim.time() < 2.5) {
+      sag->beforeStep(sim, sim.time());
       sim.step();
-      if (sim.state().time > 1.5)
+      if (sim.time() > 1.5)
         peak = std::max(peak, std::abs(tipDeflection(beam, sim.state().positions)));
     }
     return peak / staticTip;
@@ -614,6 +614,19 @@ TEST(Simulation, RepeatedLoadCurveDrivesTheCantileverIntoResonance) {
   EXPECT_GT(resonant, 3);
   EXPECT_GT(slow, 0.8);
   EXPECT_LT(slow, 1.6);
+}
+
+// time() and steps() are the state's, without its rows.
+TEST(Simulation, TimeAndStepsAreTheStates) {
+  const Dataset& d = sampleDataset();
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(sim.time(), sim.state().time);
+    EXPECT_EQ(sim.steps(), sim.state().steps);
+    EXPECT_EQ(sim.steps(), i);
+    sim.step();
+  }
+  EXPECT_DOUBLE_EQ(sim.time(), 3 * sim.options().timeStep);
 }
 
 // The state reports the external forces of the step that led to it (what
@@ -648,7 +661,7 @@ TEST(Simulation, ScenarioParametersChangeExactlyTheScenariosThatReadThem) {
     auto scenario = makeScenario(name, p);
     scenario->setUp(sim);
     for (int i = 0; i < 5; ++i) {
-      scenario->beforeStep(sim, sim.state().time);
+      scenario->beforeStep(sim, sim.time());
       sim.step();
     }
     return Points3(sim.state().positions);
@@ -690,7 +703,7 @@ TEST(Simulation, WobbleMovesTheTopBackAndForth) {
     Index top = 0;
     sim.restMesh().nodes.col(1).maxCoeff(&top);
     for (int i = 0; i < 90; ++i) {
-      wobble->beforeStep(sim, sim.state().time);
+      wobble->beforeStep(sim, sim.time());
       const StepStats s = sim.step();
       EXPECT_LE(s.residual, options.tolerance);
       const double x = sim.state().positions(top, 0) - sim.restMesh().nodes(top, 0);
@@ -734,7 +747,7 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
       }
       int touching = 0;
       for (int i = 0; i < 20; ++i) {
-        scenario->beforeStep(sim, sim.state().time);
+        scenario->beforeStep(sim, sim.time());
         const StepStats stats = sim.step();
         EXPECT_LE(stats.residual, 1e-10) << name << " variant " << variant;
         if (variant == 3) {
@@ -776,7 +789,7 @@ TEST(Simulation, ProjectedInitialGuessKeepsTheTrajectoryInFewerIterations) {
     scenario->setUp(sim);
     long total = 0;
     for (int i = 0; i < 40; ++i) {
-      scenario->beforeStep(sim, sim.state().time);
+      scenario->beforeStep(sim, sim.time());
       const StepStats stats = sim.step();
       EXPECT_LE(stats.residual, 1e-10);
       total += stats.iterations;
@@ -838,7 +851,7 @@ TEST(Simulation, StateCanBeReadWhileAnotherThreadSteps) {
     ++reads;
   }
   stepper.join();
-  EXPECT_EQ(sim.state().steps, 30);
+  EXPECT_EQ(sim.steps(), 30);
   EXPECT_GT(reads, 0);
 }
 

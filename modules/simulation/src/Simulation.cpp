@@ -444,6 +444,16 @@ SimulationState Simulation::state() const {
   return {toOutside(x_), toOutside(v_), toOutside(appliedExternal_), time_, steps_};
 }
 
+double Simulation::time() const {
+  std::lock_guard lock(mutex_);
+  return time_;
+}
+
+Index Simulation::steps() const {
+  std::lock_guard lock(mutex_);
+  return steps_;
+}
+
 Energies Simulation::energies() const {
   Eigen::VectorXd x, v;
   {

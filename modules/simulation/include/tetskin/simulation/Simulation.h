@@ -126,6 +126,10 @@ class Simulation {
 
   StepStats step();
   SimulationState state() const;
+  // The state's time and step count alone (state() converts every node's
+  // rows to the level's numbering: too much for a caller that wants these).
+  double time() const;
+  Index steps() const;
   Energies energies() const;
   // Per element von Mises stress at the current state.
   Eigen::VectorXd vonMisesStress() const;
