@@ -35,7 +35,7 @@ TEST(ControlMeshActor, RefusesPositionsOfAnotherNodeCount) {
     control.update(tooMany);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "control mesh: 5 positions for 4 nodes");
+    EXPECT_STREQ(e.what(), "control mesh positions: 5 rows for 4 nodes");
   }
 }
 

@@ -28,4 +28,11 @@ std::string formatNumber(double value) {
   return text;
 }
 
+void requireRows(const std::string& what, std::int64_t rows, std::int64_t count,
+                 const std::string& items) {
+  if (rows != count)
+    throw Error(what + ": " + std::to_string(rows) + " rows for " + std::to_string(count) + " " +
+                items);
+}
+
 }  // namespace tetskin

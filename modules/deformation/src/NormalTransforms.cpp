@@ -43,10 +43,8 @@ NodeNormalTransforms::NodeNormalTransforms(const Tetrahedra& tets, const ConstPo
 
 void NodeNormalTransforms::compute(const ConstPoints3Ref& deformed,
                                    Eigen::Ref<NormalTransformRows> out) const {
-  if (deformed.rows() != nodeCount() || out.rows() != nodeCount())
-    throw Error("normal transforms: " + std::to_string(deformed.rows()) + " positions and " +
-                std::to_string(out.rows()) + " output rows for " + std::to_string(nodeCount()) +
-                " nodes");
+  requireRows("normal transforms: positions", deformed.rows(), nodeCount(), "nodes");
+  requireRows("normal transforms: output", out.rows(), nodeCount(), "nodes");
   out.setZero();
   for (Index t = 0; t < tets_.rows(); ++t) {
     const Eigen::Matrix3d d = edges(tets_, t, deformed);

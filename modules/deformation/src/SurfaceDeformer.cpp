@@ -42,16 +42,6 @@ Points3 displacementShifts(const SurfaceBinding& binding, const Points3& restSur
   return shifts;
 }
 
-namespace {
-
-void requireRows(const char* what, Index rows, Index vertexCount) {
-  if (rows != vertexCount)
-    throw Error("the " + std::string(what) + " to deform into have " + std::to_string(rows) +
-                " rows, the bound surface " + std::to_string(vertexCount) + " vertices");
-}
-
-}  // namespace
-
 void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions) const {
   if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
   deformPositions(control, Points3Ref(positions));
@@ -61,7 +51,7 @@ void SurfaceDeformer::deformPositions(const Points3& control, Points3Ref positio
   if (control.rows() <= maxControlId_)
     throw Error("the control state has " + std::to_string(control.rows()) +
                 " nodes, but the binding refers to node " + std::to_string(maxControlId_));
-  requireRows("positions", positions.rows(), vertexCount());
+  requireRows("positions to deform into", positions.rows(), vertexCount(), "surface vertices");
   const Record* records = records_.data();
   const double* x = control.data();
   double* out = positions.data();
@@ -96,7 +86,7 @@ void SurfaceDeformer::deform(const Points3& control, Points3& positions, Points3
 }
 
 void SurfaceDeformer::deform(const Points3& control, Points3Ref positions, Points3Ref normals) {
-  requireRows("normals", normals.rows(), vertexCount());
+  requireRows("normals to deform into", normals.rows(), vertexCount(), "surface vertices");
   deformPositions(control, positions);
   computeVertexNormals(positions, triangles_, adjacency_, faceScratch_, normals);
 }

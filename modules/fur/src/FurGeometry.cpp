@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <string>
 #include <unordered_map>
 
 #include "tetskin/core/Error.h"
@@ -81,17 +80,6 @@ FurMesh finMesh(const Points3& positions, const Triangles& triangles, double til
   return m;
 }
 
-namespace {
-
-// Rows written in place must be one per fur vertex.
-void requireFurRows(const char* what, Index rows, Index furVertices) {
-  if (rows != furVertices)
-    throw Error(std::string(what) + ": " + std::to_string(rows) + " rows for " +
-                std::to_string(furVertices) + " fur vertices");
-}
-
-}  // namespace
-
 void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
                const Points3& velocities, const FurMesh& mesh, double length,
                const FurDynamicsOptions& dynamics, Points3& out) {
@@ -103,7 +91,7 @@ void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
                const Points3& velocities, const FurMesh& mesh, double length,
                const FurDynamicsOptions& dynamics, Points3Ref out) {
   const Index n = mesh.vertexCount();
-  requireFurRows("fur points", out.rows(), n);
+  requireRows("fur points", out.rows(), n, "fur vertices");
   tbb::parallel_for(tbb::blocked_range<Index>(0, n, 4096), [&](const tbb::blocked_range<Index>& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       const Index v = mesh.source[static_cast<std::size_t>(i)];
@@ -116,7 +104,7 @@ void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
 
 void furNormals(const ConstPoints3Ref& normals, const FurMesh& mesh, Points3Ref out) {
   const Index n = mesh.vertexCount();
-  requireFurRows("fur normals", out.rows(), n);
+  requireRows("fur normals", out.rows(), n, "fur vertices");
   tbb::parallel_for(tbb::blocked_range<Index>(0, n, 8192), [&](const tbb::blocked_range<Index>& r) {
     for (Index i = r.begin(); i != r.end(); ++i)
       out.row(i) = normals.row(mesh.source[static_cast<std::size_t>(i)]);

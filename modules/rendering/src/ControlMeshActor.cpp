@@ -61,9 +61,7 @@ vtkActor* ControlMeshActor::actor() const {
 
 void ControlMeshActor::update(const ConstPoints3Ref& positions) {
   vtkPoints* points = impl_->grid->GetPoints();
-  if (positions.rows() != points->GetNumberOfPoints())
-    throw Error("control mesh: " + std::to_string(positions.rows()) + " positions for " +
-                std::to_string(points->GetNumberOfPoints()) + " nodes");
+  requireRows("control mesh positions", positions.rows(), points->GetNumberOfPoints(), "nodes");
   for (Index v = 0; v < positions.rows(); ++v)
     points->SetPoint(v, positions(v, 0), positions(v, 1), positions(v, 2));
   points->Modified();

@@ -3,6 +3,7 @@
 // The one exception type of TetSkin. It names where the problem is (a file and
 // line, or a file and an element) so the CLI can print `error: FILE:LINE: what`.
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -28,5 +29,11 @@ class Error : public std::runtime_error {
 // "-0.46803", "1e-07", "1e+30"; std::to_string would say "-0.000000" for a
 // tiny negative volume and "0.000000" for 1e-7).
 std::string formatNumber(double value);
+
+// Throws Error "WHAT: ROWS rows for COUNT ITEMS" unless rows == count: the
+// check of rows a kernel reads or writes where they lie (Points3Ref rows of
+// a VTK array, say), which it cannot resize.
+void requireRows(const std::string& what, std::int64_t rows, std::int64_t count,
+                 const std::string& items);
 
 }  // namespace tetskin
