@@ -3,10 +3,10 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
-#include <string>
 #include <vector>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/TetMesh.h"
 
 namespace tetskin {
 namespace {
@@ -24,16 +24,12 @@ NodeNormalTransforms::NodeNormalTransforms(const Tetrahedra& tets, const ConstPo
     : tets_(tets),
       restEdgesTransposed_(static_cast<std::size_t>(tets.rows())),
       inverseVolumeSums_(static_cast<std::size_t>(rest.rows()), 0.0) {
+  // Node ids in range, positive volumes (the mesh's one check; a copy of
+  // the rest rows, once).
+  validateTetMesh(TetMesh{Points3(rest), tets}, "normal transforms");
   for (Index t = 0; t < tets.rows(); ++t) {
-    for (int k = 0; k < 4; ++k)
-      if (tets(t, k) < 0 || tets(t, k) >= rest.rows())
-        throw Error("normal transforms: tetrahedron " + std::to_string(t) + " names node " +
-                    std::to_string(tets(t, k)) + ", but there are " + std::to_string(rest.rows()));
     const Eigen::Matrix3d D = edges(tets, t, rest);
     const double sixVolumes = D.determinant();
-    if (!(sixVolumes > 0))
-      throw Error("normal transforms: tetrahedron " + std::to_string(t) +
-                  " has no positive rest volume (" + formatNumber(sixVolumes / 6) + ")");
     restEdgesTransposed_[static_cast<std::size_t>(t)] = D.transpose();
     for (int k = 0; k < 4; ++k)
       inverseVolumeSums_[static_cast<std::size_t>(tets(t, k))] += sixVolumes;

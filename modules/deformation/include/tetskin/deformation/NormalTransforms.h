@@ -26,9 +26,10 @@ using NormalTransformRows = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowM
 class NodeNormalTransforms {
  public:
   // `tets` index rows of `rest` (e.g. one level's tetrahedra in the whole
-  // dataset's numbering); each must have a positive rest volume (throws
-  // Error naming the first that does not). Nodes no tetrahedron uses get the
-  // zero transform.
+  // dataset's numbering); each must have a positive rest volume
+  // (validateTetMesh's Error names the first element that does not, or
+  // that names a node `rest` lacks). Nodes no tetrahedron uses get the zero
+  // transform.
   NodeNormalTransforms(const Tetrahedra& tets, const ConstPoints3Ref& rest);
 
   Index nodeCount() const { return static_cast<Index>(inverseVolumeSums_.size()); }
