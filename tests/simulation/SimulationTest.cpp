@@ -109,6 +109,27 @@ double tipLoadDeflection(const ElasticMaterial& material, double P) {
   return P * std::pow(kBeamLength, 3) / (3 * material.youngsModulus * kBeamInertia);
 }
 
+// Runs `beam` in the sag scenario with `p` (its held nodes, loads and load
+// curve) until `until` seconds, checking that each step's external forces
+// are the loads times the curve's factor at the step's start; the largest
+// |tip deflection| after `from` seconds.
+double peakTipDeflection(const TetMesh& beam, const SimulationOptions& options,
+                         const ScenarioParameters& p, double from, double until) {
+  Simulation sim(oneLevel(beam), 0, options);
+  const auto sag = makeScenario("sag", p);
+  sag->setUp(sim);
+  double peak = 0;
+  while (sim.time() < until) {
+    const double t = sim.time();
+    sag->beforeStep(sim, t);
+    EXPECT_TRUE(sim.externalForces().isApprox(p.loadCurve.factorAt(t) * p.loads)) << "t = " << t;
+    sim.step();
+    if (sim.time() > from)
+      peak = std::max(peak, std::abs(tipDeflection(beam, sim.state().positions)));
+  }
+  return peak;
+}
+
 TetMesh cantilever() {
   return test::tetGrid(80, 8, 8, {kBeamLength, kBeamHeight, kBeamWidth});
 }
@@ -544,19 +565,7 @@ TEST(Simulation, LoadCurveRampsALoadOnWithoutTheOvershootOfASuddenOne) {
   const double staticTip = tipLoadDeflection(options.material, 0.5);
   // The largest downward tip deflection within 1.5 periods after the ramp.
   auto peakTip = [&](const ScenarioParameters& p, double rise) {
-    Simulation sim(oneLevel(beam), 0, options);
-    const auto sag = makeScenario("sag", p);
-    sag->setUp(sim);
-    double peak = 0;
-    while (sim.time() < rise + 1.5 * period) {
-      const double t = sim.time();
-      sag->beforeStep(sim, t);
-      const Points3 forces = sim.externalForces();
-      EXPECT_TRUE(forces.isApprox(p.loadCurve.factorAt(t) * p.loads)) << "t = " << t;
-      sim.step();
-      peak = std::max(peak, tipDeflection(beam, sim.state().positions));
-    }
-    return peak;
+    return peakTipDeflection(beam, options, p, 0, rise + 1.5 * period);
   };
   const double sudden = peakTip(loaded, 0) / staticTip;
   ScenarioParameters ramped = loaded;
@@ -595,17 +604,7 @@ TEST(Simulation, RepeatedLoadCurveDrivesTheCantileverIntoResonance) {
     for (int i = 0; i <= 24; ++i) sine.push_back({i / (24 * hz), std::sin(2 * M_PI * i / 24.0)});
     ScenarioParameters driven = tipLoaded(beam, 0.5);
     driven.loadCurve = LoadCurve(std::move(sine), LoadCurve::After::Repeat);
-    Simulation sim(oneLevel(beam), 0, options);
-    const auto sag = makeScenario("sag", driven);
-    sag->setUp(sim);
-    double peak = 0;
-    while (sim.time() < 2.5) {
-      sag->beforeStep(sim, sim.time());
-      sim.step();
-      if (sim.time() > 1.5)
-        peak = std::max(peak, std::abs(tipDeflection(beam, sim.state().positions)));
-    }
-    return peak / staticTip;
+    return peakTipDeflection(beam, options, driven, 1.5, 2.5) / staticTip;
   };
   const double resonant = swing(frequency), slow = swing(frequency / 2);
   std::printf("peak tip over the static deflection, driven at f1: %.2f, at f1 / 2: %.2f\n",
