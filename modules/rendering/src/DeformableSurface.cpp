@@ -136,11 +136,8 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       s.gpuMapper = vtkSmartPointer<vtkTetSkinGpuDeformMapper>::New();
       if (binding.method == BindingMethod::Embed) {
         // (An embedding tetrahedron has no control vertex normals to
-        // interpolate: the shader turns the rest normal by the nodes' normal
-        // transforms.)
-        const Points3& normals = bound.surface.normals;
-        addPointArray(s.polyData, vtkTetSkinGpuDeformMapper::kRestNormalArray, 3,
-                      std::vector<float>(normals.data(), normals.data() + normals.size()));
+        // interpolate: the shader turns the rest normals, the polydata's
+        // Normals, by the nodes' normal transforms.)
         s.gpuMapper->SetEmbedBinding(true);
         s.normalTransforms.emplace(dataset.elements.middleRows(r.firstElement, r.elementCount),
                                    dataset.nodes);

@@ -29,7 +29,7 @@ void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
   if (embed) {
     this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
                         tetskin::shaders::kGpuDeformEmbedImplVs, kNormalTransformsSampler);
-    this->MapDataArrayToVertexAttribute("tetskinRestNormal", kRestNormalArray,
+    this->MapDataArrayToVertexAttribute("tetskinRestNormal", "Normals",
                                         vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   } else {
     this->SetShaderCode(tetskin::shaders::kGpuDeformDeclarationsVs,

@@ -15,8 +15,8 @@
 // the weights (the report's method).
 //
 // With SetEmbedBinding(true), each vertex is bound to a tetrahedron instead:
-// ControlIds (4), Weights (4), kShiftArray (x, y, z; d unused) and
-// kRestNormalArray (3: the rest normal n); per frame SetEmbedState() gives
+// ControlIds (4), Weights (4), kShiftArray (x, y, z; d unused) and Normals
+// (3: the rest surface's normals n); per frame SetEmbedState() gives
 // the control nodes' normal transforms G (deformation NormalTransforms.h)
 // instead of their normals, and the normal is (sum w_i G_i) n.
 
@@ -30,7 +30,6 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
   vtkTypeMacro(vtkTetSkinGpuDeformMapper, vtkTetSkinBufferMapper)
 
   static constexpr const char* kShiftArray = "TetSkinShift";
-  static constexpr const char* kRestNormalArray = "TetSkinRestNormal";
 
   // Triangle bindings (the default) or embed bindings (see above); set
   // before the first render.
