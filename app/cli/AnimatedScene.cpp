@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "AnimatedScene.h"
 
+#include <vtkActor.h>
+#include <vtkMapper.h>
 #include <vtkRenderer.h>
 
 #include <chrono>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin::cli {
 namespace {
@@ -38,7 +43,14 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
   makeScenario(o.scenario.name, o.scenario.parameters);
   scenarioArgs_ = o.scenario;
   datasetName_ = o.datasetName;
-  view_->render();
+  {
+    // A gpu path that cannot draw here also reports it as a VTK error: the
+    // command says it once, as its own error line.
+    const VtkErrorCapture once(surface_->actor()->GetMapper());
+    view_->render();
+  }
+  // The surface does not change size later: what fits now fits every frame.
+  if (const std::string problem = surface_->gpuProblem(); !problem.empty()) throw Error(problem);
 }
 
 void AnimatedScene::startSimulation() {

@@ -546,6 +546,13 @@ void MainWindow::renderNow() {
   window_->Render();
   drawSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++framesSinceOverlay_;
+  // A gpu path this OpenGL cannot draw the surface with: say why and draw
+  // it on the cpu path instead of showing nothing.
+  if (const DeformableSurface* drawing = scene_->deformable())
+    if (const std::string problem = drawing->gpuProblem(); !problem.empty()) {
+      fail(QString::fromStdString(problem));
+      setRenderPath(QString::fromStdString(toString(RenderPath::Cpu)));
+    }
 }
 
 void MainWindow::setOverlayVisible(bool visible) {

@@ -34,6 +34,7 @@
 #include "HistogramWidget.h"
 #include "ImageCompare.h"
 #include "MainWindow.h"
+#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -179,6 +180,31 @@ TEST_F(Gui, EveryRenderPathDraws) {
   window_->setRenderPath("gpu-2pass");
   window_->setRenderPath("fur-gpu");
   EXPECT_FALSE(window_->scene().deformable()->fur()->actors()[0]->GetVisibility());
+}
+
+// A gpu path that cannot draw the surface on this OpenGL (here: more
+// control nodes than the texel limit set on its mapper) says why and
+// draws the surface on the cpu path instead of showing nothing.
+TEST_F(Gui, AGpuPathTheOpenGLCannotDrawFallsBackToTheCpuPath) {
+  openSample();
+  child<QComboBox>("controlStyle")->setCurrentText("none");
+  window_->setRenderPath("cpu");
+  const auto cpu = window_->grabImage();
+  window_->setRenderPath("gpu-1pass");
+  ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+  Scene& scene = window_->scene();
+  vtkTetSkinBufferMapper::SafeDownCast(scene.deformable()->actor()->GetMapper())
+      ->SetTexelLimit(100);
+  const MultiLevelTetMesh& mesh = scene.dataset().mesh;
+  const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene.level())];
+  scene.showControlState(mesh.nodes.middleRows(level.firstNode, level.nodeCount));
+  window_->renderNow();
+  EXPECT_TRUE(window_->lastError().startsWith("gpu-1pass: the positions of "))
+      << window_->lastError().toStdString();
+  EXPECT_TRUE(window_->lastError().endsWith(": draw it with the cpu path"));
+  EXPECT_STREQ(toString(scene.renderPath()), "cpu");
+  EXPECT_EQ(child<QComboBox>("renderPath")->currentText(), "cpu");
+  EXPECT_LT(changeFrom(cpu), 0.002);
 }
 
 TEST_F(Gui, ClickingTheSurfaceReportsTheVertexAndItsControlTriangle) {

@@ -33,6 +33,7 @@
 #include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/XDisplay.h"
+#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -88,6 +89,9 @@ class Rendering : public ::testing::Test {
                                        const Points3* before = nullptr) {
     DeformableSurface deformable(dataset_.mesh, surface, binding, path, dataset_.config.material,
                                  texture, fur);
+    if (texelLimit_ > 0)
+      vtkTetSkinBufferMapper::SafeDownCast(deformable.actor()->GetMapper())
+          ->SetTexelLimit(texelLimit_);
     OffscreenView view(256, 256);
     deformable.addTo(view.renderer());
     if (before) {
@@ -99,6 +103,14 @@ class Rendering : public ::testing::Test {
     const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                               box.max.y(), box.min.z(), box.max.z()};
     view.setCamera(CameraPreset::Iso, bounds);
+    view.render();
+    gpuProblem_ = deformable.gpuProblem();
+    return view.capture();
+  }
+
+  // The view of render() with nothing in it.
+  static vtkSmartPointer<vtkImageData> background() {
+    OffscreenView view(256, 256);
     view.render();
     return view.capture();
   }
@@ -116,6 +128,8 @@ class Rendering : public ::testing::Test {
   const Dataset& dataset_ = sampleDataset();
   SurfaceMesh surface_;
   SurfaceBinding binding_;
+  vtkIdType texelLimit_ = 0;  // render(): the gpu mappers' SetTexelLimit
+  std::string gpuProblem_;    // render(): the DeformableSurface's gpuProblem()
 };
 
 TEST_F(Rendering, CpuPathMatchesItsBaseline) {
@@ -556,6 +570,58 @@ TEST_F(Rendering, FurClosesOverTheSeamsOfBoxTextureCoordinates) {
   std::printf("bare skin: stitched %.2f%%, split %.2f%%\n", 100 * stitched, 100 * split);
   EXPECT_LT(stitched, 0.002);
   EXPECT_GT(split, stitched + 0.005);
+}
+
+// A gpu path whose texture buffers would hold more texels than the OpenGL
+// allows (here a limit set below llvmpipe's own) draws nothing and says
+// why, instead of drawing from buffers it could not fill; at the limit
+// itself it draws as without one.
+TEST_F(Rendering, GpuPathsPastTheTexelLimitDrawNothingAndSayWhy) {
+  const Points3 control = twisted(dataset_.mesh.nodes);
+  const std::string nodes = std::to_string(dataset_.mesh.nodes.rows());
+  const std::string vertices = std::to_string(surface_.vertexCount());
+  const auto empty = background();
+  const auto gpu1 = render(RenderPath::Gpu1Pass, control);
+  ASSERT_EQ(gpuProblem_, "");
+  const auto gpu2 = render(RenderPath::Gpu2Pass, control);
+  ASSERT_EQ(gpuProblem_, "");
+  ASSERT_GT(difference(gpu1, empty), 0.05);
+
+  texelLimit_ = dataset_.mesh.nodes.rows();
+  EXPECT_EQ(difference(render(RenderPath::Gpu1Pass, control), gpu1), 0.0);
+  EXPECT_EQ(gpuProblem_, "");
+  texelLimit_ -= 1;
+  EXPECT_EQ(difference(render(RenderPath::Gpu1Pass, control), empty), 0.0);
+  EXPECT_EQ(gpuProblem_, "gpu-1pass: the positions of " + nodes + " control nodes need " + nodes +
+                             " texels in one texture buffer, more than the " +
+                             std::to_string(texelLimit_) +
+                             " this OpenGL allows (the texel limit set): draw it with the cpu "
+                             "path");
+
+  // Embed bindings: three texels a node for the normal transforms.
+  const SurfaceBinding embed =
+      bindSurface(surface_, dataset_.mesh, 1, {BindingMethod::Embed, OffsetMode::Displacement});
+  texelLimit_ = 3 * dataset_.mesh.nodes.rows() - 1;
+  EXPECT_EQ(difference(render(RenderPath::Gpu1Pass, control, surface_, embed, ""), empty), 0.0);
+  EXPECT_NE(gpuProblem_.find("gpu-1pass: the normal transforms of " + nodes +
+                             " control nodes (3 texels each) need " +
+                             std::to_string(3 * dataset_.mesh.nodes.rows()) + " texels"),
+            std::string::npos)
+      << gpuProblem_;
+
+  // gpu-2pass and the fur drawn from its buffers: a texel per surface vertex.
+  texelLimit_ = surface_.vertexCount();
+  EXPECT_EQ(difference(render(RenderPath::Gpu2Pass, control), gpu2), 0.0);
+  EXPECT_EQ(gpuProblem_, "");
+  texelLimit_ -= 1;
+  for (RenderPath path : {RenderPath::Gpu2Pass, RenderPath::FurGpu}) {
+    EXPECT_EQ(difference(render(path, control, surface_, binding_, "", testFur()), empty), 0.0)
+        << toString(path);
+    EXPECT_NE(gpuProblem_.find("gpu-2pass: the positions of " + vertices +
+                               " surface vertices need " + vertices + " texels"),
+              std::string::npos)
+        << gpuProblem_;
+  }
 }
 
 TEST_F(Rendering, GpuMapperBoundsContainTheDeformedSurface) {

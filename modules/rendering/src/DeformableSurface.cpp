@@ -209,6 +209,11 @@ vtkPolyData* DeformableSurface::polyData() const {
 const double* DeformableSurface::bounds() const {
   return impl_->bounds;
 }
+std::string DeformableSurface::gpuProblem() const {
+  if (impl_->gpuMapper) return impl_->gpuMapper->GetGpuProblem();
+  if (impl_->gpu2Mapper) return impl_->gpu2Mapper->GetGpuProblem();
+  return {};
+}
 FurLayer* DeformableSurface::fur() const {
   return impl_->fur.get();
 }

@@ -8,6 +8,9 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 #include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+#include <algorithm>
 
 #include "ShaderInjection.h"
 
@@ -57,11 +60,37 @@ vtkTextureObject* vtkTetSkinBufferMapper::Texture(int k) {
   return this->Textures[k];
 }
 
-void vtkTetSkinBufferMapper::UploadTexels(int k, const std::vector<float>& values) {
+void vtkTetSkinBufferMapper::SetTexelLimit(vtkIdType texels) {
+  this->TexelLimit = texels;
+  this->Modified();
+}
+
+bool vtkTetSkinBufferMapper::UploadTexels(int k, const std::vector<float>& values,
+                                          const std::string& what) {
+  const auto texels = static_cast<vtkIdType>(values.size() / 4);
+  GLint glLimit = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &glLimit);
+  const vtkIdType limit =
+      this->TexelLimit > 0 ? std::min<vtkIdType>(this->TexelLimit, glLimit) : glLimit;
+  if (texels > limit) {
+    // Past the limit texel fetches read zeros (or worse): refuse instead.
+    this->ReportGpuProblem(
+        what + " need " + std::to_string(texels) + " texels in one texture buffer, more than the " +
+        std::to_string(limit) + " this OpenGL allows" +
+        (limit < glLimit ? " (the texel limit set)" : "") + ": draw it with the cpu path");
+    return false;
+  }
   this->Buffers[k]->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
   // RGB32F texture buffers need GL 4.0: 4 floats per texel.
-  this->Textures[k]->CreateTextureBuffer(static_cast<unsigned int>(values.size() / 4), 4, VTK_FLOAT,
+  this->Textures[k]->CreateTextureBuffer(static_cast<unsigned int>(texels), 4, VTK_FLOAT,
                                          this->Buffers[k]);
+  return true;
+}
+
+void vtkTetSkinBufferMapper::ReportGpuProblem(const std::string& problem) {
+  if (!this->GpuProblem.empty()) return;
+  this->GpuProblem = problem;
+  vtkErrorMacro(<< problem);
 }
 
 void vtkTetSkinBufferMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
@@ -71,6 +100,10 @@ void vtkTetSkinBufferMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
   this->Superclass::RenderPieceStart(ren, act);
   for (auto& texture : this->Textures)
     if (texture->GetHandle()) texture->Activate();
+}
+
+void vtkTetSkinBufferMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act) {
+  if (this->GpuProblem.empty()) this->Superclass::RenderPieceDraw(ren, act);
 }
 
 void vtkTetSkinBufferMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {

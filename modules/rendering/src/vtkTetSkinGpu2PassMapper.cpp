@@ -69,7 +69,6 @@ struct vtkTetSkinGpu2PassMapper::GpuState {
   vtkNew<vtkTextureObject> previousTexture;
   GLsizeiptr previousBytes = 0;
   GLuint positions = 0, faceNormals = 0, vertexNormals = 0;  // programs
-  bool failed = false;
 };
 
 vtkTetSkinGpu2PassMapper::vtkTetSkinGpu2PassMapper()
@@ -126,7 +125,7 @@ void vtkTetSkinGpu2PassMapper::SetControlPositions(const float* positions, vtkId
 
 void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   GpuState& g = *this->Gpu;
-  if (g.failed || this->Vertices == 0) return;
+  if (!this->GetGpuProblem().empty() || this->Vertices == 0) return;
   if (!g.positions) {
     std::string log;
     g.positions = compileCompute(tetskin::shaders::kGpu2passPositionsCs, log);
@@ -134,8 +133,7 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
     if (g.faceNormals)
       g.vertexNormals = compileCompute(tetskin::shaders::kGpu2passVertexNormalsCs, log);
     if (!g.vertexNormals) {
-      g.failed = true;
-      vtkErrorMacro(<< "gpu-2pass compute shaders failed (OpenGL 4.3 needed): " << log);
+      this->ReportGpuProblem("gpu-2pass: the compute shaders failed (OpenGL 4.3 needed): " + log);
       return;
     }
   }
@@ -151,8 +149,10 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
     g.faces.upload(zeros.data(), zeros.size() * sizeof(float));
     zeros.assign(static_cast<std::size_t>(4 * this->Vertices), 0.0f);
     // The outputs are texture buffers for the draw pass and storage buffers here.
-    this->UploadTexels(0, zeros);
-    this->UploadTexels(1, zeros);
+    const std::string vertices = std::to_string(this->Vertices) + " surface vertices";
+    if (!this->UploadTexels(0, zeros, "gpu-2pass: the positions of " + vertices) ||
+        !this->UploadTexels(1, zeros, "gpu-2pass: the normals of " + vertices))
+      return;
     this->SurfaceChanged = false;
   }
   const bool newFrame = this->ControlChanged;

@@ -4,6 +4,8 @@
 #include <vtkDataObject.h>
 #include <vtkObjectFactory.h>
 
+#include <string>
+
 #include "tetskin/shaders/Shaders.h"
 
 vtkStandardNewMacro(vtkTetSkinGpuDeformMapper)
@@ -26,6 +28,7 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
 }
 
 void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
+  this->Embed = embed;
   if (embed) {
     this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
                         tetskin::shaders::kGpuDeformEmbedImplVs, kNormalTransformsSampler);
@@ -68,9 +71,15 @@ void vtkTetSkinGpuDeformMapper::SetPositions(const float* positions, vtkIdType n
 }
 
 void vtkTetSkinGpuDeformMapper::PrepareBuffers(vtkOpenGLRenderWindow*) {
-  if (!this->StateChanged || this->Positions.empty()) return;
-  this->UploadTexels(0, this->Positions);
-  if (!this->Normals.empty()) this->UploadTexels(1, this->Normals);
+  if (!this->StateChanged || this->Positions.empty() || !this->GetGpuProblem().empty()) return;
+  const std::string nodes = std::to_string(this->Positions.size() / 4) + " control nodes";
+  if (!this->UploadTexels(0, this->Positions, "gpu-1pass: the positions of " + nodes)) return;
+  if (!this->Normals.empty() &&
+      !this->UploadTexels(1, this->Normals,
+                          this->Embed
+                              ? "gpu-1pass: the normal transforms of " + nodes + " (3 texels each)"
+                              : "gpu-1pass: the normals of " + nodes))
+    return;
   this->StateChanged = false;
 }
 

@@ -70,16 +70,22 @@ void vtkTetSkinGpuFurMapper::ComputeBounds() {
   }
 }
 
+bool vtkTetSkinGpuFurMapper::SourceReady() const {
+  // The skin renders first; when it could not fill its buffers, there is
+  // nothing for the fur to read.
+  return this->Source && this->Source->GetGpuProblem().empty();
+}
+
 void vtkTetSkinGpuFurMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act) {
   this->Superclass::RenderPieceStart(ren, act);
-  if (!this->Source) return;
+  if (!this->SourceReady()) return;
   this->Source->DeformedPositions()->Activate();
   this->Source->DeformedNormals()->Activate();
   this->Source->PreviousPositions()->Activate();
 }
 
 void vtkTetSkinGpuFurMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) {
-  if (this->Source) {
+  if (this->SourceReady()) {
     this->Source->PreviousPositions()->Deactivate();
     this->Source->DeformedNormals()->Deactivate();
     this->Source->DeformedPositions()->Deactivate();
@@ -105,7 +111,7 @@ void vtkTetSkinGpuFurMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, 
 
 void vtkTetSkinGpuFurMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act) {
   vtkOpenGLHelper& tris = this->Primitives[PrimitiveTris];
-  if (!this->Source || tris.IBO->IndexCount == 0) return;
+  if (!this->SourceReady() || tris.IBO->IndexCount == 0) return;
   int instances = 1;
   if (this->MaxShells > 0) {
     instances = this->MaxShells;

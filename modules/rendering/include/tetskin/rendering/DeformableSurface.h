@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -56,6 +57,9 @@ class DeformableSurface {
   FrameTimes update(const Points3& controlPositions);
   // Bounds of the deformed surface of the last update (xmin, xmax, ...).
   const double* bounds() const;
+  // After a render: why a gpu path could not draw this surface on this
+  // OpenGL (vtkTetSkinBufferMapper::GetGpuProblem), or empty.
+  std::string gpuProblem() const;
 
  private:
   struct Impl;

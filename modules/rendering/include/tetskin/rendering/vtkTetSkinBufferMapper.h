@@ -7,11 +7,15 @@
 // `deformedMC` and `deformedNormalMC`, and the deformed bounds the CPU knows.
 // Subclasses fill the buffers in PrepareBuffers() (called with the context
 // current, before the draw); a buffer never filled is not bound (its
-// shader need not declare the sampler).
+// shader need not declare the sampler). What the GPU cannot do (a texture
+// buffer longer than the OpenGL allows, compute shaders it cannot compile)
+// is reported once, through GetGpuProblem() and a VTK error, and the
+// surface is then not drawn rather than drawn from unfilled buffers.
 
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 
+#include <string>
 #include <vector>
 
 class vtkOpenGLBufferObject;
@@ -26,8 +30,18 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   // Bounds of the deformed surface (xmin, xmax, ...); until set, the input's.
   void SetDeformedBounds(const double bounds[6]);
 
+  // Why this mapper cannot draw its surface on this OpenGL, or empty; set
+  // by the render that found it and kept (the surface does not change).
+  const std::string& GetGpuProblem() const { return this->GpuProblem; }
+  // Caps the texels of one texture buffer below the OpenGL's own
+  // GL_MAX_TEXTURE_BUFFER_SIZE (0, the default: that limit alone): to try a
+  // model against a smaller GPU's limit (OpenGL 4 promises 65536) and to
+  // test the refusal on an OpenGL with a larger one.
+  void SetTexelLimit(vtkIdType texels);
+
   void ComputeBounds() override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -42,8 +56,12 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   // second buffer it reads (before the first render).
   void SetShaderCode(const char* declarations, const char* implementation,
                      const char* secondSampler);
-  // Uploads `values` (4 floats per texel) into buffer k (0 or 1) and its texture.
-  void UploadTexels(int k, const std::vector<float>& values);
+  // Uploads `values` (4 floats per texel) into buffer k (0 or 1) and its
+  // texture; `what` names them for the message when they are more texels
+  // than the OpenGL allows (then nothing is uploaded and false returned).
+  bool UploadTexels(int k, const std::vector<float>& values, const std::string& what);
+  // Records `problem` (the first one only) and reports it as a VTK error.
+  void ReportGpuProblem(const std::string& problem);
   vtkOpenGLBufferObject* Buffer(int k);
   vtkTextureObject* Texture(int k);
 
@@ -58,6 +76,8 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   const char* Implementation;
   const char* Samplers[2];
   double DeformedBounds[6] = {0, -1, 0, -1, 0, -1};
+  std::string GpuProblem;
+  vtkIdType TexelLimit = 0;
   vtkNew<vtkOpenGLBufferObject> Buffers[2];
   vtkNew<vtkTextureObject> Textures[2];
 };

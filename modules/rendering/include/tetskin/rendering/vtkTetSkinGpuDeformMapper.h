@@ -56,4 +56,5 @@ class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
   // columns of its normal transform.
   std::vector<float> Positions, Normals;
   bool StateChanged = false;
+  bool Embed = false;
 };

@@ -44,6 +44,7 @@ class vtkTetSkinGpuFurMapper : public vtkTetSkinFurMapper {
  private:
   vtkTetSkinGpuFurMapper(const vtkTetSkinGpuFurMapper&) = delete;
   void operator=(const vtkTetSkinGpuFurMapper&) = delete;
+  bool SourceReady() const;
   vtkWeakPointer<vtkTetSkinGpu2PassMapper> Source;
   int MaxShells = 16, MinShells = 4, ShellsDrawn = 0;
   bool Adaptive = false;
