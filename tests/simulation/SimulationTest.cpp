@@ -628,6 +628,29 @@ TEST(Simulation, TimeAndStepsAreTheStates) {
   EXPECT_DOUBLE_EQ(sim.time(), 3 * sim.options().timeStep);
 }
 
+// A state set from outside (the GUI's pull, a restart) has one row per
+// node of the simulated level; any other count is refused with both counts.
+TEST(Simulation, StateSettersRefuseAnotherNumberOfRows) {
+  const Dataset& d = sampleDataset();
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  const Index n = sim.restMesh().nodeCount();
+  const Points3 wrong = Points3::Zero(n + 1, 3);
+  const std::string counts =
+      ": " + std::to_string(n + 1) + " rows for " + std::to_string(n) + " nodes";
+  auto message = [](auto&& set) {
+    try {
+      set();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message([&] { sim.setExternalForces(wrong); }), "external forces" + counts);
+  EXPECT_EQ(message([&] { sim.setPositions(wrong); }), "positions" + counts);
+  EXPECT_EQ(message([&] { sim.setVelocities(wrong); }), "velocities" + counts);
+  EXPECT_EQ(sim.state().positions, sim.restMesh().nodes);  // nothing was set
+}
+
 // The state reports the external forces of the step that led to it (what
 // the exported frames show as ExternalForce): none before the first step,
 // and forces set for the next step only once it is taken.

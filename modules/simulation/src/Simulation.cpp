@@ -268,7 +268,7 @@ void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points
 }
 
 void Simulation::setExternalForces(const Points3& forces) {
-  if (forces.rows() != rest_.nodeCount()) throw Error("one external force per node");
+  requireRows("external forces", forces.rows(), rest_.nodeCount(), "nodes");
   std::lock_guard lock(mutex_);
   external_ = toInternal(forces);
 }
@@ -279,13 +279,13 @@ Points3 Simulation::externalForces() const {
 }
 
 void Simulation::setPositions(const Points3& positions) {
-  if (positions.rows() != rest_.nodeCount()) throw Error("one position per node");
+  requireRows("positions", positions.rows(), rest_.nodeCount(), "nodes");
   std::lock_guard lock(mutex_);
   x_ = toInternal(positions);
 }
 
 void Simulation::setVelocities(const Points3& velocities) {
-  if (velocities.rows() != rest_.nodeCount()) throw Error("one velocity per node");
+  requireRows("velocities", velocities.rows(), rest_.nodeCount(), "nodes");
   std::lock_guard lock(mutex_);
   v_ = toInternal(velocities);
 }
