@@ -29,7 +29,7 @@ namespace tetskin::cli {
 namespace {
 
 struct SimulateArgs {
-  std::filesystem::path dataset, output, surface;
+  std::filesystem::path dataset, output, surface, initial;
   int steps = 120, level = -1, every = 1;
   std::string solver = "auto", coarseOperators = "galerkin", tangent = "full";
   ScenarioArgs scenario;
@@ -73,6 +73,20 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::unique_ptr<Scenario> scenario = makeScenario(a.scenario.name, parameters);
   Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);
+  if (!a.initial.empty()) {
+    // The frame replaces the scenario's start (drop's lift too); its folder
+    // is not the one this run writes, where frame 0 would overwrite it.
+    std::error_code error;
+    if (std::filesystem::equivalent(a.initial.parent_path().empty() ? "." : a.initial.parent_path(),
+                                    RunRecorder::framesDirectory(a.output), error))
+      throw Error(a.initial.string(), 0,
+                  "is among the frames this run writes (-o " + a.output.string() +
+                      "): write the new run to another name");
+    const FrameState start = readSimulationFrame(
+        a.initial, rest, "level " + std::to_string(level) + " of " + a.dataset.string());
+    sim.setPositions(start.positions);
+    sim.setVelocities(start.velocities);
+  }
   if (const std::string warning = nodesBelowFloor(sim); !warning.empty())
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
 
@@ -128,6 +142,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "",
       toString(options.tangent));
+  if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
   std::printf("  material: %s\n", describe(options.material).c_str());
   std::printf("  %zu of %lld nodes fixed, ", sim.fixedNodes().size(),
               static_cast<long long>(sim.restMesh().nodeCount()));
@@ -177,6 +192,10 @@ void addSimulateCommand(CLI::App& app) {
       ->check(wholeNumber(1));
   addScenarioOptions(*cmd, a->scenario);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
+  cmd->add_option("--initial", a->initial,
+                  "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
+                  "positions and velocities replace the scenario's start; time starts at 0")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--solver", a->solver,
                   "cg (block-Jacobi CG), multigrid (CG with a V-cycle) or auto (whichever of "
                   "the two is faster here, timed every 120 steps)")

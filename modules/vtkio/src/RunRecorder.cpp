@@ -18,9 +18,14 @@ std::filesystem::path withPvdExtension(std::filesystem::path p) {
 
 }  // namespace
 
+std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& pvd) {
+  const std::filesystem::path file = std::filesystem::absolute(withPvdExtension(pvd));
+  return file.parent_path() / (file.stem().string() + "_frames");
+}
+
 RunRecorder::RunRecorder(std::filesystem::path pvd)
     : directory_(std::filesystem::absolute(withPvdExtension(pvd)).parent_path()),
-      framesName_(withPvdExtension(pvd).stem().string() + "_frames"),
+      framesName_(framesDirectory(pvd).filename().string()),
       series_(withPvdExtension(pvd)) {
   std::filesystem::create_directories(directory_ / framesName_);
 }

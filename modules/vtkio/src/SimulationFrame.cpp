@@ -2,14 +2,40 @@
 #include "tetskin/vtkio/SimulationFrame.h"
 
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/vtkio/VtkConversion.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
+namespace {
+
+// Point array `name` of `grid` as rows, each checked to be finite.
+Points3 pointVectors(vtkUnstructuredGrid* grid, const char* name, const std::string& source) {
+  vtkDataArray* a = grid->GetPointData()->GetArray(name);
+  if (!a || a->GetNumberOfComponents() != 3 || a->GetNumberOfTuples() != grid->GetNumberOfPoints())
+    throw Error(source, 0,
+                std::string("is not a simulation frame: point array '") + name +
+                    "' is missing or not one 3-vector per point");
+  Points3 out(a->GetNumberOfTuples(), 3);
+  for (Index i = 0; i < out.rows(); ++i) {
+    for (int k = 0; k < 3; ++k) out(i, k) = a->GetComponent(i, k);
+    if (const std::string problem = coordinateProblem(out.row(i)); !problem.empty())
+      throw Error(source, 0, std::string(name) + " of point " + std::to_string(i) + " " + problem);
+  }
+  return out;
+}
+
+}  // namespace
+
 vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
                                                      const Points3& velocities,
                                                      const Points3& externalForces,
@@ -38,6 +64,37 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetCellData()->AddArray(ratio);
   grid->GetCellData()->AddArray(levels);
   return grid;
+}
+
+FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh& rest,
+                               const std::string& restName) {
+  const std::string source = path.string();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
+  const TetMesh frame = fromVtkUnstructuredGrid(grid, source);
+  if (frame.nodeCount() != rest.nodeCount() || frame.elementCount() != rest.elementCount())
+    throw Error(source, 0,
+                "has " + std::to_string(frame.nodeCount()) + " points and " +
+                    std::to_string(frame.elementCount()) + " tetrahedra; " + restName + " has " +
+                    std::to_string(rest.nodeCount()) + " and " +
+                    std::to_string(rest.elementCount()));
+  for (Index e = 0; e < rest.elementCount(); ++e)
+    if (frame.elements.row(e) != rest.elements.row(e))
+      throw Error(source, 0,
+                  "tetrahedron " + std::to_string(e) + " has other nodes than in " + restName);
+  const Points3 displacement = pointVectors(grid, "Displacement", source);
+  FrameState state{frame.nodes, pointVectors(grid, "Velocity", source)};
+  // The frame's rest shape must be this one: the displacement was taken
+  // from it, so within rounding of the largest coordinate.
+  const Points3 frameRest = frame.nodes - displacement;
+  const double scale =
+      std::max({rest.nodes.cwiseAbs().maxCoeff(), frame.nodes.cwiseAbs().maxCoeff(), 1e-300});
+  for (Index v = 0; v < rest.nodeCount(); ++v)
+    if ((frameRest.row(v) - rest.nodes.row(v)).cwiseAbs().maxCoeff() > 1e-9 * scale)
+      throw Error(source, 0,
+                  "point " + std::to_string(v) +
+                      ": its position less its Displacement is not its rest position in " +
+                      restName + " (a frame of another body)");
+  return state;
 }
 
 }  // namespace tetskin

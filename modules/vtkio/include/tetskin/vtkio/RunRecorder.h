@@ -17,6 +17,8 @@ class RunRecorder {
  public:
   // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/.
   explicit RunRecorder(std::filesystem::path pvd);
+  // The folder the frames of a run written to `pvd` go to (RUN_frames/).
+  static std::filesystem::path framesDirectory(const std::filesystem::path& pvd);
   const std::filesystem::path& path() const { return series_.path(); }
   Index frames() const { return frames_; }
   // The control level's state (level-local nodes; SimulationFrame.h) and,

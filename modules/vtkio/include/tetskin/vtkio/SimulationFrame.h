@@ -4,11 +4,14 @@
 // ParaView: tetrahedra at the deformed positions, point arrays
 // Displacement, Velocity and ExternalForce (N per node: loads, scenario
 // forces, pulls; not gravity), cell arrays VonMisesStress, VolumeRatio
-// (current / rest volume, < 0 for inverted elements) and Level.
+// (current / rest volume, < 0 for inverted elements) and Level; and the
+// state read back from such a frame.
 
 #include <vtkSmartPointer.h>
 
 #include <Eigen/Core>
+#include <filesystem>
+#include <string>
 
 #include "tetskin/core/TetMesh.h"
 
@@ -21,5 +24,20 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
                                                      int level);
+
+// What a simulation restarts from: a frame's positions (its points) and
+// velocities (its Velocity array).
+struct FrameState {
+  Points3 positions, velocities;
+};
+
+// The state in the frame file `path` (a .vtu simulationFrame wrote) of the
+// mesh `rest`, named `restName` in messages (e.g. "level 0 of bunny.json").
+// Throws Error naming the file when it is no frame of `rest`: other node or
+// tetrahedron counts or numbering, points - Displacement not `rest`'s
+// positions (to 1e-9 of the largest coordinate), Displacement or Velocity
+// missing, or a value not finite.
+FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh& rest,
+                               const std::string& restName);
 
 }  // namespace tetskin

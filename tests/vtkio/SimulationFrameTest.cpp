@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Simulation frames read back (simulate --initial): the state written comes
+// back exactly, a frame of another body is refused by name, and a run
+// started from a frame goes on as the run that wrote it.
+#include <gtest/gtest.h>
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+#include <limits>
+
+#include "ExpectError.h"
+#include "SampleData.h"
+#include "Shapes.h"
+#include "TestFiles.h"
+#include "tetskin/simulation/Scenario.h"
+#include "tetskin/simulation/Simulation.h"
+#include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/VtkFiles.h"
+
+namespace tetskin {
+namespace {
+
+using test::expectErrorAt;
+
+struct Frame {
+  TetMesh rest = test::tetGrid(2, 2, 2, Eigen::Vector3d(1, 2, 1));
+  Points3 positions, velocities;
+  Frame() {
+    positions = rest.nodes;
+    velocities = Points3::Zero(rest.nodeCount(), 3);
+    for (Index v = 0; v < rest.nodeCount(); ++v) {
+      const auto x = static_cast<double>(v);
+      positions(v, 0) += 0.1 * std::sin(1.7 * x);
+      velocities.row(v) << 0.3 * x, -1.0 / (x + 1), std::cos(x);
+    }
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> grid() const {
+    return simulationFrame(rest, positions, velocities, Points3::Zero(rest.nodeCount(), 3),
+                           Eigen::VectorXd::Zero(rest.elementCount()), 0);
+  }
+};
+
+TEST(SimulationFrame, StateComesBackExactly) {
+  const test::ScratchDir dir;
+  const Frame f;
+  writeVtu(dir / "f.vtu", f.grid());
+  const FrameState state = readSimulationFrame(dir / "f.vtu", f.rest, "the grid");
+  EXPECT_EQ(state.positions, f.positions);
+  EXPECT_EQ(state.velocities, f.velocities);
+}
+
+TEST(SimulationFrame, AFrameOfAnotherBodyIsRefusedByName) {
+  const test::ScratchDir dir;
+  const Frame f;
+  const std::string file = (dir / "f.vtu").string();
+  writeVtu(file, f.grid());
+  const auto read = [&](const TetMesh& rest) {
+    return [&] { readSimulationFrame(file, rest, "level 0 of b.json"); };
+  };
+  const TetMesh finer = test::tetGrid(3, 2, 2, Eigen::Vector3d(1, 2, 1));
+  expectErrorAt(read(finer), file, 0,
+                "has " + std::to_string(f.rest.nodeCount()) + " points and " +
+                    std::to_string(f.rest.elementCount()) + " tetrahedra; level 0 of b.json has " +
+                    std::to_string(finer.nodeCount()) + " and " +
+                    std::to_string(finer.elementCount()));
+  TetMesh renumbered = f.rest;
+  renumbered.elements.row(5).swap(renumbered.elements.row(6));
+  expectErrorAt(read(renumbered), file, 0,
+                "tetrahedron 5 has other nodes than in level 0 of b.json");
+  TetMesh moved = f.rest;
+  moved.nodes(3, 1) += 1e-6;
+  expectErrorAt(read(moved), file, 0,
+                "point 3: its position less its Displacement is not its rest position in level 0 "
+                "of b.json");
+
+  vtkSmartPointer<vtkUnstructuredGrid> grid = f.grid();
+  grid->GetPointData()->RemoveArray("Velocity");
+  writeVtu(file, grid);
+  expectErrorAt(read(f.rest), file, 0, "point array 'Velocity' is missing");
+  grid = f.grid();
+  vtkDoubleArray::SafeDownCast(grid->GetPointData()->GetArray("Velocity"))
+      ->SetComponent(4, 2, std::numeric_limits<double>::quiet_NaN());
+  writeVtu(file, grid);
+  expectErrorAt(read(f.rest), file, 0, "Velocity of point 4 ");
+}
+
+// A sag run of 40 steps, and one of 20 steps started again from its 20th
+// frame for 20 more: the same state to within the solver's tolerance
+// (each solve stops at a relative residual of 1e-6), where the 20 steps
+// from rest alone are far from it.
+TEST(SimulationFrame, ARunStartedFromAFrameGoesOnAsTheRunThatWroteIt) {
+  const Dataset& d = test::sampleDataset();
+  SimulationOptions options;
+  options.solver = SolverKind::ConjugateGradient;
+  const auto run = [&](int steps, const FrameState* start) {
+    Simulation sim(d.mesh, 0, options);
+    makeScenario("sag", {})->setUp(sim);
+    if (start) {
+      sim.setPositions(start->positions);
+      sim.setVelocities(start->velocities);
+    }
+    for (int i = 0; i < steps; ++i) sim.step();
+    return sim.state();
+  };
+  const SimulationState whole = run(40, nullptr), half = run(20, nullptr);
+  const test::ScratchDir dir;
+  Simulation writer(d.mesh, 0, options);
+  writeVtu(dir / "half.vtu", simulationFrame(writer.restMesh(), half.positions, half.velocities,
+                                             half.externalForces, writer.vonMisesStress(), 0));
+  const FrameState start = readSimulationFrame(dir / "half.vtu", writer.restMesh(), "level 0");
+  const SimulationState resumed = run(20, &start);
+  const double sag = (whole.positions - writer.restMesh().nodes).cwiseAbs().maxCoeff();
+  const double resumedOff = (resumed.positions - whole.positions).cwiseAbs().maxCoeff();
+  const double restartOff = (half.positions - whole.positions).cwiseAbs().maxCoeff();
+  std::printf("largest displacement %.4g; resumed run off by %.3g, 20 steps from rest by %.3g\n",
+              sag, resumedOff, restartOff);
+  EXPECT_GT(restartOff, 0.05 * sag);
+  EXPECT_LT(resumedOff, 1e-4 * sag);
+}
+
+}  // namespace
+}  // namespace tetskin
