@@ -172,6 +172,20 @@ TETSKIN_LANES_INLINE void addRow(double* target, Double4 row) {
   target[2] += row[2];
 }
 
+// Adds row `row` of block (i, j) of each of the group's `elements`
+// (`scatter` says where), its three entries given one lane per element.
+// Always inlined, as every function here that takes four-double vectors:
+// a lambda would be one function for both kernels (at -O0 a call), which
+// the AVX2 kernel passes the vectors in registers and the baseline code
+// reads from the stack (Debug builds assembled garbage so).
+TETSKIN_LANES_INLINE void addBlockRow(double* values, const ElementScatter* scatter, int elements,
+                                      int i, int j, int row, Double4 e0, Double4 e1, Double4 e2) {
+  Double4 rows[4];
+  transposeRows(e0, e1, e2, rows);
+  for (int l = 0; l < elements; ++l)
+    addRow(values + scatter[l].slots[i * 4 + j] + row * scatter[l].rowLengths[i], rows[l]);
+}
+
 // One group of four elements: rotations (warm-started), forces
 // f_k = -V R sigma g_k and the ten blocks (i, j >= i) of R K_e R^T, each
 // V (lambda r_i r_j^T + mu r_j r_i^T + mu (g_i . g_j) I) with r_k = R g_k;
@@ -266,21 +280,15 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
       for (int a = 0; a < 3; ++a) args.force[3 * group.nodes[k][l] + a] += f[k][a][l];
   }
   const ElementScatter* scatter = args.scatter + 4 * g;
-  // Row `row` of block (i, j) of each element, its three entries given one
-  // lane per element.
-  auto addBlockRow = [&](int i, int j, int row, Double4 e0, Double4 e1, Double4 e2) {
-    Double4 rows[4];
-    transposeRows(e0, e1, e2, rows);
-    for (int l = 0; l < elements; ++l)
-      addRow(args.values + scatter[l].slots[i * 4 + j] + row * scatter[l].rowLengths[i], rows[l]);
-  };
   for (int i = 0, pair = 0; i < 4; ++i)
     for (int j = i; j < 4; ++j, ++pair) {
       const Double4* B = blocks[pair];
-      for (int a = 0; a < 3; ++a) addBlockRow(i, j, a, B[3 * a], B[3 * a + 1], B[3 * a + 2]);
+      for (int a = 0; a < 3; ++a)
+        addBlockRow(args.values, scatter, elements, i, j, a, B[3 * a], B[3 * a + 1], B[3 * a + 2]);
       if (j == i) continue;
       // Block (j, i) is the transpose: its row b is column b of (i, j).
-      for (int b = 0; b < 3; ++b) addBlockRow(j, i, b, B[b], B[3 + b], B[6 + b]);
+      for (int b = 0; b < 3; ++b)
+        addBlockRow(args.values, scatter, elements, j, i, b, B[b], B[3 + b], B[6 + b]);
     }
 }
 
