@@ -66,18 +66,23 @@ void vtkTetSkinBufferMapper::SetTexelLimit(vtkIdType texels) {
 }
 
 bool vtkTetSkinBufferMapper::UploadTexels(int k, const std::vector<float>& values,
-                                          const std::string& what) {
+                                          const std::function<std::string()>& what) {
   const auto texels = static_cast<vtkIdType>(values.size() / 4);
-  GLint glLimit = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &glLimit);
-  const vtkIdType limit =
-      this->TexelLimit > 0 ? std::min<vtkIdType>(this->TexelLimit, glLimit) : glLimit;
+  if (this->GLTexelLimit == 0) {
+    GLint queried = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &queried);
+    this->GLTexelLimit = queried;
+  }
+  const vtkIdType limit = this->TexelLimit > 0
+                              ? std::min<vtkIdType>(this->TexelLimit, this->GLTexelLimit)
+                              : this->GLTexelLimit;
   if (texels > limit) {
     // Past the limit texel fetches read zeros (or worse): refuse instead.
-    this->ReportGpuProblem(
-        what + " need " + std::to_string(texels) + " texels in one texture buffer, more than the " +
-        std::to_string(limit) + " this OpenGL allows" +
-        (limit < glLimit ? " (the texel limit set)" : "") + ": draw it with the cpu path");
+    this->ReportGpuProblem(what() + " need " + std::to_string(texels) +
+                           " texels in one texture buffer, more than the " + std::to_string(limit) +
+                           " this OpenGL allows" +
+                           (limit < this->GLTexelLimit ? " (the texel limit set)" : "") +
+                           ": draw it with the cpu path");
     return false;
   }
   this->Buffers[k]->Upload(values, vtkOpenGLBufferObject::TextureBuffer);
@@ -113,6 +118,7 @@ void vtkTetSkinBufferMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act) 
 }
 
 void vtkTetSkinBufferMapper::ReleaseGraphicsResources(vtkWindow* window) {
+  this->GLTexelLimit = 0;  // the next context may allow another
   for (auto& texture : this->Textures) texture->ReleaseGraphicsResources(window);
   for (auto& buffer : this->Buffers) buffer->ReleaseGraphicsResources();
   this->Superclass::ReleaseGraphicsResources(window);

@@ -150,8 +150,8 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
     zeros.assign(static_cast<std::size_t>(4 * this->Vertices), 0.0f);
     // The outputs are texture buffers for the draw pass and storage buffers here.
     const std::string vertices = std::to_string(this->Vertices) + " surface vertices";
-    if (!this->UploadTexels(0, zeros, "gpu-2pass: the positions of " + vertices) ||
-        !this->UploadTexels(1, zeros, "gpu-2pass: the normals of " + vertices))
+    if (!this->UploadTexels(0, zeros, [&] { return "gpu-2pass: the positions of " + vertices; }) ||
+        !this->UploadTexels(1, zeros, [&] { return "gpu-2pass: the normals of " + vertices; }))
       return;
     this->SurfaceChanged = false;
   }

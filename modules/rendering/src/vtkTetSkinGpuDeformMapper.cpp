@@ -72,13 +72,16 @@ void vtkTetSkinGpuDeformMapper::SetPositions(const float* positions, vtkIdType n
 
 void vtkTetSkinGpuDeformMapper::PrepareBuffers(vtkOpenGLRenderWindow*) {
   if (!this->StateChanged || this->Positions.empty() || !this->GetGpuProblem().empty()) return;
-  const std::string nodes = std::to_string(this->Positions.size() / 4) + " control nodes";
-  if (!this->UploadTexels(0, this->Positions, "gpu-1pass: the positions of " + nodes)) return;
-  if (!this->Normals.empty() &&
-      !this->UploadTexels(1, this->Normals,
-                          this->Embed
-                              ? "gpu-1pass: the normal transforms of " + nodes + " (3 texels each)"
-                              : "gpu-1pass: the normals of " + nodes))
+  const auto nodes = [this] {
+    return std::to_string(this->Positions.size() / 4) + " control nodes";
+  };
+  if (!this->UploadTexels(0, this->Positions,
+                          [&] { return "gpu-1pass: the positions of " + nodes(); }))
+    return;
+  if (!this->Normals.empty() && !this->UploadTexels(1, this->Normals, [&] {
+        return this->Embed ? "gpu-1pass: the normal transforms of " + nodes() + " (3 texels each)"
+                           : "gpu-1pass: the normals of " + nodes();
+      }))
     return;
   this->StateChanged = false;
 }

@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkOpenGLPolyDataMapper.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,9 +58,11 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   void SetShaderCode(const char* declarations, const char* implementation,
                      const char* secondSampler);
   // Uploads `values` (4 floats per texel) into buffer k (0 or 1) and its
-  // texture; `what` names them for the message when they are more texels
-  // than the OpenGL allows (then nothing is uploaded and false returned).
-  bool UploadTexels(int k, const std::vector<float>& values, const std::string& what);
+  // texture; when they are more texels than the OpenGL allows, nothing is
+  // uploaded, false returned and `what()` names them in the message (built
+  // only then: gpu-1pass uploads every frame).
+  bool UploadTexels(int k, const std::vector<float>& values,
+                    const std::function<std::string()>& what);
   // Records `problem` (the first one only) and reports it as a VTK error.
   void ReportGpuProblem(const std::string& problem);
   vtkOpenGLBufferObject* Buffer(int k);
@@ -78,6 +81,7 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   double DeformedBounds[6] = {0, -1, 0, -1, 0, -1};
   std::string GpuProblem;
   vtkIdType TexelLimit = 0;
+  vtkIdType GLTexelLimit = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE, queried once per context
   vtkNew<vtkOpenGLBufferObject> Buffers[2];
   vtkNew<vtkTextureObject> Textures[2];
 };
