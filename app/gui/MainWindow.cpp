@@ -263,10 +263,15 @@ QWidget* MainWindow::buildSimulationDock() {
   step_->setObjectName("step");
   reset_ = new QPushButton("Reset");
   reset_->setObjectName("reset");
+  fromFrame_ = new QPushButton("From frame...");
+  fromFrame_->setObjectName("fromFrame");
+  fromFrame_->setToolTip(
+      "Reset, then start from the positions and velocities of a frame of this level "
+      "(.vtu from Export, Record or tetskin simulate)");
   record_ = new QPushButton("Record");
   record_->setObjectName("record");
   record_->setCheckable(true);
-  for (QPushButton* b : {play_, step_, reset_, record_}) buttons->addWidget(b);
+  for (QPushButton* b : {play_, step_, reset_, fromFrame_, record_}) buttons->addWidget(b);
   layout->addLayout(buttons);
   connect(play_, &QPushButton::toggled, this, [this](bool on) {
     if (!runner_) return;
@@ -283,6 +288,12 @@ QWidget* MainWindow::buildSimulationDock() {
     showLatestState();
   });
   connect(reset_, &QPushButton::clicked, this, [this] { resetSimulation(); });
+  connect(fromFrame_, &QPushButton::clicked, this, [this] {
+    const QString file = interactive_ ? QFileDialog::getOpenFileName(this, "Start from frame", {},
+                                                                     "Simulation frames (*.vtu)")
+                                      : "";
+    if (!file.isEmpty()) startFromFrame(file);
+  });
   connect(record_, &QPushButton::toggled, this, [this](bool on) {
     if (!on) {
       stopRecording();
@@ -333,7 +344,7 @@ void MainWindow::buildMenus() {
       [this] {
         const QStringList files = QFileDialog::getOpenFileNames(
             this, "Open", {},
-            "TetSkin files (*.json *.node *.ele *.obj *.ply *.stl *.vtp);;All files (*)");
+            "TetSkin files (*.json *.node *.ele *.obj *.ply *.stl *.vtp *.vtu);;All files (*)");
         openFiles(files);
       },
       QKeySequence::Open);
@@ -398,9 +409,11 @@ bool MainWindow::openFile(const QString& qpath) {
       poisson_->setValue(material.poissonRatio);
     } else if (ext == ".vtp" || ext == ".obj" || ext == ".ply" || ext == ".stl") {
       scene_->openSurface(path);
+    } else if (ext == ".vtu") {
+      return startFromFrame(qpath);  // a state of the open dataset, not a scene to load
     } else {
       throw Error(path.string(), 0,
-                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp)");
+                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp .vtu)");
     }
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
@@ -481,6 +494,7 @@ FurParameters MainWindow::furFromControls() const {
 }
 
 void MainWindow::resetSimulation() {
+  stopRecording();  // the new run's time starts again at 0
   runner_.reset();
   shownSteps_ = -1;
   if (play_) {
@@ -514,6 +528,34 @@ void MainWindow::resetSimulation() {
   if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
     statusBar()->showMessage("warning: " + QString::fromStdString(warning));
   showLatestState();
+}
+
+bool MainWindow::startFromFrame(const QString& qpath) {
+  if (!runner_) {
+    fail("open a dataset before starting from a frame");
+    return false;
+  }
+  FrameState start;
+  try {
+    start = readSimulationFrame(qpath.toStdString(), runner_->simulation().restMesh(),
+                                "level " + std::to_string(scene_->level()) + " of " +
+                                    scene_->datasetPath().filename().string());
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  resetSimulation();
+  if (!runner_) return false;  // the dock's settings were refused (reported)
+  runner_->simulation().setPositions(start.positions);
+  runner_->simulation().setVelocities(start.velocities);
+  lastError_.clear();
+  rememberRecent(QFileInfo(qpath).absoluteFilePath());
+  showLatestState();
+  QString message = "started from " + qpath;
+  if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
+    message += "; warning: " + QString::fromStdString(warning);
+  statusBar()->showMessage(message);
+  return true;
 }
 
 void MainWindow::showLatestState() {
@@ -785,10 +827,10 @@ bool MainWindow::startRecording(const QString& pvd) {
 }
 
 void MainWindow::stopRecording() {
-  if (recorder_)
-    statusBar()->showMessage(QString("recorded %1 frames to %2")
-                                 .arg(recorder_->frames())
-                                 .arg(QString::fromStdString(recorder_->path().string())));
+  if (!recorder_) return;
+  statusBar()->showMessage(QString("recorded %1 frames to %2")
+                               .arg(recorder_->frames())
+                               .arg(QString::fromStdString(recorder_->path().string())));
   recorder_.reset();
   const QSignalBlocker block(record_);
   record_->setChecked(false);

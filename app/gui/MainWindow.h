@@ -51,7 +51,8 @@ class MainWindow : public QMainWindow {
   BuildDialog* buildDialog();
 
   // By extension: .json/.node/.ele dataset, .obj/.ply/.stl surface, .vtp
-  // binding (with ControlIds) or surface. False on error (see lastError()).
+  // binding (with ControlIds) or surface, .vtu simulation frame to start
+  // from (startFromFrame). False on error (see lastError()).
   bool openFile(const QString& path);
   bool openFiles(const QStringList& paths);
   QString lastError() const { return lastError_; }
@@ -73,7 +74,14 @@ class MainWindow : public QMainWindow {
   // Click (pick) and pull, in VTK display coordinates.
   std::optional<Index> clickAt(int x, int y);
   QString vertexInfoText() const;
+  // Ends a recording (a series holds one run) and starts the simulation
+  // again from the dock's settings.
   void resetSimulation();
+  // Resets, then starts from the positions and velocities of a frame of the
+  // simulated level (.vtu from Export, Record or `tetskin simulate`), as
+  // `simulate --initial` does; a frame of another level or body is refused
+  // with its file and changes nothing.
+  bool startFromFrame(const QString& vtu);
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
   // The FPS and timing overlay (off for reproducible screenshots).
@@ -128,7 +136,7 @@ class MainWindow : public QMainWindow {
   QLabel *vertexInfo_, *comparison_;
   QSpinBox* rebindLevel_;
   // Simulation.
-  QPushButton *play_, *step_, *reset_, *record_;
+  QPushButton *play_, *step_, *reset_, *fromFrame_, *record_;
   ScenarioRows* scenarioRows_;
   QDoubleSpinBox *timeStep_, *young_, *poisson_;
   QComboBox* solver_;

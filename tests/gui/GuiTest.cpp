@@ -36,6 +36,8 @@
 #include "MainWindow.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::gui {
@@ -462,6 +464,69 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   EXPECT_EQ(window_->scene().binding().controlIds, back.binding.controlIds);
   EXPECT_EQ(window_->scene().level(), back.binding.level);
   EXPECT_TRUE(window_->scene().surface().positions.isApprox(back.surface.positions));
+}
+
+// From frame... (and File > Open of a .vtu) starts the simulation again from
+// an exported frame's positions and velocities; a frame of another level is
+// refused naming its file and leaves the running simulation as it was; Reset
+// ends a recording, whose series keeps the frames so far.
+TEST_F(Gui, StartsFromAFrameAndResetEndsARecording) {
+  const std::filesystem::path frame = scratch("start.vtu");
+  EXPECT_FALSE(window_->startFromFrame(QString::fromStdString(frame.string())));
+  EXPECT_NE(window_->lastError().indexOf("open a dataset"), -1);
+  openSample();
+  for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(frame.string())));
+  const SimulationState exported = window_->runner()->state();
+  EXPECT_GT(exported.velocities.norm(), 0.0);
+  for (int i = 0; i < 2; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const auto startsFromTheFrame = [&](const char* how) {
+    const SimulationState s = window_->runner()->state();
+    EXPECT_EQ(s.steps, 0) << how;
+    EXPECT_EQ(s.time, 0.0) << how;
+    EXPECT_LE((s.positions - exported.positions).cwiseAbs().maxCoeff(), 1e-12) << how;
+    EXPECT_LE((s.velocities - exported.velocities).cwiseAbs().maxCoeff(), 1e-12) << how;
+    const LevelRange& range = window_->scene().dataset().mesh.levels[2];  // the simulated level
+    EXPECT_LE((window_->scene().controlNodes().middleRows(range.firstNode, range.nodeCount) -
+               exported.positions)
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-12)
+        << how;  // and the view shows it
+  };
+  ASSERT_TRUE(window_->startFromFrame(QString::fromStdString(frame.string())))
+      << window_->lastError().toStdString();
+  startsFromTheFrame("startFromFrame");
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->steps(), 1);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(frame.string())))
+      << window_->lastError().toStdString();
+  startsFromTheFrame("File > Open");
+
+  // A frame of level 0 while level 2 is simulated.
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const Points3 before = window_->runner()->state().positions;
+  const TetMesh coarse = extractLevel(window_->scene().dataset().mesh, 0);
+  const Points3 zero = Points3::Zero(coarse.nodeCount(), 3);
+  const std::filesystem::path other = scratch("level0.vtu");
+  writeVtu(other, simulationFrame(coarse, coarse.nodes, zero, zero,
+                                  Eigen::VectorXd::Zero(coarse.elementCount()), 0));
+  EXPECT_FALSE(window_->startFromFrame(QString::fromStdString(other.string())));
+  EXPECT_NE(window_->lastError().indexOf("level0.vtu: has 224 points and 598 tetrahedra"), -1)
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->steps(), 1);
+  EXPECT_EQ(window_->runner()->state().positions, before);
+
+  const std::filesystem::path pvd = scratch("reset_run.pvd");
+  std::filesystem::remove_all(scratch("reset_run_frames"));
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->recordedFrames(), 2);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(window_->recordedFrames(), 0);
+  EXPECT_FALSE(child<QPushButton>("record")->isChecked());
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(PvdSeries::read(pvd).size(), 4u);  // two frames, control mesh and surface each
 }
 
 // Opening a binding of another level moves the control mesh to that level,

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -55,6 +56,24 @@ TEST(VtkConversion, VectorRowsAreTheArraysOwnBuffer) {
   pairs->SetNumberOfTuples(3);
   EXPECT_THROW(vectorRows(pairs), Error);
   EXPECT_THROW(vectorRows(nullptr), Error);
+}
+
+// Arrays read from files come in any value type (ParaView writes float).
+TEST(VtkConversion, VectorsOfAnyValueTypeCopyToRows) {
+  vtkNew<vtkFloatArray> floats;
+  floats->SetNumberOfComponents(3);
+  floats->SetNumberOfTuples(2);
+  for (int i = 0; i < 6; ++i) floats->SetValue(i, 0.5f * static_cast<float>(i));
+  const std::optional<Points3> rows = fromVtkVectors(floats);
+  ASSERT_TRUE(rows.has_value());
+  EXPECT_EQ(*rows, (Points3(2, 3) << 0, 0.5, 1, 1.5, 2, 2.5).finished());
+  floats->SetValue(0, 9.0f);
+  EXPECT_EQ((*rows)(0, 0), 0.0);  // a copy
+  vtkNew<vtkFloatArray> pairs;
+  pairs->SetNumberOfComponents(2);
+  pairs->SetNumberOfTuples(3);
+  EXPECT_FALSE(fromVtkVectors(pairs).has_value());
+  EXPECT_FALSE(fromVtkVectors(nullptr).has_value());
 }
 
 TEST(VtkConversion, QuadsAreTriangulated) {

@@ -49,12 +49,10 @@ tetskin::Points3 restPositions(vtkPointSet* control, vtkPointSet* rest,
     throw Error(kControl, 0,
                 "the displacement offset needs the control mesh at rest: connect it to input 2, "
                 "or give input 1 a point array 'Displacement'");
-  if (d->GetNumberOfComponents() != 3 || d->GetNumberOfTuples() != deformed.rows())
+  const std::optional<tetskin::Points3> displacement = tetskin::fromVtkVectors(d);
+  if (!displacement || displacement->rows() != deformed.rows())
     throw Error(kControl, 0, "point array 'Displacement' is not one 3-vector per point");
-  tetskin::Points3 points = deformed;
-  for (tetskin::Index i = 0; i < points.rows(); ++i)
-    for (int k = 0; k < 3; ++k) points(i, k) -= d->GetComponent(i, k);
-  return points;
+  return deformed - *displacement;
 }
 
 // Whether the displacement offset's shifts made from `kept` serve `rest`:

@@ -24,10 +24,8 @@ std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& 
 }
 
 RunRecorder::RunRecorder(std::filesystem::path pvd)
-    : directory_(std::filesystem::absolute(withPvdExtension(pvd)).parent_path()),
-      framesName_(framesDirectory(pvd).filename().string()),
-      series_(withPvdExtension(pvd)) {
-  std::filesystem::create_directories(directory_ / framesName_);
+    : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)) {
+  std::filesystem::create_directories(framesDirectory_);
 }
 
 void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& positions,
@@ -36,13 +34,15 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& posi
                            const BoundSurface* deformedSurface) {
   char name[64];
   std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
-  writeVtu(directory_ / framesName_ / name,
+  // The series names its files relative to the .pvd, which lies beside the folder.
+  const std::string folder = framesDirectory_.filename().string() + "/";
+  writeVtu(framesDirectory_ / name,
            simulationFrame(rest, positions, velocities, externalForces, vonMisesStress, level));
-  series_.add(time, 0, framesName_ + "/" + name);
+  series_.add(time, 0, folder + name);
   if (deformedSurface) {
     std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));
-    writeBinding(directory_ / framesName_ / name, *deformedSurface);
-    series_.add(time, 1, framesName_ + "/" + name);
+    writeBinding(framesDirectory_ / name, *deformedSurface);
+    series_.add(time, 1, folder + name);
   }
   series_.write();
   ++frames_;

@@ -2,7 +2,6 @@
 #include "tetskin/vtkio/SimulationFrame.h"
 
 #include <vtkCellData.h>
-#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
@@ -20,18 +19,15 @@ namespace {
 
 // Point array `name` of `grid` as rows, each checked to be finite.
 Points3 pointVectors(vtkUnstructuredGrid* grid, const char* name, const std::string& source) {
-  vtkDataArray* a = grid->GetPointData()->GetArray(name);
-  if (!a || a->GetNumberOfComponents() != 3 || a->GetNumberOfTuples() != grid->GetNumberOfPoints())
+  std::optional<Points3> out = fromVtkVectors(grid->GetPointData()->GetArray(name));
+  if (!out || out->rows() != grid->GetNumberOfPoints())
     throw Error(source, 0,
                 std::string("is not a simulation frame: point array '") + name +
                     "' is missing or not one 3-vector per point");
-  Points3 out(a->GetNumberOfTuples(), 3);
-  for (Index i = 0; i < out.rows(); ++i) {
-    for (int k = 0; k < 3; ++k) out(i, k) = a->GetComponent(i, k);
-    if (const std::string problem = coordinateProblem(out.row(i)); !problem.empty())
+  for (Index i = 0; i < out->rows(); ++i)
+    if (const std::string problem = coordinateProblem(out->row(i)); !problem.empty())
       throw Error(source, 0, std::string(name) + " of point " + std::to_string(i) + " " + problem);
-  }
-  return out;
+  return *out;
 }
 
 }  // namespace

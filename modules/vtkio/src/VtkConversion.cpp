@@ -3,6 +3,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellTypes.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
@@ -61,6 +62,14 @@ Eigen::Map<Points3> vectorRows(vtkDoubleArray* array) {
   return Eigen::Map<Points3>(array->GetPointer(0), array->GetNumberOfTuples(), 3);
 }
 
+std::optional<Points3> fromVtkVectors(vtkDataArray* array) {
+  if (!array || array->GetNumberOfComponents() != 3) return std::nullopt;
+  Points3 out(array->GetNumberOfTuples(), 3);
+  for (Index i = 0; i < out.rows(); ++i)
+    for (int k = 0; k < 3; ++k) out(i, k) = array->GetComponent(i, k);
+  return out;
+}
+
 Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName) {
   const Index n = points ? points->GetNumberOfPoints() : 0;
   Points3 out(n, 3);
@@ -116,11 +125,8 @@ SurfaceMesh fromVtkPolyData(vtkPolyData* polyData, const std::string& sourceName
     for (int k = 0; k < 3; ++k) mesh.triangles(t, k) = static_cast<int>(ids[k]);
   }
   vtkPointData* pd = triangulated->GetPointData();
-  if (vtkDataArray* normals = pd->GetNormals(); normals && normals->GetNumberOfComponents() == 3) {
-    mesh.normals.resize(normals->GetNumberOfTuples(), 3);
-    for (Index i = 0; i < mesh.normals.rows(); ++i)
-      for (int k = 0; k < 3; ++k) mesh.normals(i, k) = normals->GetComponent(i, k);
-  }
+  if (std::optional<Points3> normals = fromVtkVectors(pd->GetNormals()))
+    mesh.normals = std::move(*normals);
   if (vtkDataArray* tc = pd->GetTCoords(); tc && tc->GetNumberOfComponents() >= 2) {
     mesh.texcoords.resize(tc->GetNumberOfTuples(), 2);
     for (Index i = 0; i < mesh.texcoords.rows(); ++i)

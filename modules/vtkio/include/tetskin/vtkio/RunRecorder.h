@@ -29,8 +29,7 @@ class RunRecorder {
                 const BoundSurface* deformedSurface = nullptr);
 
  private:
-  std::filesystem::path directory_;
-  std::string framesName_;
+  std::filesystem::path framesDirectory_;  // absolute
   PvdSeries series_;
   Index frames_ = 0;
 };

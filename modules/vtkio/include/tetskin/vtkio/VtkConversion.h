@@ -5,11 +5,13 @@
 
 #include <vtkSmartPointer.h>
 
+#include <optional>
 #include <string>
 
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
+class vtkDataArray;
 class vtkDoubleArray;
 class vtkPoints;
 class vtkPolyData;
@@ -29,6 +31,10 @@ vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& va
 // rows, one per tuple, for a kernel to write in place (Points3Ref). Throws
 // Error for a null array or another component count.
 Eigen::Map<Points3> vectorRows(vtkDoubleArray* array);
+// A copy of a 3-component array of any value type as rows, one per tuple
+// (a Displacement or Velocity array read from a file); nullopt for a null
+// array or another component count, which each caller reports in its words.
+std::optional<Points3> fromVtkVectors(vtkDataArray* array);
 
 // Triangles as polys; normals become the active point normals ("Normals"),
 // texture coordinates the active TCoords ("TCoords").
