@@ -8,6 +8,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -27,7 +28,7 @@ Points3 pointVectors(vtkUnstructuredGrid* grid, const char* name, const std::str
   for (Index i = 0; i < out->rows(); ++i)
     if (const std::string problem = coordinateProblem(out->row(i)); !problem.empty())
       throw Error(source, 0, std::string(name) + " of point " + std::to_string(i) + " " + problem);
-  return *out;
+  return std::move(*out);
 }
 
 }  // namespace
