@@ -844,9 +844,13 @@ void MainWindow::dropEvent(QDropEvent* event) {
   QStringList files;
   for (const QUrl& url : event->mimeData()->urls())
     if (url.isLocalFile()) files << url.toLocalFile();
-  // A dataset first, so that surfaces dropped with it bind to it.
+  // A dataset first, so that surfaces dropped with it bind to it; frames
+  // last, as opening anything else starts the simulation again.
   std::stable_sort(files.begin(), files.end(), [](const QString& a, const QString& b) {
-    const auto rank = [](const QString& f) { return isDatasetFile(f.toStdString()) ? 0 : 1; };
+    const auto rank = [](const QString& f) {
+      const std::filesystem::path path = f.toStdString();
+      return isDatasetFile(path) ? 0 : lowerExtension(path) == ".vtu" ? 2 : 1;
+    };
     return rank(a) < rank(b);
   });
   openFiles(files);

@@ -695,18 +695,34 @@ TEST_F(Gui, AFailedRedrawKeepsTheSurfaceItHad) {
   EXPECT_LT(changeFrom(drawn), 0.001);
 }
 
-TEST_F(Gui, DroppedFilesOpenDatasetFirst) {
-  QMimeData mime;
-  mime.setUrls(
-      {QUrl::fromLocalFile(kData + "bunny_8k.obj"), QUrl::fromLocalFile(kData + "bunny.json")});
-  QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-  QApplication::sendEvent(window_.get(), &enter);
-  EXPECT_TRUE(enter.isAccepted());
-  QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-  QApplication::sendEvent(window_.get(), &drop);
+// A dataset opens first, so that surfaces dropped with it bind to it; a
+// frame opens last, so that a surface opened after it does not start the
+// simulation again.
+TEST_F(Gui, DroppedFilesOpenDatasetFirstAndFramesLast) {
+  const auto drop = [&](const QList<QUrl>& urls) {
+    QMimeData mime;
+    mime.setUrls(urls);
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    EXPECT_TRUE(enter.isAccepted());
+    QDropEvent event(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &event);
+  };
+  drop({QUrl::fromLocalFile(kData + "bunny_8k.obj"), QUrl::fromLocalFile(kData + "bunny.json")});
   ASSERT_TRUE(window_->scene().hasSurface())
       << window_->lastError().toStdString() << " / " << window_->windowTitle().toStdString();
   EXPECT_EQ(window_->scene().surface().triangleCount(), 7998);
+
+  for (int i = 0; i < 2; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const std::filesystem::path frame = scratch("dropped.vtu");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(frame.string())));
+  const Points3 exported = window_->runner()->state().positions;
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  drop({QUrl::fromLocalFile(QString::fromStdString(frame.string())),
+        QUrl::fromLocalFile(kData + "bunny.obj")});
+  EXPECT_EQ(window_->scene().surface().vertexCount(), 1839) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  EXPECT_EQ(window_->runner()->state().positions, exported);
 }
 
 TEST_F(Gui, BuildDialogBuildsADatasetAndCancels) {
