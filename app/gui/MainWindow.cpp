@@ -60,6 +60,11 @@ QComboBox* combo(const char* name, const QStringList& items) {
   return c;
 }
 
+// A simulation frame to start from (startFromFrame), not a scene to open.
+bool isFrameFile(const std::filesystem::path& path) {
+  return lowerExtension(path) == ".vtu";
+}
+
 }  // namespace
 
 MainWindow::MainWindow(bool interactive, QWidget* parent)
@@ -409,7 +414,7 @@ bool MainWindow::openFile(const QString& qpath) {
       poisson_->setValue(material.poissonRatio);
     } else if (ext == ".vtp" || ext == ".obj" || ext == ".ply" || ext == ".stl") {
       scene_->openSurface(path);
-    } else if (ext == ".vtu") {
+    } else if (isFrameFile(path)) {
       return startFromFrame(qpath);  // a state of the open dataset, not a scene to load
     } else {
       throw Error(path.string(), 0,
@@ -849,7 +854,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
   std::stable_sort(files.begin(), files.end(), [](const QString& a, const QString& b) {
     const auto rank = [](const QString& f) {
       const std::filesystem::path path = f.toStdString();
-      return isDatasetFile(path) ? 0 : lowerExtension(path) == ".vtu" ? 2 : 1;
+      return isDatasetFile(path) ? 0 : isFrameFile(path) ? 2 : 1;
     };
     return rank(a) < rank(b);
   });
