@@ -126,7 +126,13 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   for (int i = 0; i < a.steps; ++i) {
     scenario->beforeStep(sim, sim.time());
     const auto start = std::chrono::steady_clock::now();
-    const StepStats stats = sim.step();
+    StepStats stats;
+    try {
+      stats = sim.step();
+    } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
+      throw Error(std::string(e.what()) + "; " + recorder.path().string() + " keeps the " +
+                  std::to_string(recorder.frames()) + " frame(s) written before it");
+    }
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     iterations += stats.iterations;
     multigridSteps += stats.solver == SolverKind::Multigrid;

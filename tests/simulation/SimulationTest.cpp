@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <regex>
 #include <string>
 #include <thread>
 #include <utility>
@@ -626,6 +627,64 @@ TEST(Simulation, TimeAndStepsAreTheStates) {
     sim.step();
   }
   EXPECT_DOUBLE_EQ(sim.time(), 3 * sim.options().timeStep);
+}
+
+// A step that blows up is an error naming the step and, where a node went
+// beyond 1e30 (here under a load of 1e40 N), a node of the level; the state
+// stays the last good one. Positions that far out would make frames no
+// reader takes (they refuse coordinates beyond 1e30), and NaN would
+// follow; a load of 1e300 N overflows the solve itself. Two separate
+// tetrahedra, the second loaded: only its nodes (4..7) blow up.
+TEST(Simulation, ABlownUpStepIsAnErrorAndKeepsTheLastState) {
+  const TetMesh one = test::unitTetrahedron();
+  TetMesh two;
+  two.nodes.resize(8, 3);
+  two.nodes << one.nodes, one.nodes.rowwise() + Eigen::RowVector3d(5, 0, 0);
+  two.elements.resize(2, 4);
+  two.elements << one.elements, one.elements.array() + 4;
+  SimulationOptions options;
+  options.solver = SolverKind::ConjugateGradient;
+  Simulation sim(oneLevel(two), 0, options);
+  sim.step();
+  const SimulationState before = sim.state();
+  auto stepUnder = [&](double load) {
+    Points3 loads = Points3::Zero(8, 3);
+    loads(6, 0) = load;
+    sim.setExternalForces(loads);
+    try {
+      sim.step();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string prefix = "the simulation diverged in step 2 \\(t = 0\\.0333333 s\\): ";
+  const std::string advice =
+      "; smaller loads or time steps, or a stiffer material, may keep it stable";
+  std::string message = stepUnder(1e40);
+  std::smatch node;
+  EXPECT_TRUE(std::regex_match(message, node,
+                               std::regex(prefix +
+                                          "node ([0-9]+) would get a (position|velocity) "
+                                          "component of [0-9.e+]+ m(/s)?, beyond 1e\\+30 m(/s)?" +
+                                          advice)))
+      << message;
+  if (!node.empty()) {
+    EXPECT_GE(std::stoi(node[1]), 4) << message;
+  }
+  message = stepUnder(1e300);
+  EXPECT_TRUE(std::regex_match(
+      message, std::regex(prefix + "the solver's velocity update is not finite" + advice)))
+      << message;
+  const SimulationState after = sim.state();
+  EXPECT_EQ(after.steps, 1);
+  EXPECT_EQ(after.time, before.time);
+  EXPECT_EQ(after.positions, before.positions);
+  EXPECT_EQ(after.velocities, before.velocities);
+  // Without the load it goes on.
+  EXPECT_EQ(stepUnder(0), "no error");
+  EXPECT_EQ(sim.steps(), 2);
+  EXPECT_TRUE(sim.state().positions.allFinite());
 }
 
 // A state set from outside (the GUI's pull, a restart) has one row per

@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <tuple>
 
 #include "DirichletRows.h"
 #include "NodeOrder.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/simulation/Prolongation.h"
 
 namespace tetskin {
@@ -45,6 +48,35 @@ struct Simulation::CoarseLevel {
 };
 
 namespace {
+
+// What is wrong with the first node (in `x`'s order) whose new position or
+// velocity is not finite or lies beyond kMaxCoordinate, named by its
+// number in the level (`outsideNode`): "node 12 would get ..."; empty when
+// every node is fine. Beyond that
+// bound the readers refuse a frame (and energies overflow), so a state
+// there is a blown-up step, not one to write. (One vectorized pass over
+// both vectors when all is well; NaN fails the comparison.)
+std::string firstBlownUpNode(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                             const std::vector<int>& outsideNode) {
+  auto within = [](const Eigen::VectorXd& values) {
+    return (values.array().abs() <= kMaxCoordinate).all();
+  };
+  if (within(x) && within(v)) return {};
+  for (Index node = 0; node < x.size() / 3; ++node) {
+    for (const auto& [values, what, unit] :
+         {std::tuple{&x, "position", " m"}, std::tuple{&v, "velocity", " m/s"}}) {
+      const Eigen::Vector3d value = values->segment<3>(3 * node);
+      if (within(value)) continue;
+      const std::string name =
+          "node " + std::to_string(outsideNode[static_cast<std::size_t>(node)]);
+      if (!value.allFinite()) return name + " would get a non-finite " + what;
+      return name + " would get a " + what + " component of " +
+             formatNumber(value.cwiseAbs().maxCoeff()) + unit + ", beyond " +
+             formatNumber(kMaxCoordinate) + unit;
+    }
+  }
+  return {};
+}
 
 // The automatic solver's rounds: trial steps of each solver (at least a
 // full coarse-reuse period of multigrid steps, so its trials carry their
@@ -415,8 +447,6 @@ StepStats Simulation::step() {
   if (choice_) choice_->record(stats.setupSeconds + stats.solveSeconds);
   stats.iterations = solve.iterations;
   stats.residual = solve.relativeResidual;
-  if (!dv_.allFinite()) throw Error("the simulation diverged (non-finite velocity update)");
-  guess_.remember(dv_);
   Eigen::VectorXd v = v_ + dv_;
   Eigen::VectorXd x = x_ + h * v;
   for (std::size_t i = 0; i < kinematicNodes_.size(); ++i)  // exact, free of round-off
@@ -430,6 +460,16 @@ StepStats Simulation::step() {
       v[3 * node + 2] *= 1 - options_.friction;
     }
   }
+  // The state stays the last one that was fine. (A solve that overflowed
+  // spreads NaN over every node through CG's dot products: no node to name.)
+  const std::string problem = dv_.allFinite()
+                                  ? firstBlownUpNode(x, v, order_)
+                                  : std::string("the solver's velocity update is not finite");
+  if (!problem.empty())
+    throw Error("the simulation diverged in step " + std::to_string(steps_ + 1) +
+                " (t = " + formatNumber(time_ + h) + " s): " + problem +
+                "; smaller loads or time steps, or a stiffer material, may keep it stable");
+  guess_.remember(dv_);
   std::lock_guard lock(mutex_);
   x_ = std::move(x);
   v_ = std::move(v);

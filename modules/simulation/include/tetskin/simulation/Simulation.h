@@ -124,6 +124,9 @@ class Simulation {
   void setPositions(const Points3& positions);
   void setVelocities(const Points3& velocities);
 
+  // Throws Error when the step blows up (a node's new position or velocity
+  // not finite or beyond kMaxCoordinate, Geometry.h), naming the step and
+  // the node; the state is then left as it was.
   StepStats step();
   SimulationState state() const;
   // The state's time and step count alone (state() converts every node's
