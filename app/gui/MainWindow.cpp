@@ -291,6 +291,7 @@ QWidget* MainWindow::buildSimulationDock() {
     play_->setChecked(false);
     runner_->step();
     showLatestState();
+    reportSimulationFailure();
   });
   connect(reset_, &QPushButton::clicked, this, [this] { resetSimulation(); });
   connect(fromFrame_, &QPushButton::clicked, this, [this] {
@@ -502,11 +503,7 @@ void MainWindow::resetSimulation() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
   shownSteps_ = -1;
-  if (play_) {
-    const QSignalBlocker block(play_);
-    play_->setChecked(false);
-    play_->setText("Play");
-  }
+  showPlaying(false);
   if (!scene_->hasDataset()) return;
   const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
   const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_->level())];
@@ -582,8 +579,24 @@ void MainWindow::showLatestState() {
   renderNow();
 }
 
+void MainWindow::showPlaying(bool playing) {
+  if (!play_) return;
+  const QSignalBlocker block(play_);  // the caller plays or pauses the runner
+  play_->setChecked(playing);
+  play_->setText(playing ? "Pause" : "Play");
+}
+
+void MainWindow::reportSimulationFailure() {
+  if (!runner_) return;
+  const std::optional<std::string> failure = runner_->takeFailure();
+  if (!failure) return;
+  showPlaying(false);  // the runner paused itself
+  fail("the simulation paused: " + QString::fromStdString(*failure) + " (Reset starts it again)");
+}
+
 void MainWindow::tick() {
   if (runner_ && runner_->steps() != shownSteps_) showLatestState();
+  reportSimulationFailure();
   if (std::chrono::steady_clock::now() - overlayStart_ > std::chrono::milliseconds(500))
     refreshOverlay();
 }
@@ -699,9 +712,7 @@ bool MainWindow::onMouseMove(vtkObject*, unsigned long, void*) {
   }
   runner_->pull(nodes, forces);
   if (!runner_->playing()) {
-    const QSignalBlocker block(play_);
-    play_->setChecked(true);
-    play_->setText("Pause");
+    showPlaying(true);
     runner_->play();
   }
   return true;

@@ -108,6 +108,11 @@ class MainWindow : public QMainWindow {
   bool onMouseMove(vtkObject*, unsigned long, void*);
   bool onLeftRelease(vtkObject*, unsigned long, void*);
   void tick();
+  // The Play button as playing or not, without telling the runner.
+  void showPlaying(bool playing);
+  // A step of the runner failed (it paused): the button follows, and the
+  // message is shown (lastError()).
+  void reportSimulationFailure();
 
   bool interactive_;
   bool overlayVisible_ = true;

@@ -2,6 +2,7 @@
 #include "SimulationRunner.h"
 
 #include <chrono>
+#include <utility>
 
 namespace tetskin::gui {
 
@@ -56,15 +57,27 @@ void SimulationRunner::release() {
 void SimulationRunner::stepOnce() {
   std::lock_guard<std::mutex> lock(stepMutex_);
   const auto start = std::chrono::steady_clock::now();
-  // The scenario's forces (set anew each step) plus the user's pull.
-  scenario_->beforeStep(*simulation_, simulation_->time());
-  {
-    std::lock_guard<std::mutex> pullLock(pullMutex_);
-    simulation_->setExternalForces(simulation_->externalForces() + pull_);
+  try {
+    // The scenario's forces (set anew each step) plus the user's pull.
+    scenario_->beforeStep(*simulation_, simulation_->time());
+    {
+      std::lock_guard<std::mutex> pullLock(pullMutex_);
+      simulation_->setExternalForces(simulation_->externalForces() + pull_);
+    }
+    simulation_->step();
+  } catch (const std::exception& e) {
+    playing_ = false;
+    std::lock_guard<std::mutex> failureLock(failureMutex_);
+    failure_ = e.what();
+    return;
   }
-  simulation_->step();
   lastStepSeconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::optional<std::string> SimulationRunner::takeFailure() {
+  std::lock_guard<std::mutex> lock(failureMutex_);
+  return std::exchange(failure_, std::nullopt);
 }
 
 void SimulationRunner::loop() {

@@ -4,12 +4,16 @@
 // drawing (the report expected this to raise the frame rate): play runs steps
 // paced to real time, pause stops after the current step, step() runs one.
 // The GUI thread reads the latest state and sets pulling forces at any time
-// (Simulation guards both with its mutex).
+// (Simulation guards both with its mutex). A step that fails (the
+// simulation diverged) pauses the runner, keeps the last good state and
+// leaves its message for takeFailure(): an exception must not leave the
+// thread, where it would end the program.
 
 #include <atomic>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -36,6 +40,9 @@ class SimulationRunner {
   SimulationState state() const { return simulation_->state(); }
   Simulation& simulation() { return *simulation_; }
   double lastStepSeconds() const { return lastStepSeconds_; }
+  // Why the last failed step failed (once; nullopt when none failed since
+  // the last call).
+  std::optional<std::string> takeFailure();
   // Pulls the level-local `nodes` with `forces` (rows) until released.
   void pull(const std::vector<int>& nodes, const Points3& forces);
   void release();
@@ -51,6 +58,8 @@ class SimulationRunner {
   std::atomic<bool> playing_{false}, quit_{false};
   std::atomic<double> lastStepSeconds_{0};
   std::mutex stepMutex_;  // one step at a time
+  std::mutex failureMutex_;
+  std::optional<std::string> failure_;  // guarded by failureMutex_
   std::mutex waitMutex_;
   std::condition_variable wake_;
   std::thread thread_;

@@ -256,6 +256,36 @@ TEST_F(Gui, StepPlayAndResetTheSimulation) {
   EXPECT_EQ((window_->scene().controlNodes() - rest).norm(), 0.0);
 }
 
+// A step that blows up (a load of 1e40 N) pauses the simulation with the
+// simulation's message, whether stepped or playing; the state stays the last
+// good one and the window goes on (the exception used to leave the
+// runner's thread and end the program). Reset with sane loads runs again.
+TEST_F(Gui, ABlownUpStepPausesTheSimulationWithItsMessage) {
+  openSample();
+  child<QLineEdit>("loads")->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/blowup_loads.txt");
+  child<QDoubleSpinBox>("baseShare")->setValue(0);  // node 10 is in the base
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const Points3 rest = window_->runner()->state().positions;
+  child<QPushButton>("step")->click();
+  EXPECT_TRUE(window_->lastError().startsWith(
+      "the simulation paused: the simulation diverged in step 1 (t = 0.0167 s): node "))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  EXPECT_EQ(window_->runner()->state().positions, rest);
+  QPushButton* play = child<QPushButton>("play");
+  QTest::mouseClick(play, Qt::LeftButton);
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !play->isChecked(); }, 20000));
+  EXPECT_EQ(play->text(), "Play");
+  EXPECT_FALSE(window_->runner()->playing());
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  EXPECT_EQ(window_->scene().controlNodes(), window_->scene().dataset().mesh.nodes);
+  child<QLineEdit>("loads")->clear();
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  child<QPushButton>("step")->click();
+  EXPECT_EQ(window_->runner()->steps(), 1);
+}
+
 // The Simulation dock starts from the dataset's elasticity section; the
 // simulation takes the config's density and damping with the dock's E and
 // nu; a surface opened afterwards leaves the dock as the user set it.
