@@ -6,6 +6,7 @@
 
 #include "Commands.h"
 #include "OptionChecks.h"
+#include "SurfaceInput.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/Error.h"
@@ -29,6 +30,7 @@ void run(const BindArgs& a) {
   const int level = resolveLevel(dataset.mesh, a.level);
   BoundSurface bound;
   bound.surface = readSurface(a.surface);
+  warnOfNormalGaps(a.surface, bound.surface);
   BindingOptions options;
   options.method = *parseBindingMethod(a.method);
   options.offset = *parseOffsetMode(a.offset);

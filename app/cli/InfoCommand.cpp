@@ -42,6 +42,8 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
               mesh.hasTexcoords() ? "yes" : "no");
   std::printf("  area       %g\n", surfaceArea(mesh));
   printBox(boundingBox(mesh));
+  if (const NormalGaps gaps = normalGaps(mesh); !gaps.empty())
+    std::printf("  warning: %s\n", describe(gaps).c_str());
 }
 
 // A .vtp from `tetskin bind`: the surface, what it is bound to, and the

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "SurfaceInput.h"
 
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -13,7 +14,13 @@ namespace tetskin::cli {
 
 SurfaceInput readSurfaceInput(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
   SurfaceOrBinding read = readSurfaceOrBinding(path, dataset);
+  warnOfNormalGaps(path, read.surface);
   return {path, std::move(read.surface), std::move(read.binding)};
+}
+
+void warnOfNormalGaps(const std::filesystem::path& path, const SurfaceMesh& surface) {
+  if (const NormalGaps gaps = normalGaps(surface); !gaps.empty())
+    std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), describe(gaps).c_str());
 }
 
 int commandLevel(const SurfaceInput& input, const MultiLevelTetMesh& dataset, int levelOption,

@@ -19,7 +19,13 @@ struct SurfaceInput {
   std::optional<SurfaceBinding> binding;  // from the file, checked against the dataset
 };
 
+// (Warns as warnOfNormalGaps does.)
 SurfaceInput readSurfaceInput(const std::filesystem::path& path, const MultiLevelTetMesh& dataset);
+
+// "warning: PATH: 1 triangle of zero area ..." on stderr where the surface
+// has vertices without a normal (NormalGaps): it binds all the same (a
+// binding needs positions only), but they are drawn unlit.
+void warnOfNormalGaps(const std::filesystem::path& path, const SurfaceMesh& surface);
 
 // The level the command works on: the binding's, if the input is one, else
 // --level's (`levelOption`, resolveLevel). Throws Error when --level was

@@ -42,6 +42,7 @@
 #include "BuildDialog.h"
 #include "HistogramWidget.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -449,7 +450,11 @@ void MainWindow::afterLoad(const QString& path) {
   setWindowTitle("TetSkin - " + QString::fromStdString(scene_->datasetPath().filename().string()));
   resetSimulation();
   refreshBindingPanel();
-  statusBar()->showMessage("opened " + path);
+  QString message = "opened " + path;
+  if (scene_->hasSurface())  // as bind warns: such vertices are drawn unlit
+    if (const NormalGaps gaps = normalGaps(scene_->surface()); !gaps.empty())
+      message += "; warning: the surface has " + QString::fromStdString(describe(gaps));
+  statusBar()->showMessage(message);
   renderNow();
 }
 

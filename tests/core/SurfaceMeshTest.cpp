@@ -21,6 +21,34 @@ TEST(SurfaceMesh, AreaOfUnitSquareIsOne) {
   EXPECT_NO_THROW(validateSurface(unitSquare(), "square"));
 }
 
+// The square has a normal at every vertex; a fifth vertex on the line of
+// two others, in a triangle of zero area only, and a sixth in no triangle
+// have none; so has a triangle whose corners repeat.
+TEST(SurfaceMesh, NormalGapsCountZeroAreaTrianglesAndVerticesWithoutANormal) {
+  EXPECT_TRUE(normalGaps(unitSquare()).empty());
+  EXPECT_EQ(describe(normalGaps(unitSquare())), "");
+  SurfaceMesh m = unitSquare();
+  m.positions.conservativeResize(6, 3);
+  m.positions.row(4) << 2, 0, 0;  // on the line through vertices 0 and 1
+  m.positions.row(5) << 0, 0, 5;  // in no triangle
+  m.triangles.conservativeResize(4, 3);
+  m.triangles.row(2) << 0, 1, 4;
+  m.triangles.row(3) << 2, 2, 3;
+  const NormalGaps gaps = normalGaps(m);
+  EXPECT_EQ(gaps.zeroAreaTriangles, 2);
+  EXPECT_EQ(gaps.firstZeroAreaTriangle, 2);
+  EXPECT_EQ(gaps.verticesWithoutNormal, 2);
+  EXPECT_EQ(gaps.firstVertexWithoutNormal, 4);
+  EXPECT_EQ(describe(gaps),
+            "2 triangles of zero area (first: triangle 2); 2 vertices without a normal, in no "
+            "triangle of positive area (first: vertex 4)");
+  m.triangles.conservativeResize(3, 3);
+  m.positions.conservativeResize(5, 3);
+  EXPECT_EQ(describe(normalGaps(m)),
+            "1 triangle of zero area (first: triangle 2); 1 vertex without a normal, in no "
+            "triangle of positive area (first: vertex 4)");
+}
+
 TEST(SurfaceMesh, IndexOutOfRangeNamesTheTriangle) {
   SurfaceMesh m = unitSquare();
   m.triangles(1, 2) = 4;

@@ -116,6 +116,20 @@ TEST_F(Gui, OpensTheSampleDatasetAndSurface) {
   EXPECT_EQ(child<QSpinBox>("controlLevel")->maximum(), 2);
 }
 
+// A surface with a vertex that has no normal opens, with the warning bind
+// gives; the sample's does not warn.
+TEST_F(Gui, ASurfaceWithoutNormalsSomewhereOpensWithAWarning) {
+  openSample();
+  EXPECT_FALSE(window_->statusBar()->currentMessage().contains("warning"))
+      << window_->statusBar()->currentMessage().toStdString();
+  ASSERT_TRUE(window_->openFile(QString(TETSKIN_SOURCE_DIR) + "/tests/data/zero_area_triangle.obj"))
+      << window_->lastError().toStdString();
+  EXPECT_TRUE(window_->statusBar()->currentMessage().endsWith(
+      "zero_area_triangle.obj; warning: the surface has 1 triangle of zero area (first: triangle "
+      "1); 1 vertex without a normal, in no triangle of positive area (first: vertex 3)"))
+      << window_->statusBar()->currentMessage().toStdString();
+}
+
 TEST_F(Gui, BadFilesNameFileAndLineAndChangeNothing) {
   openSample();
   const std::filesystem::path bad = scratch("bad.obj");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/SurfaceMesh.h"
 
+#include <vector>
+
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -42,6 +44,38 @@ double surfaceArea(const SurfaceMesh& mesh) {
                          mesh.positions.row(mesh.triangles(t, 2)).transpose());
   }
   return area;
+}
+
+NormalGaps normalGaps(const SurfaceMesh& mesh) {
+  NormalGaps gaps;
+  std::vector<char> hasNormal(static_cast<std::size_t>(mesh.vertexCount()), 0);
+  for (Index t = 0; t < mesh.triangleCount(); ++t) {
+    const auto corner = [&](int k) { return mesh.positions.row(mesh.triangles(t, k)).transpose(); };
+    if (triangleNormal(corner(0), corner(1), corner(2)).isZero(0)) {
+      if (gaps.zeroAreaTriangles++ == 0) gaps.firstZeroAreaTriangle = t;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) hasNormal[static_cast<std::size_t>(mesh.triangles(t, k))] = 1;
+  }
+  for (Index v = 0; v < mesh.vertexCount(); ++v)
+    if (!hasNormal[static_cast<std::size_t>(v)] && gaps.verticesWithoutNormal++ == 0)
+      gaps.firstVertexWithoutNormal = v;
+  return gaps;
+}
+
+std::string describe(const NormalGaps& gaps) {
+  auto count = [](Index n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  std::string text;
+  if (gaps.zeroAreaTriangles > 0)
+    text = count(gaps.zeroAreaTriangles, "triangle", "triangles") +
+           " of zero area (first: triangle " + std::to_string(gaps.firstZeroAreaTriangle) + ")";
+  if (gaps.verticesWithoutNormal > 0)
+    text += (text.empty() ? "" : "; ") + count(gaps.verticesWithoutNormal, "vertex", "vertices") +
+            " without a normal, in no triangle of positive area (first: vertex " +
+            std::to_string(gaps.firstVertexWithoutNormal) + ")";
+  return text;
 }
 
 }  // namespace tetskin

@@ -31,4 +31,21 @@ BoundingBox boundingBox(const SurfaceMesh& mesh);
 // Sum of the triangle areas.
 double surfaceArea(const SurfaceMesh& mesh);
 
+// Where a surface's smooth vertex normals (area-weighted sums of its
+// triangles' normals, as bind and the deformation compute them) are
+// missing: triangles of zero area (whose triangleNormal() is zero) and the
+// vertices that no triangle of positive area touches (unreferenced ones
+// included), whose normal is the zero vector: such a vertex is unlit when
+// drawn. The counts and the first of each (-1 where none).
+struct NormalGaps {
+  Index zeroAreaTriangles = 0, firstZeroAreaTriangle = -1;
+  Index verticesWithoutNormal = 0, firstVertexWithoutNormal = -1;
+  bool empty() const { return zeroAreaTriangles == 0 && verticesWithoutNormal == 0; }
+};
+NormalGaps normalGaps(const SurfaceMesh& mesh);
+// "1 triangle of zero area (first: triangle 3); 2 vertices without a
+// normal, in no triangle of positive area (first: vertex 7)", the parts
+// that apply (numbers from 0); empty when there are none.
+std::string describe(const NormalGaps& gaps);
+
 }  // namespace tetskin
