@@ -178,6 +178,11 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
   std::printf("wrote %s (%lld frames)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()));
+  if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
+    std::fprintf(stderr, "warning: %s%s\n", describe(shortfall, options).c_str(),
+                 options.solver == SolverKind::Multigrid
+                     ? ""
+                     : "; --solver multigrid needs far fewer iterations on stiff bodies");
 }
 
 }  // namespace

@@ -292,7 +292,7 @@ QWidget* MainWindow::buildSimulationDock() {
     play_->setChecked(false);
     runner_->step();
     showLatestState();
-    reportSimulationFailure();
+    reportSimulationProblems();
   });
   connect(reset_, &QPushButton::clicked, this, [this] { resetSimulation(); });
   connect(fromFrame_, &QPushButton::clicked, this, [this] {
@@ -508,6 +508,7 @@ void MainWindow::resetSimulation() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
   shownSteps_ = -1;
+  shownShortfallSteps_ = 0;
   showPlaying(false);
   if (!scene_->hasDataset()) return;
   const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
@@ -591,17 +592,29 @@ void MainWindow::showPlaying(bool playing) {
   play_->setText(playing ? "Pause" : "Play");
 }
 
-void MainWindow::reportSimulationFailure() {
+void MainWindow::reportSimulationProblems() {
   if (!runner_) return;
-  const std::optional<std::string> failure = runner_->takeFailure();
-  if (!failure) return;
-  showPlaying(false);  // the runner paused itself
-  fail("the simulation paused: " + QString::fromStdString(*failure) + " (Reset starts it again)");
+  if (const std::optional<std::string> failure = runner_->takeFailure()) {
+    showPlaying(false);  // the runner paused itself
+    fail("the simulation paused: " + QString::fromStdString(*failure) + " (Reset starts it again)");
+    return;
+  }
+  // Solves cut off at the iteration limit: in the status bar, as simulate
+  // warns, when their count grows.
+  Simulation& simulation = runner_->simulation();
+  const SolveShortfall shortfall = simulation.solveShortfall();
+  if (shortfall.steps == shownShortfallSteps_) return;
+  shownShortfallSteps_ = shortfall.steps;
+  statusBar()->showMessage(
+      "warning: " + QString::fromStdString(describe(shortfall, simulation.options())) +
+      (simulation.options().solver == SolverKind::Multigrid
+           ? ""
+           : "; the multigrid solver needs far fewer iterations on stiff bodies"));
 }
 
 void MainWindow::tick() {
   if (runner_ && runner_->steps() != shownSteps_) showLatestState();
-  reportSimulationFailure();
+  reportSimulationProblems();
   if (std::chrono::steady_clock::now() - overlayStart_ > std::chrono::milliseconds(500))
     refreshOverlay();
 }

@@ -111,8 +111,9 @@ class MainWindow : public QMainWindow {
   // The Play button as playing or not, without telling the runner.
   void showPlaying(bool playing);
   // A step of the runner failed (it paused): the button follows, and the
-  // message is shown (lastError()).
-  void reportSimulationFailure();
+  // message is shown (lastError()). Or more of its solves stopped at the
+  // iteration limit: a warning in the status bar.
+  void reportSimulationProblems();
 
   bool interactive_;
   bool overlayVisible_ = true;
@@ -148,6 +149,7 @@ class MainWindow : public QMainWindow {
   QComboBox* tangent_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
+  Index shownShortfallSteps_ = 0;  // solveShortfall().steps last reported
   int framesSinceOverlay_ = 0;
   std::chrono::steady_clock::time_point overlayStart_;
   double drawSeconds_ = 0;

@@ -300,6 +300,32 @@ TEST_F(Gui, ABlownUpStepPausesTheSimulationWithItsMessage) {
   EXPECT_EQ(window_->runner()->steps(), 1);
 }
 
+// A stiff, nearly incompressible body cuts CG's solves off at the
+// iteration limit: the status bar says so, as simulate warns; multigrid
+// converges there and nothing is said.
+TEST_F(Gui, SolvesStoppedAtTheIterationLimitAreWarnedOf) {
+  openSample();
+  child<QDoubleSpinBox>("young")->setValue(1e13);
+  child<QDoubleSpinBox>("poisson")->setValue(0.499);
+  child<QComboBox>("solver")->setCurrentText("cg");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  child<QPushButton>("step")->click();
+  EXPECT_TRUE(window_->statusBar()->currentMessage().startsWith(
+      "warning: 1 step stopped at the iteration limit (2000) with the relative residual above "
+      "the tolerance 1e-06 (at most "))
+      << window_->statusBar()->currentMessage().toStdString();
+  EXPECT_TRUE(window_->statusBar()->currentMessage().endsWith(
+      ", in step 1); the multigrid solver needs far fewer iterations on stiff bodies"))
+      << window_->statusBar()->currentMessage().toStdString();
+  child<QComboBox>("solver")->setCurrentText("multigrid");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  window_->statusBar()->clearMessage();
+  child<QPushButton>("step")->click();
+  EXPECT_EQ(window_->runner()->simulation().solveShortfall().steps, 0);
+  EXPECT_EQ(window_->statusBar()->currentMessage(), "");
+}
+
 // The Simulation dock starts from the dataset's elasticity section; the
 // simulation takes the config's density and damping with the dock's E and
 // nu; a surface opened afterwards leaves the dock as the user set it.

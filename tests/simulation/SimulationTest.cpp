@@ -687,6 +687,37 @@ TEST(Simulation, ABlownUpStepIsAnErrorAndKeepsTheLastState) {
   EXPECT_TRUE(sim.state().positions.allFinite());
 }
 
+// Solves cut off at the iteration limit above the tolerance are counted,
+// with the largest residual and its step; solves that converge are not.
+TEST(Simulation, SolvesStoppedAtTheIterationLimitAreCounted) {
+  const Dataset& d = sampleDataset();
+  SimulationOptions options;
+  Simulation converging(d.mesh, 0, options);
+  for (int i = 0; i < 3; ++i) converging.step();
+  EXPECT_EQ(converging.solveShortfall().steps, 0);
+  options.maxIterations = 2;
+  Simulation cut(d.mesh, 0, options);
+  double largest = 0;
+  Index largestAt = 0;
+  for (int i = 0; i < 3; ++i) {
+    const StepStats stats = cut.step();
+    EXPECT_EQ(stats.iterations, 2);
+    EXPECT_GT(stats.residual, options.tolerance);
+    if (stats.residual > largest) {
+      largest = stats.residual;
+      largestAt = i + 1;
+    }
+  }
+  const SolveShortfall shortfall = cut.solveShortfall();
+  EXPECT_EQ(shortfall.steps, 3);
+  EXPECT_EQ(shortfall.largestResidual, largest);
+  EXPECT_EQ(shortfall.largestAtStep, largestAt);
+  EXPECT_EQ(describe(shortfall, options),
+            "3 steps stopped at the iteration limit (2) with the relative residual above the "
+            "tolerance 1e-06 (at most " +
+                formatNumber(largest) + ", in step " + std::to_string(largestAt) + ")");
+}
+
 // A state set from outside (the GUI's pull, a restart) has one row per
 // node of the simulated level; any other count is refused with both counts.
 TEST(Simulation, StateSettersRefuseAnotherNumberOfRows) {

@@ -471,6 +471,13 @@ StepStats Simulation::step() {
                 "; smaller loads or time steps, or a stiffer material, may keep it stable");
   guess_.remember(dv_);
   std::lock_guard lock(mutex_);
+  if (solve.relativeResidual > options_.tolerance) {
+    ++shortfall_.steps;
+    if (!(solve.relativeResidual <= shortfall_.largestResidual)) {
+      shortfall_.largestResidual = solve.relativeResidual;
+      shortfall_.largestAtStep = steps_ + 1;
+    }
+  }
   x_ = std::move(x);
   v_ = std::move(v);
   appliedExternal_.swap(stepExternal_);
@@ -492,6 +499,19 @@ double Simulation::time() const {
 Index Simulation::steps() const {
   std::lock_guard lock(mutex_);
   return steps_;
+}
+
+SolveShortfall Simulation::solveShortfall() const {
+  std::lock_guard lock(mutex_);
+  return shortfall_;
+}
+
+std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options) {
+  return std::to_string(shortfall.steps) + (shortfall.steps == 1 ? " step" : " steps") +
+         " stopped at the iteration limit (" + std::to_string(options.maxIterations) +
+         ") with the relative residual above the tolerance " + formatNumber(options.tolerance) +
+         " (at most " + formatNumber(shortfall.largestResidual) + ", in step " +
+         std::to_string(shortfall.largestAtStep) + ")";
 }
 
 Energies Simulation::energies() const {

@@ -87,6 +87,18 @@ struct SimulationState {
   Index steps = 0;
 };
 
+// The steps whose linear solve stopped at maxIterations with the relative
+// residual still above the tolerance: each was taken all the same (with
+// the solver's last iterate), but less exactly than asked.
+struct SolveShortfall {
+  Index steps = 0;
+  double largestResidual = 0;
+  Index largestAtStep = 0;  // its step number, from 1
+};
+// "3 steps stopped at the iteration limit (2000) with the relative residual
+// above the tolerance 1e-06 (at most 0.0032, in step 2)".
+std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options);
+
 struct Energies {
   double kinetic = 0, elastic = 0, gravitational = 0;
   double total() const { return kinetic + elastic + gravitational; }
@@ -134,6 +146,8 @@ class Simulation {
   double time() const;
   Index steps() const;
   Energies energies() const;
+  // Since construction (steps that failed not counted).
+  SolveShortfall solveShortfall() const;
   // Per element von Mises stress at the current state.
   Eigen::VectorXd vonMisesStress() const;
 
@@ -156,12 +170,14 @@ class Simulation {
   std::optional<SolverChoice> choice_;                  // auto
   Index lastMultigridStep_ = -1;                        // steps_ of multigrid's last step
 
-  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_, appliedExternal_
+  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_, appliedExternal_,
+                              // shortfall_
   Eigen::VectorXd x_, v_, external_;
   Eigen::VectorXd stepExternal_;     // external_ as the step being taken reads it
   Eigen::VectorXd appliedExternal_;  // stepExternal_ of the last step taken
   double time_ = 0;
   Index steps_ = 0;
+  SolveShortfall shortfall_;  // guarded by mutex_
 
   std::vector<int> fixedNodes_;  // level numbering
   std::vector<char> fixedDofs_;
