@@ -52,10 +52,10 @@ namespace {
 // What is wrong with the first node (in `x`'s order) whose new position or
 // velocity is not finite or lies beyond kMaxCoordinate, named by its
 // number in the level (`outsideNode`): "node 12 would get ..."; empty when
-// every node is fine. Beyond that
-// bound the readers refuse a frame (and energies overflow), so a state
-// there is a blown-up step, not one to write. (One vectorized pass over
-// both vectors when all is well; NaN fails the comparison.)
+// every node is fine. Beyond that bound the readers refuse a frame (and
+// energies overflow), so a state there is a blown-up step, not one to
+// write. (One vectorized pass over both vectors when all is well; NaN
+// fails the comparison.)
 std::string firstBlownUpNode(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                              const std::vector<int>& outsideNode) {
   auto within = [](const Eigen::VectorXd& values) {
@@ -473,7 +473,7 @@ StepStats Simulation::step() {
   std::lock_guard lock(mutex_);
   if (solve.relativeResidual > options_.tolerance) {
     ++shortfall_.steps;
-    if (!(solve.relativeResidual <= shortfall_.largestResidual)) {
+    if (solve.relativeResidual > shortfall_.largestResidual) {
       shortfall_.largestResidual = solve.relativeResidual;
       shortfall_.largestAtStep = steps_ + 1;
     }
