@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The check every reader's bad-input tests make.
+// The checks of the errors bad input gets.
 
 #include <gtest/gtest.h>
 
@@ -24,6 +24,18 @@ void expectErrorAt(Action&& action, const std::string& file, long line, const st
     const std::string prefix = file + (line > 0 ? ":" + std::to_string(line) : "") + ": ";
     EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
   }
+}
+
+// The message (what()) of the tetskin::Error `action()` throws, or "no
+// error": for tests that compare whole messages, or run on after one.
+template <typename Action>
+std::string errorText(Action&& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace tetskin::test

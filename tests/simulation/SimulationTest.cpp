@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "ExpectError.h"
 #include "SampleData.h"
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
@@ -651,12 +652,7 @@ TEST(Simulation, ABlownUpStepIsAnErrorAndKeepsTheLastState) {
     Points3 loads = Points3::Zero(8, 3);
     loads(6, 0) = load;
     sim.setExternalForces(loads);
-    try {
-      sim.step();
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::errorText([&] { sim.step(); });
   };
   const std::string prefix = "the simulation diverged in step 2 \\(t = 0\\.0333333 s\\): ";
   const std::string advice =
@@ -727,17 +723,9 @@ TEST(Simulation, StateSettersRefuseAnotherNumberOfRows) {
   const Points3 wrong = Points3::Zero(n + 1, 3);
   const std::string counts =
       ": " + std::to_string(n + 1) + " rows for " + std::to_string(n) + " nodes";
-  auto message = [](auto&& set) {
-    try {
-      set();
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(message([&] { sim.setExternalForces(wrong); }), "external forces" + counts);
-  EXPECT_EQ(message([&] { sim.setPositions(wrong); }), "positions" + counts);
-  EXPECT_EQ(message([&] { sim.setVelocities(wrong); }), "velocities" + counts);
+  EXPECT_EQ(test::errorText([&] { sim.setExternalForces(wrong); }), "external forces" + counts);
+  EXPECT_EQ(test::errorText([&] { sim.setPositions(wrong); }), "positions" + counts);
+  EXPECT_EQ(test::errorText([&] { sim.setVelocities(wrong); }), "velocities" + counts);
   EXPECT_EQ(sim.state().positions, sim.restMesh().nodes);  // nothing was set
 }
 
