@@ -69,11 +69,11 @@ void run(BuildArgs& a) {
   saveDataset(json, result.dataset);
   progress.log("");
 
-  std::printf("%-5s %9s %8s  %-8s %-10s %8s %8s  %s\n", "level", "elements", "nodes", "mesher",
+  std::printf("%-5s %9s %8s  %-8s %-16s %8s %8s  %s\n", "level", "elements", "nodes", "mesher",
               "quality", "min dih", "max r/e", "input");
   for (std::size_t k = 0; k < result.chosen.size(); ++k) {
     const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
-    std::printf("%-5zu %9lld %8lld  %-8s %-10s %8.2f %8.3f  %s\n", k,
+    std::printf("%-5zu %9lld %8lld  %-8s %-16s %8.2f %8.3f  %s\n", k,
                 static_cast<long long>(c.elements), static_cast<long long>(c.nodes),
                 c.mesher.c_str(), c.label.c_str(), c.statistics.minDihedralDeg,
                 c.statistics.maxRadiusEdge, c.input.c_str());
@@ -120,6 +120,9 @@ void addBuildCommand(CLI::App& app) {
       ->check(wholeNumber(1));
   cmd->add_flag("--decimate", a->options.decimate,
                 "derive coarser input levels of detail from the finest surface");
+  cmd->add_flag("--size-to-targets", a->options.sizeToTargets,
+                "also mesh under element size bounds aimed at the level targets that no\n"
+                "quality meets (TetGen -a, Netgen maxh): for shapes such as boxes");
   cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")
       ->check(wholeNumber(1));
   cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")

@@ -20,6 +20,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -98,10 +99,14 @@ void printDataset(const std::filesystem::path& path) {
                   std::to_string(v.firstNonPositive) +
                   "); simulate refuses it (and multigrid on finer levels)\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
-    std::printf("  %-5d %8lld %9lld %12g %12g  %s %s %g\n", k,
+    std::string how = src.mesher;
+    if (src.mesher == "tetgen" || src.mesher == "netgen")
+      how += " " + meshingLabel(src.mesher == "tetgen" ? MesherKind::TetGen : MesherKind::Netgen,
+                                src.quality, src.sizeBound);
+    std::printf("  %-5d %8lld %9lld %12g %12g  %s %s\n", k,
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,
-                src.input.c_str(), src.mesher.c_str(), src.quality);
+                src.input.c_str(), how.c_str());
   }
   std::fputs(warnings.c_str(), stdout);
 }

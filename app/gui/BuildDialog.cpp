@@ -64,6 +64,12 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   form->addRow("TetGen qualities", qualities_);
   decimate_ = new QCheckBox("derive coarser inputs by decimation");
   form->addRow("", decimate_);
+  sizeToTargets_ = new QCheckBox("also mesh under size bounds aimed at the element targets");
+  sizeToTargets_->setObjectName("sizeToTargets");
+  sizeToTargets_->setToolTip(
+      "For each level target that no quality meets, mesh again under an element size bound "
+      "(TetGen -a, Netgen maxh): for shapes such as boxes, whose surface needs few elements");
+  form->addRow("", sizeToTargets_);
   jobs_ = new QSpinBox;
   jobs_->setRange(1, 256);
   jobs_->setValue(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
@@ -114,6 +120,9 @@ void BuildDialog::setLevels(int levels, int minElements, int maxElements) {
 void BuildDialog::setQualities(const QString& commaSeparated) {
   qualities_->setText(commaSeparated);
 }
+void BuildDialog::setSizeToTargets(bool on) {
+  sizeToTargets_->setChecked(on);
+}
 QString BuildDialog::log() const {
   return log_->toPlainText();
 }
@@ -131,6 +140,7 @@ bool BuildDialog::start() {
   options.maxElements = maxElements_->value();
   options.mesher = mesher_->currentIndex() == 1 ? MesherKind::Netgen : MesherKind::TetGen;
   options.decimate = decimate_->isChecked();
+  options.sizeToTargets = sizeToTargets_->isChecked();
   options.jobs = jobs_->value();
   options.qualities.clear();
   for (const QString& q : qualities_->text().split(',', Qt::SkipEmptyParts)) {

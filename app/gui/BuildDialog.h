@@ -30,6 +30,7 @@ class BuildDialog : public QDialog {
   void setOutput(const QString& basePath);
   void setLevels(int levels, int minElements, int maxElements);
   void setQualities(const QString& commaSeparated);
+  void setSizeToTargets(bool on);
   // Starts the build; false (with a message in the log) on bad options.
   bool start();
   void cancel();
@@ -49,7 +50,7 @@ class BuildDialog : public QDialog {
   QSpinBox *levels_, *minElements_, *maxElements_, *jobs_;
   QComboBox* mesher_;
   QLineEdit* qualities_;
-  QCheckBox* decimate_;
+  QCheckBox *decimate_, *sizeToTargets_;
   QProgressBar* progress_;
   QPlainTextEdit* log_;
   QPushButton *run_, *cancel_;

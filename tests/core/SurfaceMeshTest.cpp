@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/SurfaceMesh.h"
 
@@ -19,6 +20,18 @@ SurfaceMesh unitSquare() {
 TEST(SurfaceMesh, AreaOfUnitSquareIsOne) {
   EXPECT_DOUBLE_EQ(surfaceArea(unitSquare()), 1.0);
   EXPECT_NO_THROW(validateSurface(unitSquare(), "square"));
+}
+
+// Far from the origin too, where measuring from the origin would lose
+// digits; reversing the winding flips the sign.
+TEST(SurfaceMesh, EnclosedVolumeOfABoxIsItsVolume) {
+  EXPECT_NEAR(enclosedVolume(test::box({0, 0, 0}, {1, 2, 3})), 6.0, 1e-12);
+  const Eigen::Vector3d far(1e6, -2e6, 3e6);
+  EXPECT_NEAR(enclosedVolume(test::box(far, far + Eigen::Vector3d(0.5, 0.25, 2))), 0.25, 1e-9);
+  SurfaceMesh inward = test::box({0, 0, 0}, {1, 1, 1});
+  inward.triangles.col(1).swap(inward.triangles.col(2));
+  EXPECT_NEAR(enclosedVolume(inward), -1.0, 1e-12);
+  EXPECT_EQ(enclosedVolume(SurfaceMesh{}), 0.0);
 }
 
 // The square has a normal at every vertex; a fifth vertex on the line of

@@ -820,6 +820,27 @@ TEST_F(Gui, BuildDialogBuildsADatasetAndCancels) {
   EXPECT_FALSE(std::filesystem::exists(scratch("cancelled.json")));
 }
 
+// The dialog's sizing box reaches targets a box cannot meet by quality alone
+// (6 elements at every quality).
+TEST_F(Gui, BuildDialogSizesABoxToItsTargets) {
+  BuildDialog* dialog = window_->buildDialog();
+  const std::filesystem::path out = scratch("sized_box");
+  dialog->setInputs({QString(TETSKIN_SOURCE_DIR) + "/tests/data/cube_0.obj"});
+  dialog->setOutput(QString::fromStdString(out.string()));
+  dialog->setLevels(2, 300, 3000);
+  dialog->setQualities("2.0,1.4");
+  dialog->setSizeToTargets(true);
+  ASSERT_TRUE(dialog->start());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 120000));
+  ASSERT_TRUE(window_->scene().hasDataset()) << dialog->log().toStdString();
+  EXPECT_EQ(window_->scene().datasetPath(), scratch("sized_box.json"));
+  const MultiLevelTetMesh& mesh = window_->scene().dataset().mesh;
+  ASSERT_EQ(mesh.levelCount(), 2);
+  EXPECT_NEAR(static_cast<double>(mesh.levels[0].elementCount), 300, 150);
+  EXPECT_NEAR(static_cast<double>(mesh.levels[1].elementCount), 3000, 1500);
+  EXPECT_FALSE(dialog->log().contains("warning")) << dialog->log().toStdString();
+}
+
 TEST_F(Gui, ScreenshotMatchesItsBaseline) {
   openSample();
   const std::filesystem::path png = scratch("screenshot.png");

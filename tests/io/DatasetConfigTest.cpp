@@ -90,6 +90,24 @@ TEST(DatasetConfig, WriteThenReadIsEqual) {
   EXPECT_EQ(back.provenance, c.provenance);
 }
 
+// A level meshed under a size bound (build --size-to-targets) keeps it; a
+// level without one writes none, so older configs stay as they were.
+TEST(DatasetConfig, LevelSizeBoundIsOptionalAndRoundTrips) {
+  const DatasetConfig plain = parseDatasetConfig(kConfig, "d.json", "/data");
+  EXPECT_EQ(plain.levels[0].source.sizeBound, 0.0);
+  const DatasetConfig sized = parseDatasetConfig(
+      replaced(kConfig, R"("quality": 2.0})", R"("quality": 2.0, "size_bound": 0.0025})"), "d.json",
+      "/data");
+  EXPECT_EQ(sized.levels[0].source.sizeBound, 0.0025);
+  test::ScratchDir dir;
+  writeDatasetConfig(dir / "sized.json", sized);
+  EXPECT_EQ(readDatasetConfig(dir / "sized.json").levels[0].source.sizeBound, 0.0025);
+  writeDatasetConfig(dir / "plain.json", plain);
+  EXPECT_EQ(test::readText(dir / "plain.json").find("size_bound"), std::string::npos);
+  expectConfigError(replaced(kConfig, R"("quality": 2.0})", R"("quality": 2.0, "size_bound": -1})"),
+                    "/levels/0/source/size_bound: must lie in");
+}
+
 TEST(DatasetConfig, InvalidFieldsNameTheirJsonPointer) {
   expectConfigError(replaced(kConfig, R"("version": 1)", R"("version": 2)"), "/version:");
   expectConfigError(replaced(kConfig, R"("format": "tetskin-dataset")", R"("format": "x")"),

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/IsolatedJobs.h"
@@ -41,6 +44,24 @@ TEST(Meshers, TetGenQualityMustExceedOne) {
   EXPECT_THROW(tetrahedralizeWithTetGen(test::box({0, 0, 0}, {1, 1, 1}), 1.0), Error);
 }
 
+// -a bounds every element's volume; the box needs 6 elements without it.
+TEST(Meshers, TetGenVolumeBoundBoundsEveryElement) {
+  const SurfaceMesh box = test::box({0, 0, 0}, {2, 1, 1});
+  const TetMesh unbounded = tetrahedralizeWithTetGen(box, 2.0);
+  const double bound = 0.01;
+  const TetMesh bounded = tetrahedralizeWithTetGen(box, 2.0, bound);
+  EXPECT_NO_THROW(validateTetMesh(bounded, "tetgen", /*requirePositiveVolume=*/true));
+  EXPECT_NEAR(totalVolume(bounded), 2.0, 1e-9);
+  double largest = 0;
+  for (Index e = 0; e < bounded.elementCount(); ++e)
+    largest = std::max(largest, elementVolume(bounded, e));
+  EXPECT_LE(largest, bound * (1 + 1e-9));
+  EXPECT_GE(bounded.elementCount(), 200);  // 2 / 0.01 at the very least
+  EXPECT_GT(bounded.elementCount(), unbounded.elementCount());
+  EXPECT_THROW(tetrahedralizeWithTetGen(box, 2.0, -1.0), Error);
+  EXPECT_THROW(tetrahedralizeWithTetGen(box, 2.0, std::nan("")), Error);
+}
+
 TEST(Meshers, NetgenPresetsGiveValidMeshes) {
   if (!netgenAvailable()) GTEST_SKIP() << "built without Netgen";
   const SurfaceMesh box = test::box({0, 0, 0}, {2, 1, 1});
@@ -55,6 +76,26 @@ TEST(Meshers, NetgenPresetsGiveValidMeshes) {
     EXPECT_NEAR(totalVolume(r.mesh), 2.0, 1e-6);
   }
   EXPECT_GE(results[1].mesh.elementCount(), results[0].mesh.elementCount());
+}
+
+// maxh replaces the preset's bound, both ways: a smaller edge gives more
+// elements than the preset does, a larger one fewer.
+TEST(Meshers, NetgenEdgeBoundReplacesThePresetsSize) {
+  if (!netgenAvailable()) GTEST_SKIP() << "built without Netgen";
+  const SurfaceMesh box = test::box({0, 0, 0}, {2, 1, 1});
+  const auto results =
+      runIsolated({[&] { return tetrahedralizeWithNetgen(box, NetgenFineness::Moderate); },
+                   [&] { return tetrahedralizeWithNetgen(box, NetgenFineness::Moderate, 0.1); },
+                   [&] { return tetrahedralizeWithNetgen(box, NetgenFineness::Moderate, 1.0); }},
+                  2, 120);
+  for (const IsolatedResult& r : results) {
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_NO_THROW(validateTetMesh(r.mesh, "netgen", true));
+    EXPECT_NEAR(totalVolume(r.mesh), 2.0, 1e-6);
+  }
+  EXPECT_GT(results[1].mesh.elementCount(), results[0].mesh.elementCount());
+  EXPECT_LT(results[2].mesh.elementCount(), results[0].mesh.elementCount());
+  EXPECT_THROW(tetrahedralizeWithNetgen(box, NetgenFineness::Moderate, -0.1), Error);
 }
 
 TEST(Meshers, NegativeElementsAreFlipped) {

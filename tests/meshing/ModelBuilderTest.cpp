@@ -6,6 +6,8 @@
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/ObjFormat.h"
+#include "tetskin/meshing/LevelSelection.h"
+#include "tetskin/meshing/Meshers.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -118,6 +120,89 @@ TEST(ModelBuilder, NetgenBuildsLevels) {
     if (std::string(e.what()).find("without Netgen") == std::string::npos) throw;
     GTEST_SKIP() << e.what();
   }
+}
+
+// A box meshes into a few elements at every quality (6 to 16 for this one),
+// so no level can be near
+// its target; with sizing, each is (the targets 600, 2683 and 12000 were
+// met within 10% when this was written; 25% leaves room for another TetGen
+// build). The sized levels are recorded with their bound.
+TEST(ModelBuilder, SizingMeetsTargetsThatNoQualityCan) {
+  const SurfaceMesh box = test::box({0, 0, 0}, {1, 2, 3});
+  BuildOptions options;
+  options.levels = 3;
+  options.minElements = 600;
+  options.maxElements = 12000;
+  options.jobs = 2;
+  std::vector<std::string> log;
+  const BuildEvents events{[&](const std::string& l) { log.push_back(l); }, {}, {}};
+  const BuildResult plain = buildDataset({{"box", box, ""}}, options, events);
+  for (const auto& level : plain.dataset.mesh.levels) EXPECT_LT(level.elementCount, 100);
+  EXPECT_NE(log.back().find("--size-to-targets"), std::string::npos) << log.back();
+
+  options.sizeToTargets = true;
+  log.clear();
+  const BuildResult sized = buildDataset({{"box", box, ""}}, options, events);
+  const Dataset& d = sized.dataset;
+  ASSERT_EQ(d.mesh.levelCount(), 3);
+  const auto targets = levelTargets(600, 12000, 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double count = static_cast<double>(d.mesh.levels[k].elementCount);
+    EXPECT_NEAR(count, targets[k], 0.25 * targets[k]) << "level " << k;
+    EXPECT_GT(d.config.levels[k].source.sizeBound, 0.0) << "level " << k;
+    const CandidateReport& chosen = sized.candidates[static_cast<std::size_t>(sized.chosen[k])];
+    EXPECT_EQ(chosen.sizeBound, d.config.levels[k].source.sizeBound);
+    EXPECT_NE(chosen.label.find(" a"), std::string::npos) << chosen.label;
+  }
+  for (const std::string& line : log) EXPECT_EQ(line.find("warning"), std::string::npos) << line;
+  expectValidDataset(d);
+  // The quality candidates come first, in their search order, then the sized ones.
+  EXPECT_EQ(sized.candidates[0].label, "q1.2");
+  EXPECT_EQ(sized.candidates[4].sizeBound, 0.0);
+  EXPECT_GT(sized.candidates[5].sizeBound, 0.0);
+  EXPECT_TRUE(d.config.provenance["options"]["size_to_targets"].get<bool>());
+}
+
+// Sizing leaves alone what the qualities already meet, and says which
+// targets no bound can reach: TetGen keeps the surface's triangles, so a
+// surface that alone needs more elements than a target cannot be sized down.
+TEST(ModelBuilder, SizingSkipsMetTargetsAndNamesUnreachableOnes) {
+  const SurfaceMesh bunny = readObj(std::string(TETSKIN_SOURCE_DIR) + "/data/bunny.obj");
+  BuildOptions options;
+  options.levels = 1;
+  options.qualities = {2.0};
+  options.sizeToTargets = true;
+  options.jobs = 2;
+  std::vector<std::string> log;
+  const BuildEvents events{[&](const std::string& l) { log.push_back(l); }, {}, {}};
+  options.minElements = options.maxElements = 100;
+  const BuildResult tooFew = buildDataset({{"bunny", bunny, ""}}, options, events);
+  EXPECT_EQ(tooFew.candidates.size(), 1u);
+  bool named = false;
+  for (const std::string& line : log)
+    named = named || line.find("sizing: no input can be meshed to about 100 elements") == 0;
+  EXPECT_TRUE(named);
+
+  options.minElements = options.maxElements = tooFew.candidates[0].elements;
+  const BuildResult met = buildDataset({{"bunny", bunny, ""}}, options, events);
+  EXPECT_EQ(met.candidates.size(), 1u);  // no sizing run
+  EXPECT_EQ(met.dataset.config.levels[0].source.sizeBound, 0.0);
+}
+
+TEST(ModelBuilder, NetgenSizingMeetsATargetItsPresetsMiss) {
+  if (!netgenAvailable()) GTEST_SKIP() << "built without Netgen";
+  BuildOptions options;
+  options.mesher = MesherKind::Netgen;
+  options.levels = 1;
+  options.minElements = options.maxElements = 5000;  // the presets give 30-600 on this box
+  options.sizeToTargets = true;
+  options.jobs = 2;
+  const BuildResult r = buildDataset({{"box", test::box({0, 0, 0}, {2, 1, 1}), ""}}, options);
+  const double count = static_cast<double>(r.dataset.mesh.levels[0].elementCount);
+  EXPECT_NEAR(count, 5000, 0.5 * 5000);
+  EXPECT_GT(r.dataset.config.levels[0].source.sizeBound, 0.0);
+  EXPECT_EQ(r.dataset.config.levels[0].source.quality, 2.0);  // the moderate preset
+  expectValidDataset(r.dataset);
 }
 
 // Real models written by other tools: each gives a valid dataset or a clear

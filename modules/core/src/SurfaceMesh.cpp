@@ -46,6 +46,20 @@ double surfaceArea(const SurfaceMesh& mesh) {
   return area;
 }
 
+double enclosedVolume(const SurfaceMesh& mesh) {
+  if (mesh.vertexCount() == 0) return 0.0;
+  // Each triangle spans a tetrahedron with the centroid of the vertices;
+  // measuring from there rather than from the origin keeps the sum accurate
+  // for a model far from the origin.
+  const Eigen::Vector3d center = mesh.positions.colwise().mean().transpose();
+  double volume = 0.0;
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    volume += signedTetVolume(center, mesh.positions.row(mesh.triangles(t, 0)).transpose(),
+                              mesh.positions.row(mesh.triangles(t, 1)).transpose(),
+                              mesh.positions.row(mesh.triangles(t, 2)).transpose());
+  return volume;
+}
+
 NormalGaps normalGaps(const SurfaceMesh& mesh) {
   NormalGaps gaps;
   std::vector<char> hasNormal(static_cast<std::size_t>(mesh.vertexCount()), 0);

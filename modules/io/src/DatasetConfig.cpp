@@ -112,6 +112,8 @@ LevelConfig readLevel(const json& value, const std::string& pointer, const std::
     out.source.mesher = source.optionalString("mesher").value_or("");
     if (source.has("quality")) out.source.quality = source.number("quality", 0, 1e6);
     source.optional("quality");
+    if (source.has("size_bound")) out.source.sizeBound = source.number("size_bound", 0, 1e300);
+    source.optional("size_bound");
     source.rejectUnknown();
   }
   level.optional("source");
@@ -304,6 +306,7 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
                    {"quality", level.source.quality}};
     if (level.source.input.empty()) l["source"].erase("input");
     if (level.source.mesher.empty()) l["source"].erase("mesher");
+    if (level.source.sizeBound > 0) l["source"]["size_bound"] = level.source.sizeBound;
     if (!level.statistics.empty()) l["statistics"] = level.statistics;
     root["levels"].push_back(l);
   }

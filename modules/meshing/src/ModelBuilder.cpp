@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "Candidates.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/Decimation.h"
 #include "tetskin/meshing/IsolatedJobs.h"
@@ -14,30 +16,6 @@
 
 namespace tetskin {
 namespace {
-
-struct RepairedInput {
-  std::string name;
-  std::string file;
-  SurfaceMesh mesh;
-  RepairReport repair;
-  bool derived = false;  // made by decimation
-};
-
-struct CandidateSpec {
-  std::size_t input;
-  double quality;
-  std::string label;
-};
-
-std::string formatQuality(double q) {
-  char text[32];
-  std::snprintf(text, sizeof text, "q%g", q);
-  return text;
-}
-
-void say(const BuildEvents& events, const std::string& line) {
-  if (events.log) events.log(line);
-}
 
 std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
                                          const BuildOptions& options, const BuildEvents& events) {
@@ -114,11 +92,12 @@ std::vector<CandidateSpec> candidateSpecs(const std::vector<RepairedInput>& inpu
       std::vector<double> q = options.qualities;
       std::sort(q.begin(), q.end());  // 1.2 (best) first
       q.erase(std::unique(q.begin(), q.end()), q.end());
-      for (double quality : q) specs.push_back({i, quality, formatQuality(quality)});
+      for (double quality : q)
+        specs.push_back({i, quality, meshingLabel(MesherKind::TetGen, quality)});
     } else {
       for (int preset = 4; preset >= 0; --preset)  // very fine (best) first
         specs.push_back({i, static_cast<double>(preset),
-                         netgenFinenessName(static_cast<NetgenFineness>(preset))});
+                         meshingLabel(MesherKind::Netgen, static_cast<double>(preset))});
     }
   }
   return specs;
@@ -132,8 +111,8 @@ nlohmann::json repairJson(const RepairReport& report) {
 
 // What to change when the selection is off its targets: the range the
 // candidates cover, and the options that give other candidates.
-std::string selectionHint(const std::vector<Index>& counts, const BuildOptions& options,
-                          std::size_t inputCount) {
+std::string selectionHint(const std::vector<Index>& counts, const std::vector<double>& targets,
+                          const BuildOptions& options, std::size_t inputCount) {
   Index fewest = std::numeric_limits<Index>::max(), most = 0, made = 0;
   for (Index c : counts)
     if (c >= 0) {
@@ -151,10 +130,31 @@ std::string selectionHint(const std::vector<Index>& counts, const BuildOptions& 
     hint += ", or add coarser levels of detail (--decimate, or --lod-series)";
   else if (options.mesher == MesherKind::TetGen)
     hint += ", or widen --qualities";
+  // Only a size bound gives more elements than the finest quality does.
+  if (!options.sizeToTargets && targets.back() > static_cast<double>(most) * kTargetTolerance)
+    hint += "; --size-to-targets meshes under size bounds aimed at the targets";
   return hint;
 }
 
 }  // namespace
+
+std::string meshingLabel(MesherKind mesher, double quality, double sizeBound) {
+  char text[64];
+  if (mesher == MesherKind::TetGen)
+    std::snprintf(text, sizeof text, "q%g", quality);
+  else if (quality >= 0 && quality <= 4 && quality == std::floor(quality))
+    std::snprintf(text, sizeof text, "%s",
+                  netgenFinenessName(static_cast<NetgenFineness>(quality)));
+  else
+    std::snprintf(text, sizeof text, "preset %g", quality);
+  std::string label = text;
+  if (sizeBound > 0) {
+    std::snprintf(text, sizeof text, " %c%.3g", mesher == MesherKind::TetGen ? 'a' : 'h',
+                  sizeBound);
+    label += text;
+  }
+  return label;
+}
 
 BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& options,
                          const BuildEvents& events) {
@@ -179,66 +179,17 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   if (events.cancelled && events.cancelled()) throw Cancelled();
   const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
 
-  std::vector<MeshJob> jobs;
-  for (const CandidateSpec& spec : specs) {
-    const SurfaceMesh* surface = &prepared[spec.input].mesh;
-    const double quality = spec.quality;
-    if (options.mesher == MesherKind::TetGen)
-      jobs.push_back([surface, quality] { return tetrahedralizeWithTetGen(*surface, quality); });
-    else
-      jobs.push_back([surface, quality] {
-        return tetrahedralizeWithNetgen(*surface, static_cast<NetgenFineness>(quality));
-      });
+  Candidates found;
+  result.meshingSeconds = meshCandidates(specs, prepared, options, events, "meshing", found);
+  endStage("meshing + cleanup");
+  if (options.sizeToTargets) {
+    result.meshingSeconds += addSizedCandidates(prepared, targets, options, events, found);
+    endStage("sizing");
   }
+  result.candidates = std::move(found.reports);
+  std::vector<TetMesh>& meshes = found.meshes;
+  const std::vector<Index>& counts = found.counts;
 
-  result.candidates.resize(specs.size());
-  std::size_t done = 0;
-  if (events.progress) events.progress("meshing", 0, specs.size());
-  const std::vector<IsolatedResult> meshed = runIsolated(
-      jobs, options.jobs, options.timeoutSeconds,
-      [&](std::size_t i, const IsolatedResult& r) {
-        ++done;
-        if (events.progress) events.progress("meshing", done, specs.size());
-        if (!r.ok)
-          say(events, "candidate " + prepared[specs[i].input].name + " " + specs[i].label +
-                          " failed: " + r.error);
-      },
-      events.cancelled);
-  endStage("meshing");
-  result.meshingSeconds = result.stageSeconds.back().second;
-
-  std::vector<TetMesh> meshes(specs.size());
-  std::vector<Index> counts(specs.size(), -1);
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    CandidateReport& c = result.candidates[i];
-    c.input = prepared[specs[i].input].file;
-    c.mesher = options.mesher == MesherKind::TetGen ? "tetgen" : "netgen";
-    c.quality = specs[i].quality;
-    c.label = specs[i].label;
-    c.seconds = meshed[i].seconds;
-    c.ok = meshed[i].ok;
-    c.error = meshed[i].error;
-    if (!c.ok) continue;
-    TetMesh mesh = meshed[i].mesh;
-    // Nodes that belong to no tetrahedron crash the simulation (report 2.4).
-    c.unreferencedNodesRemoved = removeUnreferencedNodes(mesh);
-    try {
-      validateTetMesh(mesh, prepared[specs[i].input].name + " " + c.label,
-                      /*requirePositiveVolume=*/true);
-    } catch (const Error& e) {
-      c.ok = false;
-      c.error = e.what();
-      say(events, "candidate rejected: " + c.error);
-      continue;
-    }
-    c.nodes = mesh.nodeCount();
-    c.elements = mesh.elementCount();
-    c.statistics = measureQuality(mesh);
-    counts[i] = c.elements;
-    meshes[i] = std::move(mesh);
-  }
-
-  endStage("cleanup + quality");
   if (events.progress) events.progress("selection", 0, 1);
   result.chosen = selectLevels(counts, targets);
   // Coarsest first, whatever order the targets' picks came in.
@@ -247,7 +198,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   });
   const std::vector<std::string> warnings = selectionWarnings(counts, result.chosen, targets);
   for (const std::string& warning : warnings) say(events, "warning: " + warning);
-  if (!warnings.empty()) say(events, selectionHint(counts, options, prepared.size()));
+  if (!warnings.empty()) say(events, selectionHint(counts, targets, options, prepared.size()));
 
   Dataset& dataset = result.dataset;
   nlohmann::json candidatesJson = nlohmann::json::array();
@@ -257,6 +208,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                         {"quality", c.label},
                         {"ok", c.ok},
                         {"seconds", c.seconds}};
+    if (c.sizeBound > 0) j["size_bound"] = c.sizeBound;
     if (c.ok) {
       j["nodes"] = c.nodes;
       j["elements"] = c.elements;
@@ -273,6 +225,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
     level.source.input = result.candidates[i].input;
     level.source.mesher = result.candidates[i].mesher;
     level.source.quality = result.candidates[i].quality;
+    level.source.sizeBound = result.candidates[i].sizeBound;
     level.statistics = result.candidates[i].statistics.asMap();
     level.statistics["target_elements"] =
         targets[std::min(dataset.config.levels.size(), targets.size() - 1)];
@@ -297,7 +250,8 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
         {"max_elements", options.maxElements},
         {"mesher", options.mesher == MesherKind::TetGen ? "tetgen" : "netgen"},
         {"qualities", options.qualities},
-        {"decimate", options.decimate}}},
+        {"decimate", options.decimate},
+        {"size_to_targets", options.sizeToTargets}}},
       {"targets", targets},
       {"candidates", candidatesJson}};
   endStage("selection + assembly");

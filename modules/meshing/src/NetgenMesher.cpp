@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <array>
+#include <cmath>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -24,8 +25,12 @@ bool netgenAvailable() {
   return true;
 }
 
-TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness) {
+TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness,
+                                 double maxEdge) {
   using namespace nglib;
+  if (!(maxEdge >= 0.0) || !std::isfinite(maxEdge))
+    throw Error("the Netgen element size bound must be a finite number >= 0, got " +
+                formatNumber(maxEdge));
   // Netgen's GUI presets (ng/menustat.tcl): curvature safety, segments per
   // edge, grading, from very coarse to very fine. Through nglib's STL path
   // these alone barely change the mesh (its size follows maxh), so each preset
@@ -52,7 +57,7 @@ TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fine
   }
   if (Ng_STL_InitSTLGeometry(geometry) != NG_OK) throw Error("Netgen rejected the STL geometry");
   Ng_Meshing_Parameters mp;
-  mp.maxh = preset.maxhFraction * boundingBox(surface).diagonal();
+  mp.maxh = maxEdge > 0.0 ? maxEdge : preset.maxhFraction * boundingBox(surface).diagonal();
   mp.fineness = preset.fineness;
   mp.grading = preset.grading;
   mp.elementsperedge = preset.segments;
@@ -93,7 +98,7 @@ bool netgenAvailable() {
   return false;
 }
 
-TetMesh tetrahedralizeWithNetgen(const SurfaceMesh&, NetgenFineness) {
+TetMesh tetrahedralizeWithNetgen(const SurfaceMesh&, NetgenFineness, double) {
   throw Error("this TetSkin was built without Netgen (TETSKIN_WITH_NETGEN=OFF)");
 }
 

@@ -2,6 +2,7 @@
 #define TETLIBRARY
 #include <tetgen.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -43,10 +44,14 @@ Index orientElementsPositively(TetMesh& mesh) {
   return flipped;
 }
 
-TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio) {
+TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio,
+                                 double maxVolume) {
   if (!(radiusEdgeRatio > 1.0))
     throw Error("the TetGen quality (radius-edge ratio) must be greater than 1.0, got " +
                 formatNumber(radiusEdgeRatio));
+  if (!(maxVolume >= 0.0) || !std::isfinite(maxVolume))
+    throw Error("the TetGen volume bound must be a finite number >= 0, got " +
+                formatNumber(maxVolume));
   tetgenio in, out;
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(surface.vertexCount());
@@ -66,7 +71,10 @@ TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRa
     for (int k = 0; k < 3; ++k) f.polygonlist[0].vertexlist[k] = surface.triangles(t, k);
   }
   char switches[64];
-  std::snprintf(switches, sizeof switches, "pq%.6gQ", radiusEdgeRatio);
+  if (maxVolume > 0.0)
+    std::snprintf(switches, sizeof switches, "pq%.6ga%.9gQ", radiusEdgeRatio, maxVolume);
+  else
+    std::snprintf(switches, sizeof switches, "pq%.6gQ", radiusEdgeRatio);
   try {
     tetrahedralize(switches, &in, &out);
   } catch (int code) {

@@ -30,6 +30,10 @@ void validateSurface(const SurfaceMesh& mesh, const std::string& name);
 BoundingBox boundingBox(const SurfaceMesh& mesh);
 // Sum of the triangle areas.
 double surfaceArea(const SurfaceMesh& mesh);
+// Signed volume the surface encloses (divergence theorem over its
+// triangles): positive for a closed surface wound outward, negative for one
+// wound inward; for an open surface it depends on the origin.
+double enclosedVolume(const SurfaceMesh& mesh);
 
 // Where a surface's smooth vertex normals (area-weighted sums of its
 // triangles' normals, as bind and the deformation compute them) are

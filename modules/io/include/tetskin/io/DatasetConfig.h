@@ -72,6 +72,9 @@ struct LevelSource {
   std::string input;   // surface file the level was meshed from
   std::string mesher;  // "tetgen", "netgen", or what else produced it
   double quality = 0;  // TetGen radius-edge bound, or Netgen fineness preset index
+  // The element size bound it was meshed under (build --size-to-targets):
+  // TetGen's volume bound (-a) or Netgen's edge bound (maxh); 0: none.
+  double sizeBound = 0;
 };
 
 struct LevelConfig {

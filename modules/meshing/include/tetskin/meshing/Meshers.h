@@ -15,7 +15,12 @@ namespace tetskin {
 // TetGen `-pq<radiusEdgeRatio>Q`: a constrained Delaunay mesh whose elements
 // have a radius-edge ratio at most `radiusEdgeRatio` (the report's quality
 // levels 2.0, 1.8, 1.6, 1.4, 1.2; closer to 1 means finer and better shaped).
-TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio);
+// A positive `maxVolume` adds `-a<maxVolume>`, bounding every element's
+// volume: how a shape whose surface needs few elements (a box) is meshed
+// finer. TetGen keeps every input triangle, so no bound gives fewer elements
+// than the unbounded mesh.
+TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio,
+                                 double maxVolume = 0.0);
 
 // Netgen's five fineness presets, as in its GUI.
 enum class NetgenFineness { VeryCoarse = 0, Coarse = 1, Moderate = 2, Fine = 3, VeryFine = 4 };
@@ -24,8 +29,12 @@ const char* netgenFinenessName(NetgenFineness fineness);
 // Whether this build has Netgen (CMake option TETSKIN_WITH_NETGEN).
 bool netgenAvailable();
 
-// Netgen from the surface as STL geometry (remeshes the surface, then the volume).
-TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness);
+// Netgen from the surface as STL geometry (remeshes the surface, then the
+// volume). A positive `maxEdge` replaces the preset's element size bound
+// (Netgen's maxh, an edge length), so it gives coarser meshes as well as
+// finer ones.
+TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness,
+                                 double maxEdge = 0.0);
 
 // Flips elements with negative volume so all are positive; returns how many
 // were flipped.

@@ -17,6 +17,11 @@ namespace tetskin {
 
 enum class MesherKind { TetGen, Netgen };
 
+// How a candidate (and the level made from it) is named in reports: the
+// TetGen quality "q1.4" or the Netgen preset "moderate", and a size bound
+// after it: "q1.2 a0.0017" (volume), "moderate h0.15" (edge).
+std::string meshingLabel(MesherKind mesher, double quality, double sizeBound = 0.0);
+
 struct SurfaceInput {
   std::string name;  // in messages: the path as the user gave it
   SurfaceMesh mesh;
@@ -32,7 +37,12 @@ struct BuildOptions {
   // five presets are used.
   std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
   bool decimate = false;  // add coarser input levels derived from the finest input
-  int jobs = 1;           // mesher processes at once
+  // For each level target that no quality candidate meets within 10%, also
+  // mesh under element size bounds aimed at it (TargetSizing.h): TetGen's
+  // volume bound at the best quality, Netgen's edge bound with the moderate
+  // preset. For shapes whose surface needs few elements, such as a box.
+  bool sizeToTargets = false;
+  int jobs = 1;  // mesher processes at once
   double timeoutSeconds = 600;
   RepairOptions repair;
 };
@@ -40,8 +50,9 @@ struct BuildOptions {
 struct CandidateReport {
   std::string input;
   std::string mesher;
-  double quality = 0;  // TetGen ratio, or Netgen preset index
-  std::string label;   // e.g. "q1.4" or "moderate"
+  double quality = 0;    // TetGen ratio, or Netgen preset index
+  std::string label;     // e.g. "q1.4", "moderate", or with a size bound "q1.2 a0.0017"
+  double sizeBound = 0;  // TetGen volume bound (-a) or Netgen edge bound (maxh); 0: none
   bool ok = false;
   std::string error;
   Index nodes = 0, elements = 0;

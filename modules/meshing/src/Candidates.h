@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The model builder's candidates (ModelBuilder.cpp): the repaired inputs,
+// what to mesh, and the meshes made, cleaned and measured, in search order.
+// Shared by the quality round and the sizing rounds (SizedCandidates.cpp).
+
+#include <string>
+#include <vector>
+
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/meshing/SurfaceRepair.h"
+
+namespace tetskin {
+
+struct RepairedInput {
+  std::string name;
+  std::string file;
+  SurfaceMesh mesh;
+  RepairReport repair;
+  bool derived = false;  // made by decimation
+};
+
+struct CandidateSpec {
+  std::size_t input;
+  double quality;  // TetGen radius-edge bound, or Netgen preset index
+  std::string label;
+  double sizeBound = 0;  // TetGen volume bound (-a) or Netgen edge bound (maxh); 0: none
+};
+
+// The candidates found so far: per candidate its report, its mesh and its
+// element count (-1 when it failed), all in search order.
+struct Candidates {
+  std::vector<CandidateReport> reports;
+  std::vector<TetMesh> meshes;
+  std::vector<Index> counts;
+};
+
+// The builder's log line, when the caller listens.
+void say(const BuildEvents& events, const std::string& line);
+
+// Meshes every spec in its own process, then cleans and measures each mesh
+// (unreferenced nodes removed, elements validated, quality) and appends it
+// to `found`. `stage` names the progress. Returns the wall time of the meshing.
+double meshCandidates(const std::vector<CandidateSpec>& specs,
+                      const std::vector<RepairedInput>& prepared, const BuildOptions& options,
+                      const BuildEvents& events, const std::string& stage, Candidates& found);
+
+// `build --size-to-targets`: for each level target that no candidate meets
+// within kSizingTolerance (TargetSizing.h), rounds of candidates under an
+// element size bound aimed at it, appended to `found` after the quality
+// candidates, so that on equal distance those still win. Returns the wall
+// time of the meshing.
+double addSizedCandidates(const std::vector<RepairedInput>& prepared,
+                          const std::vector<double>& targets, const BuildOptions& options,
+                          const BuildEvents& events, Candidates& found);
+
+}  // namespace tetskin
