@@ -44,7 +44,7 @@ void run(BuildArgs& a) {
   const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
   requireWritableLocation(json);  // before the meshing, not after it
 
-  a.options.mesher = a.mesher == "netgen" ? MesherKind::Netgen : MesherKind::TetGen;
+  a.options.mesher = *parseMesherKind(a.mesher);  // CLI checked the name
   a.options.qualities = a.qualities;
   Progress progress(a.quiet);
   std::vector<SurfaceInput> inputs;

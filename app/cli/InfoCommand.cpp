@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -100,9 +101,8 @@ void printDataset(const std::filesystem::path& path) {
                   "); simulate refuses it (and multigrid on finer levels)\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::string how = src.mesher;
-    if (src.mesher == "tetgen" || src.mesher == "netgen")
-      how += " " + meshingLabel(src.mesher == "tetgen" ? MesherKind::TetGen : MesherKind::Netgen,
-                                src.quality, src.sizeBound);
+    if (const std::optional<MesherKind> mesher = parseMesherKind(src.mesher))
+      how += " " + meshingLabel(*mesher, src.quality, src.sizeBound);
     std::printf("  %-5d %8lld %9lld %12g %12g  %s %s\n", k,
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,

@@ -52,7 +52,7 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
   for (std::size_t i = 0; i < specs.size(); ++i) {
     CandidateReport c;
     c.input = prepared[specs[i].input].file;
-    c.mesher = options.mesher == MesherKind::TetGen ? "tetgen" : "netgen";
+    c.mesher = toString(options.mesher);
     c.quality = specs[i].quality;
     c.label = specs[i].label;
     c.sizeBound = specs[i].sizeBound;

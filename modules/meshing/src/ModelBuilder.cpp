@@ -138,6 +138,16 @@ std::string selectionHint(const std::vector<Index>& counts, const std::vector<do
 
 }  // namespace
 
+const char* toString(MesherKind mesher) {
+  return mesher == MesherKind::TetGen ? "tetgen" : "netgen";
+}
+
+std::optional<MesherKind> parseMesherKind(std::string_view name) {
+  if (name == "tetgen") return MesherKind::TetGen;
+  if (name == "netgen") return MesherKind::Netgen;
+  return std::nullopt;
+}
+
 std::string meshingLabel(MesherKind mesher, double quality, double sizeBound) {
   char text[64];
   if (mesher == MesherKind::TetGen)
@@ -241,19 +251,18 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
       dataset.config.surface = r.file;
       break;
     }
-  dataset.config.provenance = {
-      {"tool", "tetskin build"},
-      {"inputs", inputsJson},
-      {"options",
-       {{"levels", options.levels},
-        {"min_elements", options.minElements},
-        {"max_elements", options.maxElements},
-        {"mesher", options.mesher == MesherKind::TetGen ? "tetgen" : "netgen"},
-        {"qualities", options.qualities},
-        {"decimate", options.decimate},
-        {"size_to_targets", options.sizeToTargets}}},
-      {"targets", targets},
-      {"candidates", candidatesJson}};
+  dataset.config.provenance = {{"tool", "tetskin build"},
+                               {"inputs", inputsJson},
+                               {"options",
+                                {{"levels", options.levels},
+                                 {"min_elements", options.minElements},
+                                 {"max_elements", options.maxElements},
+                                 {"mesher", toString(options.mesher)},
+                                 {"qualities", options.qualities},
+                                 {"decimate", options.decimate},
+                                 {"size_to_targets", options.sizeToTargets}}},
+                               {"targets", targets},
+                               {"candidates", candidatesJson}};
   endStage("selection + assembly");
   return result;
 }

@@ -5,7 +5,9 @@
 // clean and measure the candidates, choose the levels, assemble the dataset.
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tetskin/core/SurfaceMesh.h"
@@ -16,6 +18,9 @@
 namespace tetskin {
 
 enum class MesherKind { TetGen, Netgen };
+// "tetgen" or "netgen": in the config, the build options and messages.
+const char* toString(MesherKind mesher);
+std::optional<MesherKind> parseMesherKind(std::string_view name);
 
 // How a candidate (and the level made from it) is named in reports: the
 // TetGen quality "q1.4" or the Netgen preset "moderate", and a size bound
