@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "Shapes.h"
@@ -84,6 +85,28 @@ TEST(ModelBuilder, UnrepairableInputsAreSkippedOrReported) {
   bool skipped = false;
   for (const std::string& line : log) skipped = skipped || line.find("skipping input: holey") == 0;
   EXPECT_TRUE(skipped);
+}
+
+TEST(ModelBuilder, OverlappingPartsAreWarnedAboutAndTheirVolumesRecorded) {
+  const SurfaceMesh cubes =
+      test::merge(test::box({0, 0, 0}, {1, 1, 1}), test::box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));
+  BuildOptions options;
+  options.levels = 1;
+  options.qualities = {2.0};
+  std::vector<std::string> log;
+  const BuildResult r = buildDataset({{"cubes.obj", cubes, ""}}, options,
+                                     {[&](const std::string& l) { log.push_back(l); }, {}, {}});
+  const std::string warning = "warning: cubes.obj: collapsing ";
+  EXPECT_EQ(std::count_if(log.begin(), log.end(),
+                          [&](const std::string& l) { return l.rfind(warning, 0) == 0; }),
+            1);
+  const nlohmann::json& repair = r.dataset.config.provenance["inputs"][0]["repair"];
+  EXPECT_DOUBLE_EQ(repair["volume_before_collapse"].get<double>(), 2.0);
+  EXPECT_LT(repair["volume_after_collapse"].get<double>(), 1.98);
+  // A clean input records no volumes.
+  const BuildResult box = buildDataset({{"box", test::box({0, 0, 0}, {1, 1, 1}), ""}}, options);
+  EXPECT_FALSE(
+      box.dataset.config.provenance["inputs"][0]["repair"].contains("volume_before_collapse"));
 }
 
 TEST(ModelBuilder, TheSameSurfaceTwiceIsRefusedBeforeAnyMeshing) {

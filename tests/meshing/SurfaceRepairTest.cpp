@@ -131,11 +131,69 @@ TEST(SurfaceRepair, InterpenetratingBoxesAreDetectedAndCollapsed) {
 }
 
 TEST(SurfaceRepair, CollapseMovesTheFirstTriangleOntoTheSecond) {
+  // (Equal triangles: a tie, which goes to the first.)
   SurfaceMesh m = test::merge(test::box(kZero, kOne), test::box(kZero, kOne));
   const std::vector<std::pair<int, int>> pairs = {{0, 12}};
   EXPECT_EQ(collapseIntersections(m, pairs), 1);
   EXPECT_EQ(m.triangles(0, 0), m.triangles(0, 1));
   EXPECT_EQ(m.triangles(0, 1), m.triangles(0, 2));
+}
+
+TEST(SurfaceRepair, CollapseMovesTheTriangleWhoseVerticesMoveLeast) {
+  // A small triangle through a large one, in either order of the pair: the
+  // small one collapses onto the large one's nearest vertex.
+  SurfaceMesh m;
+  m.positions.resize(6, 3);
+  m.positions << 0, 0, 0, 1, 0, 0, 0, 1, 0,  // large, in z = 0
+      0.1, 0.1, -0.01, 0.11, 0.1, 0.01, 0.1, 0.11, 0.01;
+  m.triangles.resize(2, 3);
+  m.triangles << 0, 1, 2, 3, 4, 5;
+  for (const std::pair<int, int>& pair : {std::pair{0, 1}, std::pair{1, 0}}) {
+    SurfaceMesh c = m;
+    ASSERT_EQ(findSelfIntersections(c).size(), 1u);
+    EXPECT_EQ(collapseIntersections(c, {pair}), 1);
+    EXPECT_EQ(c.triangles.row(0), m.triangles.row(0));
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(c.triangles(1, k), 0) << k;  // the vertex at the origin
+  }
+}
+
+// The collapse is meant for small defects; overlapping parts come out of it
+// another shape, which the report's volumes show and collapseWarning names.
+TEST(SurfaceRepair, CollapsingOverlappingPartsChangesTheVolumeAndIsWarnedAbout) {
+  SurfaceMesh m = test::merge(test::box(kZero, kOne), test::box(Eigen::Vector3d(0.5, 0.5, 0.5),
+                                                                Eigen::Vector3d(1.5, 1.5, 1.5)));
+  const RepairReport r = repairSurface(m, "cubes.obj");
+  ASSERT_GT(r.collapsedTriangles, 0);
+  EXPECT_NEAR(r.volumeBeforeCollapse, 2.0, 1e-12);  // the shared eighth counted twice
+  EXPECT_NEAR(r.volumeAfterCollapse, signedVolume(m), 1e-12);
+  EXPECT_NEAR(r.collapseVolumeChange(), (r.volumeAfterCollapse - 2.0) / 2.0, 1e-12);
+  EXPECT_GT(std::abs(r.collapseVolumeChange()), kCollapseVolumeTolerance);
+  const std::string warning = collapseWarning(r, "cubes.obj");
+  EXPECT_EQ(warning.rfind("cubes.obj: collapsing " + std::to_string(r.intersectingPairs) +
+                              " intersecting pair(s) of triangles changed the enclosed volume by ",
+                          0),
+            0u)
+      << warning;
+  EXPECT_NE(warning.find("% (2 to "), std::string::npos) << warning;
+
+  // A small part poking out of a corner, like a scan's defect: its
+  // triangles collapse onto the large box's (not the other way round), so
+  // the volume hardly changes and nothing is warned about.
+  SurfaceMesh corner =
+      test::merge(test::box(kZero, kOne),
+                  test::box(Eigen::Vector3d(0.99, 0.99, 0.99), Eigen::Vector3d(1.01, 1.01, 1.01)));
+  const RepairReport small = repairSurface(corner, "corner.obj");
+  ASSERT_GT(small.collapsedTriangles, 0);
+  EXPECT_NEAR(small.volumeBeforeCollapse, 1.0 + 8e-6, 1e-12);
+  EXPECT_LT(std::abs(small.collapseVolumeChange()), kCollapseVolumeTolerance);
+  EXPECT_EQ(collapseWarning(small, "corner.obj"), "");
+
+  // Nothing intersected: no volumes, no change, no warning.
+  SurfaceMesh box = test::box(kZero, kOne);
+  const RepairReport clean = repairSurface(box, "box.obj");
+  EXPECT_EQ(clean.volumeBeforeCollapse, 0);
+  EXPECT_EQ(clean.collapseVolumeChange(), 0);
+  EXPECT_EQ(collapseWarning(clean, "box.obj"), "");
 }
 
 TEST(SurfaceRepair, EmptyAndNonFiniteInputsAreErrors) {

@@ -17,6 +17,13 @@
 namespace tetskin {
 namespace {
 
+// Says the collapse's warning for a repaired input, if it has one.
+void sayCollapseWarning(const BuildEvents& events, const RepairReport& report,
+                        const std::string& name) {
+  if (const std::string warning = collapseWarning(report, name); !warning.empty())
+    say(events, "warning: " + warning);
+}
+
 std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
                                          const BuildOptions& options, const BuildEvents& events) {
   if (inputs.empty()) throw Error("no input surface given");
@@ -52,6 +59,7 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
     for (const auto& [key, count] : r.repair.counts())
       if (count != 0) line += " " + key + "=" + std::to_string(count);
     say(events, line);
+    sayCollapseWarning(events, r.repair, r.name);
     prepared.push_back(std::move(r));
   }
   if (prepared.empty())
@@ -69,6 +77,7 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
       try {
         r.repair = repairSurface(r.mesh, r.name, options.repair);
         say(events, "derived " + name);
+        sayCollapseWarning(events, r.repair, name);
         derived.push_back(std::move(r));
       } catch (const Error& e) {
         say(events, std::string("skipping derived input: ") + e.what());
@@ -106,6 +115,10 @@ std::vector<CandidateSpec> candidateSpecs(const std::vector<RepairedInput>& inpu
 nlohmann::json repairJson(const RepairReport& report) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [key, count] : report.counts()) j[key] = count;
+  if (report.intersectingPairs > 0) {
+    j["volume_before_collapse"] = report.volumeBeforeCollapse;
+    j["volume_after_collapse"] = report.volumeAfterCollapse;
+  }
   return j;
 }
 

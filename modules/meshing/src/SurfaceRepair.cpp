@@ -282,6 +282,28 @@ Index collapseIntersections(SurfaceMesh& mesh, const std::vector<std::pair<int, 
   std::vector<int> target(static_cast<std::size_t>(nv));
   for (Index v = 0; v < nv; ++v) target[static_cast<std::size_t>(v)] = static_cast<int>(v);
   std::vector<char> touched(static_cast<std::size_t>(nv), 0);
+  // Collapsing triangle `from` onto `onto`: the vertex of `onto` nearest to
+  // from's centroid, and the farthest any of from's vertices would move.
+  struct Collapse {
+    int from, point;
+    double farthestMove;
+  };
+  auto collapse = [&](int from, int onto) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) centroid += position(mesh, mesh.triangles(from, k)) / 3.0;
+    int point = mesh.triangles(onto, 0);
+    for (int k = 1; k < 3; ++k) {
+      const int candidate = mesh.triangles(onto, k);
+      if ((position(mesh, candidate) - centroid).squaredNorm() <
+          (position(mesh, point) - centroid).squaredNorm())
+        point = candidate;
+    }
+    double farthest = 0;
+    for (int k = 0; k < 3; ++k)
+      farthest = std::max(farthest,
+                          (position(mesh, mesh.triangles(from, k)) - position(mesh, point)).norm());
+    return Collapse{from, point, farthest};
+  };
   Index collapsed = 0;
   for (const auto& [first, second] : pairs) {
     bool skip = false;
@@ -289,21 +311,16 @@ Index collapseIntersections(SurfaceMesh& mesh, const std::vector<std::pair<int, 
       skip = skip || touched[static_cast<std::size_t>(mesh.triangles(first, k))] ||
              touched[static_cast<std::size_t>(mesh.triangles(second, k))];
     if (skip) continue;
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k) centroid += position(mesh, mesh.triangles(first, k)) / 3.0;
-    int point = mesh.triangles(second, 0);
-    for (int k = 1; k < 3; ++k) {
-      const int candidate = mesh.triangles(second, k);
-      if ((position(mesh, candidate) - centroid).squaredNorm() <
-          (position(mesh, point) - centroid).squaredNorm())
-        point = candidate;
-    }
+    // The smaller change of shape: a small triangle poking through a large
+    // one collapses onto it, not the large one onto the small one's corner.
+    const Collapse forward = collapse(first, second), backward = collapse(second, first);
+    const Collapse& chosen = backward.farthestMove < forward.farthestMove ? backward : forward;
     for (int k = 0; k < 3; ++k) {
-      const int v = mesh.triangles(first, k);
-      target[static_cast<std::size_t>(v)] = point;
+      const int v = mesh.triangles(chosen.from, k);
+      target[static_cast<std::size_t>(v)] = chosen.point;
       touched[static_cast<std::size_t>(v)] = 1;
     }
-    touched[static_cast<std::size_t>(point)] = 1;
+    touched[static_cast<std::size_t>(chosen.point)] = 1;
     ++collapsed;
   }
   for (Index t = 0; t < mesh.triangleCount(); ++t)
@@ -356,6 +373,22 @@ std::vector<std::pair<std::string, Index>> RepairReport::counts() const {
           {"output_triangles", outputTriangles}};
 }
 
+double RepairReport::collapseVolumeChange() const {
+  if (intersectingPairs == 0 || volumeBeforeCollapse == 0) return 0;
+  return (volumeAfterCollapse - volumeBeforeCollapse) / volumeBeforeCollapse;
+}
+
+std::string collapseWarning(const RepairReport& report, const std::string& name) {
+  const double change = report.collapseVolumeChange();
+  if (!(std::abs(change) > kCollapseVolumeTolerance)) return {};
+  return name + ": collapsing " + std::to_string(report.intersectingPairs) +
+         " intersecting pair(s) of triangles changed the enclosed volume by " +
+         formatNumber(100 * change) + "% (" + formatNumber(report.volumeBeforeCollapse) + " to " +
+         formatNumber(report.volumeAfterCollapse) +
+         "); the collapse closes small defects, not overlapping parts: check the shape, or join "
+         "the parts into one closed surface first";
+}
+
 RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
                            const RepairOptions& options) {
   validateSurface(mesh, name);
@@ -389,6 +422,11 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
     const auto pairs = findSelfIntersections(mesh);
     if (round == 0) report.intersectingPairs = static_cast<Index>(pairs.size());
     if (pairs.empty()) break;
+    if (round == 0) {  // (orientation comes last, so a copy is oriented to measure)
+      SurfaceMesh oriented = mesh;
+      orientConsistently(oriented);
+      report.volumeBeforeCollapse = enclosedVolume(oriented);
+    }
     if (round == options.maxIntersectionRounds)
       throw Error(name, 0,
                   "cannot be repaired: " + std::to_string(pairs.size()) +
@@ -408,6 +446,7 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
   if (!orientation.orientable)
     throw Error(name, 0, "cannot be repaired: the surface is not orientable");
   report.unusedVertices = removeUnusedVertices(mesh);
+  if (report.intersectingPairs > 0) report.volumeAfterCollapse = enclosedVolume(mesh);
   report.outputVertices = mesh.vertexCount();
   report.outputTriangles = mesh.triangleCount();
   return report;
