@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -41,13 +43,32 @@ TEST(AtomicFile, FailedWriteLeavesNoNewFile) {
   EXPECT_EQ(dir.listing(), "");
 }
 
-TEST(AtomicFile, UnwritableDirectoryIsAClearError) {
-  try {
-    writeTextAtomically("/nonexistent/dir/out.txt", [](std::ostream&) {});
-    FAIL();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.file(), "/nonexistent/dir/out.txt");
-  }
+// Both writers check the target's folder first: the streams' and VTK's own
+// messages would name the temporary file, or (VTK's PNG writer) a full disk.
+TEST(AtomicFile, AMissingFolderOrAFileForOneIsAClearError) {
+  test::ScratchDir dir;
+  dir.write("file.txt", "not a folder");
+  const std::filesystem::path missing = dir / "missing" / "out.txt";
+  const std::filesystem::path underFile = dir / "file.txt" / "out.vtp";
+  auto expectError = [](const std::function<void()>& write, const std::filesystem::path& target,
+                        const std::string& message) {
+    try {
+      write();
+      ADD_FAILURE() << "no error for " << target;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.file(), target.string());
+      EXPECT_EQ(e.message(), message);
+    }
+  };
+  expectError([&] { writeTextAtomically(missing, [](std::ostream&) {}); }, missing,
+              "cannot be written: " + (dir / "missing").string() + " does not exist");
+  expectError(
+      [&] {
+        writeFileAtomically(
+            underFile, [](const std::filesystem::path&) { ADD_FAILURE() << "the writer ran"; });
+      },
+      underFile, "cannot be written: " + (dir / "file.txt").string() + " is not a folder");
+  EXPECT_EQ(dir.listing(), "file.txt\n");
 }
 
 TEST(AtomicFile, WriterRejectingInvalidMeshWritesNothing) {

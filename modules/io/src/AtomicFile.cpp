@@ -36,10 +36,30 @@ void renameOnto(const std::filesystem::path& from, const std::filesystem::path& 
   }
 }
 
+// Throws Error naming `target` unless `folder` is a writable folder.
+void requireWritableFolder(const std::filesystem::path& target,
+                           const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error))
+    throw Error(
+        target.string(), 0,
+        "cannot be written: " + folder.string() +
+            (std::filesystem::exists(folder, error) ? " is not a folder" : " does not exist"));
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw Error(target.string(), 0, "cannot be written: " + folder.string() + " is not writable");
+}
+
+// The writers' own messages for a missing or read-only folder name the
+// temporary file (or, for VTK's PNG writer, a full disk): checked first.
+void requireTargetFolder(const std::filesystem::path& target) {
+  requireWritableFolder(target, std::filesystem::absolute(target).parent_path());
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target)
     : target_(std::move(target)), temporary_(temporaryNameFor(target_)) {
+  requireTargetFolder(target_);
   stream_.open(temporary_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw Error(target_.string(), 0, "cannot open for writing");
 }
@@ -73,6 +93,7 @@ void writeTextAtomically(const std::filesystem::path& target,
 
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& write) {
+  requireTargetFolder(target);
   const std::filesystem::path tmp = temporaryNameFor(target);
   try {
     write(tmp);
@@ -89,10 +110,7 @@ void requireWritableLocation(const std::filesystem::path& target) {
   std::error_code error;
   while (!std::filesystem::exists(existing, error) && existing.has_relative_path())
     existing = existing.parent_path();
-  if (!std::filesystem::is_directory(existing, error))
-    throw Error(target.string(), 0, "cannot be written: " + existing.string() + " is not a folder");
-  if (::access(existing.c_str(), W_OK) != 0)
-    throw Error(target.string(), 0, "cannot be written: " + existing.string() + " is not writable");
+  requireWritableFolder(target, existing);
 }
 
 }  // namespace tetskin
