@@ -43,7 +43,7 @@ void run(const BindArgs& a) {
   bound.dataset =
       std::filesystem::relative(std::filesystem::absolute(a.dataset), outDir).generic_string();
   writeBinding(a.output, bound);
-  std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),
+  std::fputs(formatSummary(warnOfMisfit(a.surface, bound.surface, bound.binding, dataset.mesh),
                            bound.binding)
                  .c_str(),
              stdout);

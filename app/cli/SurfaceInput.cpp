@@ -23,6 +23,14 @@ void warnOfNormalGaps(const std::filesystem::path& path, const SurfaceMesh& surf
     std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), describe(gaps).c_str());
 }
 
+BindingSummary warnOfMisfit(const std::filesystem::path& path, const SurfaceMesh& surface,
+                            const SurfaceBinding& binding, const MultiLevelTetMesh& dataset) {
+  BindingSummary summary = summarizeBinding(binding, boundingBox(surface).diagonal());
+  if (const std::string warning = misfitWarning(summary, dataset, binding.level); !warning.empty())
+    std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), warning.c_str());
+  return summary;
+}
+
 int commandLevel(const SurfaceInput& input, const MultiLevelTetMesh& dataset, int levelOption,
                  bool levelGiven) {
   if (!input.binding) return resolveLevel(dataset, levelOption);
@@ -35,7 +43,10 @@ int commandLevel(const SurfaceInput& input, const MultiLevelTetMesh& dataset, in
 }
 
 SurfaceBinding bindingAt(const SurfaceInput& input, const MultiLevelTetMesh& dataset, int level) {
-  return input.binding ? *input.binding : bindSurface(input.surface, dataset, level);
+  if (input.binding) return *input.binding;
+  SurfaceBinding binding = bindSurface(input.surface, dataset, level);
+  warnOfMisfit(input.path, input.surface, binding, dataset);
+  return binding;
 }
 
 }  // namespace tetskin::cli

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
@@ -27,13 +28,19 @@ SurfaceInput readSurfaceInput(const std::filesystem::path& path, const MultiLeve
 // binding needs positions only), but they are drawn unlit.
 void warnOfNormalGaps(const std::filesystem::path& path, const SurfaceMesh& surface);
 
+// "warning: PATH: a tenth of the vertices lie more than ..." on stderr where
+// the binding's misfitWarning speaks. Returns the binding's summary.
+BindingSummary warnOfMisfit(const std::filesystem::path& path, const SurfaceMesh& surface,
+                            const SurfaceBinding& binding, const MultiLevelTetMesh& dataset);
+
 // The level the command works on: the binding's, if the input is one, else
 // --level's (`levelOption`, resolveLevel). Throws Error when --level was
 // given (`levelGiven`) and names another level than the binding's.
 int commandLevel(const SurfaceInput& input, const MultiLevelTetMesh& dataset, int levelOption,
                  bool levelGiven);
 
-// The input's binding, or its surface bound to `level`.
+// The input's binding, or its surface bound to `level` (warning as
+// warnOfMisfit does; a binding from a file was warned about when bind made it).
 SurfaceBinding bindingAt(const SurfaceInput& input, const MultiLevelTetMesh& dataset, int level);
 
 }  // namespace tetskin::cli

@@ -454,6 +454,9 @@ void MainWindow::afterLoad(const QString& path) {
   if (scene_->hasSurface())  // as bind warns: such vertices are drawn unlit
     if (const NormalGaps gaps = normalGaps(scene_->surface()); !gaps.empty())
       message += "; warning: the surface has " + QString::fromStdString(describe(gaps));
+  if (scene_->hasSurface())  // as bind warns
+    if (const std::string warning = scene_->misfitWarning(); !warning.empty())
+      message += "; warning: " + QString::fromStdString(warning);
   statusBar()->showMessage(message);
   renderNow();
 }

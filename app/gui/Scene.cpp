@@ -353,7 +353,12 @@ std::string Scene::comparisonText() const {
   };
   std::string out = "now:    " + line(summary_);
   if (previousSummary_) out += "\nbefore: " + line(*previousSummary_);
+  if (const std::string warning = misfitWarning(); !warning.empty()) out += "\nwarning: " + warning;
   return out;
+}
+
+std::string Scene::misfitWarning() const {
+  return tetskin::misfitWarning(summary_, dataset_->mesh, binding_.level);
 }
 
 VertexInfo Scene::vertexInfo(Index v) const {

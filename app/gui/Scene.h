@@ -96,6 +96,8 @@ class Scene {
   // The summary before the last rebind, for comparison.
   const std::optional<BindingSummary>& previousSummary() const { return previousSummary_; }
   std::string comparisonText() const;
+  // The binding's misfitWarning (a surface far from its level), or empty.
+  std::string misfitWarning() const;
   VertexInfo vertexInfo(Index vertex) const;
   // Hardware pick at display coordinates (VTK's: origin bottom left); the
   // nearest surface vertex to the picked point, and shows its control triangle.

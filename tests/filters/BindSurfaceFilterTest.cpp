@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "FilterTestData.h"
 #include "tetskin/binding/BindSurface.h"
@@ -82,6 +84,32 @@ TEST(BindSurfaceFilter, ParametersReachTheKernelAndRerunThePipeline) {
   EXPECT_EQ(bindingArraysFromPolyData(bind->GetOutput(), "out").offset, OffsetMode::Displacement);
   bind->SetMethod(99);  // clamped, as VTK's Set macros clamp
   EXPECT_EQ(bind->GetMethod(), vtkTetSkinBindSurface::EMBED);
+}
+
+// A surface far from the control mesh still binds, with a warning (as
+// tetskin bind gives), not an error: ParaView shows it in its output window.
+TEST(BindSurfaceFilter, ASurfaceFarFromTheControlMeshBindsWithAWarning) {
+  SurfaceMesh moved = bunnySurface();
+  moved.positions.col(1).array() += 20;
+  for (const auto& [surface, far] : {std::pair{bunnySurface(), false}, std::pair{moved, true}}) {
+    vtkNew<vtkTetSkinBindSurface> bind;
+    const VtkErrorCapture messages(bind);
+    bind->SetInputData(toVtkPolyData(surface));
+    bind->SetControlMeshData(controlLevelGrid());
+    bind->Update();
+    EXPECT_FALSE(messages.failed());
+    EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), surface.vertexCount());
+    const std::string message = messages.message("(nothing)");
+    if (far) {
+      EXPECT_NE(message.find("a tenth of the vertices lie more than "), std::string::npos)
+          << message;
+      EXPECT_NE(message.find("% of input 1 (control mesh)'s diagonal from its boundary"),
+                std::string::npos)
+          << message;
+    } else {
+      EXPECT_EQ(message, "(nothing)");
+    }
+  }
 }
 
 TEST(BindSurfaceFilter, BadInputIsAnErrorNamingTheInputAndElementAndAnEmptyOutput) {

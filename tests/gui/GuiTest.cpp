@@ -20,6 +20,7 @@
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
@@ -128,6 +129,24 @@ TEST_F(Gui, ASurfaceWithoutNormalsSomewhereOpensWithAWarning) {
       "zero_area_triangle.obj; warning: the surface has 1 triangle of zero area (first: triangle "
       "1); 1 vertex without a normal, in no triangle of positive area (first: vertex 3)"))
       << window_->statusBar()->currentMessage().toStdString();
+}
+
+// A surface far from the dataset's body binds and opens, with bind's warning
+// in the status bar and under the binding's numbers; the sample's has none.
+TEST_F(Gui, ASurfaceFarFromTheBodyOpensWithAWarning) {
+  openSample();
+  EXPECT_FALSE(child<QLabel>("comparison")->text().contains("warning"))
+      << child<QLabel>("comparison")->text().toStdString();
+  ASSERT_TRUE(window_->openFile(QString(TETSKIN_SOURCE_DIR) + "/tests/data/far_tetrahedron.obj"))
+      << window_->lastError().toStdString();
+  const QString warning = "warning: a tenth of the vertices lie more than ";
+  EXPECT_TRUE(window_->statusBar()->currentMessage().contains("far_tetrahedron.obj; " + warning))
+      << window_->statusBar()->currentMessage().toStdString();
+  EXPECT_TRUE(child<QLabel>("comparison")
+                  ->text()
+                  .contains(QRegularExpression("\n" + warning +
+                                               "[0-9]+% of level 2's diagonal from its boundary")))
+      << child<QLabel>("comparison")->text().toStdString();
 }
 
 TEST_F(Gui, BadFilesNameFileAndLineAndChangeNothing) {

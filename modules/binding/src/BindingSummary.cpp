@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <numeric>
 
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
+
 namespace tetskin {
 
 BindingSummary summarizeBinding(const SurfaceBinding& b, double diagonal) {
@@ -44,6 +47,22 @@ BindingSummary summarizeBinding(const SurfaceBinding& b, double diagonal) {
                     });
   s.worstDistance.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
   return s;
+}
+
+std::string misfitWarning(const BindingSummary& s, double controlDiagonal,
+                          const std::string& control) {
+  const double share = s.distanceP90 * s.diagonal / controlDiagonal;
+  if (!(share > kMisfitDistance)) return {};
+  return "a tenth of the vertices lie more than " + formatNumber(std::round(100 * share)) +
+         "% of " + control +
+         "'s diagonal from its boundary: is the surface the dataset's object, placed and scaled "
+         "as it is?";
+}
+
+std::string misfitWarning(const BindingSummary& s, const MultiLevelTetMesh& mesh, int level) {
+  const LevelRange& range = mesh.levels.at(static_cast<std::size_t>(level));
+  const Points3 nodes = mesh.nodes.middleRows(range.firstNode, range.nodeCount);
+  return misfitWarning(s, boundingBox(nodes).diagonal(), "level " + std::to_string(level));
 }
 
 std::string formatSummary(const BindingSummary& s, const SurfaceBinding& b) {

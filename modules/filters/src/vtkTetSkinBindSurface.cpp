@@ -9,8 +9,10 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <exception>
+#include <string>
 
 #include "tetskin/binding/BindSurface.h"
+#include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
@@ -56,6 +58,11 @@ int vtkTetSkinBindSurface::RequestData(vtkInformation*, vtkInformationVector** i
     const SurfaceBinding binding = bindSurface(surface, mesh, 0, options);
     out->ShallowCopy(surfaceIn);
     addBindingArrays(out, binding);
+    const BindingSummary summary = summarizeBinding(binding, boundingBox(surface).diagonal());
+    if (const std::string warning =
+            misfitWarning(summary, boundingBox(mesh.nodes).diagonal(), "input 1 (control mesh)");
+        !warning.empty())
+      vtkWarningMacro(<< warning);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     out->Initialize();

@@ -49,6 +49,10 @@ VtkErrorCapture::~VtkErrorCapture() {
 std::string VtkErrorCapture::message(const std::string& fallback) const {
   if (!message_.empty()) return message_;
   std::string printed = window_->GetOutput();
+  // VTK's macros open with a line "Warning: In <file>, line N" (or "ERROR: ..."):
+  // the text is on the next.
+  if (const auto nl = printed.find('\n'); nl != std::string::npos && printed.find(": In ") < nl)
+    printed = printed.substr(nl + 1);
   if (const auto nl = printed.find('\n', printed.find(": ")); nl != std::string::npos)
     printed = printed.substr(0, nl);
   printed = plainText(printed);

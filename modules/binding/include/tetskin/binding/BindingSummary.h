@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/TetMesh.h"
 
 namespace tetskin {
 
@@ -21,6 +22,23 @@ struct BindingSummary {
 };
 
 BindingSummary summarizeBinding(const SurfaceBinding& binding, double diagonal);
+
+// The 90th percentile of the vertices' distance from the control mesh's
+// boundary, over the control mesh's bounding-box diagonal, above which
+// misfitWarning speaks. (The bundled bunny bound to its coarsest level, 598
+// elements, has 1.1e-2; a coarse cage around a detailed model may have a
+// few hundredths; a surface moved off its dataset, or one of another
+// object, has tenths.)
+constexpr double kMisfitDistance = 0.1;
+
+// Why the binding may not be what was meant, when a tenth of the vertices
+// lie farther than kMisfitDistance of `controlDiagonal` from the boundary of
+// the control mesh named `control` ("a tenth of the vertices lie more than
+// 95% of level 2's diagonal from its boundary: ..."); empty otherwise.
+std::string misfitWarning(const BindingSummary& summary, double controlDiagonal,
+                          const std::string& control);
+// The same for a binding to `level` of `mesh`, named "level N".
+std::string misfitWarning(const BindingSummary& summary, const MultiLevelTetMesh& mesh, int level);
 
 // A few lines of plain text (used by the CLI).
 std::string formatSummary(const BindingSummary& summary, const SurfaceBinding& binding);

@@ -26,7 +26,7 @@ class VtkErrorCapture {
 
   // The source raised an error event.
   bool failed() const { return !message_.empty(); }
-  // The first error, or else the first line VTK printed, or `fallback`.
+  // The first error, or else the first message VTK printed (a warning), or `fallback`.
   std::string message(const std::string& fallback = "VTK reported an error") const;
 
  private:
