@@ -136,7 +136,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     iterations += stats.iterations;
     multigridSteps += stats.solver == SolverKind::Multigrid;
-    if ((i + 1) % a.every == 0) writeFrame();
+    // Every k-th step, and the last one: a run ends with its end state written.
+    if ((i + 1) % a.every == 0 || i + 1 == a.steps) writeFrame();
     progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
   }
   const Energies e = sim.energies();
@@ -176,8 +177,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
         "  auto: multigrid solved %ld of %d steps, cg the rest; faster in the last round: %s\n",
         multigridSteps, a.steps, toString(sim.solverChoice()->preferred()));
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
-  std::printf("wrote %s (%lld frames)\n", recorder.path().c_str(),
-              static_cast<long long>(recorder.frames()));
+  std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
+              static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
     std::fprintf(stderr, "warning: %s%s\n", describe(shortfall, options).c_str(),
                  options.solver == SolverKind::Multigrid
@@ -198,7 +199,7 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--dt", a->options.timeStep, "time step in seconds")
       ->capture_default_str()
       ->check(positiveNumber());
-  cmd->add_option("--every", a->every, "write every k-th step")
+  cmd->add_option("--every", a->every, "write every k-th step (and the last)")
       ->capture_default_str()
       ->check(wholeNumber(1));
   addScenarioOptions(*cmd, a->scenario);
