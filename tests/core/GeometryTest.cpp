@@ -64,6 +64,28 @@ TEST(Geometry, EmptyBoundingBox) {
 // Every mesh's points pass through coordinateProblem: NaN and infinity, and
 // magnitudes whose products would overflow, are named; the limit itself is
 // accepted.
+TEST(Geometry, BoxOverlapIsTheSharedShareOfTheUnion) {
+  auto box = [](Eigen::Vector3d min, Eigen::Vector3d max) {
+    BoundingBox b;
+    b.min = min;
+    b.max = max;
+    return b;
+  };
+  const BoundingBox unit = box({0, 0, 0}, {1, 1, 1});
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, unit), 1.0);
+  // Half a unit moved along x: 0.5 shared of 1.5 spanned.
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, box({0.5, 0, 0}, {1.5, 1, 1})), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(boxOverlap(box({0.5, 0, 0}, {1.5, 1, 1}), unit), 1.0 / 3.0);
+  // Inside a box of 8 times the volume: 1/8.
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, box({0, 0, 0}, {2, 2, 2})), 0.125);
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, box({2, 0, 0}, {3, 1, 1})), 0.0);  // apart
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, box({1, 0, 0}, {2, 1, 1})), 0.0);  // touching
+  EXPECT_DOUBLE_EQ(boxOverlap(unit, BoundingBox{}), 0.0);              // empty
+  const BoundingBox flat = box({0, 0, 0}, {1, 1, 0});
+  EXPECT_DOUBLE_EQ(boxOverlap(flat, flat), 1.0);
+  EXPECT_DOUBLE_EQ(boxOverlap(flat, box({0, 0, 0}, {2, 1, 0})), 0.0);
+}
+
 TEST(Geometry, CoordinateProblemNamesNonFiniteAndHugeCoordinates) {
   EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(1, -2, 3)), "");
   EXPECT_EQ(coordinateProblem(Eigen::RowVector3d(kMaxCoordinate, -kMaxCoordinate, 0)), "");

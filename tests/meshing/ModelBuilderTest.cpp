@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
@@ -56,7 +57,8 @@ TEST(ModelBuilder, BundledBunnyGivesTheRequestedLevels) {
 
 TEST(ModelBuilder, SearchOrderIsFinestInputAndBestQualityFirst) {
   const SurfaceMesh fine = test::box({0, 0, 0}, {1, 1, 1});
-  std::vector<SurfaceInput> inputs = {{"a", fine, ""}, {"b", test::box({0, 0, 0}, {2, 2, 2}), ""}};
+  std::vector<SurfaceInput> inputs = {{"a", fine, ""},
+                                      {"b", test::box({0, 0, 0}, {1.1, 1.1, 1.1}), ""}};
   BuildOptions options;
   options.levels = 1;
   options.minElements = options.maxElements = 1;
@@ -107,6 +109,40 @@ TEST(ModelBuilder, OverlappingPartsAreWarnedAboutAndTheirVolumesRecorded) {
   const BuildResult box = buildDataset({{"box", test::box({0, 0, 0}, {1, 1, 1}), ""}}, options);
   EXPECT_FALSE(
       box.dataset.config.provenance["inputs"][0]["repair"].contains("volume_before_collapse"));
+}
+
+// Levels of detail of one object share most of their bounding box; another
+// object, or this one moved or in other units, is refused before any work.
+TEST(ModelBuilder, AnInputThatIsNotALevelOfDetailOfTheFinestIsRefused) {
+  // (Equal triangle counts keep the given order: the first is the finest.)
+  const SurfaceMesh fine = test::box({0, 0, 0}, {1, 1, 1});
+  BuildOptions options;
+  options.levels = 1;
+  options.qualities = {2.0};
+  // Slightly shrunk and moved, as a decimation may leave it: accepted.
+  EXPECT_NO_THROW(buildDataset(
+      {{"fine.obj", fine, ""}, {"near.obj", test::box({0.02, 0, 0.01}, {0.97, 1, 1}), ""}},
+      options));
+  for (const auto& [min, max, share] :
+       {std::tuple{Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(11, 1, 1), "0"},
+        std::tuple{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 2, 2), "12.5"},  // other units
+        std::tuple{Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(1.5, 1, 1), "33.3"}}) {
+    std::vector<std::string> log;
+    try {
+      buildDataset({{"fine.obj", fine, ""}, {"other.obj", test::box(min, max), ""}}, options,
+                   {[&](const std::string& l) { log.push_back(l); }, {}, {}});
+      ADD_FAILURE() << "accepted " << max.transpose();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.file(), "other.obj");
+      EXPECT_EQ(e.message().rfind(std::string("is not a level of detail of fine.obj: their "
+                                              "bounding boxes share ") +
+                                      share + "% of the volume they span together",
+                                  0),
+                0u)
+          << e.message();
+    }
+    EXPECT_TRUE(log.empty());  // not even repaired
+  }
 }
 
 TEST(ModelBuilder, TheSameSurfaceTwiceIsRefusedBeforeAnyMeshing) {

@@ -22,6 +22,14 @@ BoundingBox boundingBox(const Points3& points) {
   return box;
 }
 
+double boxOverlap(const BoundingBox& a, const BoundingBox& b) {
+  if (a.empty() || b.empty()) return 0.0;
+  const double shared = (a.max.cwiseMin(b.max) - a.min.cwiseMax(b.min)).cwiseMax(0.0).prod();
+  const double together = a.extent().prod() + b.extent().prod() - shared;
+  if (!(together > 0)) return a.min == b.min && a.max == b.max ? 1.0 : 0.0;
+  return shared / together;
+}
+
 double signedTetVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                        const Eigen::Vector3d& d) {
   return (b - a).cross(c - a).dot(d - a) / 6.0;

@@ -9,6 +9,7 @@
 
 #include "Candidates.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/meshing/Decimation.h"
 #include "tetskin/meshing/IsolatedJobs.h"
 #include "tetskin/meshing/LevelSelection.h"
@@ -16,6 +17,10 @@
 
 namespace tetskin {
 namespace {
+
+// The least share of their bounding boxes' union (boxOverlap) that an input
+// shares with the finest one.
+constexpr double kLevelOfDetailOverlap = 0.5;
 
 // Says the collapse's warning for a repaired input, if it has one.
 void sayCollapseWarning(const BuildEvents& events, const RepairReport& report,
@@ -43,6 +48,21 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
   std::stable_sort(inputs.begin(), inputs.end(), [](const SurfaceInput& a, const SurfaceInput& b) {
     return a.mesh.triangleCount() > b.mesh.triangleCount();
   });
+  // Levels of another object (or of this one elsewhere, or in other units)
+  // would make a dataset whose levels the multigrid and the bindings cannot
+  // relate; levels of detail of one object share nearly all their bounding
+  // box.
+  const BoundingBox finestBox = boundingBox(inputs.front().mesh);
+  for (std::size_t j = 1; j < inputs.size(); ++j)
+    if (const double overlap = boxOverlap(finestBox, boundingBox(inputs[j].mesh));
+        overlap < kLevelOfDetailOverlap)
+      throw Error(inputs[j].name, 0,
+                  "is not a level of detail of " + inputs.front().name +
+                      ": their bounding boxes share " +
+                      formatNumber(std::round(1000 * overlap) / 10) +
+                      "% of the volume they span together (levels of detail of one object share "
+                      "most of it); each input is the same object, in the same place and units, "
+                      "at another resolution");
   std::vector<RepairedInput> prepared;
   std::string firstFailure;
   for (SurfaceInput& input : inputs) {

@@ -25,6 +25,11 @@ struct BoundingBox {
 // Axis-aligned bounding box of the given rows; empty for no rows.
 BoundingBox boundingBox(const Points3& points);
 
+// The volume two boxes share over the volume they span together (their
+// union): 1 for equal boxes, 0 for disjoint ones (and for an empty one, or
+// flat ones that differ).
+double boxOverlap(const BoundingBox& a, const BoundingBox& b);
+
 // Row of `points` nearest to `query` (the lowest on ties); -1 when empty.
 Index nearestPoint(const Points3& points, const Eigen::Vector3d& query);
 
