@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 #include "tetskin/core/Error.h"
 #include "tetskin/core/TetMesh.h"
 
@@ -95,9 +98,24 @@ TEST(TetMesh, LevelsMustCoverTheArraysContiguously) {
   removeUnreferencedNodes(a);
   appendLevel(all, a);
   appendLevel(all, a);
+  auto message = [&] {
+    try {
+      validateLevels(all, "d.json");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
   all.levels[1].firstNode += 1;
-  EXPECT_THROW(validateLevels(all, "d"), Error);
+  EXPECT_EQ(message(),
+            "d.json: level 1 starts at node 6, element 2, but level 0 ends before node 5, element "
+            "2 (levels must be contiguous, coarsest first)");
   all.levels[1].firstNode -= 1;
+  std::swap(all.levels[0], all.levels[1]);  // finest first
+  EXPECT_EQ(message(),
+            "d.json: level 0 starts at node 5, element 2, but the first level must start at node "
+            "0, element 0 (levels must be contiguous, coarsest first)");
+  std::swap(all.levels[0], all.levels[1]);
   all.levels.pop_back();
   EXPECT_THROW(validateLevels(all, "d"), Error);  // level 1's rows are not covered
 }

@@ -48,9 +48,14 @@ void validateLevels(const MultiLevelTetMesh& mesh, const std::string& name) {
     const LevelRange& level = mesh.levels[k];
     const std::string where = "level " + std::to_string(k);
     if (level.firstNode != nextNode || level.firstElement != nextElement)
-      throw Error(name, 0,
-                  where + " does not start where level " + std::to_string(k - 1) +
-                      " ends (levels must be contiguous, coarsest first)");
+      throw Error(
+          name, 0,
+          where + " starts at node " + std::to_string(level.firstNode) + ", element " +
+              std::to_string(level.firstElement) + ", but " +
+              (k == 0 ? std::string("the first level must start at node 0, element 0")
+                      : "level " + std::to_string(k - 1) + " ends before node " +
+                            std::to_string(nextNode) + ", element " + std::to_string(nextElement)) +
+              " (levels must be contiguous, coarsest first)");
     if (level.nodeCount <= 0 || level.elementCount <= 0)
       throw Error(name, 0, where + " has no nodes or no elements");
     nextNode += level.nodeCount;
