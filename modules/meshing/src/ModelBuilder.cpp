@@ -153,12 +153,17 @@ std::string selectionHint(const std::vector<Index>& counts, const std::vector<do
       most = std::max(most, c);
       ++made;
     }
-  std::string hint = made == 1
-                         ? "hint: the only candidate has " + std::to_string(most) +
-                               " elements; choose --min-elements and --max-elements near it"
-                         : "hint: the " + std::to_string(made) + " candidates have " +
-                               std::to_string(fewest) + " to " + std::to_string(most) +
-                               " elements; choose --min-elements and --max-elements in that range";
+  std::string hint;
+  if (made == 1)
+    hint = "hint: the only candidate has " + std::to_string(most) +
+           " elements; choose --min-elements and --max-elements near it";
+  else if (fewest == most)
+    hint = "hint: the " + std::to_string(made) + " candidates all have " + std::to_string(most) +
+           " elements; choose --min-elements and --max-elements near that";
+  else
+    hint = "hint: the " + std::to_string(made) + " candidates have " + std::to_string(fewest) +
+           " to " + std::to_string(most) +
+           " elements; choose --min-elements and --max-elements in that range";
   if (!options.decimate && inputCount == 1)
     hint += ", or add coarser levels of detail (--decimate, or --lod-series)";
   else if (options.mesher == MesherKind::TetGen)
