@@ -451,12 +451,12 @@ void MainWindow::afterLoad(const QString& path) {
   resetSimulation();
   refreshBindingPanel();
   QString message = "opened " + path;
-  if (scene_->hasSurface())  // as bind warns: such vertices are drawn unlit
-    if (const NormalGaps gaps = normalGaps(scene_->surface()); !gaps.empty())
+  if (scene_->hasSurface()) {                                                  // as bind warns
+    if (const NormalGaps gaps = normalGaps(scene_->surface()); !gaps.empty())  // drawn unlit
       message += "; warning: the surface has " + QString::fromStdString(describe(gaps));
-  if (scene_->hasSurface())  // as bind warns
     if (const std::string warning = scene_->misfitWarning(); !warning.empty())
       message += "; warning: " + QString::fromStdString(warning);
+  }
   statusBar()->showMessage(message);
   renderNow();
 }
