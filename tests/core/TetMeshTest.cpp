@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "ExpectError.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/TetMesh.h"
 
@@ -98,14 +99,7 @@ TEST(TetMesh, LevelsMustCoverTheArraysContiguously) {
   removeUnreferencedNodes(a);
   appendLevel(all, a);
   appendLevel(all, a);
-  auto message = [&] {
-    try {
-      validateLevels(all, "d.json");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [&] { return test::errorText([&] { validateLevels(all, "d.json"); }); };
   all.levels[1].firstNode += 1;
   EXPECT_EQ(message(),
             "d.json: level 1 starts at node 6, element 2, but level 0 ends before node 5, element "

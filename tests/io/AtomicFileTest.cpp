@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include <functional>
-
+#include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -50,24 +49,16 @@ TEST(AtomicFile, AMissingFolderOrAFileForOneIsAClearError) {
   dir.write("file.txt", "not a folder");
   const std::filesystem::path missing = dir / "missing" / "out.txt";
   const std::filesystem::path underFile = dir / "file.txt" / "out.vtp";
-  auto expectError = [](const std::function<void()>& write, const std::filesystem::path& target,
-                        const std::string& message) {
-    try {
-      write();
-      ADD_FAILURE() << "no error for " << target;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.file(), target.string());
-      EXPECT_EQ(e.message(), message);
-    }
-  };
-  expectError([&] { writeTextAtomically(missing, [](std::ostream&) {}); }, missing,
-              "cannot be written: " + (dir / "missing").string() + " does not exist");
-  expectError(
-      [&] {
-        writeFileAtomically(
-            underFile, [](const std::filesystem::path&) { ADD_FAILURE() << "the writer ran"; });
-      },
-      underFile, "cannot be written: " + (dir / "file.txt").string() + " is not a folder");
+  EXPECT_EQ(
+      test::errorText([&] { writeTextAtomically(missing, [](std::ostream&) {}); }),
+      missing.string() + ": cannot be written: " + (dir / "missing").string() + " does not exist");
+  EXPECT_EQ(test::errorText([&] {
+              writeFileAtomically(underFile, [](const std::filesystem::path&) {
+                ADD_FAILURE() << "the writer ran";
+              });
+            }),
+            underFile.string() + ": cannot be written: " + (dir / "file.txt").string() +
+                " is not a folder");
   EXPECT_EQ(dir.listing(), "file.txt\n");
 }
 

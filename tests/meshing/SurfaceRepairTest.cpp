@@ -12,15 +12,6 @@ namespace {
 
 const Eigen::Vector3d kZero(0, 0, 0), kOne(1, 1, 1);
 
-double signedVolume(const SurfaceMesh& m) {
-  double v = 0;
-  for (Index t = 0; t < m.triangleCount(); ++t)
-    v += m.positions.row(m.triangles(t, 0))
-             .dot(m.positions.row(m.triangles(t, 1)).cross(m.positions.row(m.triangles(t, 2)))) /
-         6.0;
-  return v;
-}
-
 TEST(SurfaceRepair, ClosedBoxNeedsNothing) {
   SurfaceMesh m = test::box(kZero, kOne);
   const RepairReport r = repairSurface(m, "box");
@@ -29,7 +20,7 @@ TEST(SurfaceRepair, ClosedBoxNeedsNothing) {
       EXPECT_EQ(count, 0) << key;
     }
   EXPECT_EQ(m.triangleCount(), 12);
-  EXPECT_NEAR(signedVolume(m), 1.0, 1e-12);
+  EXPECT_NEAR(enclosedVolume(m), 1.0, 1e-12);
   EXPECT_TRUE(boundaryLoops(m).empty());
   EXPECT_EQ(nonManifoldEdgeCount(m), 0);
 }
@@ -69,13 +60,13 @@ TEST(SurfaceRepair, OrientationIsMadeConsistentAndOutward) {
   OrientationResult o = orientConsistently(m);
   EXPECT_EQ(o.flippedTriangles, 2);
   EXPECT_TRUE(o.orientable);
-  EXPECT_NEAR(signedVolume(m), 1.0, 1e-12);
+  EXPECT_NEAR(enclosedVolume(m), 1.0, 1e-12);
   // An inside-out box is turned outward.
   SurfaceMesh inverted = test::box(kZero, kOne);
   inverted.triangles.col(1).swap(inverted.triangles.col(2));
   o = orientConsistently(inverted);
   EXPECT_EQ(o.invertedComponents, 1);
-  EXPECT_NEAR(signedVolume(inverted), 1.0, 1e-12);
+  EXPECT_NEAR(enclosedVolume(inverted), 1.0, 1e-12);
 }
 
 TEST(SurfaceRepair, DanglingTriangleIsRemoved) {
@@ -165,7 +156,7 @@ TEST(SurfaceRepair, CollapsingOverlappingPartsChangesTheVolumeAndIsWarnedAbout) 
   const RepairReport r = repairSurface(m, "cubes.obj");
   ASSERT_GT(r.collapsedTriangles, 0);
   EXPECT_NEAR(r.volumeBeforeCollapse, 2.0, 1e-12);  // the shared eighth counted twice
-  EXPECT_NEAR(r.volumeAfterCollapse, signedVolume(m), 1e-12);
+  EXPECT_NEAR(r.volumeAfterCollapse, enclosedVolume(m), 1e-12);
   EXPECT_NEAR(r.collapseVolumeChange(), (r.volumeAfterCollapse - 2.0) / 2.0, 1e-12);
   EXPECT_GT(std::abs(r.collapseVolumeChange()), kCollapseVolumeTolerance);
   const std::string warning = collapseWarning(r, "cubes.obj");
