@@ -141,4 +141,10 @@ void requireNotAnInput(const std::filesystem::path& output,
   }
 }
 
+std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string& group) {
+  for (const CLI::Option* option : cmd.get_options())
+    if (option->get_group() == group && option->count() > 0) return option->get_name();
+  return std::nullopt;
+}
+
 }  // namespace tetskin::cli

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -60,5 +61,10 @@ ImageSize checkedImageSize(const std::string& text);
 // is lost.
 void requireNotAnInput(const std::filesystem::path& output,
                        std::initializer_list<std::filesystem::path> inputs);
+
+// The name of the first option of `group` (its --help heading) given on
+// `cmd`'s command line, if any: for options that would change nothing in
+// the run asked for, which are errors rather than silently ignored.
+std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string& group);
 
 }  // namespace tetskin::cli

@@ -19,6 +19,9 @@
 namespace tetskin::cli {
 namespace {
 
+// The --help heading of the fur options.
+constexpr const char* kFurGroup = "Fur (fur paths; default: the dataset config's fur section)";
+
 struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture;
   std::string path = "cpu", camera = "iso", control = "none", size = "800x600";
@@ -68,10 +71,12 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.texture = a.texture;
   o.datasetName = a.dataset.string();
   parseControlMeshStyle(o.control);  // reject typos before any work
-  const Dataset dataset = loadDataset(a.dataset);
-  o.fur = furParameters(a, dataset.config);
+  if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
+    throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
     throw Error(*option + ": applies to simulated frames; give --frames N");
+  const Dataset dataset = loadDataset(a.dataset);
+  o.fur = furParameters(a, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
   std::filesystem::path surfacePath = a.surface;
@@ -123,41 +128,42 @@ void addRenderCommand(CLI::App& app) {
                   "colours the fur and its alpha 0 masks it (default there: the config's "
                   "fur.color_texture)")
       ->check(CLI::ExistingFile);
-  const char* fur = "Fur (fur paths; default: the dataset config's fur section)";
   // (The fur values' ranges are io furParameterProblem's, checked in run();
   // the checks here only keep CLI11's "Could not convert" from the user.)
   cmd->add_option("--fur-shells", a->furShells, "most shells drawn")
       ->check(anyWholeNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-min-shells", a->furMinShells, "fewest shells when adaptive")
       ->check(anyWholeNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
       ->check(trueOrFalse())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-length", a->furLength, "fur length / bounding-box diagonal")
       ->check(finiteNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-density", a->furDensity, "share of texels with a hair")
       ->check(finiteNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-texture-size", a->furTextureSize, "fur texture edge in texels")
       ->check(anyWholeNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-repeats", a->furRepeats, "fur texture tiles across the diagonal")
       ->check(finiteNumber())
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
       ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
-      ->group(fur);
+      ->group(kFurGroup);
   cmd->add_option("--fur-drag", a->furDrag, "seconds of velocity the tips trail by (0: static)")
       ->check(finiteNumber())
-      ->group(fur);
-  cmd->add_option("--fur-lighting", a->furLighting, "velvet or kajiya-kay")->group(fur);
+      ->group(kFurGroup);
+  cmd->add_option("--fur-lighting", a->furLighting, "velvet or kajiya-kay")->group(kFurGroup);
   cmd->add_option("--fur-velvet", a->furVelvet, "highlight offset off the mirror direction")
       ->check(finiteNumber())
-      ->group(fur);
-  cmd->add_option("--fur-fins", a->furFins, "silhouette fins")->check(trueOrFalse())->group(fur);
+      ->group(kFurGroup);
+  cmd->add_option("--fur-fins", a->furFins, "silhouette fins")
+      ->check(trueOrFalse())
+      ->group(kFurGroup);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
   cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();

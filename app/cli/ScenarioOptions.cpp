@@ -86,9 +86,8 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
 }
 
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
-  for (const CLI::Option* option : cmd.get_options())
-    if (option->get_group() == kGroup && option->count() > 0) return option->get_name();
-  return std::nullopt;
+  if (cmd.count("--scenario") > 0) return "--scenario";
+  return givenOptionOf(cmd, kGroup);
 }
 
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount) {

@@ -26,8 +26,8 @@ struct ScenarioArgs {
 // Adds --scenario and the "Scenario" group of options to `cmd`.
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
 
-// The first option of the "Scenario" group given on the command line, if any
-// (--scenario itself not counted).
+// --scenario or the first option of the "Scenario" group given on the
+// command line, if any.
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
 // The scenario's parameters with the held nodes, the loads and their curve

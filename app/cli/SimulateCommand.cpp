@@ -55,6 +55,11 @@ ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
 }
 
 void run(SimulateArgs& a, const CLI::App& cmd) {
+  if (a.solver == "cg")  // (checked before any work, as a typo would be)
+    for (const char* option : {"--coarse-reuse", "--coarse-operators"})
+      if (cmd.count(option) > 0)
+        throw Error(std::string(option) +
+                    ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
   const Dataset dataset = loadDataset(a.dataset);
   // A binding from `tetskin bind` follows as it is, on its level.
   std::optional<SurfaceInput> input;
