@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "SampleData.h"
@@ -110,6 +111,8 @@ TEST(BindSurface, EmbedInsidePointsHaveNonNegativeWeights) {
   EXPECT_TRUE(b.weights.row(0).isApprox(Eigen::RowVector4d(0.4, 0.1, 0.2, 0.3)));
   EXPECT_EQ(b.distance[0], 0.0);
   EXPECT_LT(b.minBarycentric[1], 0.0);  // outside: extrapolated
+  // Its distance is to the nearest point of the element, (1/3, 1/3, 1/3).
+  EXPECT_NEAR(b.distance[1], 5.0 / std::sqrt(3.0), 1e-12);
   EXPECT_NEAR(b.weights.row(1).sum(), 1.0, 1e-12);
   // The extrapolated weights still reproduce the point (affine exactness).
   Eigen::RowVector3d p = Eigen::RowVector3d::Zero();

@@ -35,7 +35,9 @@ struct SurfaceBinding {
   // triangle methods the 4th id is -1 and the 4th weight 0.
   Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> controlIds;
   Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> weights;  // each row sums to 1
-  Eigen::VectorXd distance;        // signed distance to the triangle's plane (0 for Embed)
+  // Signed distance to the triangle's plane; for Embed the distance to the
+  // nearest element (0 inside the volume).
+  Eigen::VectorXd distance;
   Eigen::VectorXi faceId;          // boundary face (element for Embed) the vertex is bound to
   Eigen::VectorXd minBarycentric;  // smallest weight: < 0 means outside the triangle
 
