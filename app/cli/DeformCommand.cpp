@@ -40,8 +40,7 @@ void run(const DeformArgs& a) {
   SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
   Points3 positions, normals;
   deformer.deform(control, positions, normals);
-  bound.surface.positions = positions;
-  bound.surface.normals = normals;
+  bound.deformed = DeformedState{positions, normals};
   writeBinding(a.output, bound);
   std::printf("wrote %s (%lld vertices deformed by %s)\n", a.output.c_str(),
               static_cast<long long>(positions.rows()), a.positions.c_str());

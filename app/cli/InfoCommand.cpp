@@ -49,10 +49,18 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
 }
 
 // A .vtp from `tetskin bind`: the surface, what it is bound to, and the
-// binding's quality summary as `bind` printed it.
+// binding's quality summary as `bind` printed it. A deformed one (from
+// deform, simulate or the GUI) is described as it is in the file, moved.
 void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
   const BoundSurface bound = bindingFromPolyData(data, path.string());
-  printSurface(path, bound.surface, "binding");
+  SurfaceMesh shown = bound.surface;
+  if (bound.deformed) {
+    shown.positions = bound.deformed->positions;
+    shown.normals = bound.deformed->normals;
+  }
+  printSurface(
+      path, shown,
+      bound.deformed ? "binding, deformed (its rest shape: points - Displacement)" : "binding");
   std::printf("  dataset    %s\n", bound.dataset.c_str());
   std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),
                            bound.binding)

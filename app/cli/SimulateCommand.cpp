@@ -103,22 +103,20 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     bound->binding = bindingAt(*input, dataset.mesh, level);
     bound->surface = std::move(input->surface);
     bound->dataset = a.dataset.generic_string();
+    bound->deformed.emplace();  // (frame 0 too: the scenario's start, not always the rest)
     deformer =
         std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
   }
 
   RunRecorder recorder(a.output);
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
-  Points3 controlAll = dataset.mesh.nodes, surfacePositions, surfaceNormals;
+  Points3 controlAll = dataset.mesh.nodes;
 
   auto writeFrame = [&] {
     const SimulationState s = sim.state();
     if (deformer) {
       controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
-      deformer->deform(controlAll, surfacePositions, surfaceNormals);
-      // The deformer keeps the rest shape: the frame's geometry can go in place.
-      bound->surface.positions = surfacePositions;
-      bound->surface.normals = surfaceNormals;
+      deformer->deform(controlAll, bound->deformed->positions, bound->deformed->normals);
     }
     recorder.addFrame(s.time, sim.restMesh(), s.positions, s.velocities, s.externalForces,
                       sim.vonMisesStress(), level, deformer ? bound.get() : nullptr);

@@ -482,10 +482,8 @@ void Scene::updateDiagnostics() {
 
 BoundSurface Scene::deformedBoundSurface() const {
   if (!surface_) throw Error("no surface to export");
-  BoundSurface bound{*surface_, binding_, datasetPath_.generic_string()};
-  bound.surface.positions = deformedPositions();
-  bound.surface.normals = deformedNormals_;
-  return bound;
+  return BoundSurface{*surface_, binding_, datasetPath_.generic_string(),
+                      DeformedState{deformedPositions(), deformedNormals_}};
 }
 
 }  // namespace tetskin::gui

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 #include <vtkFieldData.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "ExpectError.h"
 #include "SampleData.h"
 #include "TestFiles.h"
 #include "tetskin/binding/BindSurface.h"
@@ -15,6 +19,7 @@
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -131,6 +136,66 @@ TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   bound.binding.level = 7;
   writeBinding(dir / "bad.vtp", bound);
   EXPECT_THROW(readSurfaceOrBinding(dir / "bad.vtp", d.mesh), Error);
+}
+
+// A surface the binding has moved (deform's output, simulate's frames, the
+// GUI's export) is written at its moved points, with a Displacement array
+// from rest and Pose "deformed"; read back, it is the whole binding again,
+// at rest (its normals were not written), with the moved state beside it.
+// Files from before the pose was written read as rest.
+TEST(BindingFile, ADeformedSurfaceKeepsItsRestShape) {
+  test::ScratchDir dir;
+  const Dataset& d = sampleDataset();
+  BoundSurface moved = boundBunny(d, 1);
+  moved.binding.offset = OffsetMode::Displacement;  // (the offset that reads the rest shape)
+  DeformedState state{moved.surface.positions, moved.surface.positions};
+  state.positions.col(1).array() += 0.5;
+  state.normals.rowwise() = Eigen::RowVector3d(0, 0, 1);
+  moved.deformed = state;
+  writeBinding(dir / "moved.vtp", moved);
+  const vtkSmartPointer<vtkPolyData> file = readVtp(dir / "moved.vtp");
+  EXPECT_TRUE(isDeformed(file, "moved.vtp"));
+  EXPECT_EQ(fromVtkPoints(file->GetPoints(), "moved.vtp"), state.positions);
+  const std::optional<Points3> displacement =
+      fromVtkVectors(file->GetPointData()->GetArray("Displacement"));
+  ASSERT_TRUE(displacement.has_value());
+  EXPECT_LT((*displacement - (state.positions - moved.surface.positions)).cwiseAbs().maxCoeff(),
+            1e-12);
+  for (const BoundSurface& back :
+       {readBinding(dir / "moved.vtp"), readBinding(dir / "moved.vtp", d.mesh)}) {
+    ASSERT_TRUE(back.deformed.has_value());
+    EXPECT_EQ(back.deformed->positions, state.positions);
+    EXPECT_EQ(back.deformed->normals, state.normals);
+    EXPECT_LT((back.surface.positions - moved.surface.positions).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_FALSE(back.surface.hasNormals());
+    EXPECT_EQ(back.binding.controlIds, moved.binding.controlIds);
+  }
+  const SurfaceOrBinding opened = readSurfaceOrBinding(dir / "moved.vtp", d.mesh);
+  ASSERT_TRUE(opened.binding.has_value());
+  EXPECT_LT((opened.surface.positions - moved.surface.positions).cwiseAbs().maxCoeff(), 1e-12);
+
+  // Without its Displacement array a deformed file has lost its rest shape.
+  vtkSmartPointer<vtkPolyData> lost = bindingToPolyData(moved);
+  lost->GetPointData()->RemoveArray("Displacement");
+  writeVtp(dir / "lost.vtp", lost);
+  EXPECT_EQ(test::errorText([&] { readBinding(dir / "lost.vtp", d.mesh); }),
+            (dir / "lost.vtp").string() +
+                ": is a deformed surface (field data Pose 'deformed') without its rest shape: "
+                "point array 'Displacement' is missing or has the wrong size");
+
+  BoundSurface rest = boundBunny(d, 1);
+  vtkSmartPointer<vtkPolyData> data = bindingToPolyData(rest);
+  EXPECT_FALSE(isDeformed(data, "rest"));
+  EXPECT_EQ(data->GetPointData()->GetArray("Displacement"), nullptr);
+  data->GetFieldData()->RemoveArray("Pose");  // as written before the pose was
+  writeVtp(dir / "old.vtp", data);
+  EXPECT_FALSE(readBinding(dir / "old.vtp", d.mesh).deformed.has_value());
+  auto pose = vtkSmartPointer<vtkStringArray>::New();
+  pose->SetName("Pose");
+  pose->InsertNextValue("bent");
+  data->GetFieldData()->AddArray(pose);
+  EXPECT_EQ(test::errorText([&] { isDeformed(data, "odd.vtp"); }),
+            "odd.vtp: field data 'Pose' is 'bent', not rest or deformed");
 }
 
 }  // namespace

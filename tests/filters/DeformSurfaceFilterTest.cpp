@@ -188,8 +188,41 @@ TEST(DeformSurfaceFilter, FollowsARigidMotionOfTheControlMeshThroughAPipeline) {
                   .maxCoeff(),
               1e-9);
   }
-  // The binding arrays travel on, so a deformed surface can be inspected.
-  EXPECT_NE(deform->GetOutput()->GetPointData()->GetArray("MinBarycentric"), nullptr);
+  // The binding arrays travel on, so a deformed surface can be inspected;
+  // it says it is deformed, with its displacement from rest, and the
+  // binding it came from still says rest.
+  vtkPolyData* out = deform->GetOutput();
+  EXPECT_NE(out->GetPointData()->GetArray("MinBarycentric"), nullptr);
+  EXPECT_TRUE(isDeformed(out, "output"));
+  EXPECT_LT((restPoints(out, "output") - rest).cwiseAbs().maxCoeff(), tolerance);
+  EXPECT_FALSE(isDeformed(pipeline.bind->GetOutput(), "binding"));
+  EXPECT_EQ(pipeline.bind->GetOutput()->GetPointData()->GetArray("Displacement"), nullptr);
+}
+
+// A deformed surface (this filter's output, a frame of a run) given to a
+// deform filter is taken at its rest shape: it does not move twice. (The
+// displacement offset reads the rest shape; the normal offset would not
+// tell.)
+TEST(DeformSurfaceFilter, ADeformedSurfaceIsDeformedFromItsRestShape) {
+  MovedControlPipeline pipeline;
+  pipeline.bind->SetOffsetModeToDisplacement();
+  pipeline.deform->SetRestControlMeshData(controlLevelGrid());
+  pipeline.motion->Translate(1, 0, 0);
+  vtkNew<vtkTransform> secondMotion;
+  secondMotion->Translate(0, 2, 0);
+  vtkNew<vtkTransformFilter> secondMove;
+  secondMove->SetInputData(controlLevelGrid());
+  secondMove->SetTransform(secondMotion);
+  vtkNew<vtkTetSkinDeformSurface> again;
+  const VtkErrorCapture errors(again);
+  again->SetInputConnection(pipeline.deform->GetOutputPort());
+  again->SetControlMeshConnection(secondMove->GetOutputPort());
+  again->SetRestControlMeshData(controlLevelGrid());
+  again->Update();
+  EXPECT_FALSE(errors.failed()) << errors.message();
+  const Points3 expected = bunnySurface().positions.rowwise() + Eigen::RowVector3d(0, 2, 0);
+  EXPECT_LT((pointsOf(again->GetOutput()) - expected).cwiseAbs().maxCoeff(),
+            1e-9 * diagonal(expected));
 }
 
 TEST(DeformSurfaceFilter, AConsumerKeepsTheOutputItHoldsWhileUnheldArraysAreWrittenAgain) {
@@ -219,9 +252,14 @@ TEST(DeformSurfaceFilter, AConsumerKeepsTheOutputItHoldsWhileUnheldArraysAreWrit
   // Held by no one, the last arrays are written again, with the new values.
   vtkDataArray* points = deform->GetOutput()->GetPoints()->GetData();
   vtkDataArray* normals = deform->GetOutput()->GetPointData()->GetNormals();
+  vtkDataArray* displacement = deform->GetOutput()->GetPointData()->GetArray("Displacement");
   shiftTo(3.0);
   EXPECT_EQ(deform->GetOutput()->GetPoints()->GetData(), points);
   EXPECT_EQ(deform->GetOutput()->GetPointData()->GetNormals(), normals);
+  EXPECT_EQ(deform->GetOutput()->GetPointData()->GetArray("Displacement"), displacement);
+  EXPECT_LT(
+      (restPoints(deform->GetOutput(), "output") - bunnySurface().positions).cwiseAbs().maxCoeff(),
+      1e-9 * diagonal(atTwo));
   EXPECT_LT((pointsOf(deform->GetOutput()) - (atTwo.rowwise() + Eigen::RowVector3d(1, 0, 0)))
                 .cwiseAbs()
                 .maxCoeff(),

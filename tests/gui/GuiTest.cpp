@@ -530,7 +530,12 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   const BoundSurface back = readBinding(vtp);
   EXPECT_EQ(back.surface.vertexCount(), 1839);
   EXPECT_EQ(back.binding.controlIds, window_->scene().binding().controlIds);
-  EXPECT_TRUE(back.surface.positions.isApprox(window_->scene().deformedPositions()));
+  // The file's points are the deformed surface; the binding's rest shape
+  // comes back from its Displacement array.
+  ASSERT_TRUE(back.deformed.has_value());
+  EXPECT_TRUE(back.deformed->positions.isApprox(window_->scene().deformedPositions()));
+  EXPECT_LT((back.surface.positions - window_->scene().surface().positions).cwiseAbs().maxCoeff(),
+            1e-12);
   const std::filesystem::path pvd = scratch("run.pvd");
   std::filesystem::remove_all(scratch("run_frames"));
   ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
@@ -547,7 +552,7 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   EXPECT_EQ(readVtu(scratch("run_frames/control_00002.vtu"))->GetNumberOfCells(), 12713);
   EXPECT_FALSE(window_->exportFrame(QString::fromStdString(scratch("frame.txt").string())));
   // File > Open takes the exported surface back as a binding, as it is: its
-  // ids and level, not a new binding of its (deformed) positions.
+  // ids, level and rest shape, not a new binding of its deformed positions.
   ASSERT_TRUE(window_->openFile(QString::fromStdString(vtp.string())))
       << window_->lastError().toStdString();
   EXPECT_EQ(window_->scene().binding().controlIds, back.binding.controlIds);

@@ -82,6 +82,16 @@ for index, time in enumerate([times[0], times[-1]]):
     for name in ("ControlIds", "Distance", "MinBarycentric", "FaceId", "Normals"):
         if surface.GetPointData().GetArray(name) is None:
             fail("surface array %s missing" % name)
+    # The surface's own displacement from its rest shape, as the control
+    # mesh's (to rounding at the start: the rest is rebuilt from the weights).
+    moved = array_range(surface, "point", "Displacement")
+    if index == 0 and not moved[1] < 1e-9:
+        fail("the first surface frame should be at rest, max |Displacement| %g" % moved[1])
+    if index == 1 and not moved[1] > 0.0:
+        fail("the last surface frame has not moved")
+    pose = surface.GetFieldData().GetAbstractArray("Pose")
+    if pose is None or pose.GetValue(0) != "deformed":
+        fail("the surface frames should have field data Pose 'deformed'")
     normals = array_range(surface, "point", "Normals", -1)
     if abs(normals[1] - 1.0) > 1e-6:
         fail("surface normals are not unit length: %s" % (normals,))

@@ -80,7 +80,7 @@ struct vtkTetSkinDeformSurface::Derived {
   // The last update's output arrays. The next update writes into them again
   // when nothing else holds them any more: new ones each update cost their
   // allocation and page faults (about 11 ms at 1M vertices).
-  vtkSmartPointer<vtkDoubleArray> positions, normals;
+  vtkSmartPointer<vtkDoubleArray> positions, normals, displacement;
 };
 
 namespace {
@@ -156,6 +156,9 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
       Kept.reset();
       auto derived = std::make_unique<Derived>();
       derived->surface = fromVtkPolyData(boundIn, kBound);
+      // (A deformed surface, this filter's output or a frame of a run, is
+      // taken at its rest shape: deformed again, it does not move twice.)
+      derived->surface.positions = restPoints(boundIn, kBound);
       derived->binding = bindingArraysFromPolyData(boundIn, kBound);
       const int k = derived->binding.controlsPerVertex();
       derived->binding.controlIds.leftCols(k).array() -= static_cast<int>(ControlIdOffset);
@@ -196,6 +199,10 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
     points->SetData(kept.positions);
     out->SetPoints(points);
     out->GetPointData()->SetNormals(kept.normals);
+    makeWritable(kept.displacement, n);
+    vectorRows(kept.displacement) = vectorRows(kept.positions) - kept.surface.positions;
+    // (Into the output's own lists: ShallowCopy copied them, the input keeps its own.)
+    markDeformed(out, kept.displacement);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     Kept.reset();

@@ -107,7 +107,7 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
   Impl& s = *impl_;
   s.path = path;
   const RenderPath skin = skinPath(path);
-  BoundSurface bound{restSurface, binding, ""};
+  BoundSurface bound{restSurface, binding, "", std::nullopt};
   bound.surface.normals = vertexNormals(restSurface.positions, restSurface.triangles);
   s.polyData = bindingToPolyData(bound);
   s.maxDistance = binding.distance.cwiseAbs().maxCoeff();

@@ -73,11 +73,53 @@ void addBindingArrays(vtkPolyData* data, const SurfaceBinding& b) {
   level->SetName("Level");
   level->InsertNextValue(b.level);
   fd->AddArray(level);
+  addString(fd, "Pose", "rest");
+}
+
+void markDeformed(vtkPolyData* data, vtkDoubleArray* displacement) {
+  displacement->SetName("Displacement");
+  data->GetPointData()->AddArray(displacement);
+  addString(data->GetFieldData(), "Pose", "deformed");
+}
+
+bool isDeformed(vtkPolyData* data, const std::string& source) {
+  auto* pose = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("Pose"));
+  if (!pose || pose->GetNumberOfValues() < 1) return false;  // written before the pose was
+  const std::string value = pose->GetValue(0);
+  if (value != "rest" && value != "deformed")
+    throw Error(source, 0, "field data 'Pose' is '" + value + "', not rest or deformed");
+  return value == "deformed";
+}
+
+Points3 restPoints(vtkPolyData* data, const std::string& source) {
+  Points3 points = fromVtkPoints(data->GetPoints(), source);
+  if (!isDeformed(data, source)) return points;
+  const std::optional<Points3> displacement =
+      fromVtkVectors(data->GetPointData()->GetArray("Displacement"));
+  if (!displacement || displacement->rows() != points.rows())
+    throw Error(source, 0,
+                "is a deformed surface (field data Pose 'deformed') without its rest shape: "
+                "point array 'Displacement' is missing or has the wrong size");
+  return points - *displacement;
 }
 
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
-  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
+  if (!bound.deformed) {
+    vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
+    addBindingArrays(data, bound.binding);
+    addString(data->GetFieldData(), "Dataset", bound.dataset);
+    return data;
+  }
+  const Points3& rest = bound.surface.positions;
+  if (bound.deformed->positions.rows() != rest.rows())
+    throw Error("the deformed surface has " + std::to_string(bound.deformed->positions.rows()) +
+                " vertices, its binding " + std::to_string(rest.rows()));
+  SurfaceMesh moved = bound.surface;
+  moved.positions = bound.deformed->positions;
+  moved.normals = bound.deformed->normals;
+  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(moved);
   addBindingArrays(data, bound.binding);
+  markDeformed(data, toVtkVectors("Displacement", moved.positions - rest));
   addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;
 }
@@ -128,6 +170,11 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
   if (data->GetNumberOfPoints() != bound.surface.vertexCount())
     throw Error(source, 0, "the binding's points were merged or dropped on reading");
   bound.binding = bindingArraysFromPolyData(data, source);
+  if (isDeformed(data, source)) {
+    bound.deformed = DeformedState{bound.surface.positions, bound.surface.normals};
+    bound.surface.positions = restPoints(data, source);
+    bound.surface.normals.resize(0, 3);  // (the rest normals were not written)
+  }
   return bound;
 }
 

@@ -4,12 +4,16 @@
 // sections 4.1-4.2): a bound surface follows a deformed control mesh.
 //
 // Input 0: a bound surface: the output of vtkTetSkinBindSurface or a .vtp
-// written by `tetskin bind` (the surface at rest with the binding's arrays).
+// written by `tetskin bind` (the surface at rest with the binding's arrays);
+// or a deformed one (this filter's output, a frame of `tetskin simulate`),
+// taken at its rest shape, points - Displacement.
 // Input 1: the control mesh, deformed (any vtkPointSet: its points are the
 // node positions, e.g. a frame of `tetskin simulate`). ControlIds minus
 // ControlIdOffset are point ids of input 1.
 // Output: input 0 with the deformed points and their smooth unit normals
-// (the active normals, "Normals"); its other arrays are passed on.
+// (the active normals, "Normals"), the point array "Displacement" (points
+// minus rest) and field data Pose "deformed" (BindingFile.h); its other
+// arrays are passed on.
 // The displacement offset needs the control mesh at rest too: from the
 // optional input 2 (a vtkPointSet numbered as input 1), otherwise from
 // input 1's point array "Displacement" (rest = points - Displacement, as
@@ -24,7 +28,7 @@
 // input 0 (the surface, the binding, its checks, the deformer's records) is
 // kept until input 0, ControlIdOffset or input 1's point count changes, and
 // the displacement offset's shifts until the rest positions do. The output's
-// points and normals are the last update's arrays written again where
+// points, normals and displacement are the last update's arrays written again where
 // nothing else holds them; a consumer holding an earlier output (a cache, a
 // shallow copy) keeps its values, and the filter makes new arrays then.
 

@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// A bound surface as one .vtp file that ParaView opens: the surface at rest
-// with point arrays ControlIds (3 ints, 4 for embed), Weights (3 or 4),
+// A bound surface as one .vtp file that ParaView opens: the surface with
+// point arrays ControlIds (3 ints, 4 for embed), Weights (3 or 4),
 // Distance, MinBarycentric, FaceId and Normals, and field data naming the
-// dataset, level, method and offset mode.
+// dataset, level, method, offset mode and pose. Pose "rest": the points are
+// the surface as it was bound. Pose "deformed" (deform's output, simulate's
+// frames, the GUI's export): the points and Normals are the moved surface,
+// and a point array Displacement holds points minus rest, so the file is
+// still a whole binding (its rest shape, which the displacement offset
+// reads, is points - Displacement) and ParaView can warp or colour by it.
+// (Files without a pose, from before it was written, read as rest.)
 
 #include <vtkSmartPointer.h>
 
@@ -15,25 +21,49 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
+class vtkDoubleArray;
 class vtkPolyData;
 
 namespace tetskin {
+
+// Where a binding has moved its surface.
+struct DeformedState {
+  Points3 positions, normals;
+};
 
 struct BoundSurface {
   SurfaceMesh surface;  // rest positions, triangles (normals if stored)
   SurfaceBinding binding;
   std::string dataset;  // the dataset config the ids refer to, as written
+  // A moved state, written as the file's points and normals (Pose
+  // "deformed"); none for a binding at rest.
+  std::optional<DeformedState> deformed;
 };
 
 // The binding's point arrays (ControlIds, Weights, Distance, MinBarycentric,
-// FaceId) and field data (Method, Offset, Level) added to `data`, whose
-// points are the bound vertices; and read back, checked for presence and
-// size (not against a mesh: validateBinding). Errors name `source`.
+// FaceId) and field data (Method, Offset, Level, Pose "rest") added to
+// `data`, whose points are the bound vertices at rest; and read back,
+// checked for presence and size (not against a mesh: validateBinding).
+// Errors name `source`.
 void addBindingArrays(vtkPolyData* data, const SurfaceBinding& binding);
 SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& source);
 
-// The surface (with `surface.normals` if present) plus the binding arrays
-// and the field data 'Dataset'.
+// Marks `data`, a binding's arrays on moved points, as deformed: field data
+// Pose "deformed", and `displacement` (points minus rest, one 3-vector per
+// point) added to its point arrays as Displacement.
+void markDeformed(vtkPolyData* data, vtkDoubleArray* displacement);
+// Whether `data` is marked deformed. Throws Error naming `source` for a Pose
+// other than rest or deformed.
+bool isDeformed(vtkPolyData* data, const std::string& source);
+// The bound vertices at rest: the points of `data`, less its Displacement
+// array where it is deformed (an error naming `source` where that is
+// missing or malformed).
+Points3 restPoints(vtkPolyData* data, const std::string& source);
+
+// The surface (with `surface.normals` if present; the deformed state's
+// points and normals, with its Displacement, if any) plus the binding
+// arrays and the field data 'Dataset'. Read back, a deformed file gives the
+// rest surface without normals, and the deformed state.
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
 // The same, checked against `dataset` as readBinding(path, dataset) checks.
