@@ -53,13 +53,8 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
 // deform, simulate or the GUI) is described as it is in the file, moved.
 void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
   const BoundSurface bound = bindingFromPolyData(data, path.string());
-  SurfaceMesh shown = bound.surface;
-  if (bound.deformed) {
-    shown.positions = bound.deformed->positions;
-    shown.normals = bound.deformed->normals;
-  }
   printSurface(
-      path, shown,
+      path, shownSurface(bound),
       bound.deformed ? "binding, deformed (its rest shape: points - Displacement)" : "binding");
   std::printf("  dataset    %s\n", bound.dataset.c_str());
   std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),

@@ -55,7 +55,8 @@ ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
 }
 
 void run(SimulateArgs& a, const CLI::App& cmd) {
-  if (a.solver == "cg")  // (checked before any work, as a typo would be)
+  // (Checked before any work, as a typo would be.)
+  if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)
     for (const char* option : {"--coarse-reuse", "--coarse-operators"})
       if (cmd.count(option) > 0)
         throw Error(std::string(option) +

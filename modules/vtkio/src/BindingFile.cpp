@@ -56,6 +56,18 @@ vtkDataArray* pointArray(vtkPolyData* data, const char* name, int components,
   return a;
 }
 
+// `points`, the points of `data` (marked deformed), less its Displacement array.
+Points3 lessDisplacement(vtkPolyData* data, Points3 points, const std::string& source) {
+  const std::optional<Points3> displacement =
+      fromVtkVectors(data->GetPointData()->GetArray("Displacement"));
+  if (!displacement || displacement->rows() != points.rows())
+    throw Error(source, 0,
+                "is a deformed surface (field data Pose 'deformed') without its rest shape: "
+                "point array 'Displacement' is missing or has the wrong size");
+  points -= *displacement;
+  return points;
+}
+
 }  // namespace
 
 void addBindingArrays(vtkPolyData* data, const SurfaceBinding& b) {
@@ -94,32 +106,26 @@ bool isDeformed(vtkPolyData* data, const std::string& source) {
 Points3 restPoints(vtkPolyData* data, const std::string& source) {
   Points3 points = fromVtkPoints(data->GetPoints(), source);
   if (!isDeformed(data, source)) return points;
-  const std::optional<Points3> displacement =
-      fromVtkVectors(data->GetPointData()->GetArray("Displacement"));
-  if (!displacement || displacement->rows() != points.rows())
-    throw Error(source, 0,
-                "is a deformed surface (field data Pose 'deformed') without its rest shape: "
-                "point array 'Displacement' is missing or has the wrong size");
-  return points - *displacement;
+  return lessDisplacement(data, std::move(points), source);
 }
 
-vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
-  if (!bound.deformed) {
-    vtkSmartPointer<vtkPolyData> data = toVtkPolyData(bound.surface);
-    addBindingArrays(data, bound.binding);
-    addString(data->GetFieldData(), "Dataset", bound.dataset);
-    return data;
-  }
-  const Points3& rest = bound.surface.positions;
-  if (bound.deformed->positions.rows() != rest.rows())
+SurfaceMesh shownSurface(const BoundSurface& bound) {
+  if (!bound.deformed) return bound.surface;
+  if (bound.deformed->positions.rows() != bound.surface.vertexCount())
     throw Error("the deformed surface has " + std::to_string(bound.deformed->positions.rows()) +
-                " vertices, its binding " + std::to_string(rest.rows()));
+                " vertices, its binding " + std::to_string(bound.surface.vertexCount()));
   SurfaceMesh moved = bound.surface;
   moved.positions = bound.deformed->positions;
   moved.normals = bound.deformed->normals;
-  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(moved);
+  return moved;
+}
+
+vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
+  vtkSmartPointer<vtkPolyData> data = toVtkPolyData(shownSurface(bound));
   addBindingArrays(data, bound.binding);
-  markDeformed(data, toVtkVectors("Displacement", moved.positions - rest));
+  if (bound.deformed)
+    markDeformed(data,
+                 toVtkVectors("Displacement", bound.deformed->positions - bound.surface.positions));
   addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;
 }
@@ -172,7 +178,7 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
   bound.binding = bindingArraysFromPolyData(data, source);
   if (isDeformed(data, source)) {
     bound.deformed = DeformedState{bound.surface.positions, bound.surface.normals};
-    bound.surface.positions = restPoints(data, source);
+    bound.surface.positions = lessDisplacement(data, bound.surface.positions, source);
     bound.surface.normals.resize(0, 3);  // (the rest normals were not written)
   }
   return bound;

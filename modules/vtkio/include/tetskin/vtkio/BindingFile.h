@@ -60,6 +60,11 @@ bool isDeformed(vtkPolyData* data, const std::string& source);
 // missing or malformed).
 Points3 restPoints(vtkPolyData* data, const std::string& source);
 
+// The surface as a binding file holds it: `bound.surface`, or with the
+// deformed state's positions and normals where there is one (an Error
+// where its vertex count is not the surface's).
+SurfaceMesh shownSurface(const BoundSurface& bound);
+
 // The surface (with `surface.normals` if present; the deformed state's
 // points and normals, with its Displacement, if any) plus the binding
 // arrays and the field data 'Dataset'. Read back, a deformed file gives the
