@@ -47,6 +47,7 @@
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::gui {
@@ -405,7 +406,6 @@ bool MainWindow::openFiles(const QStringList& paths) {
 
 bool MainWindow::openFile(const QString& qpath) {
   const std::filesystem::path path = qpath.toStdString();
-  const std::string ext = lowerExtension(path);
   try {
     if (isDatasetFile(path)) {
       scene_->openDataset(path);
@@ -414,7 +414,7 @@ bool MainWindow::openFile(const QString& qpath) {
       const ElasticMaterial& material = scene_->dataset().config.elasticity;
       young_->setValue(material.youngsModulus);
       poisson_->setValue(material.poissonRatio);
-    } else if (ext == ".vtp" || ext == ".obj" || ext == ".ply" || ext == ".stl") {
+    } else if (isSurfaceFile(path)) {
       scene_->openSurface(path);
     } else if (isFrameFile(path)) {
       return startFromFrame(qpath);  // a state of the open dataset, not a scene to load

@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
@@ -70,6 +71,15 @@ TEST(Dataset, MissingNodeFileIsNamed) {
   } catch (const Error& e) {
     EXPECT_EQ(e.file(), (dir / "d.node").string());
   }
+}
+
+// A surface where the dataset belongs (bind's arguments swapped) is named as
+// not a dataset, not parsed as JSON.
+TEST(Dataset, OtherExtensionsAreNotDatasets) {
+  test::ScratchDir dir;
+  const auto obj = dir.write("bunny.obj", "v 0 0 0\n");
+  test::expectErrorAt([&] { loadDataset(obj); }, obj.string(), 0,
+                      "is not a dataset (expected its .json config, or a .node/.ele pair)");
 }
 
 TEST(Dataset, NodeElePairLoadsAsOneLevel) {

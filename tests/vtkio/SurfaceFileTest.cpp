@@ -189,6 +189,31 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
                       "Cells offsets: type 'Float32' is not an integer type");
 }
 
+// A file of another kind where a .vtp or .vtu belongs (a surface frame given
+// as a control frame, a .pvd, an OBJ) is named by its kind, not by VTK's
+// parser; comments and the XML declaration before the root are fine.
+TEST(VtkFiles, AFileOfAnotherKindIsNamedByItsKind) {
+  test::ScratchDir dir;
+  writeVtp(dir / "surface.vtp", toVtkPolyData(bunny()));
+  writeVtu(dir / "control.vtu", toVtkUnstructuredGrid(test::unitTetrahedron()));
+  test::expectErrorAt([&] { readVtu(dir / "surface.vtp"); }, (dir / "surface.vtp").string(), 2,
+                      "is a VTK PolyData (.vtp) file, not UnstructuredGrid (.vtu)");
+  test::expectErrorAt([&] { readVtp(dir / "control.vtu"); }, (dir / "control.vtu").string(), 2,
+                      "is a VTK UnstructuredGrid (.vtu) file, not PolyData (.vtp)");
+  const auto series = dir.write("run.pvd",
+                                "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+                                "version=\"0.1\">\n<Collection/>\n</VTKFile>\n");
+  test::expectErrorAt([&] { readVtu(series); }, series.string(), 2,
+                      "is a VTK Collection (.pvd) file, not UnstructuredGrid (.vtu) (a series: "
+                      "give one of its files)");
+  const auto obj = dir.write("bunny.obj", "# a surface\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  test::expectErrorAt([&] { readVtp(obj); }, obj.string(), 0,
+                      "is not a VTK XML file (no <VTKFile> root element)");
+  std::string commented = test::readText(dir / "surface.vtp");
+  commented.insert(commented.find("<VTKFile"), "<!-- written by hand -->\n");
+  EXPECT_EQ(readVtp(dir.write("commented.vtp", commented))->GetNumberOfPoints(), 1839);
+}
+
 // A foreign file with inline ASCII data (VTK's writer in ASCII mode, as
 // other tools write): the check reads past megabytes of numbers between
 // the tags, in chunks, and still names the line of a bad attribute after

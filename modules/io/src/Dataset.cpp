@@ -33,6 +33,11 @@ bool isDatasetFile(const std::filesystem::path& path) {
 }
 
 Dataset loadDataset(const std::filesystem::path& path) {
+  // Checked first: a surface given where the dataset belongs (arguments
+  // swapped) would otherwise be parsed as JSON and fail on its first line.
+  if (!isDatasetFile(path))
+    throw Error(path.string(), 0,
+                "is not a dataset (expected its .json config, or a .node/.ele pair)");
   if (lowerExtension(path) == ".node" || lowerExtension(path) == ".ele")
     return loadNodeElePair(path);
   Dataset dataset;

@@ -38,10 +38,10 @@ void writeXml(const std::filesystem::path& path, Data* data) {
 }
 
 template <typename Reader, typename Data>
-vtkSmartPointer<Data> readXml(const std::filesystem::path& path) {
+vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_view type) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
-  detail::checkVtkXmlHeader(path);
+  detail::checkVtkXmlHeader(path, type);
   auto reader = vtkSmartPointer<Reader>::New();
   VtkErrorCapture errors(reader);
   reader->SetFileName(path.c_str());
@@ -61,10 +61,10 @@ void writeVtu(const std::filesystem::path& path, vtkUnstructuredGrid* data) {
   writeXml<vtkXMLUnstructuredGridWriter>(path, data);
 }
 vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path) {
-  return readXml<vtkXMLPolyDataReader, vtkPolyData>(path);
+  return readXml<vtkXMLPolyDataReader, vtkPolyData>(path, "PolyData");
 }
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path) {
-  return readXml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(path);
+  return readXml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(path, "UnstructuredGrid");
 }
 
 void writePng(const std::filesystem::path& path, vtkImageData* image) {

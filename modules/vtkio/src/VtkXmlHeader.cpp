@@ -98,13 +98,22 @@ class XmlTags {
   long line_ = 1;
 };
 
+// A VTKFile type as a reader knows it: "PolyData (.vtp)".
+std::string describeType(std::string_view type) {
+  constexpr std::array<std::array<std::string_view, 2>, 3> kExtensions{
+      {{"PolyData", ".vtp"}, {"UnstructuredGrid", ".vtu"}, {"Collection", ".pvd"}}};
+  for (const auto& [name, extension] : kExtensions)
+    if (type == name) return std::string(name) + " (" + std::string(extension) + ")";
+  return "'" + std::string(type) + "'";
+}
+
 // More components than any array TetSkin or ParaView users write (VTK hung
 // on 99999999999).
 constexpr long long kMaxComponents = 4096;
 
 }  // namespace
 
-void checkVtkXmlHeader(const std::filesystem::path& path) {
+void checkVtkXmlHeader(const std::filesystem::path& path, std::string_view expectedType) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string(), 0, "cannot open for reading");
   const std::string file = path.string();
@@ -115,9 +124,23 @@ void checkVtkXmlHeader(const std::filesystem::path& path) {
   XmlTags tags(in);
   std::string tagText;
   long line = 0;
+  bool rootSeen = false;
   while (tags.next(tagText, line)) {
     const std::string_view tag(tagText);
+    if (tag.substr(0, 2) == "<?" || tag.substr(0, 2) == "<!") continue;  // declaration, comment
     const std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/") - 1);
+    if (!rootSeen) {
+      // Checked first: any other file (an OBJ, a .pvd, a .vtu where a .vtp
+      // belongs) would otherwise get VTK's parser messages.
+      if (name != "VTKFile") break;
+      rootSeen = true;
+      const std::string_view type = attribute(tag, "type").value_or("");
+      if (type != expectedType)
+        throw Error(file, line,
+                    "is a VTK " + describeType(type) + " file, not " + describeType(expectedType) +
+                        (type == "Collection" ? " (a series: give one of its files)" : ""));
+      continue;
+    }
     if (tag.substr(0, 2) == "</") {  // a closing tag
       if (std::find(kCellSections.begin(), kCellSections.end(), tag.substr(2)) !=
           kCellSections.end())
@@ -162,6 +185,7 @@ void checkVtkXmlHeader(const std::filesystem::path& path) {
                           "' is not a whole number >= 0");
     }
   }
+  if (!rootSeen) throw Error(file, 0, "is not a VTK XML file (no <VTKFile> root element)");
 }
 
 }  // namespace tetskin::detail

@@ -18,7 +18,7 @@ struct Dataset {
 // Loads a dataset from its `.json` config; a `.node` or `.ele` path loads the
 // pair as a one-level dataset with default settings. Validates the level
 // ranges against the files, every node index, and (for the config) that the
-// config's ranges match the files exactly.
+// config's ranges match the files exactly. Any other extension is an error.
 Dataset loadDataset(const std::filesystem::path& path);
 // Whether loadDataset takes the file by its extension (.json, .node, .ele).
 bool isDatasetFile(const std::filesystem::path& path);
