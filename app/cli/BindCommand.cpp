@@ -39,9 +39,7 @@ void run(const BindArgs& a) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bound.surface.normals = vertexNormals(bound.surface.positions, bound.surface.triangles);
-  const std::filesystem::path outDir = std::filesystem::absolute(a.output).parent_path();
-  bound.dataset =
-      std::filesystem::relative(std::filesystem::absolute(a.dataset), outDir).generic_string();
+  bound.dataset = a.dataset.generic_string();
   writeBinding(a.output, bound);
   std::fputs(formatSummary(warnOfMisfit(a.surface, bound.surface, bound.binding, dataset.mesh),
                            bound.binding)

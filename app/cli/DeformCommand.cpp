@@ -41,6 +41,7 @@ void run(const DeformArgs& a) {
   Points3 positions, normals;
   deformer.deform(control, positions, normals);
   bound.deformed = DeformedState{positions, normals};
+  bound.dataset = a.dataset.generic_string();  // the one its ids were checked against
   writeBinding(a.output, bound);
   std::printf("wrote %s (%lld vertices deformed by %s)\n", a.output.c_str(),
               static_cast<long long>(positions.rows()), a.positions.c_str());

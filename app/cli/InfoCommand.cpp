@@ -48,6 +48,23 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
     std::printf("  warning: %s\n", describe(gaps).c_str());
 }
 
+// What a binding's own dataset says of it, as a warning (info describes a
+// file, it refuses none): the dataset missing or unreadable, ids that do not
+// fit it, or a surface far from its level (misfitWarning, as bind warned).
+std::string datasetWarning(const std::filesystem::path& path, const BoundSurface& bound,
+                           const std::string& dataset, const BindingSummary& summary) {
+  if (dataset.empty()) return {};
+  if (!std::filesystem::exists(dataset))
+    return "its dataset " + dataset + " is not there (moved without the binding?)";
+  try {
+    const Dataset loaded = loadDataset(dataset);
+    checkBindingFits(bound, loaded.mesh, path.string());
+    return misfitWarning(summary, loaded.mesh, bound.binding.level);
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
 // A .vtp from `tetskin bind`: the surface, what it is bound to, and the
 // binding's quality summary as `bind` printed it. A deformed one (from
 // deform, simulate or the GUI) is described as it is in the file, moved.
@@ -56,11 +73,13 @@ void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
   printSurface(
       path, shownSurface(bound),
       bound.deformed ? "binding, deformed (its rest shape: points - Displacement)" : "binding");
-  std::printf("  dataset    %s\n", bound.dataset.c_str());
-  std::fputs(formatSummary(summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal()),
-                           bound.binding)
-                 .c_str(),
-             stdout);
+  const std::string dataset = datasetOfField(bound.dataset, path);
+  std::printf("  dataset    %s\n", dataset.c_str());
+  const BindingSummary summary =
+      summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal());
+  std::fputs(formatSummary(summary, bound.binding).c_str(), stdout);
+  if (const std::string warning = datasetWarning(path, bound, dataset, summary); !warning.empty())
+    std::printf("  warning: %s\n", warning.c_str());
 }
 
 // Element volumes of a tetrahedral mesh: their sum, the smallest, and the

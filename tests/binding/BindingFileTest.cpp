@@ -38,7 +38,7 @@ TEST(BindingFile, WriteThenReadIsExact) {
     options.method = method;
     options.offset = OffsetMode::Displacement;
     bound.binding = bindSurface(bound.surface, d.mesh, 1, options);
-    bound.dataset = "../data/bunny.json";
+    bound.dataset = (dir / "data/bunny.json").string();
     writeBinding(dir / "b.vtp", bound);
     const BoundSurface back = readBinding(dir / "b.vtp");
     EXPECT_EQ(back.dataset, bound.dataset);
@@ -52,6 +52,28 @@ TEST(BindingFile, WriteThenReadIsExact) {
     EXPECT_EQ(back.surface.positions, bound.surface.positions);
     EXPECT_EQ(back.surface.triangles, bound.surface.triangles);
   }
+}
+
+// A binding file names its dataset from its own folder, so that the two move
+// together; read back, the name is a path from the working folder again.
+TEST(BindingFile, ItsDatasetIsNamedFromItsOwnFolder) {
+  test::ScratchDir dir;
+  const Dataset& d = sampleDataset();
+  BoundSurface bound;
+  bound.surface = readObj(kSampleData + "bunny.obj");
+  bound.binding = bindSurface(bound.surface, d.mesh, 1);
+  bound.dataset = (dir / "data/bunny.json").string();
+  std::filesystem::create_directories(dir / "runs/frames");
+  const std::filesystem::path file = dir / "runs/frames/b.vtp";
+  writeBinding(file, bound);
+  EXPECT_EQ(bindingFromPolyData(readVtp(file), "b.vtp").dataset, "../../data/bunny.json");
+  EXPECT_EQ(readBinding(file).dataset, (dir / "data/bunny.json").generic_string());
+  EXPECT_EQ(readBinding(file, d.mesh).dataset, (dir / "data/bunny.json").generic_string());
+  // From a relative file name, relative again; absolute names stay; none is none.
+  EXPECT_EQ(datasetOfField("../../data/bunny.json", "runs/frames/b.vtp"), "data/bunny.json");
+  EXPECT_EQ(datasetOfField("/data/bunny.json", "runs/b.vtp"), "/data/bunny.json");
+  EXPECT_EQ(datasetField("", file), "");
+  EXPECT_EQ(datasetOfField("", file), "");
 }
 
 // bunny.obj bound to `level` of `d` (closest), its dataset named bunny.json.

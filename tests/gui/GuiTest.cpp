@@ -530,6 +530,9 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   const BoundSurface back = readBinding(vtp);
   EXPECT_EQ(back.surface.vertexCount(), 1839);
   EXPECT_EQ(back.binding.controlIds, window_->scene().binding().controlIds);
+  // Its dataset, named from the file's folder, is the one the window opened.
+  EXPECT_TRUE(std::filesystem::equivalent(back.dataset, window_->scene().datasetPath()))
+      << back.dataset;
   // The file's points are the deformed surface; the binding's rest shape
   // comes back from its Displacement array.
   ASSERT_TRUE(back.deformed.has_value());

@@ -184,16 +184,33 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& source) {
   return bound;
 }
 
+std::string datasetField(const std::filesystem::path& dataset, const std::filesystem::path& file) {
+  if (dataset.empty()) return {};
+  const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+  return std::filesystem::relative(std::filesystem::absolute(dataset), folder).generic_string();
+}
+
+std::string datasetOfField(const std::string& field, const std::filesystem::path& file) {
+  if (field.empty()) return {};
+  return (file.parent_path() / field).lexically_normal().generic_string();
+}
+
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
-  writeVtp(path, bindingToPolyData(bound));
+  const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
+  addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
+  writeVtp(path, data);
 }
 
 BoundSurface readBinding(const std::filesystem::path& path) {
-  return bindingFromPolyData(readVtp(path), path.string());
+  BoundSurface bound = bindingFromPolyData(readVtp(path), path.string());
+  bound.dataset = datasetOfField(bound.dataset, path);
+  return bound;
 }
 
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
-  return bindingFromPolyData(readVtp(path), path.string(), dataset);
+  BoundSurface bound = bindingFromPolyData(readVtp(path), path.string(), dataset);
+  bound.dataset = datasetOfField(bound.dataset, path);
+  return bound;
 }
 
 SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
@@ -208,6 +225,12 @@ SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
                                  const MultiLevelTetMesh& dataset) {
   BoundSurface bound = bindingFromPolyData(data, name);
+  checkBindingFits(bound, dataset, name);
+  return bound;
+}
+
+void checkBindingFits(const BoundSurface& bound, const MultiLevelTetMesh& dataset,
+                      const std::string& name) {
   const SurfaceBinding& b = bound.binding;
   validateBinding(b, bound.surface.vertexCount(), dataset.nodes.rows(), name);
   if (b.level < 0 || b.level >= dataset.levelCount())
@@ -226,7 +249,6 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
                         std::to_string(range.firstNode + range.nodeCount) +
                         ") (a binding made for another dataset?)");
     }
-  return bound;
 }
 
 }  // namespace tetskin

@@ -34,7 +34,11 @@ struct DeformedState {
 struct BoundSurface {
   SurfaceMesh surface;  // rest positions, triangles (normals if stored)
   SurfaceBinding binding;
-  std::string dataset;  // the dataset config the ids refer to, as written
+  // The dataset config the ids refer to. In memory and from readBinding, a
+  // path from the working folder; in a file (field data Dataset), the path
+  // from the file's folder, so that the two can move together
+  // (writeBinding and readBinding convert: datasetField, datasetOfField).
+  std::string dataset;
   // A moved state, written as the file's points and normals (Pose
   // "deformed"); none for a binding at rest.
   std::optional<DeformedState> deformed;
@@ -74,10 +78,21 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceNam
 // The same, checked against `dataset` as readBinding(path, dataset) checks.
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName,
                                  const MultiLevelTetMesh& dataset);
+// Checks `bound` against `dataset` as readBinding(path, dataset) does; an
+// Error naming `sourceName` if it does not fit.
+void checkBindingFits(const BoundSurface& bound, const MultiLevelTetMesh& dataset,
+                      const std::string& sourceName);
 // Whether `data` carries a binding's field data (a .vtp from `tetskin bind`
 // rather than a plain surface); bindingFromPolyData still checks the rest.
 bool isBinding(vtkPolyData* data);
 
+// A binding file's Dataset field for `dataset` (a path from the working
+// folder) in a file written to `file`: the path from the file's folder
+// ("" stays ""). And back: the dataset a file at `file` names by `field`.
+std::string datasetField(const std::filesystem::path& dataset, const std::filesystem::path& file);
+std::string datasetOfField(const std::string& field, const std::filesystem::path& file);
+
+// Writes and reads a binding file, converting its Dataset (datasetField).
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
 BoundSurface readBinding(const std::filesystem::path& path);
 // Reads a binding to use with `dataset`, checked against it: its level
