@@ -406,15 +406,27 @@ bool MainWindow::openFiles(const QStringList& paths) {
 
 bool MainWindow::openFile(const QString& qpath) {
   const std::filesystem::path path = qpath.toStdString();
+  // The new dataset's body (config section elasticity, or the defaults)
+  // replaces what the dock held; a surface opened later keeps the dock's.
+  const auto openDataset = [this](const std::filesystem::path& dataset) {
+    scene_->openDataset(dataset);
+    const ElasticMaterial& material = scene_->dataset().config.elasticity;
+    young_->setValue(material.youngsModulus);
+    poisson_->setValue(material.poissonRatio);
+  };
   try {
     if (isDatasetFile(path)) {
-      scene_->openDataset(path);
-      // The new dataset's body (config section elasticity, or the defaults)
-      // replaces what the dock held; a surface opened later keeps the dock's.
-      const ElasticMaterial& material = scene_->dataset().config.elasticity;
-      young_->setValue(material.youngsModulus);
-      poisson_->setValue(material.poissonRatio);
+      openDataset(path);
     } else if (isSurfaceFile(path)) {
+      // A binding (or a frame of one) names its own dataset: opened with it
+      // when none is open yet.
+      if (const std::string own = scene_->hasDataset() ? "" : datasetOfBindingFile(path);
+          !own.empty()) {
+        if (!std::filesystem::exists(own))
+          throw Error(path.string(), 0,
+                      "names its dataset " + own + ", which is not there: open its dataset first");
+        openDataset(own);
+      }
       scene_->openSurface(path);
     } else if (isFrameFile(path)) {
       return startFromFrame(qpath);  // a state of the open dataset, not a scene to load

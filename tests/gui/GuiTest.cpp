@@ -563,6 +563,35 @@ TEST_F(Gui, ExportsFramesAndRecordsARunThatReload) {
   EXPECT_TRUE(window_->scene().surface().positions.isApprox(back.surface.positions));
 }
 
+// A binding opened with no dataset open brings its own (named from the
+// binding's folder); a plain surface cannot, nor a binding whose dataset
+// is gone.
+TEST_F(Gui, ABindingOpensWithItsOwnDataset) {
+  openSample();
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const std::filesystem::path vtp = scratch("own_dataset.vtp");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtp.string())));
+  const SurfaceBinding exported = window_->scene().binding();
+  window_ = std::make_unique<MainWindow>(false);
+  EXPECT_FALSE(window_->openFile(kData + "bunny.obj"));
+  EXPECT_TRUE(window_->lastError().contains("open a dataset before a surface"))
+      << window_->lastError().toStdString();
+  EXPECT_FALSE(window_->openFile(QString(TETSKIN_SOURCE_DIR) +
+                                 "/tests/data/binding_of_a_missing_dataset.vtp"));
+  EXPECT_TRUE(
+      window_->lastError().contains("names its dataset " + QString(TETSKIN_SOURCE_DIR) +
+                                    "/tests/data/no_such_folder/bunny.json, which is not there"))
+      << window_->lastError().toStdString();
+  EXPECT_FALSE(window_->scene().hasDataset());
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(vtp.string())))
+      << window_->lastError().toStdString();
+  ASSERT_TRUE(window_->scene().hasDataset());
+  EXPECT_TRUE(std::filesystem::equivalent(window_->scene().datasetPath(),
+                                          (kData + "bunny.json").toStdString()));
+  EXPECT_EQ(window_->scene().binding().controlIds, exported.controlIds);
+  EXPECT_EQ(window_->scene().level(), exported.level);
+}
+
 // From frame... (and File > Open of a .vtu) starts the simulation again from
 // an exported frame's positions and velocities; a frame of another level is
 // refused naming its file and leaves the running simulation as it was; Reset

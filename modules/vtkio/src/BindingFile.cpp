@@ -195,6 +195,13 @@ std::string datasetOfField(const std::string& field, const std::filesystem::path
   return (file.parent_path() / field).lexically_normal().generic_string();
 }
 
+std::string datasetOfBindingFile(const std::filesystem::path& path) {
+  if (lowerExtension(path) != ".vtp") return {};
+  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+  if (!isBinding(data)) return {};
+  return datasetOfField(getString(data->GetFieldData(), "Dataset", path.string()), path);
+}
+
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
   const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
   addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)

@@ -92,6 +92,10 @@ bool isBinding(vtkPolyData* data);
 std::string datasetField(const std::filesystem::path& dataset, const std::filesystem::path& file);
 std::string datasetOfField(const std::string& field, const std::filesystem::path& file);
 
+// The dataset a binding file names (from the working folder), or "" for any
+// other surface file.
+std::string datasetOfBindingFile(const std::filesystem::path& path);
+
 // Writes and reads a binding file, converting its Dataset (datasetField).
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
 BoundSurface readBinding(const std::filesystem::path& path);
