@@ -173,13 +173,18 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   if (options.floorHeight)
     std::printf(", floor at y = %s", formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
-  std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
-              a.steps / std::max(stepSeconds, 1e-12),
-              static_cast<double>(iterations) / std::max(a.steps, 1));
-  if (options.solver == SolverKind::Automatic)
-    std::printf(
-        "  auto: multigrid solved %ld of %d steps, cg the rest; faster in the last round: %s\n",
-        multigridSteps, a.steps, toString(sim.solverChoice()->preferred()));
+  if (a.steps > 0)
+    std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
+                a.steps / std::max(stepSeconds, 1e-12), static_cast<double>(iterations) / a.steps);
+  if (options.solver == SolverKind::Automatic && a.steps > 0) {
+    // Before the first round of trials ends, neither solver has been found faster.
+    const SolverChoice& choice = *sim.solverChoice();
+    const std::string verdict = choice.rounds() > 0 ? std::string("faster in the last round: ") +
+                                                          toString(choice.preferred())
+                                                    : "too few steps to compare them";
+    std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n", multigridSteps,
+                a.steps, verdict.c_str());
+  }
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
