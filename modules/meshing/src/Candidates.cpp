@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "Candidates.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "tetskin/core/Error.h"
@@ -19,6 +20,13 @@ TetMesh runMesher(const SurfaceMesh& surface, const CandidateSpec& spec, MesherK
 }
 
 }  // namespace
+
+std::vector<double> distinctQualities(const BuildOptions& options) {
+  std::vector<double> qualities = options.qualities;
+  std::sort(qualities.begin(), qualities.end());
+  qualities.erase(std::unique(qualities.begin(), qualities.end()), qualities.end());
+  return qualities;
+}
 
 void say(const BuildEvents& events, const std::string& line) {
   if (events.log) events.log(line);

@@ -37,6 +37,10 @@ struct Candidates {
   std::vector<Index> counts;
 };
 
+// The TetGen qualities asked for, each once, best (closest to 1) first: the
+// order of the quality candidates and of the sizing's first round.
+std::vector<double> distinctQualities(const BuildOptions& options);
+
 // The builder's log line, when the caller listens.
 void say(const BuildEvents& events, const std::string& line);
 

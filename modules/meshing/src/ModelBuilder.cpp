@@ -118,10 +118,7 @@ std::vector<CandidateSpec> candidateSpecs(const std::vector<RepairedInput>& inpu
   std::vector<CandidateSpec> specs;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     if (options.mesher == MesherKind::TetGen) {
-      std::vector<double> q = options.qualities;
-      std::sort(q.begin(), q.end());  // 1.2 (best) first
-      q.erase(std::unique(q.begin(), q.end()), q.end());
-      for (double quality : q)
+      for (double quality : distinctQualities(options))
         specs.push_back({i, quality, meshingLabel(MesherKind::TetGen, quality)});
     } else {
       for (int preset = 4; preset >= 0; --preset)  // very fine (best) first

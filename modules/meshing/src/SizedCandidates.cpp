@@ -88,14 +88,10 @@ double addSizedCandidates(const std::vector<RepairedInput>& prepared,
   // the bound by different steps at each (at q1.2 a box goes from about 160
   // to 820 elements as the bound halves); Netgen: the middle preset, whose
   // size bound the sizing replaces.
-  std::vector<double> qualities;
-  if (options.mesher == MesherKind::TetGen) {
-    qualities = options.qualities;
-    std::sort(qualities.begin(), qualities.end());
-    qualities.erase(std::unique(qualities.begin(), qualities.end()), qualities.end());
-  } else {
-    qualities = {static_cast<double>(NetgenFineness::Moderate)};
-  }
+  const std::vector<double> qualities =
+      options.mesher == MesherKind::TetGen
+          ? distinctQualities(options)
+          : std::vector<double>{static_cast<double>(NetgenFineness::Moderate)};
   const double firstFactor =
       options.mesher == MesherKind::TetGen ? kFirstTetGenSizingFactor : kFirstNetgenSizingFactor;
   std::vector<SizingTrack> tracks;

@@ -215,8 +215,8 @@ BoundSurface readBinding(const std::filesystem::path& path) {
 }
 
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
-  BoundSurface bound = bindingFromPolyData(readVtp(path), path.string(), dataset);
-  bound.dataset = datasetOfField(bound.dataset, path);
+  BoundSurface bound = readBinding(path);
+  checkBindingFits(bound, dataset, path.string());
   return bound;
 }
 
