@@ -24,7 +24,11 @@ struct BindArgs {
   std::string method = "closest", offset = "normal";
 };
 
-void run(const BindArgs& a) {
+void run(const BindArgs& a, const CLI::App& cmd) {
+  if (a.method == "embed" && cmd.count("--offset") > 0)
+    throw Error(
+        "--offset: applies to the closest and seed methods, not to embed (an embedded vertex is "
+        "its tetrahedron's barycentric combination, with no offset)");
   requireNotAnInput(a.output, {a.dataset, a.surface});
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);
@@ -70,7 +74,7 @@ void addBindCommand(CLI::App& app) {
                   "(the report's formula 4.1)")
       ->capture_default_str()
       ->check(CLI::IsMember({"normal", "displacement"}));
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 
 }  // namespace tetskin::cli

@@ -93,6 +93,33 @@ TEST_F(BindingAccuracy, TheReportsDisplacementFormulaIsNotRotationInvariant) {
   EXPECT_GT(displacement.max, 1e4 * normal.max);
 }
 
+// Why `tetskin bind --method embed` takes no --offset: the weights are the
+// vertex's own (unclamped) barycentric coordinates, so the displacement
+// offset's shift, rest minus the weighted rest nodes, is zero and both
+// offsets place every vertex alike, here under an arbitrary non-affine map.
+TEST_F(BindingAccuracy, EitherOffsetDeformsAnEmbeddedVertexAlike) {
+  const Map wobble = [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(p.x() + 0.3 * std::sin(p.y()), p.y() * (1 + 0.1 * p.z()),
+                           p.z() + 0.2 * p.x() * p.x());
+  };
+  const Dataset& d = sampleDataset();
+  const Points3 control = apply(d.mesh.nodes, wobble);
+  for (int level : {0, 2}) {
+    Points3 deformed[2], normals;
+    for (OffsetMode offset : {OffsetMode::Normal, OffsetMode::Displacement}) {
+      BindingOptions options;
+      options.method = BindingMethod::Embed;
+      options.offset = offset;
+      const SurfaceBinding b = bindSurface(*surface_, d.mesh, level, options);
+      SurfaceDeformer(*surface_, b, d.mesh.nodes)
+          .deform(control, deformed[offset == OffsetMode::Displacement], normals);
+    }
+    const double diagonal = boundingBox(surface_->positions).diagonal();
+    EXPECT_LT((deformed[0] - deformed[1]).cwiseAbs().maxCoeff(), 1e-12 * diagonal)
+        << "level " << level;
+  }
+}
+
 TEST_F(BindingAccuracy, SmoothDeformationsReportTheirError) {
   const Map twist = [](const Eigen::Vector3d& p) {
     const double angle = 0.06 * p.y();  // about 33 degrees over the bunny's height

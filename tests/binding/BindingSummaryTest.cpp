@@ -38,6 +38,22 @@ TEST(BindingSummary, PercentilesSharesAndWorstVerticesAreKnown) {
   EXPECT_EQ(summarizeBinding(SurfaceBinding{}, 1.0).vertices, 0);  // empty: no percentiles
 }
 
+// The first line names the method and, where it matters, the offset: both
+// offsets deform an embedded vertex alike (BindingAccuracyTest).
+TEST(BindingSummary, TheFirstLineNamesTheOffsetExceptForEmbed) {
+  SurfaceBinding b = tenVertices();
+  const BindingSummary s = summarizeBinding(b, 1.0);
+  auto firstLine = [&] {
+    const std::string text = formatSummary(s, b);
+    return text.substr(0, text.find('\n'));
+  };
+  b.method = BindingMethod::Seed;
+  b.offset = OffsetMode::Displacement;
+  EXPECT_EQ(firstLine(), "bound 10 vertices to level 3 (method seed, offset displacement)");
+  b.method = BindingMethod::Embed;
+  EXPECT_EQ(firstLine(), "bound 10 vertices to level 3 (method embed)");
+}
+
 // The warning compares the 90th percentile (0.8 here, whatever the
 // surface's diagonal) with the control mesh's diagonal.
 TEST(BindingSummary, MisfitWarningComparesTheDistanceWithTheControlMeshsSize) {

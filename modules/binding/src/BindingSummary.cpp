@@ -68,9 +68,12 @@ std::string misfitWarning(const BindingSummary& s, const MultiLevelTetMesh& mesh
 std::string formatSummary(const BindingSummary& s, const SurfaceBinding& b) {
   char line[256];
   std::string out;
-  std::snprintf(line, sizeof line, "bound %lld vertices to level %d (method %s, offset %s)\n",
-                static_cast<long long>(s.vertices), b.level, toString(b.method),
-                toString(b.offset));
+  // An embedded vertex is its tetrahedron's barycentric combination: either
+  // offset deforms it alike, so naming one would suggest a choice there is not.
+  const std::string offset =
+      b.method == BindingMethod::Embed ? "" : std::string(", offset ") + toString(b.offset);
+  std::snprintf(line, sizeof line, "bound %lld vertices to level %d (method %s%s)\n",
+                static_cast<long long>(s.vertices), b.level, toString(b.method), offset.c_str());
   out += line;
   std::snprintf(line, sizeof line, "  all weights >= 0:   %.2f%% of vertices\n",
                 100.0 * s.shareInside);

@@ -42,7 +42,8 @@ class vtkTetSkinBindSurface : public vtkPolyDataAlgorithm {
   void SetMethodToEmbed() { SetMethod(EMBED); }
 
   // normal (default: exact under rigid motion) or displacement (the
-  // report's formula 4.1).
+  // report's formula 4.1). Either deforms an embed binding alike (no offset
+  // there): ParaView hides it when Method is embed.
   vtkSetClampMacro(OffsetMode, int, NORMAL, DISPLACEMENT);
   vtkGetMacro(OffsetMode, int);
   void SetOffsetModeToNormal() { SetOffsetMode(NORMAL); }
