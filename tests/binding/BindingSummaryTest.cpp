@@ -52,6 +52,11 @@ TEST(BindingSummary, TheFirstLineNamesTheOffsetExceptForEmbed) {
   EXPECT_EQ(firstLine(), "bound 10 vertices to level 3 (method seed, offset displacement)");
   b.method = BindingMethod::Embed;
   EXPECT_EQ(firstLine(), "bound 10 vertices to level 3 (method embed)");
+  // Vertex 0's coordinate is -0 (-0.1 * 0): it reads 0.
+  EXPECT_NE(formatSummary(s, b).find(
+                "\n  most negative weight: v8 (-0.8) v6 (-0.6) v4 (-0.4) v2 (-0.2) v0 (0)\n"),
+            std::string::npos)
+      << formatSummary(s, b);
 }
 
 // The warning compares the 90th percentile (0.8 here, whatever the

@@ -83,8 +83,9 @@ std::string formatSummary(const BindingSummary& s, const SurfaceBinding& b) {
   out += line;
   out += "  most negative weight:";
   for (Index v : s.worstBarycentric) {
+    // (+ 0.0: a coordinate of -0, on an edge, reads 0, not "-0".)
     std::snprintf(line, sizeof line, " v%lld (%.3g)", static_cast<long long>(v),
-                  b.minBarycentric[v]);
+                  b.minBarycentric[v] + 0.0);
     out += line;
   }
   out += "\n  farthest:";
