@@ -179,6 +179,48 @@ TEST(Solvers, ConjugateGradientIsReproducibleAndItsResidualIsTrue) {
   EXPECT_THROW(wholeVector.applyToNodes(0, 1, r.data(), z.data()), Error);
 }
 
+// A system in other units (here 1e-9 times A and b: a body of a tenth of a
+// millimetre has blocks of that order) is the same problem: both
+// preconditioners take CG along the same path to the same solution. (Block
+// inverses once judged singular by an absolute determinant threshold fell
+// back to the identity there, and CG stopped short of the tolerance.)
+TEST(Solvers, PreconditionersDoNotDependOnTheSystemsUnits) {
+  const Dataset& d = sampleDataset();
+  const TetMesh mesh = extractLevel(d.mesh, 2);
+  CorotatedFem fem(mesh, ElasticMaterial{});
+  Eigen::VectorXd f;
+  SparseMatrix A = fem.pattern();
+  const Eigen::VectorXd mass = fem.lumpedMass();
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = 1.0 / 3600;
+  terms.diagonal = &mass;
+  fem.update(fem.restPositions(), f, A, terms);
+  const Eigen::VectorXd b = mass.cwiseProduct(Eigen::VectorXd::LinSpaced(A.rows(), -1, 2));
+  const std::vector<SparseMatrix> prolongations = {
+      nodalProlongation(extractLevel(d.mesh, 1), mesh.nodes)};
+  const auto solve = [&](double units, bool multigrid, SolveStats& stats) {
+    const SparseMatrix scaled = units * A;
+    BlockJacobi jacobi;
+    MultigridPreconditioner mg(prolongations);
+    Preconditioner& preconditioner =
+        multigrid ? static_cast<Preconditioner&>(mg) : static_cast<Preconditioner&>(jacobi);
+    preconditioner.setup(scaled);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+    stats = conjugateGradient(scaled, units * b, x, preconditioner, 1e-8, 3000);
+    return x;
+  };
+  for (bool multigrid : {false, true}) {
+    SolveStats usual, small;
+    const Eigen::VectorXd x = solve(1.0, multigrid, usual);
+    const Eigen::VectorXd xSmall = solve(1e-9, multigrid, small);
+    std::printf("%s CG to 1e-8: %d iterations, %d with A and b times 1e-9\n",
+                multigrid ? "multigrid" : "block-Jacobi", usual.iterations, small.iterations);
+    EXPECT_LE(small.relativeResidual, 1e-8);
+    EXPECT_NEAR(small.iterations, usual.iterations, 1);
+    EXPECT_LT((xSmall - x).norm(), 1e-6 * x.norm());
+  }
+}
+
 // The node-block kernels equal Eigen's product; the layout check accepts the
 // FEM pattern and refuses a matrix whose node rows differ.
 TEST(Solvers, NodeBlockProductEqualsTheSparseProduct) {
