@@ -189,10 +189,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
-    std::fprintf(stderr, "warning: %s%s\n", describe(shortfall, options).c_str(),
-                 options.solver == SolverKind::Multigrid
-                     ? ""
-                     : "; --solver multigrid needs far fewer iterations on stiff bodies");
+    std::fprintf(stderr, "warning: %s\n",
+                 describe(shortfall, options, "--solver multigrid").c_str());
 }
 
 }  // namespace

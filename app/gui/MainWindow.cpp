@@ -621,10 +621,8 @@ void MainWindow::reportSimulationProblems() {
   if (shortfall.steps == shownShortfallSteps_) return;
   shownShortfallSteps_ = shortfall.steps;
   statusBar()->showMessage(
-      "warning: " + QString::fromStdString(describe(shortfall, simulation.options())) +
-      (simulation.options().solver == SolverKind::Multigrid
-           ? ""
-           : "; the multigrid solver needs far fewer iterations on stiff bodies"));
+      "warning: " +
+      QString::fromStdString(describe(shortfall, simulation.options(), "the multigrid solver")));
 }
 
 void MainWindow::tick() {

@@ -708,10 +708,14 @@ TEST(Simulation, SolvesStoppedAtTheIterationLimitAreCounted) {
   EXPECT_EQ(shortfall.steps, 3);
   EXPECT_EQ(shortfall.largestResidual, largest);
   EXPECT_EQ(shortfall.largestAtStep, largestAt);
-  EXPECT_EQ(describe(shortfall, options),
-            "3 steps stopped at the iteration limit (2) with the relative residual above the "
-            "tolerance 1e-06 (at most " +
-                formatNumber(largest) + ", in step " + std::to_string(largestAt) + ")");
+  const std::string described =
+      "3 steps stopped at the iteration limit (2) with the relative residual above the "
+      "tolerance 1e-06 (at most " +
+      formatNumber(largest) + ", in step " + std::to_string(largestAt) + ")";
+  EXPECT_EQ(describe(shortfall, options, "MG"),
+            described + "; MG needs far fewer iterations on stiff bodies");
+  options.solver = SolverKind::Multigrid;  // (already the multigrid: no advice)
+  EXPECT_EQ(describe(shortfall, options, "MG"), described);
 }
 
 // A state set from outside (the GUI's pull, a restart) has one row per

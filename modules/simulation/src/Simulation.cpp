@@ -506,12 +506,16 @@ SolveShortfall Simulation::solveShortfall() const {
   return shortfall_;
 }
 
-std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options) {
+std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options,
+                     const std::string& multigrid) {
   return std::to_string(shortfall.steps) + (shortfall.steps == 1 ? " step" : " steps") +
          " stopped at the iteration limit (" + std::to_string(options.maxIterations) +
          ") with the relative residual above the tolerance " + formatNumber(options.tolerance) +
          " (at most " + formatNumber(shortfall.largestResidual) + ", in step " +
-         std::to_string(shortfall.largestAtStep) + ")";
+         std::to_string(shortfall.largestAtStep) + ")" +
+         (options.solver == SolverKind::Multigrid
+              ? ""
+              : "; " + multigrid + " needs far fewer iterations on stiff bodies");
 }
 
 Energies Simulation::energies() const {

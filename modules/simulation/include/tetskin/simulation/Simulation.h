@@ -96,8 +96,12 @@ struct SolveShortfall {
   Index largestAtStep = 0;  // its step number, from 1
 };
 // "3 steps stopped at the iteration limit (2000) with the relative residual
-// above the tolerance 1e-06 (at most 0.0032, in step 2)".
-std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options);
+// above the tolerance 1e-06 (at most 0.0032, in step 2)", and unless the
+// multigrid solved them all, "; MULTIGRID needs far fewer iterations on
+// stiff bodies" with MULTIGRID how the caller's user chooses it (the CLI's
+// "--solver multigrid", the GUI's "the multigrid solver").
+std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options,
+                     const std::string& multigrid);
 
 struct Energies {
   double kinetic = 0, elastic = 0, gravitational = 0;
