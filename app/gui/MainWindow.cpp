@@ -419,15 +419,17 @@ bool MainWindow::openFile(const QString& qpath) {
       openDataset(path);
     } else if (isSurfaceFile(path)) {
       // A binding (or a frame of one) names its own dataset: opened with it
-      // when none is open yet.
-      if (const std::string own = scene_->hasDataset() ? "" : datasetOfBindingFile(path);
-          !own.empty()) {
-        if (!std::filesystem::exists(own))
-          throw Error(path.string(), 0,
-                      "names its dataset " + own + ", which is not there: open its dataset first");
-        openDataset(own);
+      // when none is open yet. (The file is read once, checked once a
+      // dataset is open.)
+      SurfaceOrBinding read = readSurfaceOrBinding(path);
+      if (!scene_->hasDataset() && !read.dataset.empty()) {
+        if (!std::filesystem::exists(read.dataset))
+          throw Error(
+              path.string(), 0,
+              "names its dataset " + read.dataset + ", which is not there: open its dataset first");
+        openDataset(read.dataset);
       }
-      scene_->openSurface(path);
+      scene_->openSurface(path, std::move(read));
     } else if (isFrameFile(path)) {
       return startFromFrame(qpath);  // a state of the open dataset, not a scene to load
     } else {

@@ -115,10 +115,11 @@ void Scene::openDataset(const std::filesystem::path& path) {
   setCamera(CameraPreset::Iso);
 }
 
-void Scene::openSurface(const std::filesystem::path& path) {
+void Scene::openSurface(const std::filesystem::path& path, SurfaceOrBinding read) {
   if (!dataset_)
     throw Error(path.string(), 0, "open a dataset before a surface (a binding's own dataset)");
-  SurfaceOrBinding read = readSurfaceOrBinding(path, dataset_->mesh);
+  if (read.binding)
+    checkBindingFits(*read.binding, read.surface.vertexCount(), dataset_->mesh, path.string());
   const bool bound = read.binding.has_value();
   SurfaceBinding binding =
       bound ? std::move(*read.binding) : bindSurface(read.surface, dataset_->mesh, level_);

@@ -53,7 +53,9 @@ class Scene {
   void openDataset(const std::filesystem::path& path);  // .json, .node or .ele
   // OBJ, PLY, STL or VTP, bound at once to the current level; a .vtp from
   // tetskin bind with its own binding (and level) as it is.
-  void openSurface(const std::filesystem::path& path);
+  // A surface or binding read from `path` (readSurfaceOrBinding, BindingFile.h):
+  // a binding is checked against the open dataset, a surface bound to it.
+  void openSurface(const std::filesystem::path& path, SurfaceOrBinding read);
   bool hasDataset() const { return dataset_.has_value(); }
   bool hasSurface() const { return surface_.has_value(); }
   const Dataset& dataset() const { return *dataset_; }

@@ -131,8 +131,8 @@ TEST(BindingFile, BindingThatDoesNotFitTheDatasetIsNamed) {
 }
 
 // What the applications open as a surface: a binding .vtp with its binding
-// (checked against the dataset), any other surface file without one,
-// whatever point arrays it carries.
+// and the dataset it names (checked against a dataset when one is given),
+// any other surface file without one, whatever point arrays it carries.
 TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   test::ScratchDir dir;
   const Dataset& d = sampleDataset();
@@ -143,6 +143,9 @@ TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   EXPECT_EQ(fromBinding.binding->level, 1);
   EXPECT_EQ(fromBinding.binding->controlIds, bound.binding.controlIds);
   EXPECT_EQ(fromBinding.surface.positions, bound.surface.positions);
+  const std::string named = readBinding(dir / "bound.vtp").dataset;
+  EXPECT_NE(named, "");
+  EXPECT_EQ(fromBinding.dataset, named);  // from the working folder, as readBinding names it
   // The binding arrays without the field data: a plain surface.
   vtkSmartPointer<vtkPolyData> arraysOnly = bindingToPolyData(bound);
   arraysOnly->GetFieldData()->Initialize();
@@ -151,6 +154,7 @@ TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   for (const char* name : {"arrays.vtp", "plain.vtp"}) {
     const SurfaceOrBinding plain = readSurfaceOrBinding(dir / name, d.mesh);
     EXPECT_FALSE(plain.binding.has_value()) << name;
+    EXPECT_EQ(plain.dataset, "") << name;
     EXPECT_EQ(plain.surface.triangles, bound.surface.triangles) << name;
   }
   EXPECT_FALSE(readSurfaceOrBinding(kSampleData + "bunny.obj", d.mesh).binding.has_value());
@@ -158,6 +162,12 @@ TEST(BindingFile, SurfaceOrBindingTellsABindingByItsFieldData) {
   bound.binding.level = 7;
   writeBinding(dir / "bad.vtp", bound);
   EXPECT_THROW(readSurfaceOrBinding(dir / "bad.vtp", d.mesh), Error);
+  // Read without a dataset (the GUI, to open the dataset it names first), it
+  // is not checked.
+  const SurfaceOrBinding unchecked = readSurfaceOrBinding(dir / "bad.vtp");
+  ASSERT_TRUE(unchecked.binding.has_value());
+  EXPECT_EQ(unchecked.binding->level, 7);
+  EXPECT_EQ(unchecked.dataset, named);
 }
 
 // A surface the binding has moved (deform's output, simulate's frames, the

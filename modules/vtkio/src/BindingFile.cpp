@@ -195,13 +195,6 @@ std::string datasetOfField(const std::string& field, const std::filesystem::path
   return (file.parent_path() / field).lexically_normal().generic_string();
 }
 
-std::string datasetOfBindingFile(const std::filesystem::path& path) {
-  if (lowerExtension(path) != ".vtp") return {};
-  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
-  if (!isBinding(data)) return {};
-  return datasetOfField(getString(data->GetFieldData(), "Dataset", path.string()), path);
-}
-
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
   const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
   addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
@@ -220,13 +213,20 @@ BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetM
   return bound;
 }
 
+SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path) {
+  if (lowerExtension(path) != ".vtp") return {readSurface(path), std::nullopt, {}};
+  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+  if (!isBinding(data)) return {fromVtkPolyData(data, path.string()), std::nullopt, {}};
+  BoundSurface bound = bindingFromPolyData(data, path.string());
+  return {std::move(bound.surface), std::move(bound.binding), datasetOfField(bound.dataset, path)};
+}
+
 SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
                                       const MultiLevelTetMesh& dataset) {
-  if (lowerExtension(path) != ".vtp") return {readSurface(path), std::nullopt};
-  const vtkSmartPointer<vtkPolyData> data = readVtp(path);
-  if (!isBinding(data)) return {fromVtkPolyData(data, path.string()), std::nullopt};
-  BoundSurface bound = bindingFromPolyData(data, path.string(), dataset);
-  return {std::move(bound.surface), std::move(bound.binding)};
+  SurfaceOrBinding read = readSurfaceOrBinding(path);
+  if (read.binding)
+    checkBindingFits(*read.binding, read.surface.vertexCount(), dataset, path.string());
+  return read;
 }
 
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
@@ -236,10 +236,9 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
   return bound;
 }
 
-void checkBindingFits(const BoundSurface& bound, const MultiLevelTetMesh& dataset,
-                      const std::string& name) {
-  const SurfaceBinding& b = bound.binding;
-  validateBinding(b, bound.surface.vertexCount(), dataset.nodes.rows(), name);
+void checkBindingFits(const SurfaceBinding& b, Index surfaceVertices,
+                      const MultiLevelTetMesh& dataset, const std::string& name) {
+  validateBinding(b, surfaceVertices, dataset.nodes.rows(), name);
   if (b.level < 0 || b.level >= dataset.levelCount())
     throw Error(name, 0,
                 "is bound to level " + std::to_string(b.level) +

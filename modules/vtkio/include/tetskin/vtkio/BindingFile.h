@@ -78,10 +78,15 @@ BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceNam
 // The same, checked against `dataset` as readBinding(path, dataset) checks.
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName,
                                  const MultiLevelTetMesh& dataset);
-// Checks `bound` against `dataset` as readBinding(path, dataset) does; an
-// Error naming `sourceName` if it does not fit.
-void checkBindingFits(const BoundSurface& bound, const MultiLevelTetMesh& dataset,
-                      const std::string& sourceName);
+// Checks `binding` (of a surface of `surfaceVertices` vertices) against
+// `dataset` as readBinding(path, dataset) does; an Error naming
+// `sourceName` if it does not fit.
+void checkBindingFits(const SurfaceBinding& binding, Index surfaceVertices,
+                      const MultiLevelTetMesh& dataset, const std::string& sourceName);
+inline void checkBindingFits(const BoundSurface& bound, const MultiLevelTetMesh& dataset,
+                             const std::string& sourceName) {
+  checkBindingFits(bound.binding, bound.surface.vertexCount(), dataset, sourceName);
+}
 // Whether `data` carries a binding's field data (a .vtp from `tetskin bind`
 // rather than a plain surface); bindingFromPolyData still checks the rest.
 bool isBinding(vtkPolyData* data);
@@ -92,10 +97,6 @@ bool isBinding(vtkPolyData* data);
 std::string datasetField(const std::filesystem::path& dataset, const std::filesystem::path& file);
 std::string datasetOfField(const std::string& field, const std::filesystem::path& file);
 
-// The dataset a binding file names (from the working folder), or "" for any
-// other surface file.
-std::string datasetOfBindingFile(const std::filesystem::path& path);
-
 // Writes and reads a binding file, converting its Dataset (datasetField).
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
 BoundSurface readBinding(const std::filesystem::path& path);
@@ -105,13 +106,17 @@ BoundSurface readBinding(const std::filesystem::path& path);
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset);
 
 // A surface file as the applications open it: a .vtp with a binding's field
-// data (isBinding) gives its surface and binding, checked against `dataset`
-// as readBinding checks; any other surface file (.obj, .ply, .stl, a plain
-// .vtp: readSurface) its surface alone. A .vtp is read once.
+// data (isBinding) gives its surface, binding and the dataset it names
+// (from the working folder); any other surface file (.obj, .ply, .stl, a
+// plain .vtp: readSurface) its surface alone. A .vtp is read once. With
+// `dataset`, the binding is checked against it as readBinding checks (the
+// GUI reads first, to open the binding's own dataset, and checks after).
 struct SurfaceOrBinding {
   SurfaceMesh surface;
   std::optional<SurfaceBinding> binding;
+  std::string dataset;  // the binding's; "" for a plain surface
 };
+SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path);
 SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
                                       const MultiLevelTetMesh& dataset);
 
