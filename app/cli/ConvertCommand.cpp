@@ -11,6 +11,7 @@
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -25,7 +26,7 @@ struct ConvertOptions {
 };
 
 void convertDataset(const ConvertOptions& o) {
-  if (o.output.extension() != ".vtu")
+  if (lowerExtension(o.output) != ".vtu")
     throw Error(o.output.string(), 0, "a dataset converts to .vtu (one level)");
   const Dataset dataset = loadDataset(o.input);
   const int level = resolveLevel(dataset.mesh, o.level);
@@ -54,16 +55,24 @@ void addConvertCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("OUT", o->output, "output file")->required();
   cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
     requireNotAnInput(o->output, {o->input});
     if (isSurfaceFile(o->input)) {
+      if (cmd->count("--level") > 0)
+        throw Error("--level: applies to a dataset's conversion, not to a surface's");
       const SurfaceMesh mesh = readSurface(o->input);
       writeSurface(o->output, mesh);
       std::printf("wrote %s (%lld vertices, %lld triangles)\n", o->output.c_str(),
                   static_cast<long long>(mesh.vertexCount()),
                   static_cast<long long>(mesh.triangleCount()));
-    } else {
+    } else if (isDatasetFile(o->input)) {
       convertDataset(*o);
+    } else {
+      // (e.g. a frame .vtu of a run, whose output check would otherwise
+      // blame OUT for an input that convert does not take)
+      throw Error(o->input.string(), 0,
+                  "is neither a surface (.obj .ply .stl .vtp) nor a dataset (.json, or a "
+                  ".node/.ele pair): convert takes those");
     }
   });
 }
