@@ -38,9 +38,7 @@ std::vector<std::filesystem::path> inputPaths(const BuildArgs& a) {
 }
 
 void run(BuildArgs& a) {
-  std::filesystem::path out = a.output;
-  if (out.extension() == ".json") out.replace_extension();
-  const std::filesystem::path json = std::filesystem::path(out.string() + ".json");
+  const std::filesystem::path json = datasetConfigPath(a.output);
   const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
   requireWritableLocation(json);  // before the meshing, not after it
 

@@ -11,6 +11,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/FileNames.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
@@ -24,9 +25,9 @@ struct DeformArgs {
 };
 
 Points3 readPositions(const std::filesystem::path& path) {
-  if (path.extension() == ".node") return readNode(path).points;
-  if (path.extension() == ".vtu")
-    return fromVtkUnstructuredGrid(readVtu(path), path.string()).nodes;
+  const std::string extension = lowerExtension(path);
+  if (extension == ".node") return readNode(path).points;
+  if (extension == ".vtu") return fromVtkUnstructuredGrid(readVtu(path), path.string()).nodes;
   throw Error(path.string(), 0, "positions must be a .node file or a .vtu with deformed points");
 }
 

@@ -158,9 +158,7 @@ bool BuildDialog::start() {
     appendLog("error: give at least one input surface and an output");
     return false;
   }
-  std::filesystem::path out = output_->text().toStdString();
-  if (out.extension() == ".json") out.replace_extension();
-  const std::filesystem::path json = out.string() + ".json";
+  const std::filesystem::path json = datasetConfigPath(output_->text().toStdString());
   std::vector<std::filesystem::path> paths;
   for (const QString& f : files) paths.emplace_back(f.toStdString());
   cancelled_ = false;

@@ -82,6 +82,15 @@ TEST(Dataset, OtherExtensionsAreNotDatasets) {
                       "is not a dataset (expected its .json config, or a .node/.ele pair)");
 }
 
+// What `tetskin build -o OUT` (and the GUI's build dialog) writes: OUT.json,
+// whether OUT ends in .json (any letter case) or not.
+TEST(Dataset, ConfigPathOfABuildsOutputName) {
+  EXPECT_EQ(datasetConfigPath("out/bunny"), std::filesystem::path("out/bunny.json"));
+  EXPECT_EQ(datasetConfigPath("out/bunny.json"), std::filesystem::path("out/bunny.json"));
+  EXPECT_EQ(datasetConfigPath("out/bunny.JSON"), std::filesystem::path("out/bunny.json"));
+  EXPECT_EQ(datasetConfigPath("bunny.v2"), std::filesystem::path("bunny.v2.json"));
+}
+
 TEST(Dataset, NodeElePairLoadsAsOneLevel) {
   test::ScratchDir dir;
   dir.write("m.node", "5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n");

@@ -32,6 +32,11 @@ bool isDatasetFile(const std::filesystem::path& path) {
   return e == ".json" || e == ".node" || e == ".ele";
 }
 
+std::filesystem::path datasetConfigPath(std::filesystem::path output) {
+  if (lowerExtension(output) == ".json") output.replace_extension();
+  return output.string() + ".json";
+}
+
 Dataset loadDataset(const std::filesystem::path& path) {
   // Checked first: a surface given where the dataset belongs (arguments
   // swapped) would otherwise be parsed as JSON and fail on its first line.

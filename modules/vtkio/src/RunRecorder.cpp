@@ -5,6 +5,7 @@
 
 #include <cstdio>
 
+#include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -12,7 +13,7 @@ namespace tetskin {
 namespace {
 
 std::filesystem::path withPvdExtension(std::filesystem::path p) {
-  if (p.extension() != ".pvd") p += ".pvd";
+  if (lowerExtension(p) != ".pvd") p += ".pvd";
   return p;
 }
 

@@ -22,6 +22,9 @@ struct Dataset {
 Dataset loadDataset(const std::filesystem::path& path);
 // Whether loadDataset takes the file by its extension (.json, .node, .ele).
 bool isDatasetFile(const std::filesystem::path& path);
+// The config a build writes for the output name OUT or OUT.json (any letter
+// case): OUT.json, with OUT.node and OUT.ele beside it.
+std::filesystem::path datasetConfigPath(std::filesystem::path output);
 
 // Writes `<stem>.node`, `<stem>.ele` beside `jsonPath` (or the names already
 // in the config), then the config, each atomically; the config comes last so
