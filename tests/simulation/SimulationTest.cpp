@@ -821,11 +821,11 @@ TEST(Simulation, WobbleMovesTheTopBackAndForth) {
 
 // The same body in other units (lengths times s, Young's modulus times s^2,
 // gravity and push times s: the same motion, scaled) takes the same steps:
-// the same iterations and the same trajectory, scaled. A 5 cm body of soft
-// tissue (E = 3 kPa, 1 ms steps) has diagonal blocks like those of the
-// scaled body here; an absolute singularity threshold in the block-Jacobi
-// and smoother inverses once made its CG take 960 iterations per step, not
-// 42, and the multigrid 738, not 6.5.
+// the same iterations and the same trajectory, scaled. Its nodes weigh
+// 1e-9 times as much: an absolute singularity threshold in the block-Jacobi
+// and smoother inverses once judged such blocks singular (as those of a
+// 5 cm body of soft tissue, whose CG then took 960 iterations per step, not
+// 42, and the multigrid 738, not 6.5).
 TEST(Simulation, TheSameBodyInOtherUnitsTakesTheSameSteps) {
   const Dataset& d = sampleDataset();
   const double s = 1e-3;
