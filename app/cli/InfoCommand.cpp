@@ -52,7 +52,8 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
 // file, it refuses none): the dataset missing or unreadable, ids that do not
 // fit it, or a surface far from its level (misfitWarning, as bind warned).
 std::string datasetWarning(const std::filesystem::path& path, const BoundSurface& bound,
-                           const std::string& dataset, const BindingSummary& summary) {
+                           const BindingSummary& summary) {
+  const std::string& dataset = bound.dataset;
   if (dataset.empty()) return {};
   if (!std::filesystem::exists(dataset))
     return "its dataset " + dataset + " is not there (moved without the binding?)";
@@ -69,16 +70,15 @@ std::string datasetWarning(const std::filesystem::path& path, const BoundSurface
 // binding's quality summary as `bind` printed it. A deformed one (from
 // deform, simulate or the GUI) is described as it is in the file, moved.
 void printBinding(const std::filesystem::path& path, vtkPolyData* data) {
-  const BoundSurface bound = bindingFromPolyData(data, path.string());
+  const BoundSurface bound = bindingFromFile(data, path);
   printSurface(
       path, shownSurface(bound),
       bound.deformed ? "binding, deformed (its rest shape: points - Displacement)" : "binding");
-  const std::string dataset = datasetOfField(bound.dataset, path);
-  std::printf("  dataset    %s\n", dataset.c_str());
+  std::printf("  dataset    %s\n", bound.dataset.c_str());
   const BindingSummary summary =
       summarizeBinding(bound.binding, boundingBox(bound.surface).diagonal());
   std::fputs(formatSummary(summary, bound.binding).c_str(), stdout);
-  if (const std::string warning = datasetWarning(path, bound, dataset, summary); !warning.empty())
+  if (const std::string warning = datasetWarning(path, bound, summary); !warning.empty())
     std::printf("  warning: %s\n", warning.c_str());
 }
 

@@ -301,7 +301,7 @@ void invertDiagonalBlocks(const Matrix& A, std::vector<Eigen::Matrix<Scalar, 3, 
     block.computeInverseAndDetWithCheck(result, determinant, invertible,
                                         1e-12 * size * size * size);
     inverse[static_cast<std::size_t>(v)] =
-        (invertible && size > 0 ? result : Eigen::Matrix3d::Identity()).cast<Scalar>();
+        (invertible ? result : Eigen::Matrix3d::Identity()).cast<Scalar>();
   });
 }
 

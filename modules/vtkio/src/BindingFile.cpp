@@ -201,10 +201,14 @@ void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) 
   writeVtp(path, data);
 }
 
-BoundSurface readBinding(const std::filesystem::path& path) {
-  BoundSurface bound = bindingFromPolyData(readVtp(path), path.string());
+BoundSurface bindingFromFile(vtkPolyData* data, const std::filesystem::path& path) {
+  BoundSurface bound = bindingFromPolyData(data, path.string());
   bound.dataset = datasetOfField(bound.dataset, path);
   return bound;
+}
+
+BoundSurface readBinding(const std::filesystem::path& path) {
+  return bindingFromFile(readVtp(path), path);
 }
 
 BoundSurface readBinding(const std::filesystem::path& path, const MultiLevelTetMesh& dataset) {
@@ -217,8 +221,8 @@ SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path) {
   if (lowerExtension(path) != ".vtp") return {readSurface(path), std::nullopt, {}};
   const vtkSmartPointer<vtkPolyData> data = readVtp(path);
   if (!isBinding(data)) return {fromVtkPolyData(data, path.string()), std::nullopt, {}};
-  BoundSurface bound = bindingFromPolyData(data, path.string());
-  return {std::move(bound.surface), std::move(bound.binding), datasetOfField(bound.dataset, path)};
+  BoundSurface bound = bindingFromFile(data, path);
+  return {std::move(bound.surface), std::move(bound.binding), std::move(bound.dataset)};
 }
 
 SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
@@ -227,13 +231,6 @@ SurfaceOrBinding readSurfaceOrBinding(const std::filesystem::path& path,
   if (read.binding)
     checkBindingFits(*read.binding, read.surface.vertexCount(), dataset, path.string());
   return read;
-}
-
-BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& name,
-                                 const MultiLevelTetMesh& dataset) {
-  BoundSurface bound = bindingFromPolyData(data, name);
-  checkBindingFits(bound, dataset, name);
-  return bound;
 }
 
 void checkBindingFits(const SurfaceBinding& b, Index surfaceVertices,

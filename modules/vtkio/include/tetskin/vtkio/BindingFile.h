@@ -75,9 +75,9 @@ SurfaceMesh shownSurface(const BoundSurface& bound);
 // rest surface without normals, and the deformed state.
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound);
 BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName);
-// The same, checked against `dataset` as readBinding(path, dataset) checks.
-BoundSurface bindingFromPolyData(vtkPolyData* data, const std::string& sourceName,
-                                 const MultiLevelTetMesh& dataset);
+// The same for `data` read from the file at `path`: its Dataset resolved
+// from the file's folder (datasetOfField), as readBinding gives it.
+BoundSurface bindingFromFile(vtkPolyData* data, const std::filesystem::path& path);
 // Checks `binding` (of a surface of `surfaceVertices` vertices) against
 // `dataset` as readBinding(path, dataset) does; an Error naming
 // `sourceName` if it does not fit.
