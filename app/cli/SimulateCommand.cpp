@@ -179,9 +179,12 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   if (options.solver == SolverKind::Automatic && a.steps > 0) {
     // Before the first round of trials ends, neither solver has been found faster.
     const SolverChoice& choice = *sim.solverChoice();
-    const std::string verdict = choice.rounds() > 0 ? std::string("faster in the last round: ") +
-                                                          toString(choice.preferred())
-                                                    : "too few steps to compare them";
+    std::string verdict = "too few steps to compare them";
+    if (choice.rounds() > 0)
+      verdict = std::string(choice.decidedByShortfalls()
+                                ? "fewer solves short of the tolerance in the last round: "
+                                : "faster in the last round: ") +
+                toString(choice.preferred());
     std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n", multigridSteps,
                 a.steps, verdict.c_str());
   }

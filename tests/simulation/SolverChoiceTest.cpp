@@ -12,16 +12,23 @@ namespace {
 
 using Kind = SolverKind;
 
-// Runs `steps` steps, each taking the time `seconds(kind, step)`, and
-// returns the solver of every step.
-template <typename Seconds>
-std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds) {
+// Runs `steps` steps, each taking the time `seconds(kind, step)` and
+// reaching the tolerance where `reached(kind, step)`, and returns the solver
+// of every step.
+template <typename Seconds, typename Reached>
+std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds, Reached reached) {
   std::vector<Kind> used;
   for (int i = 0; i < steps; ++i) {
     used.push_back(choice.next());
-    choice.record(seconds(used.back(), i));
+    choice.record(seconds(used.back(), i), reached(used.back(), i));
   }
   return used;
+}
+
+// Every solve reaching the tolerance.
+template <typename Seconds>
+std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds) {
+  return run(choice, steps, seconds, [](Kind, int) { return true; });
 }
 
 TEST(SolverChoice, AlternatesTheTrialsThenKeepsTheFasterUntilTheNextRound) {
@@ -82,6 +89,46 @@ TEST(SolverChoice, TheFirstTwoStepsAreNotTimed) {
   });
   EXPECT_EQ(choice.rounds(), 1);
   EXPECT_EQ(choice.preferred(), Kind::Multigrid);
+}
+
+TEST(SolverChoice, ASolverStoppingShortOfTheToleranceLosesWhateverItsTime) {
+  // CG at the iteration limit in one of its three trials (a nearly
+  // incompressible body): its steps were quicker, but not solved.
+  SolverChoice choice(3, 10);
+  run(
+      choice, 2 + 6, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
+      [](Kind kind, int step) { return kind == Kind::Multigrid || step != 4; });
+  EXPECT_EQ(choice.preferred(), Kind::Multigrid);
+  EXPECT_TRUE(choice.decidedByShortfalls());
+}
+
+TEST(SolverChoice, TheTimesDecideBetweenSolversStoppingShortAlike) {
+  SolverChoice choice(2, 10);
+  run(
+      choice, 2 + 4, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
+      [](Kind, int step) { return step != 2 && step != 3; });  // one short trial each
+  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+  EXPECT_FALSE(choice.decidedByShortfalls());
+}
+
+TEST(SolverChoice, ShortSolvesCountOnlyInTheirRound) {
+  // CG short in round 1 (multigrid preferred), then fine and faster in
+  // round 2: CG again.
+  SolverChoice choice(1, 3);
+  run(
+      choice, 2 + 2 * (2 + 3), [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
+      [](Kind kind, int step) { return kind == Kind::Multigrid || step != 2; });
+  EXPECT_EQ(choice.rounds(), 2);
+  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+  EXPECT_FALSE(choice.decidedByShortfalls());
+}
+
+TEST(SolverChoice, TheUntimedStepsShortfallsDoNotCount) {
+  SolverChoice choice(1, 3);
+  run(
+      choice, 2 + 2, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
+      [](Kind, int step) { return step >= 2; });
+  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
 }
 
 TEST(SolverChoice, RefusesEmptyTrials) {

@@ -444,7 +444,9 @@ StepStats Simulation::step() {
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (choice_) choice_->record(stats.setupSeconds + stats.solveSeconds);
+  if (choice_)
+    choice_->record(stats.setupSeconds + stats.solveSeconds,
+                    solve.relativeResidual <= options_.tolerance);
   stats.iterations = solve.iterations;
   stats.residual = solve.relativeResidual;
   Eigen::VectorXd v = v_ + dv_;

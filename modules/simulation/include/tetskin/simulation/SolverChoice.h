@@ -17,8 +17,13 @@
 // The very first two steps (CG, then multigrid) are not timed: they carry
 // one-time costs (the multigrid's Galerkin streams, the first allocations)
 // that would count against a solver for good.
-// Both solve every step to the same tolerance: the choice moves the
-// trajectory by no more than the solves' tolerance does.
+// Both solve every step to the same tolerance, so the choice moves the
+// trajectory by no more than the solves' tolerance does, except where a
+// solve stops at the iteration limit short of it (CG on a nearly
+// incompressible body, nu = 0.4999): its step is then inexact, and its time
+// says nothing about the time to reach the tolerance. So the solver with
+// fewer such steps in a round's trials is preferred whatever the times; the
+// times decide between equals.
 
 #include <string>
 
@@ -34,10 +39,14 @@ class SolverChoice {
   SolverChoice(int trialSteps, int period);
   // The solver of the coming step: ConjugateGradient or Multigrid.
   SolverKind next() const;
-  // The time the step of next() took (its preconditioner's setup and solve).
-  void record(double seconds);
-  // The faster one in the last round (ConjugateGradient before the first).
+  // The time the step of next() took (its preconditioner's setup and
+  // solve), and whether its solve reached the tolerance.
+  void record(double seconds, bool reachedTolerance);
+  // The one chosen in the last round (ConjugateGradient before the first).
   SolverKind preferred() const { return preferred_; }
+  // Whether that round was decided by solves stopped short of the
+  // tolerance rather than by the times.
+  bool decidedByShortfalls() const { return decidedByShortfalls_; }
   // Rounds of trials completed.
   int rounds() const { return rounds_; }
 
@@ -47,7 +56,9 @@ class SolverChoice {
   // untimed first steps.
   int position_ = -2;
   double trialSeconds_[2] = {0, 0};  // CG, multigrid
+  int trialShortfalls_[2] = {0, 0};  // trial steps stopped short of the tolerance
   SolverKind preferred_ = SolverKind::ConjugateGradient;
+  bool decidedByShortfalls_ = false;
   int rounds_ = 0;
 };
 
