@@ -112,7 +112,7 @@ void Scene::openDataset(const std::filesystem::path& path) {
   picked_.reset();
   rebuildControl();
   showDrawing(std::move(drawing));
-  setCamera(CameraPreset::Iso);
+  setCamera(camera_);
 }
 
 void Scene::openSurface(const std::filesystem::path& path, SurfaceOrBinding read) {
@@ -132,6 +132,7 @@ void Scene::openSurface(const std::filesystem::path& path, SurfaceOrBinding read
   picked_.reset();
   showDrawing(std::move(drawing));
   if (bound) showControlAtBindingLevel();
+  setCamera(camera_);  // (a surface placed elsewhere than the last would be out of view)
 }
 
 std::unique_ptr<DeformableSurface> Scene::makeDrawing(const Dataset& dataset,
@@ -311,6 +312,7 @@ void Scene::setHighlightProblems(bool on) {
 }
 
 void Scene::setCamera(CameraPreset preset) {
+  camera_ = preset;
   if (!dataset_) return;
   const BoundingBox box =
       surface_ ? boundingBox(*surface_) : boundingBox(extractLevel(dataset_->mesh, level_).nodes);

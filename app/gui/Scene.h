@@ -89,7 +89,10 @@ class Scene {
   // Marks vertices with a negative weight or a distance beyond the 99th percentile.
   void setHighlightProblems(bool on);
   Index highlightedCount() const { return highlighted_; }
+  // Frames the surface (else the control level) from the preset's side; a
+  // dataset or surface opened later is framed from the same side.
   void setCamera(CameraPreset preset);
+  CameraPreset camera() const { return camera_; }
   void setOverlayText(const std::string& text);
 
   // Binding diagnostics.
@@ -152,6 +155,7 @@ class Scene {
   std::optional<BindingSummary> previousSummary_;
   int level_ = 0, controlLevel_ = 0;
   RenderPath path_ = RenderPath::Cpu;
+  CameraPreset camera_ = CameraPreset::Iso;
   FurParameters fur_;
   std::optional<ControlMeshStyle> controlStyle_ = ControlMeshStyle::Wireframe;
   bool surfaceVisible_ = true, furVisible_ = true, highlight_ = false;

@@ -25,6 +25,7 @@
 #include <QStatusBar>
 #include <QTest>
 #include <QUrl>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -147,6 +148,29 @@ TEST_F(Gui, ASurfaceFarFromTheBodyOpensWithAWarning) {
                   .contains(QRegularExpression("\n" + warning +
                                                "[0-9]+% of level 2's diagonal from its boundary")))
       << child<QLabel>("comparison")->text().toStdString();
+}
+
+// Opening a surface frames it (one far from the last would be out of view),
+// and opening a surface or dataset keeps the side the camera box names.
+TEST_F(Gui, OpeningFramesTheNewSurfaceFromTheChosenSide) {
+  openSample();
+  child<QComboBox>("camera")->setCurrentText("top");
+  vtkCamera* camera = window_->renderer()->GetActiveCamera();
+  auto lookingDown = [&] {
+    const double* d = camera->GetDirectionOfProjection();
+    return std::abs(d[0]) < 1e-9 && std::abs(d[1] + 1) < 1e-9 && std::abs(d[2]) < 1e-9;
+  };
+  EXPECT_TRUE(lookingDown());
+  ASSERT_TRUE(window_->openFile(QString(TETSKIN_SOURCE_DIR) + "/tests/data/far_tetrahedron.obj"))
+      << window_->lastError().toStdString();
+  const double* focus = camera->GetFocalPoint();
+  EXPECT_NEAR(focus[0], 100.5, 1e-9);  // the tetrahedron's box centre
+  EXPECT_NEAR(focus[1], 0.5, 1e-9);
+  EXPECT_NEAR(focus[2], 0.5, 1e-9);
+  EXPECT_TRUE(lookingDown());
+  ASSERT_TRUE(window_->openFile(kData + "bunny.json")) << window_->lastError().toStdString();
+  EXPECT_TRUE(lookingDown());
+  EXPECT_EQ(child<QComboBox>("camera")->currentText(), "top");
 }
 
 TEST_F(Gui, BadFilesNameFileAndLineAndChangeNothing) {
