@@ -331,15 +331,36 @@ QWidget* MainWindow::buildSimulationDock() {
   young_->setValue(ElasticMaterial{}.youngsModulus);
   poisson_ = new QDoubleSpinBox;
   poisson_->setObjectName("poisson");
-  poisson_->setDecimals(3);
-  poisson_->setRange(-0.999, 0.499);
+  poisson_->setDecimals(4);
+  poisson_->setRange(-0.9999, 0.4999);
   poisson_->setSingleStep(0.01);
   poisson_->setValue(ElasticMaterial{}.poissonRatio);
+  density_ = new QDoubleSpinBox;
+  density_->setObjectName("density");
+  density_->setDecimals(4);
+  density_->setRange(1e-4, 1e6);
+  density_->setValue(ElasticMaterial{}.density);
+  massDamping_ = new QDoubleSpinBox;
+  massDamping_->setObjectName("massDamping");
+  massDamping_->setDecimals(4);
+  massDamping_->setRange(0, 1000);
+  massDamping_->setValue(ElasticMaterial{}.massDamping);
+  massDamping_->setToolTip("Rayleigh alpha: damping proportional to the mass, 1/s");
+  stiffnessDamping_ = new QDoubleSpinBox;
+  stiffnessDamping_->setObjectName("stiffnessDamping");
+  stiffnessDamping_->setDecimals(6);
+  stiffnessDamping_->setRange(0, 10);
+  stiffnessDamping_->setSingleStep(0.001);
+  stiffnessDamping_->setValue(ElasticMaterial{}.stiffnessDamping);
+  stiffnessDamping_->setToolTip("Rayleigh beta: damping proportional to the stiffness, s");
   form->addRow("Solver", solver_);
   form->addRow("Tangent", tangent_);
   form->addRow("Time step (s)", timeStep_);
   form->addRow("Young's modulus (Pa)", young_);
   form->addRow("Poisson's ratio", poisson_);
+  form->addRow("Density (kg/m^3)", density_);
+  form->addRow("Mass damping (1/s)", massDamping_);
+  form->addRow("Stiffness damping (s)", stiffnessDamping_);
   layout->addWidget(new QLabel("Changes apply on Reset."));
   layout->addStretch();
   return w;
@@ -413,6 +434,9 @@ bool MainWindow::openFile(const QString& qpath) {
     const ElasticMaterial& material = scene_->dataset().config.elasticity;
     young_->setValue(material.youngsModulus);
     poisson_->setValue(material.poissonRatio);
+    density_->setValue(material.density);
+    massDamping_->setValue(material.massDamping);
+    stiffnessDamping_->setValue(material.stiffnessDamping);
   };
   try {
     if (isDatasetFile(path)) {
@@ -534,10 +558,11 @@ void MainWindow::resetSimulation() {
       mesh.nodes.col(1).segment(level.firstNode, level.nodeCount).minCoeff());
   SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
   options.timeStep = timeStep_->value();
-  // The dataset's material (density, damping), with the dock's E and nu.
-  options.material = scene_->dataset().config.elasticity;
   options.material.youngsModulus = young_->value();
   options.material.poissonRatio = poisson_->value();
+  options.material.density = density_->value();
+  options.material.massDamping = massDamping_->value();
+  options.material.stiffnessDamping = stiffnessDamping_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());
   options.tangent = tangentFromString(tangent_->currentText().toStdString());
   try {

@@ -144,7 +144,7 @@ class MainWindow : public QMainWindow {
   // Simulation.
   QPushButton *play_, *step_, *reset_, *fromFrame_, *record_;
   ScenarioRows* scenarioRows_;
-  QDoubleSpinBox *timeStep_, *young_, *poisson_;
+  QDoubleSpinBox *timeStep_, *young_, *poisson_, *density_, *massDamping_, *stiffnessDamping_;
   QComboBox* solver_;
   QComboBox* tangent_;
   // Frame bookkeeping.

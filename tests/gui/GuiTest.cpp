@@ -369,24 +369,36 @@ TEST_F(Gui, SolvesStoppedAtTheIterationLimitAreWarnedOf) {
   EXPECT_EQ(window_->statusBar()->currentMessage(), "");
 }
 
-// The Simulation dock starts from the dataset's elasticity section; the
-// simulation takes the config's density and damping with the dock's E and
-// nu; a surface opened afterwards leaves the dock as the user set it.
+// The Simulation dock starts from the dataset's elasticity section (the
+// defaults where it has no value); the simulation takes the dock's material;
+// a surface opened afterwards leaves the dock as the user set it.
 TEST_F(Gui, SimulationTakesTheDatasetsMaterial) {
   const QString stiff = QString(TETSKIN_SOURCE_DIR) + "/tests/data/stiff_bunny.json";
   ASSERT_TRUE(window_->openFiles({stiff})) << window_->lastError().toStdString();
   EXPECT_EQ(child<QDoubleSpinBox>("young")->value(), 2e6);
+  EXPECT_EQ(child<QDoubleSpinBox>("density")->value(), 50.0);
+  EXPECT_EQ(child<QDoubleSpinBox>("massDamping")->value(), ElasticMaterial{}.massDamping);
+  EXPECT_EQ(child<QDoubleSpinBox>("stiffnessDamping")->value(), ElasticMaterial{}.stiffnessDamping);
   ASSERT_NE(window_->runner(), nullptr);
-  EXPECT_EQ(window_->runner()->simulation().options().material.youngsModulus, 2e6);
-  EXPECT_EQ(window_->runner()->simulation().options().material.density, 50.0);
+  auto material = [&] { return window_->runner()->simulation().options().material; };
+  EXPECT_EQ(material().youngsModulus, 2e6);
+  EXPECT_EQ(material().density, 50.0);
   child<QDoubleSpinBox>("young")->setValue(7e5);
+  child<QDoubleSpinBox>("poisson")->setValue(0.4999);
+  child<QDoubleSpinBox>("density")->setValue(1200);
+  child<QDoubleSpinBox>("massDamping")->setValue(0.5);
+  child<QDoubleSpinBox>("stiffnessDamping")->setValue(0.002);
   ASSERT_TRUE(window_->openFiles({kData + "bunny_8k.obj"})) << window_->lastError().toStdString();
   EXPECT_EQ(child<QDoubleSpinBox>("young")->value(), 7e5);
-  EXPECT_EQ(window_->runner()->simulation().options().material.youngsModulus, 7e5);
-  EXPECT_EQ(window_->runner()->simulation().options().material.density, 50.0);
+  EXPECT_EQ(material().youngsModulus, 7e5);
+  EXPECT_EQ(material().poissonRatio, 0.4999);
+  EXPECT_EQ(material().density, 1200.0);
+  EXPECT_EQ(material().massDamping, 0.5);
+  EXPECT_EQ(material().stiffnessDamping, 0.002);
   ASSERT_TRUE(window_->openFiles({kData + "bunny.json"})) << window_->lastError().toStdString();
   EXPECT_EQ(child<QDoubleSpinBox>("young")->value(), 2e5);
-  EXPECT_EQ(window_->runner()->simulation().options().material.density, 100.0);
+  EXPECT_EQ(material().density, 100.0);
+  EXPECT_EQ(material().massDamping, ElasticMaterial{}.massDamping);
 }
 
 // The dock's solver and tangent reach the simulation on Reset.
