@@ -30,6 +30,21 @@ TEST(Meshers, TetGenFillsTheBoxWithPositiveTetrahedra) {
   EXPECT_GT(fine.elementCount(), coarse.elementCount());
 }
 
+// A hollow box (the inner wall wound into the cavity): TetGen and Netgen
+// fill the wall and leave the cavity empty.
+TEST(Meshers, ACavityStaysEmpty) {
+  SurfaceMesh inner = test::box({-1, -1, -1}, {1, 1, 1});
+  inner.triangles.col(1).swap(inner.triangles.col(2));
+  const SurfaceMesh hollow = test::merge(test::box({-2, -2, -2}, {2, 2, 2}), inner);
+  const TetMesh tetgen = tetrahedralizeWithTetGen(hollow, 1.6);
+  EXPECT_NO_THROW(validateTetMesh(tetgen, "tetgen", /*requirePositiveVolume=*/true));
+  EXPECT_NEAR(totalVolume(tetgen), 64.0 - 8.0, 1e-9);
+  if (!netgenAvailable()) GTEST_SKIP() << "built without Netgen";
+  const TetMesh netgen = tetrahedralizeWithNetgen(hollow, NetgenFineness::Moderate);
+  EXPECT_NO_THROW(validateTetMesh(netgen, "netgen", /*requirePositiveVolume=*/true));
+  EXPECT_NEAR(totalVolume(netgen), 64.0 - 8.0, 1e-6);
+}
+
 TEST(Meshers, TetGenRejectsSelfIntersectingInput) {
   const SurfaceMesh twoBoxes =
       test::merge(test::box({0, 0, 0}, {1, 1, 1}), test::box({0.5, 0.3, 0.2}, {1.5, 1.3, 1.2}));

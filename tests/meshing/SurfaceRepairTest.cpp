@@ -69,6 +69,44 @@ TEST(SurfaceRepair, OrientationIsMadeConsistentAndOutward) {
   EXPECT_NEAR(enclosedVolume(inverted), 1.0, 1e-12);
 }
 
+// The parts of a hollow box keep their windings relative to the outermost
+// one, which turns outward: the cavity stays a cavity.
+TEST(SurfaceRepair, AHollowShapeStaysHollow) {
+  SurfaceMesh inner = test::box(Eigen::Vector3d::Constant(0.25), Eigen::Vector3d::Constant(0.75));
+  inner.triangles.col(1).swap(inner.triangles.col(2));  // facing into the cavity
+  SurfaceMesh hollow = test::merge(test::box(kZero, kOne), inner);
+  RepairReport r = repairSurface(hollow, "hollow");
+  EXPECT_EQ(r.cavities, 1);
+  EXPECT_EQ(r.invertedComponents, 0);
+  EXPECT_NEAR(enclosedVolume(hollow), 1.0 - 0.125, 1e-12);
+  // Inside out throughout: both parts turn, the cavity stays.
+  SurfaceMesh insideOut = hollow;
+  insideOut.triangles.col(1).swap(insideOut.triangles.col(2));
+  r = repairSurface(insideOut, "inside out");
+  EXPECT_EQ(r.cavities, 1);
+  EXPECT_EQ(r.invertedComponents, 2);
+  EXPECT_NEAR(enclosedVolume(insideOut), 1.0 - 0.125, 1e-12);
+  // Wound alike, the inner box is a part of the solid, as given.
+  SurfaceMesh filled =
+      test::merge(test::box(kZero, kOne),
+                  test::box(Eigen::Vector3d::Constant(0.25), Eigen::Vector3d::Constant(0.75)));
+  r = repairSurface(filled, "filled");
+  EXPECT_EQ(r.cavities, 0);
+  EXPECT_NEAR(enclosedVolume(filled), 1.0 + 0.125, 1e-12);
+}
+
+// A part keeps the winding most of its triangles had.
+TEST(SurfaceRepair, APartKeepsItsMajorityWinding) {
+  SurfaceMesh inner = test::box(Eigen::Vector3d::Constant(0.25), Eigen::Vector3d::Constant(0.75));
+  inner.triangles.col(1).swap(inner.triangles.col(2));
+  std::swap(inner.triangles(0, 1), inner.triangles(0, 2));  // its first triangle the odd one out
+  SurfaceMesh hollow = test::merge(test::box(kZero, kOne), inner);
+  const RepairReport r = repairSurface(hollow, "hollow");
+  EXPECT_EQ(r.flippedTriangles, 1);
+  EXPECT_EQ(r.cavities, 1);
+  EXPECT_NEAR(enclosedVolume(hollow), 1.0 - 0.125, 1e-12);
+}
+
 TEST(SurfaceRepair, DanglingTriangleIsRemoved) {
   // The report's case: a triangle hanging off an edge of a closed surface.
   SurfaceMesh m = test::box(kZero, kOne);

@@ -5,23 +5,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <queue>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "SurfaceEdges.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/meshing/SurfaceNesting.h"
 #include "tetskin/spatial/AabbTree.h"
 #include "tetskin/spatial/TriangleIntersection.h"
 
 namespace tetskin {
 namespace {
-
-std::uint64_t edgeKey(int a, int b) {
-  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
 
 Eigen::Vector3d position(const SurfaceMesh& m, int v) {
   return m.positions.row(v).transpose();
@@ -34,17 +29,6 @@ void keepTriangles(SurfaceMesh& mesh, const std::vector<char>& keep) {
   for (Index t = 0; t < mesh.triangleCount(); ++t)
     if (keep[static_cast<std::size_t>(t)]) kept.row(next++) = mesh.triangles.row(t);
   mesh.triangles = std::move(kept);
-}
-
-// For every undirected edge, the triangles using it.
-std::unordered_map<std::uint64_t, std::vector<int>> edgeTriangles(const SurfaceMesh& mesh) {
-  std::unordered_map<std::uint64_t, std::vector<int>> edges;
-  edges.reserve(static_cast<std::size_t>(mesh.triangleCount()) * 2);
-  for (Index t = 0; t < mesh.triangleCount(); ++t)
-    for (int k = 0; k < 3; ++k)
-      edges[edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))].push_back(
-          static_cast<int>(t));
-  return edges;
 }
 
 // Whether triangle t traverses the edge as a -> b.
@@ -144,54 +128,52 @@ Index removeDuplicateTriangles(SurfaceMesh& mesh) {
 
 OrientationResult orientConsistently(SurfaceMesh& mesh) {
   OrientationResult result;
-  const auto edges = edgeTriangles(mesh);
-  const Index n = mesh.triangleCount();
-  std::vector<int> component(static_cast<std::size_t>(n), -1);
-  std::vector<std::vector<int>> members;
-  for (Index seed = 0; seed < n; ++seed) {
-    if (component[static_cast<std::size_t>(seed)] >= 0) continue;
-    const int id = static_cast<int>(members.size());
-    members.emplace_back();
-    std::queue<int> queue;
-    queue.push(static_cast<int>(seed));
-    component[static_cast<std::size_t>(seed)] = id;
-    while (!queue.empty()) {
-      const int t = queue.front();
-      queue.pop();
-      members[static_cast<std::size_t>(id)].push_back(t);
-      for (int k = 0; k < 3; ++k) {
-        const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
-        const auto& users = edges.at(edgeKey(a, b));
-        if (users.size() != 2) continue;  // open or non-manifold: no orientation constraint
-        const int u = users[0] == t ? users[1] : users[0];
-        // t traverses a -> b, so a consistent neighbour traverses b -> a.
-        const bool consistent = hasDirectedEdge(mesh, u, b, a);
-        if (component[static_cast<std::size_t>(u)] < 0) {
-          component[static_cast<std::size_t>(u)] = id;
-          if (!consistent) {
-            flip(mesh, u);
-            ++result.flippedTriangles;
-          }
-          queue.push(u);
-        } else if (!consistent) {
-          result.orientable = false;
-        }
+  const SurfaceParts parts = surfaceParts(mesh);
+  // Each triangle agrees with the one it was reached from (which is final
+  // by then): across their shared edge a -> b, it traverses b -> a.
+  auto sharedEdgeAgrees = [&](int t, int u) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
+      if (hasDirectedEdge(mesh, u, a, b)) return false;
+      if (hasDirectedEdge(mesh, u, b, a)) return true;
+    }
+    return true;  // (no shared edge: cannot happen)
+  };
+  for (const auto& part : parts.triangles) {
+    Index flipped = 0;
+    for (int t : part)
+      if (const int from = parts.reachedFrom[static_cast<std::size_t>(t)];
+          from >= 0 && !sharedEdgeAgrees(t, from)) {
+        flip(mesh, t);
+        ++flipped;
       }
+    // The part keeps the winding most of its triangles had.
+    if (2 * flipped > static_cast<Index>(part.size())) {
+      for (int t : part) flip(mesh, t);
+      flipped = static_cast<Index>(part.size()) - flipped;
     }
+    result.flippedTriangles += flipped;
   }
-  // Outward: a closed component with negative signed volume is inside out.
-  for (const auto& tris : members) {
-    double volume = 0;
-    for (int t : tris)
-      volume +=
-          position(mesh, mesh.triangles(t, 0))
-              .dot(
-                  position(mesh, mesh.triangles(t, 1)).cross(position(mesh, mesh.triangles(t, 2))));
-    if (volume < 0) {
-      for (int t : tris) flip(mesh, t);
-      ++result.invertedComponents;
-    }
+  // A manifold edge its two triangles traverse alike after that: a
+  // Moebius-like part.
+  for (const auto& [key, users] : edgeTriangles(mesh))
+    if (users.size() == 2 && !sharedEdgeAgrees(users[0], users[1])) result.orientable = false;
+  // An outermost part faces out, and the parts inside it turn with it: their
+  // windings relative to it say where the cavities are (SurfaceNesting.h),
+  // so a hollow ball wound inside out throughout stays hollow.
+  const std::vector<std::vector<int>> enclosing = enclosingParts(mesh, parts.triangles);
+  std::vector<char> inward;
+  for (const auto& part : parts.triangles) inward.push_back(partVolume(mesh, part) < 0);
+  for (std::size_t i = 0; i < parts.triangles.size(); ++i) {
+    std::size_t outermost = i;
+    for (int j : enclosing[i])
+      if (enclosing[static_cast<std::size_t>(j)].empty()) outermost = static_cast<std::size_t>(j);
+    if (!inward[outermost]) continue;
+    for (int t : parts.triangles[i]) flip(mesh, t);
+    ++result.invertedComponents;
   }
+  const std::vector<char> cavity = cavityParts(mesh, parts.triangles, enclosing);
+  result.cavities = std::count(cavity.begin(), cavity.end(), 1);
   return result;
 }
 
@@ -363,6 +345,7 @@ std::vector<std::pair<std::string, Index>> RepairReport::counts() const {
           {"duplicate_triangles", duplicateTriangles},
           {"flipped_triangles", flippedTriangles},
           {"inverted_components", invertedComponents},
+          {"cavities", cavities},
           {"holes", holes},
           {"open_triangles_removed", openTrianglesRemoved},
           {"intersecting_pairs", intersectingPairs},
@@ -443,6 +426,7 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
   const OrientationResult orientation = orientConsistently(mesh);
   report.flippedTriangles = orientation.flippedTriangles;
   report.invertedComponents = orientation.invertedComponents;
+  report.cavities = orientation.cavities;
   if (!orientation.orientable)
     throw Error(name, 0, "cannot be repaired: the surface is not orientable");
   report.unusedVertices = removeUnusedVertices(mesh);

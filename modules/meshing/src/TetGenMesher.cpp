@@ -8,6 +8,7 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/Meshers.h"
+#include "tetskin/meshing/SurfaceNesting.h"
 
 namespace tetskin {
 namespace {
@@ -69,6 +70,15 @@ TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRa
     f.polygonlist[0].numberofvertices = 3;
     f.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k) f.polygonlist[0].vertexlist[k] = surface.triangles(t, k);
+  }
+  // Cavities (parts wound into the void they bound) stay empty: TetGen
+  // removes the region around each hole point, as it does the outside.
+  const std::vector<Eigen::Vector3d> holes = cavityPoints(surface);
+  in.numberofholes = static_cast<int>(holes.size());
+  if (!holes.empty()) {
+    in.holelist = new REAL[holes.size() * 3];
+    for (std::size_t h = 0; h < holes.size(); ++h)
+      for (int k = 0; k < 3; ++k) in.holelist[h * 3 + static_cast<std::size_t>(k)] = holes[h][k];
   }
   char switches[64];
   if (maxVolume > 0.0)

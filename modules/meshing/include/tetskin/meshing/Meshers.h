@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Tetrahedralization of a closed, repaired surface by TetGen (the library) or
-// Netgen (nglib). Both return positively oriented tetrahedra and throw
+// Netgen (nglib). A part of the surface wound inward (SurfaceNesting.h: the
+// inner sphere of a hollow ball, as repair winds it) bounds a cavity, which
+// stays empty. Both return positively oriented tetrahedra and throw
 // tetskin::Error when the mesher refuses the input. A mesher may also crash
 // or hang on hostile input: run them through runIsolated (IsolatedJobs.h).
 

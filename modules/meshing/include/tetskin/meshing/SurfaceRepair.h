@@ -24,11 +24,16 @@ Index removeDuplicateTriangles(SurfaceMesh& mesh);
 
 struct OrientationResult {
   Index flippedTriangles = 0;    // flipped to agree with their neighbours
-  Index invertedComponents = 0;  // closed components turned outward (positive volume)
+  Index invertedComponents = 0;  // turned with the outermost one around them
+  Index cavities = 0;            // components bounding a cavity (SurfaceNesting.h)
   bool orientable = true;        // false for a Moebius-like surface
 };
-// Makes neighbouring triangles agree (each shared manifold edge used once in each
-// direction), then turns every component so its signed volume is positive.
+// Makes neighbouring triangles agree (each shared manifold edge used once in
+// each direction; each component keeps the winding most of its triangles
+// had), then turns every outermost component outward (positive signed
+// volume) with the components inside it. So these keep their winding
+// relative to it: the inner sphere of a hollow ball, wound the other way,
+// bounds a cavity (SurfaceNesting.h).
 OrientationResult orientConsistently(SurfaceMesh& mesh);
 
 // Connected chains of open edges (edges used by exactly one triangle): the rim
@@ -70,7 +75,8 @@ struct RepairReport {
   Index duplicateTriangles = 0;
   Index flippedTriangles = 0;
   Index invertedComponents = 0;
-  Index holes = 0;  // boundary loops before open triangles were removed
+  Index cavities = 0;  // closed components that bound a cavity (left empty by the meshers)
+  Index holes = 0;     // boundary loops before open triangles were removed
   Index openTrianglesRemoved = 0;
   Index intersectingPairs = 0;  // found in the first round
   Index collapsedTriangles = 0;
