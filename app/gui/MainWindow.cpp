@@ -319,6 +319,11 @@ QWidget* MainWindow::buildSimulationDock() {
   tangent_->setToolTip(
       "full: R K R^T and the rotation term (steady under large steps on stretched bodies); "
       "warped: R K R^T alone (stiffness warping, a cheaper element pass)");
+  // The relative residual each solve reaches: a looser one is much cheaper
+  // for interactive use (README, Benchmarks: the tolerance table).
+  tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
+  tolerance_->setCurrentText("1e-6");
+  tolerance_->setToolTip("relative residual of each linear solve (simulate --tolerance)");
   timeStep_ = new QDoubleSpinBox;
   timeStep_->setObjectName("timeStep");
   timeStep_->setDecimals(4);
@@ -355,6 +360,7 @@ QWidget* MainWindow::buildSimulationDock() {
   stiffnessDamping_->setToolTip("Rayleigh beta: damping proportional to the stiffness, s");
   form->addRow("Solver", solver_);
   form->addRow("Tangent", tangent_);
+  form->addRow("Tolerance", tolerance_);
   form->addRow("Time step (s)", timeStep_);
   form->addRow("Young's modulus (Pa)", young_);
   form->addRow("Poisson's ratio", poisson_);
@@ -564,6 +570,7 @@ void MainWindow::resetSimulation() {
   options.material.massDamping = massDamping_->value();
   options.material.stiffnessDamping = stiffnessDamping_->value();
   options.solver = solverKindFromString(solver_->currentText().toStdString());
+  options.tolerance = tolerance_->currentText().toDouble();
   options.tangent = tangentFromString(tangent_->currentText().toStdString());
   try {
     const ScenarioParameters parameters = scenarioRows_->parameters(level.nodeCount);

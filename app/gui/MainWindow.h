@@ -146,6 +146,7 @@ class MainWindow : public QMainWindow {
   ScenarioRows* scenarioRows_;
   QDoubleSpinBox *timeStep_, *young_, *poisson_, *density_, *massDamping_, *stiffnessDamping_;
   QComboBox* solver_;
+  QComboBox* tolerance_;
   QComboBox* tangent_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;

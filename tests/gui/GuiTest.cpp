@@ -401,18 +401,21 @@ TEST_F(Gui, SimulationTakesTheDatasetsMaterial) {
   EXPECT_EQ(material().massDamping, ElasticMaterial{}.massDamping);
 }
 
-// The dock's solver and tangent reach the simulation on Reset.
-TEST_F(Gui, SimulationTakesTheDocksSolverAndTangent) {
+// The dock's solver, tangent and tolerance reach the simulation on Reset.
+TEST_F(Gui, SimulationTakesTheDocksSolverTangentAndTolerance) {
   openSample();
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
   EXPECT_EQ(window_->runner()->simulation().options().solver, SolverKind::Automatic);
   EXPECT_EQ(window_->runner()->simulation().options().tangent, Tangent::Full);
+  EXPECT_EQ(window_->runner()->simulation().options().tolerance, SimulationOptions{}.tolerance);
   child<QComboBox>("solver")->setCurrentText("multigrid");
   child<QComboBox>("tangent")->setCurrentText("warped");
+  child<QComboBox>("tolerance")->setCurrentText("1e-3");
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
   EXPECT_EQ(window_->runner()->simulation().options().solver, SolverKind::Multigrid);
   EXPECT_EQ(window_->runner()->simulation().options().tangent, Tangent::Warped);
+  EXPECT_EQ(window_->runner()->simulation().options().tolerance, 1e-3);
 }
 
 // The dock's fixed base and node list reach the simulation on Reset; a bad
