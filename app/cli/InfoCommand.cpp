@@ -22,6 +22,8 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/meshing/SurfaceNesting.h"
+#include "tetskin/meshing/SurfaceRepair.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -36,6 +38,44 @@ void printBox(const BoundingBox& box) {
               box.min.z(), box.max.x(), box.max.y(), box.max.z(), box.diagonal());
 }
 
+// Whether the surface is closed, as build needs it, and what it encloses:
+// its parts, the cavities among them and the volume, wound as build's repair
+// winds them (SurfaceNesting.h); or what keeps it open.
+void printClosure(const SurfaceMesh& mesh) {
+  if (mesh.triangleCount() == 0) return;
+  const auto holes = boundaryLoops(mesh).size();
+  const Index nonManifold = nonManifoldEdgeCount(mesh);
+  if (holes > 0) {
+    std::printf(
+        "  closed     no: %zu chain%s of open edges (build removes triangles on open edges "
+        "and refuses real holes)\n",
+        holes, holes == 1 ? "" : "s");
+    return;
+  }
+  SurfaceMesh wound = mesh;
+  const OrientationResult orientation = orientConsistently(wound);
+  if (!orientation.orientable) {
+    std::printf("  closed     yes, but not orientable\n");
+    return;
+  }
+  const std::size_t parts = surfaceParts(wound).triangles.size();
+  std::printf("  closed     yes: %zu part%s", parts, parts == 1 ? "" : "s");
+  if (orientation.cavities > 0)
+    std::printf(", %lld bounding a cavit%s", static_cast<long long>(orientation.cavities),
+                orientation.cavities == 1 ? "y" : "ies");
+  if (nonManifold > 0)
+    std::printf(", %lld edge%s shared by more than two triangles",
+                static_cast<long long>(nonManifold), nonManifold == 1 ? "" : "s");
+  // (Where triangles intersect, the volume counts overlapping parts twice.)
+  if (!findSelfIntersections(mesh, 1).empty())
+    std::printf(
+        ", triangles intersecting (build collapses them); volume %g counting overlaps "
+        "twice\n",
+        enclosedVolume(wound));
+  else
+    std::printf("; volume %g\n", enclosedVolume(wound));
+}
+
 void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, const char* kind) {
   std::printf("%s: %s\n", path.c_str(), kind);
   std::printf("  vertices   %lld\n  triangles  %lld\n", static_cast<long long>(mesh.vertexCount()),
@@ -43,6 +83,7 @@ void printSurface(const std::filesystem::path& path, const SurfaceMesh& mesh, co
   std::printf("  normals    %s\n  texcoords  %s\n", mesh.hasNormals() ? "yes" : "no",
               mesh.hasTexcoords() ? "yes" : "no");
   std::printf("  area       %g\n", surfaceArea(mesh));
+  printClosure(mesh);
   printBox(boundingBox(mesh));
   if (const NormalGaps gaps = normalGaps(mesh); !gaps.empty())
     std::printf("  warning: %s\n", describe(gaps).c_str());
