@@ -62,6 +62,11 @@ TEST(SurfaceNesting, APartInsideAnotherIsEnclosedByIt) {
   EXPECT_EQ(enclosing[2], (std::vector<int>{0, 1}));
   const SurfaceMesh apart = test::merge(cube(1), test::box({3, 0, 0}, {4, 1, 1}));
   for (const auto& e : enclosingParts(apart, surfaceParts(apart).triangles)) EXPECT_TRUE(e.empty());
+  // Stacked face to face: the upper box's probe lies on the lower's top.
+  const SurfaceMesh stacked =
+      test::merge(test::box({-2, -2, -2}, {2, 2, 2}), test::box({-2, 2, -2}, {2, 3, 2}));
+  for (const auto& e : enclosingParts(stacked, surfaceParts(stacked).triangles))
+    EXPECT_TRUE(e.empty());
 }
 
 TEST(SurfaceNesting, AnInnerPartWoundTheOtherWayBoundsACavity) {

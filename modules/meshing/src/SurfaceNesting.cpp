@@ -67,6 +67,25 @@ double rayHit(const SurfaceMesh& mesh, const Eigen::Vector3d& origin,
   return nearest;
 }
 
+// A point just inside the region `part` encloses, off every triangle: from
+// the middle of the part's largest triangle into that region, halfway to
+// the next surface, however the region is shaped. (A point on the part
+// would do for a winding number but for a part touching it face to face,
+// where the formula jumps.) `diagonal` scales the smallest distance taken
+// as a hit.
+Eigen::Vector3d interiorPoint(const SurfaceMesh& mesh, const std::vector<int>& part,
+                              double diagonal) {
+  const int t = largestTriangle(mesh, part);
+  const Eigen::Vector3d start = centroid(mesh, t);
+  const Eigen::Vector3d normal =
+      triangleNormal(corner(mesh, t, 0), corner(mesh, t, 1), corner(mesh, t, 2));
+  // The normal points into the region where the part is wound inward.
+  const Eigen::Vector3d inward = partVolume(mesh, part) < 0 ? normal : Eigen::Vector3d(-normal);
+  const double hit = rayHit(mesh, start, inward, t, 1e-12 * diagonal);
+  // (A closed part is always hit; a flat one, of no volume, may not be.)
+  return start + (std::isfinite(hit) ? 0.5 * hit : 1e-9 * diagonal) * inward;
+}
+
 }  // namespace
 
 double partVolume(const SurfaceMesh& mesh, const std::vector<int>& part) {
@@ -127,9 +146,10 @@ std::vector<std::vector<int>> enclosingParts(const SurfaceMesh& mesh,
                                              const std::vector<std::vector<int>>& parts) {
   std::vector<BoundingBox> boxes;
   std::vector<Eigen::Vector3d> probes;
+  const double diagonal = boundingBox(mesh).diagonal();
   for (const auto& part : parts) {
     boxes.push_back(partBox(mesh, part));
-    probes.push_back(centroid(mesh, largestTriangle(mesh, part)));
+    probes.push_back(interiorPoint(mesh, part, diagonal));
   }
   std::vector<std::vector<int>> enclosing(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i)
@@ -149,7 +169,7 @@ std::vector<char> cavityParts(const SurfaceMesh& mesh, const std::vector<std::ve
   std::vector<char> cavity(parts.size(), 0);
   for (std::size_t i = 0; i < parts.size(); ++i) {
     // Just inside part i lie only it and the parts that enclose it (parts
-    // meet at most at vertices and edges).
+    // do not cross one another).
     int winding = sign[i];
     for (int j : enclosing[i]) winding += sign[static_cast<std::size_t>(j)];
     cavity[i] = winding == 0;
@@ -162,20 +182,8 @@ std::vector<Eigen::Vector3d> cavityPoints(const SurfaceMesh& mesh) {
   const std::vector<char> cavity = cavityParts(mesh, parts, enclosingParts(mesh, parts));
   std::vector<Eigen::Vector3d> points;
   const double diagonal = boundingBox(mesh).diagonal();
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (!cavity[i]) continue;
-    // From the middle of the part's largest triangle into the region it
-    // encloses, halfway to the next surface: inside the cavity, off every
-    // triangle, however the cavity is shaped.
-    const int t = largestTriangle(mesh, parts[i]);
-    const Eigen::Vector3d start = centroid(mesh, t);
-    const Eigen::Vector3d normal =
-        triangleNormal(corner(mesh, t, 0), corner(mesh, t, 1), corner(mesh, t, 2));
-    const Eigen::Vector3d inward =
-        partVolume(mesh, parts[i]) < 0 ? normal : Eigen::Vector3d(-normal);
-    const double hit = rayHit(mesh, start, inward, t, 1e-12 * diagonal);
-    if (std::isfinite(hit)) points.push_back(start + 0.5 * hit * inward);
-  }
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    if (cavity[i]) points.push_back(interiorPoint(mesh, parts[i], diagonal));
   return points;
 }
 
