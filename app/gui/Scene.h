@@ -92,7 +92,6 @@ class Scene {
   // Frames the surface (else the control level) from the preset's side; a
   // dataset or surface opened later is framed from the same side.
   void setCamera(CameraPreset preset);
-  CameraPreset camera() const { return camera_; }
   void setOverlayText(const std::string& text);
 
   // Binding diagnostics.

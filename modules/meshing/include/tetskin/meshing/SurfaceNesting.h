@@ -45,7 +45,8 @@ std::vector<char> cavityParts(const SurfaceMesh& mesh, const std::vector<std::ve
 
 // The generalized winding number of the triangles `part` of `mesh` about
 // `point`: +1 inside a closed part wound outward, -1 inside one wound
-// inward, 0 outside (Jacobson et al. 2013: the solid angles' sum over 4 pi).
+// inward, 0 outside (Jacobson et al. 2013: the solid angles' sum over 4 pi);
+// on the part itself it jumps (the solid angle formula's sign there).
 double windingNumber(const SurfaceMesh& mesh, const std::vector<int>& part,
                      const Eigen::Vector3d& point);
 
