@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
+#include <map>
+#include <vector>
 
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
@@ -105,6 +108,55 @@ TEST(SurfaceRepair, APartKeepsItsMajorityWinding) {
   EXPECT_EQ(r.flippedTriangles, 1);
   EXPECT_EQ(r.cavities, 1);
   EXPECT_NEAR(enclosedVolume(hollow), 1.0 - 0.125, 1e-12);
+}
+
+// A unit cube whose faces are split into n x n squares of two triangles,
+// turned off the axes (a CAD model's flat faces): closed and free of
+// intersections, though its faces are flat only up to rounding. Repair
+// found intersections there, and its collapse left nothing of the cube.
+TEST(SurfaceRepair, ATurnedFinelySplitCubeNeedsNoRepair) {
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(0.61, Eigen::Vector3d::UnitX()) *
+                                Eigen::AngleAxisd(0.37, Eigen::Vector3d::UnitZ()))
+                                   .toRotationMatrix();
+  constexpr int n = 3;
+  SurfaceMesh cube;
+  std::vector<Eigen::Vector3d> points;
+  std::map<std::array<int, 3>, int> ids;  // grid coordinates -> vertex
+  auto vertex = [&](std::array<int, 3> g) {
+    const auto [it, added] = ids.emplace(g, static_cast<int>(points.size()));
+    if (added) points.push_back(turn * Eigen::Vector3d(g[0], g[1], g[2]) / n);
+    return it->second;
+  };
+  std::vector<std::array<int, 3>> triangles;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side <= n; side += n)
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          auto at = [&](int a, int b) {
+            std::array<int, 3> g{};
+            g[axis] = side, g[(axis + 1) % 3] = a, g[(axis + 2) % 3] = b;
+            return vertex(g);
+          };
+          const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+          if (side == n) {
+            triangles.push_back({a, b, c});
+            triangles.push_back({a, c, d});
+          } else {
+            triangles.push_back({a, c, b});
+            triangles.push_back({a, d, c});
+          }
+        }
+  cube.positions.resize(static_cast<Index>(points.size()), 3);
+  for (std::size_t v = 0; v < points.size(); ++v)
+    cube.positions.row(static_cast<Index>(v)) = points[v].transpose();
+  cube.triangles.resize(static_cast<Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) cube.triangles(static_cast<Index>(t), k) = triangles[t][k];
+  EXPECT_TRUE(findSelfIntersections(cube).empty());
+  const RepairReport r = repairSurface(cube, "cube");
+  EXPECT_EQ(r.intersectingPairs, 0);
+  EXPECT_EQ(cube.triangleCount(), 6 * 2 * n * n);
+  EXPECT_NEAR(enclosedVolume(cube), 1.0, 1e-12);
 }
 
 TEST(SurfaceRepair, DanglingTriangleIsRemoved) {

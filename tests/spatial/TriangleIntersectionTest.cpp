@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <array>
+#include <vector>
+
 #include "tetskin/spatial/TriangleIntersection.h"
 
 namespace tetskin {
@@ -54,6 +58,33 @@ TEST(TriangleIntersection, SharedVertex) {
   // Coplanar, overlapping wedges.
   EXPECT_TRUE(intersect({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 2}, {0, 0, 0}, {1, 0.2, 0},
                         {0.2, 1, 0}, {0, 3, 4}));
+}
+
+// A flat square split into a 3x3 grid of triangle pairs, turned off the
+// axes: the corners are coplanar only up to rounding, where a plain
+// floating-point sign took neighbours for intersecting ones (a CAD model's
+// flat faces). None intersect.
+TEST(TriangleIntersection, NeighboursOnATurnedFlatFaceDoNotIntersect) {
+  const Eigen::Matrix3d turn =
+      (Eigen::AngleAxisd(0.61, V::UnitX()) * Eigen::AngleAxisd(0.37, V::UnitZ()))
+          .toRotationMatrix();
+  constexpr int n = 3;
+  auto corner = [&](int i, int j) { return V(turn * V(i / double(n), j / double(n), 1.0)); };
+  auto id = [](int i, int j) { return i * (n + 1) + j; };
+  std::vector<std::array<V, 3>> corners;
+  std::vector<std::array<int, 3>> ids;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      corners.push_back({corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)});
+      ids.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      corners.push_back({corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)});
+      ids.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  for (std::size_t a = 0; a < corners.size(); ++a)
+    for (std::size_t b = a + 1; b < corners.size(); ++b)
+      EXPECT_FALSE(intersect(corners[a][0], corners[a][1], corners[a][2], ids[a], corners[b][0],
+                             corners[b][1], corners[b][2], ids[b]))
+          << a << " " << b;
 }
 
 }  // namespace

@@ -3,26 +3,21 @@
 
 #include <Eigen/Geometry>
 
+#include "ExactPredicates.h"
+
 namespace tetskin {
 namespace {
 
 using V3 = Eigen::Vector3d;
 using V2 = Eigen::Vector2d;
 
-int sign(double x) {
-  return (x > 0) - (x < 0);
-}
-
-// Sign of the volume of (a, b, c, d): which side of plane abc d lies on.
+// Which side of plane abc d lies on, and which way a 2D turn goes: exact
+// signs (ExactPredicates.h).
 int orient3d(const V3& a, const V3& b, const V3& c, const V3& d) {
-  return sign((b - a).cross(c - a).dot(d - a));
-}
-
-double cross2(const V2& a, const V2& b) {
-  return a.x() * b.y() - a.y() * b.x();
+  return orientation3d(a, b, c, d);
 }
 int orient2d(const V2& a, const V2& b, const V2& c) {
-  return sign(cross2(b - a, c - a));
+  return orientation2d(a, b, c);
 }
 
 // Closed segments s and t in 2D intersect (touching counts).
@@ -118,14 +113,15 @@ bool sharedVertexIntersect(V3 (&p)[3], int pk, V3 (&q)[3], int qk) {
     const V2 p2[3] = {proj(p[0]), proj(p[1]), proj(p[2])};
     const V2 q2[3] = {proj(q[0]), proj(q[1]), proj(q[2])};
     if (segmentTriangle2d(p2[1], p2[2], q2) || segmentTriangle2d(q2[1], q2[2], p2)) return true;
-    // The wedges at the shared vertex overlap when an edge of one enters the other.
-    auto inWedge = [](const V2& d, const V2& e1, const V2& e2) {
-      const double w = cross2(e1, e2);
-      return sign(cross2(e1, d)) == sign(w) && sign(cross2(d, e2)) == sign(w) && w != 0;
+    // The wedges at the shared vertex o overlap when an edge of one enters
+    // the other: d strictly between e1 and e2 (the corners' far ends).
+    auto inWedge = [](const V2& o, const V2& d, const V2& e1, const V2& e2) {
+      const int w = orient2d(o, e1, e2);
+      return w != 0 && orient2d(o, e1, d) == w && orient2d(o, d, e2) == w;
     };
-    const V2 pe1 = p2[1] - p2[0], pe2 = p2[2] - p2[0], qe1 = q2[1] - q2[0], qe2 = q2[2] - q2[0];
-    return inWedge(pe1, qe1, qe2) || inWedge(pe2, qe1, qe2) || inWedge(qe1, pe1, pe2) ||
-           inWedge(qe2, pe1, pe2);
+    const V2& o = p2[0];  // (q2[0], the same vertex)
+    return inWedge(o, p2[1], q2[1], q2[2]) || inWedge(o, p2[2], q2[1], q2[2]) ||
+           inWedge(o, q2[1], p2[1], p2[2]) || inWedge(o, q2[2], p2[1], p2[2]);
   }
   return segmentTriangle3d(p[1], p[2], q) || segmentTriangle3d(q[1], q[2], p);
 }
