@@ -9,6 +9,7 @@
 
 #include "Commands.h"
 #include "OptionChecks.h"
+#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
@@ -25,11 +26,28 @@ struct ConvertOptions {
   int level = -1;
 };
 
+// The boundary of tetrahedra as a surface file.
+void writeBoundary(const std::filesystem::path& output, const TetMesh& mesh,
+                   const std::string& what) {
+  const SurfaceMesh boundary = boundarySurface(mesh);
+  writeSurface(output, boundary);
+  std::printf("wrote %s (the boundary of %s: %lld vertices, %lld triangles)\n", output.c_str(),
+              what.c_str(), static_cast<long long>(boundary.vertexCount()),
+              static_cast<long long>(boundary.triangleCount()));
+}
+
 void convertDataset(const ConvertOptions& o) {
-  if (lowerExtension(o.output) != ".vtu")
-    throw Error(o.output.string(), 0, "a dataset converts to .vtu (one level)");
+  const bool toSurface = isSurfaceFile(o.output);
+  if (!toSurface && lowerExtension(o.output) != ".vtu")
+    throw Error(o.output.string(), 0,
+                "a dataset converts to .vtu (one level) or to a surface (.obj .ply .stl .vtp: "
+                "the level's boundary)");
   const Dataset dataset = loadDataset(o.input);
   const int level = resolveLevel(dataset.mesh, o.level);
+  if (toSurface) {
+    writeBoundary(o.output, extractLevel(dataset.mesh, level), "level " + std::to_string(level));
+    return;
+  }
   vtkSmartPointer<vtkUnstructuredGrid> grid =
       toVtkUnstructuredGrid(extractLevel(dataset.mesh, level));
   auto levelArray = vtkSmartPointer<vtkIntArray>::New();
@@ -43,14 +61,25 @@ void convertDataset(const ConvertOptions& o) {
               static_cast<long long>(grid->GetNumberOfCells()));
 }
 
+// A tetrahedral .vtu (a run's frame, a level from convert) to the surface
+// of its boundary, where its points are.
+void convertTetrahedra(const ConvertOptions& o) {
+  if (!isSurfaceFile(o.output))
+    throw Error(o.output.string(), 0,
+                "tetrahedra (.vtu) convert to a surface (.obj .ply .stl .vtp: their boundary)");
+  const TetMesh mesh = fromVtkUnstructuredGrid(readVtu(o.input), o.input.string());
+  writeBoundary(o.output, mesh, std::to_string(mesh.elementCount()) + " tetrahedra");
+}
+
 }  // namespace
 
 void addConvertCommand(CLI::App& app) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand(
       "convert",
-      "Convert a surface between .obj/.ply/.stl/.vtp, or a dataset level to .vtu for ParaView");
-  cmd->add_option("IN", o->input, "input surface or dataset (.json/.node/.ele)")
+      "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level to .vtu for ParaView or to "
+      "its boundary surface, or tetrahedra (.vtu: a run's frame) to their boundary surface");
+  cmd->add_option("IN", o->input, "input surface, dataset (.json/.node/.ele) or tetrahedra (.vtu)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("OUT", o->output, "output file")->required();
@@ -67,12 +96,14 @@ void addConvertCommand(CLI::App& app) {
                   static_cast<long long>(mesh.triangleCount()));
     } else if (isDatasetFile(o->input)) {
       convertDataset(*o);
+    } else if (lowerExtension(o->input) == ".vtu") {
+      if (cmd->count("--level") > 0)
+        throw Error("--level: applies to a dataset's conversion, not to tetrahedra's");
+      convertTetrahedra(*o);
     } else {
-      // (e.g. a frame .vtu of a run, whose output check would otherwise
-      // blame OUT for an input that convert does not take)
       throw Error(o->input.string(), 0,
-                  "is neither a surface (.obj .ply .stl .vtp) nor a dataset (.json, or a "
-                  ".node/.ele pair): convert takes those");
+                  "is neither a surface (.obj .ply .stl .vtp), a dataset (.json, or a "
+                  ".node/.ele pair) nor tetrahedra (.vtu): convert takes those");
     }
   });
 }

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <map>
+#include <vector>
 
 #include "Shapes.h"
 #include "tetskin/binding/BoundaryFaces.h"
@@ -60,6 +62,27 @@ TEST(BoundaryFaces, MeshedBoxBoundaryEnclosesItsVolume) {
       ++edges[{std::min(u, w), std::max(u, w)}];
     }
   for (const auto& [edge, count] : edges) EXPECT_EQ(count, 2);
+}
+
+// The boundary as a surface keeps only the nodes on it, renumbered in
+// order, and its winding under any motion of the nodes: a turned and
+// stretched copy encloses the turned and stretched volume.
+TEST(BoundaryFaces, TheBoundarySurfaceHasOnlyItsNodesAndFollowsThem) {
+  const TetMesh grid = test::tetGrid(3, 2, 2, {3, 2, 2});
+  const SurfaceMesh surface = boundarySurface(grid);
+  EXPECT_EQ(surface.vertexCount(), 4 * 3 * 3 - 2 * 1 * 1);  // all but the 2 inner nodes
+  EXPECT_EQ(surface.triangleCount(), boundaryFaces(grid).faces.rows());
+  EXPECT_NEAR(enclosedVolume(surface), 12.0, 1e-12);
+  std::vector<char> used(static_cast<std::size_t>(surface.vertexCount()), 0);
+  for (Index t = 0; t < surface.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) used[static_cast<std::size_t>(surface.triangles(t, k))] = 1;
+  EXPECT_EQ(std::count(used.begin(), used.end(), 1), surface.vertexCount());
+  TetMesh moved = grid;
+  const Eigen::Matrix3d map =
+      Eigen::AngleAxisd(2.5, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() *
+      Eigen::Vector3d(1, 2, 0.5).asDiagonal();
+  moved.nodes = (grid.nodes * map.transpose()).eval();
+  EXPECT_NEAR(enclosedVolume(boundarySurface(moved)), 12.0 * map.determinant(), 1e-9);
 }
 
 }  // namespace

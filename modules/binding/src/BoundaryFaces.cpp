@@ -47,4 +47,24 @@ BoundaryFaces boundaryFaces(const TetMesh& mesh, int nodeOffset) {
   return out;
 }
 
+SurfaceMesh boundarySurface(const TetMesh& mesh) {
+  const Triangles faces = boundaryFaces(mesh).faces;
+  std::vector<int> newId(static_cast<std::size_t>(mesh.nodeCount()), -1);
+  for (Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) newId[static_cast<std::size_t>(faces(f, k))] = 0;
+  int next = 0;
+  for (int& id : newId)
+    if (id == 0) id = next++;
+  SurfaceMesh surface;
+  surface.positions.resize(next, 3);
+  for (Index v = 0; v < mesh.nodeCount(); ++v)
+    if (const int id = newId[static_cast<std::size_t>(v)]; id >= 0)
+      surface.positions.row(id) = mesh.nodes.row(v);
+  surface.triangles.resize(faces.rows(), 3);
+  for (Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      surface.triangles(f, k) = newId[static_cast<std::size_t>(faces(f, k))];
+  return surface;
+}
+
 }  // namespace tetskin

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
 namespace tetskin {
@@ -17,5 +18,11 @@ struct BoundaryFaces {
 // `nodeOffset` is added to every id (to report ids in the dataset's numbering
 // when `mesh` is one extracted level). Elements must be positively oriented.
 BoundaryFaces boundaryFaces(const TetMesh& mesh, int nodeOffset = 0);
+
+// The boundary as a surface of its own: the boundary faces over the nodes
+// they use, renumbered in node order (inner nodes dropped). The winding
+// comes from the elements' node order, not their positions, so a deformed
+// copy of a mesh (a simulation frame) gives the surface wound as at rest.
+SurfaceMesh boundarySurface(const TetMesh& mesh);
 
 }  // namespace tetskin
