@@ -5,6 +5,7 @@
 #include <vtkQuadricDecimation.h>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/vtkio/VtkConversion.h"
 
 namespace tetskin {
@@ -13,15 +14,21 @@ SurfaceMesh decimateSurface(const SurfaceMesh& surface, Index targetTriangles) {
   if (surface.triangleCount() == 0) throw Error("cannot decimate an empty surface");
   if (targetTriangles >= surface.triangleCount()) return surface;
   auto decimation = vtkSmartPointer<vtkQuadricDecimation>::New();
+  // Decimated about its own centre: the quadrics hold plane offsets n . p,
+  // which for a model far from the origin (1e6 away, say, in a site's
+  // coordinates) swamp the shape's own size, and the result was torn.
+  const Eigen::RowVector3d center = boundingBox(surface).center().transpose();
   SurfaceMesh positionsOnly;
-  positionsOnly.positions = surface.positions;
+  positionsOnly.positions = surface.positions.rowwise() - center;
   positionsOnly.triangles = surface.triangles;
   decimation->SetInputData(toVtkPolyData(positionsOnly));
   decimation->SetTargetReduction(1.0 - static_cast<double>(targetTriangles) /
                                            static_cast<double>(surface.triangleCount()));
   decimation->VolumePreservationOn();
   decimation->Update();
-  return fromVtkPolyData(decimation->GetOutput(), "decimated surface");
+  SurfaceMesh decimated = fromVtkPolyData(decimation->GetOutput(), "decimated surface");
+  decimated.positions.rowwise() += center;
+  return decimated;
 }
 
 std::vector<SurfaceMesh> decimatedSeries(const SurfaceMesh& finest, double factor,
