@@ -94,6 +94,10 @@ struct DeformableSurface::Impl {
   VertexTriangleAdjacency boundaryAdjacency;
   Points3 boundaryScratch, controlNormals;
   std::vector<float> controlPositionsF, controlNormalsF;
+  // gpu paths: the control positions go to the GPU measured from here (the
+  // bound level's rest centre), in single precision (the mappers'
+  // SetModelOrigin).
+  Eigen::RowVector3d origin = Eigen::RowVector3d::Zero();
   double bounds[6] = {0, -1, 0, -1, 0, -1};
   double maxDistance = 0;
   std::unique_ptr<FurLayer> fur;
@@ -121,7 +125,9 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
     validateBinding(binding, restSurface.vertexCount(), dataset.nodes.rows(), "binding");
     const int level = binding.level < 0 ? dataset.finestLevel() : binding.level;
     const LevelRange& r = dataset.levels.at(static_cast<std::size_t>(level));
-    s.boundary = boundaryFaces(extractLevel(dataset, level), static_cast<int>(r.firstNode)).faces;
+    const TetMesh controlLevel = extractLevel(dataset, level);
+    s.boundary = boundaryFaces(controlLevel, static_cast<int>(r.firstNode)).faces;
+    s.origin = boundingBox(controlLevel.nodes).center().transpose();
     s.boundaryAdjacency = vertexTriangleAdjacency(s.boundary, dataset.nodes.rows());
     s.boundaryScratch.resize(s.boundary.rows(), 3);
     s.controlNormals.resize(dataset.nodes.rows(), 3);
@@ -143,6 +149,7 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
                                    dataset.nodes);
         s.normalTransformRows.resize(dataset.nodes.rows(), 9);
       }
+      s.gpuMapper->SetModelOrigin(s.origin.data());
       s.gpuMapper->SetInputData(s.polyData);
       s.gpuMapper->ScalarVisibilityOff();
       s.actor->SetMapper(s.gpuMapper);
@@ -163,6 +170,7 @@ DeformableSurface::DeformableSurface(const MultiLevelTetMesh& dataset,
       const VertexTriangleAdjacency ring =
           vertexTriangleAdjacency(restSurface.triangles, restSurface.vertexCount());
       s.gpu2Mapper->SetSurface(ids, weights, shifts, triangles, ring.offsets, ring.triangles);
+      s.gpu2Mapper->SetModelOrigin(s.origin.data());
       s.gpu2Mapper->SetInputData(s.polyData);
       s.gpu2Mapper->ScalarVisibilityOff();
       s.actor->SetMapper(s.gpu2Mapper);
@@ -248,7 +256,11 @@ FrameTimes DeformableSurface::update(const Points3& control) {
     times.uploadSeconds = secondsSince(start);
     return times;
   }
-  s.controlPositionsF.assign(control.data(), control.data() + control.size());
+  s.controlPositionsF.resize(static_cast<std::size_t>(control.size()));
+  for (Index node = 0; node < control.rows(); ++node)
+    for (int k = 0; k < 3; ++k)
+      s.controlPositionsF[static_cast<std::size_t>(3 * node + k)] =
+          static_cast<float>(control(node, k) - s.origin[k]);
   if (s.normalTransforms) s.normalTransforms->compute(control, s.normalTransformRows);
   const bool controlNormalsNeeded = s.gpuMapper && !s.normalTransforms;
   if (controlNormalsNeeded) {

@@ -156,6 +156,7 @@ FurLayer::FurLayer(const SurfaceMesh& rest, const FurParameters& fur, const Mate
   if (s.gpu) {
     auto shellMapper = vtkSmartPointer<vtkTetSkinGpuFurMapper>::New();
     shellMapper->SetSource(gpuSkin);
+    shellMapper->SetModelOrigin(gpuSkin->GetModelOrigin());  // (the skin's positions it reads)
     shellMapper->SetShells(fur.shells, fur.minShells, fur.adaptiveShells);
     s.shells = shellMesh(s.box, {0.0f});  // instances add the shell height
     s.shellPoly = furPolyData(s.shells, rest);
@@ -173,6 +174,7 @@ FurLayer::FurLayer(const SurfaceMesh& rest, const FurParameters& fur, const Mate
     if (s.gpu) {
       auto finMapper = vtkSmartPointer<vtkTetSkinGpuFurMapper>::New();
       finMapper->SetSource(gpuSkin);
+      finMapper->SetModelOrigin(gpuSkin->GetModelOrigin());
       finMapper->SetShells(0, 0, false);
       s.finMapper = finMapper;
     } else {

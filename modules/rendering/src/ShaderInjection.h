@@ -8,10 +8,24 @@
 
 #include <vtkShader.h>
 
+class vtkActor;
+class vtkRenderer;
+class vtkShaderProgram;
+
 namespace tetskin::detail {
 
 void insertVertexCode(vtkShader* vertexShader, const char* declarations,
                       const char* implementation);
 void useDeformedVertex(vtkShader* vertexShader);
+
+// For a mapper whose shader computes positions relative to `origin` (the
+// model coordinates minus it): re-sets VTK's MCDC and MCVC matrices with a
+// translation by `origin` first, multiplied in double on the CPU, as VTK
+// does for its own shifted coordinates (vtkOpenGLPolyDataMapper::
+// SetCameraShaderParameters). The GPU then never holds a large coordinate:
+// single precision keeps about 7 digits, so a model 1e6 away from the
+// origin was drawn jagged.
+void useModelOrigin(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor,
+                    const double origin[3]);
 
 }  // namespace tetskin::detail

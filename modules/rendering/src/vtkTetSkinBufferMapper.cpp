@@ -140,3 +140,16 @@ void vtkTetSkinBufferMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO, 
       if (this->Textures[k]->GetHandle())
         cellBO.Program->SetUniformi(this->Samplers[k], this->Textures[k]->GetTextureUnit());
 }
+
+void vtkTetSkinBufferMapper::SetModelOrigin(const double origin[3]) {
+  std::copy(origin, origin + 3, this->ModelOrigin);
+  this->Modified();
+}
+
+void vtkTetSkinBufferMapper::SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+                                                       vtkActor* act) {
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
+  const double* o = this->ModelOrigin;
+  if (cellBO.Program && (o[0] != 0 || o[1] != 0 || o[2] != 0))
+    tetskin::detail::useModelOrigin(cellBO.Program, ren, act, o);
+}

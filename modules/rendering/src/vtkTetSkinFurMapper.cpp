@@ -15,6 +15,7 @@
 #include <vtkTextureObject.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -221,4 +222,17 @@ double vtkTetSkinFurMapper::FurPixelHeight(vtkRenderer* ren, const double bounds
   distance = std::max(std::sqrt(distance), 1e-12);
   const double halfAngle = 0.5 * camera->GetViewAngle() * M_PI / 180.0;
   return length * size[1] / (2.0 * distance * std::tan(halfAngle));
+}
+
+void vtkTetSkinFurMapper::SetModelOrigin(const double origin[3]) {
+  std::copy(origin, origin + 3, this->ModelOrigin);
+  this->Modified();
+}
+
+void vtkTetSkinFurMapper::SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
+                                                    vtkActor* act) {
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
+  const double* o = this->ModelOrigin;
+  if (cellBO.Program && (o[0] != 0 || o[1] != 0 || o[2] != 0))
+    tetskin::detail::useModelOrigin(cellBO.Program, ren, act, o);
 }

@@ -239,6 +239,10 @@ std::vector<float> vtkTetSkinGpu2PassMapper::ReadDeformedPositions(vtkRenderWind
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
                      static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  const double* origin = this->GetModelOrigin();  // (the GPU's are measured from it)
+  for (std::size_t v = 0; v < out.size() / 4; ++v)
+    for (std::size_t k = 0; k < 3; ++k)
+      out[4 * v + k] = static_cast<float>(out[4 * v + k] + origin[k]);
   return out;
 }
 

@@ -28,6 +28,12 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   vtkTypeMacro(vtkTetSkinBufferMapper, vtkOpenGLPolyDataMapper)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  // Where the positions the shader computes are measured from: the GPU
+  // paths give the control nodes' positions minus it, so that a model far
+  // from the origin keeps its precision in single precision (0: none).
+  void SetModelOrigin(const double origin[3]);
+  const double* GetModelOrigin() const { return this->ModelOrigin; }
+
   // Bounds of the deformed surface (xmin, xmax, ...); until set, the input's.
   void SetDeformedBounds(const double bounds[6]);
 
@@ -70,6 +76,7 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
 
   void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
                            vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
  private:
@@ -84,4 +91,5 @@ class vtkTetSkinBufferMapper : public vtkOpenGLPolyDataMapper {
   vtkIdType GLTexelLimit = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE, queried once per context
   vtkNew<vtkOpenGLBufferObject> Buffers[2];
   vtkNew<vtkTextureObject> Textures[2];
+  double ModelOrigin[3] = {0, 0, 0};
 };

@@ -27,6 +27,12 @@ class vtkTetSkinFurMapper : public vtkOpenGLPolyDataMapper {
   vtkTypeMacro(vtkTetSkinFurMapper, vtkOpenGLPolyDataMapper)
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  // Where the positions the shader computes are measured from: the GPU
+  // paths give the control nodes' positions minus it, so that a model far
+  // from the origin keeps its precision in single precision (0: none).
+  void SetModelOrigin(const double origin[3]);
+  const double* GetModelOrigin() const { return this->ModelOrigin; }
+
   // RGBA, layer-major (tetskin::FurTexture::rgba).
   void SetFurTexture(int size, int layers, const std::vector<std::uint8_t>& rgba);
   // RGB or RGBA unsigned char image; nullptr for none.
@@ -52,6 +58,7 @@ class vtkTetSkinFurMapper : public vtkOpenGLPolyDataMapper {
   virtual const char* VertexImplementation() const;
   void ReplaceShaderValues(std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren,
                            vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
  private:
@@ -65,4 +72,5 @@ class vtkTetSkinFurMapper : public vtkOpenGLPolyDataMapper {
   bool Fins = false, KajiyaKay = false;
   float Velvet = 0.5f;
   std::array<float, 3> Tint{1, 1, 1};
+  double ModelOrigin[3] = {0, 0, 0};
 };

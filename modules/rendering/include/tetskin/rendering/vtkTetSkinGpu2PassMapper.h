@@ -30,7 +30,8 @@ class vtkTetSkinGpu2PassMapper : public vtkTetSkinBufferMapper {
                   const std::vector<int>& ringOffsets, const std::vector<int>& ringFaces);
   // Control node positions, xyz per node (dataset numbering); used at the next render.
   void SetControlPositions(const float* positions, vtkIdType nodes);
-  // The positions the first pass computed, xyzw per vertex (reads GPU memory).
+  // The positions the first pass computed, xyzw per vertex, in model
+  // coordinates (reads GPU memory; adds the model origin back).
   std::vector<float> ReadDeformedPositions(vtkRenderWindow* window);
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
