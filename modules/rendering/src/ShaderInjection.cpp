@@ -31,6 +31,7 @@ void useDeformedVertex(vtkShader* vertexShader) {
 
 void useModelOrigin(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor,
                     const double origin[3]) {
+  if (!program || (origin[0] == 0 && origin[1] == 0 && origin[2] == 0)) return;
   vtkMatrix4x4 *wcvc, *vcdc, *wcdc;
   vtkMatrix3x3* norms;
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())

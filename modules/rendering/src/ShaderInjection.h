@@ -24,7 +24,7 @@ void useDeformedVertex(vtkShader* vertexShader);
 // does for its own shifted coordinates (vtkOpenGLPolyDataMapper::
 // SetCameraShaderParameters). The GPU then never holds a large coordinate:
 // single precision keeps about 7 digits, so a model 1e6 away from the
-// origin was drawn jagged.
+// origin was drawn jagged. Nothing for an origin of 0 or no program.
 void useModelOrigin(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor,
                     const double origin[3]);
 

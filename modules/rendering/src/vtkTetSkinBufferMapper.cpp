@@ -149,7 +149,5 @@ void vtkTetSkinBufferMapper::SetModelOrigin(const double origin[3]) {
 void vtkTetSkinBufferMapper::SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
                                                        vtkActor* act) {
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
-  const double* o = this->ModelOrigin;
-  if (cellBO.Program && (o[0] != 0 || o[1] != 0 || o[2] != 0))
-    tetskin::detail::useModelOrigin(cellBO.Program, ren, act, o);
+  tetskin::detail::useModelOrigin(cellBO.Program, ren, act, this->ModelOrigin);
 }

@@ -232,7 +232,5 @@ void vtkTetSkinFurMapper::SetModelOrigin(const double origin[3]) {
 void vtkTetSkinFurMapper::SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren,
                                                     vtkActor* act) {
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
-  const double* o = this->ModelOrigin;
-  if (cellBO.Program && (o[0] != 0 || o[1] != 0 || o[2] != 0))
-    tetskin::detail::useModelOrigin(cellBO.Program, ren, act, o);
+  tetskin::detail::useModelOrigin(cellBO.Program, ren, act, this->ModelOrigin);
 }
