@@ -9,6 +9,7 @@
 #include <queue>
 
 #include "SurfaceEdges.h"
+#include "tetskin/spatial/Aabb.h"
 
 namespace tetskin {
 namespace {
@@ -34,8 +35,8 @@ Eigen::Vector3d centroid(const SurfaceMesh& mesh, int t) {
   return (corner(mesh, t, 0) + corner(mesh, t, 1) + corner(mesh, t, 2)) / 3;
 }
 
-BoundingBox partBox(const SurfaceMesh& mesh, const std::vector<int>& part) {
-  BoundingBox box;
+Aabb partBox(const SurfaceMesh& mesh, const std::vector<int>& part) {
+  Aabb box;
   for (int t : part)
     for (int k = 0; k < 3; ++k) box.extend(corner(mesh, t, k));
   return box;
@@ -144,7 +145,7 @@ double windingNumber(const SurfaceMesh& mesh, const std::vector<int>& part,
 
 std::vector<std::vector<int>> enclosingParts(const SurfaceMesh& mesh,
                                              const std::vector<std::vector<int>>& parts) {
-  std::vector<BoundingBox> boxes;
+  std::vector<Aabb> boxes;
   std::vector<Eigen::Vector3d> probes;
   const double diagonal = boundingBox(mesh).diagonal();
   for (const auto& part : parts) {

@@ -19,10 +19,6 @@ struct BoundingBox {
   Eigen::Vector3d extent() const { return max - min; }
   // Length of the diagonal; 0 for an empty box.
   double diagonal() const { return empty() ? 0.0 : extent().norm(); }
-  // Whether p lies in the box, its faces included.
-  bool contains(const Eigen::Vector3d& p) const {
-    return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
-  }
   void extend(const Eigen::Vector3d& p);
 };
 
