@@ -40,26 +40,37 @@ void printBox(const BoundingBox& box) {
 
 // Whether the surface is closed, as build needs it, and what it encloses:
 // its parts, the cavities among them and the volume, wound as build's repair
-// winds them (SurfaceNesting.h); or what keeps it open.
-void printClosure(const SurfaceMesh& mesh) {
-  if (mesh.triangleCount() == 0) return;
-  const auto holes = boundaryLoops(mesh).size();
-  const Index nonManifold = nonManifoldEdgeCount(mesh);
-  if (holes > 0) {
-    std::printf(
-        "  closed     no: %zu chain%s of open edges (build removes triangles on open edges "
-        "and refuses real holes)\n",
-        holes, holes == 1 ? "" : "s");
+// winds them (SurfaceNesting.h); or what keeps it open. Open edges that only
+// meet at T-junctions are closed as build closes them.
+void printClosure(const SurfaceMesh& input) {
+  if (input.triangleCount() == 0) return;
+  const auto holes = boundaryLoops(input).size();
+  SurfaceMesh mesh = input;
+  const Index tJunctions =
+      holes > 0
+          ? splitTJunctions(mesh, RepairOptions{}.tJunctionTolerance * boundingBox(mesh).diagonal())
+          : 0;
+  if (const auto left = tJunctions > 0 ? boundaryLoops(mesh).size() : holes; left > 0) {
+    std::printf("  closed     no: %zu chain%s of open edges", holes, holes == 1 ? "" : "s");
+    if (tJunctions > 0)
+      std::printf(", %zu after splitting %lld T-junction%s", left,
+                  static_cast<long long>(tJunctions), tJunctions == 1 ? "" : "s");
+    std::printf(" (build removes triangles on open edges and refuses real holes)\n");
     return;
   }
+  const Index nonManifold = nonManifoldEdgeCount(mesh);
   SurfaceMesh wound = mesh;
   const OrientationResult orientation = orientConsistently(wound);
+  std::printf("  closed     yes");
+  if (tJunctions > 0)
+    std::printf(" once %lld T-junction%s split (build splits them)",
+                static_cast<long long>(tJunctions), tJunctions == 1 ? " is" : "s are");
   if (!orientation.orientable) {
-    std::printf("  closed     yes, but not orientable\n");
+    std::printf(", but not orientable\n");
     return;
   }
   const std::size_t parts = surfaceParts(wound).triangles.size();
-  std::printf("  closed     yes: %zu part%s", parts, parts == 1 ? "" : "s");
+  std::printf(": %zu part%s", parts, parts == 1 ? "" : "s");
   if (orientation.cavities > 0)
     std::printf(", %lld bounding a cavit%s", static_cast<long long>(orientation.cavities),
                 orientation.cavities == 1 ? "y" : "ies");

@@ -159,6 +159,74 @@ TEST(SurfaceRepair, ATurnedFinelySplitCubeNeedsNoRepair) {
   EXPECT_NEAR(enclosedVolume(cube), 1.0, 1e-12);
 }
 
+// The unit cube with its top face (z = 1) split at the middle of its front
+// edge, where the front face (y = 0) is not: a T-junction, open on both
+// sides of the seam though nothing is missing. `offset` moves the middle
+// vertex along +z, off the front face's edge.
+SurfaceMesh cubeWithATJunction(double offset) {
+  SurfaceMesh m;
+  m.positions.resize(9, 3);
+  m.positions << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 0.5, 0,
+      1 + offset;
+  m.triangles.resize(13, 3);
+  m.triangles << 0, 2, 1, 0, 3, 2, 4, 8, 7, 8, 6, 7, 8, 5, 6, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2,
+      3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7;
+  return m;
+}
+
+TEST(SurfaceRepair, ATJunctionIsSplitAndTheSurfaceCloses) {
+  // (Before, the seam's open edges ate the cube: "1 hole(s) ... left nothing".)
+  SurfaceMesh m = cubeWithATJunction(0);
+  ASSERT_EQ(boundaryLoops(m).size(), 1u);
+  const RepairReport r = repairSurface(m, "t.obj");
+  EXPECT_EQ(r.tJunctionsSplit, 1);
+  EXPECT_EQ(r.holes, 0);
+  EXPECT_EQ(r.openTrianglesRemoved, 0);
+  EXPECT_EQ(r.flippedTriangles, 0);  // the split keeps the winding
+  EXPECT_EQ(m.triangleCount(), 14);
+  EXPECT_TRUE(boundaryLoops(m).empty());
+  EXPECT_NEAR(enclosedVolume(m), 1.0, 1e-12);
+}
+
+TEST(SurfaceRepair, AVertexWithinTheToleranceOfAnEdgeSplitsIt) {
+  // A float32 export rounds the T-junction's vertex off the edge.
+  SurfaceMesh m = cubeWithATJunction(1e-8);
+  EXPECT_EQ(splitTJunctions(m, 1e-6), 1);
+  EXPECT_TRUE(boundaryLoops(m).empty());
+  EXPECT_NEAR(enclosedVolume(m), 1.0, 1e-7);
+}
+
+TEST(SurfaceRepair, AVertexOffTheEdgeIsAGapNotATJunction) {
+  SurfaceMesh m = cubeWithATJunction(0.01);
+  EXPECT_EQ(splitTJunctions(m, 1e-6), 0);
+  EXPECT_EQ(m.triangleCount(), 13);
+  EXPECT_THROW(repairSurface(m, "gap.obj"), Error);
+}
+
+TEST(SurfaceRepair, SeamsSplitDifferentlyOnEitherSideAreSplitOnBoth) {
+  // The top face's front edge has vertices at 1/3 and 2/3, the front face's
+  // top edge one at 1/2: each side's vertices split the other side's edges.
+  SurfaceMesh m = cubeWithATJunction(0);  // (its vertex 8 moves to the front face)
+  m.positions.conservativeResize(11, 3);
+  m.positions.row(9) << 1.0 / 3, 0, 1;
+  m.positions.row(10) << 2.0 / 3, 0, 1;
+  // Top face (seen from +z): 4, 9, 10, 5 along the front, 6 and 7 behind.
+  m.triangles.row(2) << 4, 9, 7;
+  m.triangles.row(3) << 9, 10, 7;
+  m.triangles.row(4) << 10, 5, 6;
+  m.triangles.row(6) << 0, 5, 8;  // the front face's triangle under the seam
+  m.triangles.conservativeResize(15, 3);
+  m.triangles.row(13) << 10, 6, 7;
+  m.triangles.row(14) << 0, 8, 4;
+  ASSERT_EQ(boundaryLoops(m).size(), 1u);
+  EXPECT_EQ(splitTJunctions(m, 1e-9), 3);
+  EXPECT_TRUE(boundaryLoops(m).empty());
+  EXPECT_EQ(nonManifoldEdgeCount(m), 0);
+  SurfaceMesh wound = m;
+  EXPECT_EQ(orientConsistently(wound).flippedTriangles, 0);
+  EXPECT_NEAR(enclosedVolume(m), 1.0, 1e-12);
+}
+
 TEST(SurfaceRepair, DanglingTriangleIsRemoved) {
   // The report's case: a triangle hanging off an edge of a closed surface.
   SurfaceMesh m = test::box(kZero, kOne);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -215,6 +216,92 @@ Index nonManifoldEdgeCount(const SurfaceMesh& mesh) {
   return count;
 }
 
+Index splitTJunctions(SurfaceMesh& mesh, double tolerance) {
+  if (!(tolerance > 0)) return 0;
+  Index splits = 0;
+  // One open edge per triangle is split per pass, fanned from the opposite
+  // corner, so every new triangle is proper; a triangle with T-junctions on
+  // two sides is split again in the next pass.
+  for (;;) {
+    struct OpenEdge {
+      int triangle, corner;  // the edge runs from corner to corner + 1
+    };
+    std::vector<OpenEdge> open;
+    std::vector<int> ends;
+    for (const auto& [key, users] : edgeTriangles(mesh)) {
+      if (users.size() != 1) continue;
+      const int t = users[0];
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      for (int k = 0; k < 3; ++k)
+        if (std::minmax(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3)) == std::minmax(a, b))
+          open.push_back({t, k});
+      ends.push_back(a);
+      ends.push_back(b);
+    }
+    if (open.empty()) return splits;
+    std::sort(open.begin(), open.end(), [](const OpenEdge& x, const OpenEdge& y) {
+      return std::tie(x.triangle, x.corner) < std::tie(y.triangle, y.corner);
+    });  // deterministic whatever the hash order
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    std::vector<Aabb> boxes(open.size());
+    for (std::size_t e = 0; e < open.size(); ++e) {
+      const auto& [t, k] = open[e];
+      boxes[e].extend(position(mesh, mesh.triangles(t, k)));
+      boxes[e].extend(position(mesh, mesh.triangles(t, (k + 1) % 3)));
+      boxes[e] = boxes[e].inflated(tolerance);
+    }
+    const AabbTree tree(boxes);
+    // For each open edge, the vertices strictly inside it, by where along it.
+    std::vector<std::vector<std::pair<double, int>>> inside(open.size());
+    for (int v : ends) {
+      const Eigen::Vector3d p = position(mesh, v);
+      Aabb point;
+      point.extend(p);
+      tree.forEachOverlap(point, [&](int e) {
+        const auto& [t, k] = open[static_cast<std::size_t>(e)];
+        const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
+        if (v == a || v == b || v == mesh.triangles(t, (k + 2) % 3)) return;
+        const Eigen::Vector3d pa = position(mesh, a), ab = position(mesh, b) - pa;
+        const double length = ab.norm();
+        const double along = (p - pa).dot(ab) / length;
+        if (!(along > tolerance && along < length - tolerance)) return;
+        if ((p - pa - along / length * ab).norm() > tolerance) return;
+        inside[static_cast<std::size_t>(e)].emplace_back(along, v);
+      });
+    }
+    std::vector<char> split(static_cast<std::size_t>(mesh.triangleCount()), 0);
+    std::vector<Eigen::Vector3i> added;
+    Index passSplits = 0;
+    for (std::size_t e = 0; e < open.size(); ++e) {
+      auto& on = inside[e];
+      const auto& [t, k] = open[e];
+      if (on.empty() || split[static_cast<std::size_t>(t)]) continue;
+      split[static_cast<std::size_t>(t)] = 1;
+      std::sort(on.begin(), on.end());
+      const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3),
+                c = mesh.triangles(t, (k + 2) % 3);
+      int from = a;
+      for (const auto& [along, v] : on) {
+        if (v == from) continue;  // (one vertex listed twice)
+        added.emplace_back(from, v, c);
+        from = v;
+        ++passSplits;
+      }
+      added.emplace_back(from, b, c);
+    }
+    if (passSplits == 0) return splits;
+    splits += passSplits;
+    std::vector<char> keep(split.size());
+    for (std::size_t t = 0; t < split.size(); ++t) keep[t] = !split[t];
+    keepTriangles(mesh, keep);
+    const Index kept = mesh.triangleCount();
+    mesh.triangles.conservativeResize(kept + static_cast<Index>(added.size()), 3);
+    for (std::size_t i = 0; i < added.size(); ++i)
+      mesh.triangles.row(kept + static_cast<Index>(i)) = added[i].transpose();
+  }
+}
+
 Index removeOpenTriangles(SurfaceMesh& mesh) {
   Index removed = 0;
   for (;;) {
@@ -346,6 +433,7 @@ std::vector<std::pair<std::string, Index>> RepairReport::counts() const {
           {"flipped_triangles", flippedTriangles},
           {"inverted_components", invertedComponents},
           {"cavities", cavities},
+          {"t_junctions_split", tJunctionsSplit},
           {"holes", holes},
           {"open_triangles_removed", openTrianglesRemoved},
           {"intersecting_pairs", intersectingPairs},
@@ -393,6 +481,7 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
     report.duplicateTriangles += removeDuplicateTriangles(mesh);
   };
   clean();
+  report.tJunctionsSplit = splitTJunctions(mesh, options.tJunctionTolerance * diagonal);
   report.holes = static_cast<Index>(boundaryLoops(mesh).size());
   report.openTrianglesRemoved = removeOpenTriangles(mesh);
   if (mesh.triangleCount() == 0)

@@ -42,6 +42,13 @@ std::vector<std::vector<int>> boundaryLoops(const SurfaceMesh& mesh);
 // Edges used by more than two triangles.
 Index nonManifoldEdgeCount(const SurfaceMesh& mesh);
 
+// Closes T-junctions, where one side of a seam is split finer than the
+// other (CAD exports, surfaces stitched from patches): a vertex on open edges
+// that lies on another open edge, strictly inside it and within `tolerance`
+// (absolute) of it, splits that edge's triangle there, keeping its winding.
+// Repeats until no such vertex is left. Returns the number of splits.
+Index splitTJunctions(SurfaceMesh& mesh, double tolerance);
+
 // Removes triangles with an open edge, repeatedly, until none is left (the
 // report's removal of dangling triangles). Returns the number removed.
 Index removeOpenTriangles(SurfaceMesh& mesh);
@@ -65,6 +72,9 @@ Index removeUnusedVertices(SurfaceMesh& mesh);
 struct RepairOptions {
   double weldTolerance = 1e-7;   // relative to the bounding-box diagonal
   double areaTolerance = 1e-14;  // relative to the squared diagonal
+  // How far off an open edge a T-junction's vertex may lie, relative to the
+  // diagonal: a float32 export rounds it off by about 1e-7 of the coordinates.
+  double tJunctionTolerance = 1e-6;
   int maxIntersectionRounds = 8;
 };
 
@@ -75,8 +85,9 @@ struct RepairReport {
   Index duplicateTriangles = 0;
   Index flippedTriangles = 0;
   Index invertedComponents = 0;
-  Index cavities = 0;  // closed components that bound a cavity (left empty by the meshers)
-  Index holes = 0;     // boundary loops before open triangles were removed
+  Index cavities = 0;         // closed components that bound a cavity (left empty by the meshers)
+  Index tJunctionsSplit = 0;  // open edges split where a T-junction's vertex lies on them
+  Index holes = 0;  // boundary loops left after the splits, before open triangles were removed
   Index openTrianglesRemoved = 0;
   Index intersectingPairs = 0;  // found in the first round
   Index collapsedTriangles = 0;
@@ -104,8 +115,9 @@ constexpr double kCollapseVolumeTolerance = 0.01;
 // kCollapseVolumeTolerance; empty otherwise.
 std::string collapseWarning(const RepairReport& report, const std::string& name);
 
-// All steps in order: weld, degenerate, duplicates, orientation, open
-// triangles, self-intersections (collapse and retry), unused vertices.
+// All steps in order: weld, degenerate, duplicates, T-junctions, open
+// triangles, self-intersections (collapse and retry), orientation, unused
+// vertices.
 // Normals and texture coordinates are dropped (meshing needs positions only).
 // Throws Error naming `name` when the surface cannot be repaired: nothing is
 // left after removing open triangles, or intersections remain after the last
