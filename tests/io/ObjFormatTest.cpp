@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <vector>
+
 #include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
@@ -29,6 +32,49 @@ TEST(ObjFormat, PolygonIsTriangulatedAsAFan) {
   EXPECT_EQ(m.triangles.row(1), Eigen::RowVector3i(0, 2, 3));
   EXPECT_FALSE(m.hasNormals());
   EXPECT_FALSE(m.hasTexcoords());
+}
+
+// Twice the area of each triangle along `normal` (positive where it is
+// wound counter-clockwise around it).
+std::vector<double> windingAreas(const SurfaceMesh& m, const Eigen::Vector3d& normal) {
+  std::vector<double> areas;
+  for (Index t = 0; t < m.triangleCount(); ++t) {
+    const Eigen::Vector3d a = m.positions.row(m.triangles(t, 0)).transpose();
+    const Eigen::Vector3d b = m.positions.row(m.triangles(t, 1)).transpose();
+    const Eigen::Vector3d c = m.positions.row(m.triangles(t, 2)).transpose();
+    areas.push_back((b - a).cross(c - a).dot(normal));
+  }
+  return areas;
+}
+
+TEST(ObjFormat, ANonConvexFaceIsClippedNotFanned) {
+  // An L of area 3, counter-clockwise seen from +z, from a corner that does
+  // not see the whole of it: its fan laid a triangle over the notch, wound
+  // backwards, and the face's triangles covered 5 instead of 3.
+  const SurfaceMesh m =
+      parseObj("v 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nf 1 2 3 4 5 6\n", "l.obj");
+  ASSERT_EQ(m.triangleCount(), 4);
+  double total = 0;
+  for (double area : windingAreas(m, Eigen::Vector3d::UnitZ())) {
+    EXPECT_GT(area, 0);  // each wound as the face, none folded back over it
+    total += area / 2;
+  }
+  EXPECT_DOUBLE_EQ(total, 3);
+}
+
+TEST(ObjFormat, ANonConvexFaceInAnyPlaneKeepsItsWinding) {
+  // The L in the plane x = 0, wound the other way (facing -x), and a corner
+  // on the middle of an edge, which no triangle may take as a third corner
+  // of zero area.
+  const SurfaceMesh m = parseObj(
+      "v 0 0 2\nv 0 1 2\nv 0 1 1\nv 0 2 1\nv 0 2 0\nv 0 1 0\nv 0 0 0\nf 1 2 3 4 5 6 7\n", "l.obj");
+  ASSERT_EQ(m.triangleCount(), 5);
+  double total = 0;
+  for (double area : windingAreas(m, -Eigen::Vector3d::UnitX())) {
+    EXPECT_GT(area, 0);
+    total += area / 2;
+  }
+  EXPECT_DOUBLE_EQ(total, 3);
 }
 
 TEST(ObjFormat, AllCornerFormsAndNegativeIndices) {

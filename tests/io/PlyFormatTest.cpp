@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -93,6 +94,27 @@ std::string binaryQuad(bool bigEndian) {
   put(std::uint16_t{4});
   for (std::uint32_t i = 0; i < 4; ++i) put(i);
   return out;
+}
+
+TEST(PlyFormat, ANonConvexFaceIsClippedOnceItsVerticesAreRead) {
+  // The L of ObjFormat's test, its face element before its vertex element
+  // (which PLY allows): the face is triangulated with the positions in hand.
+  const SurfaceMesh m = parsePly(
+      "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "element vertex 6\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+      "6 0 1 2 3 4 5\n0 2 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n",
+      "l.ply");
+  ASSERT_EQ(m.triangleCount(), 4);
+  double total = 0;
+  for (Index t = 0; t < m.triangleCount(); ++t) {
+    const Eigen::Vector3d a = m.positions.row(m.triangles(t, 0)).transpose();
+    const Eigen::Vector3d b = m.positions.row(m.triangles(t, 1)).transpose();
+    const Eigen::Vector3d c = m.positions.row(m.triangles(t, 2)).transpose();
+    const double area = (b - a).cross(c - a).z() / 2;
+    EXPECT_GT(area, 0) << "triangle " << t;
+    total += area;
+  }
+  EXPECT_DOUBLE_EQ(total, 3);
 }
 
 TEST(PlyFormat, BinaryInEitherByteOrderReadsAsTheAsciiFile) {

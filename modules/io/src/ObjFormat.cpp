@@ -7,8 +7,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "FanTriangulation.h"
 #include "NumberFormat.h"
+#include "PolygonTriangulation.h"
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -108,7 +108,13 @@ class ObjParser {
     std::vector<Corner> polygon;
     polygon.reserve(lines_.size() - 1);
     for (std::size_t k = 1; k < lines_.size(); ++k) polygon.push_back(corner(lines_[k]));
-    detail::appendFan(polygon, triangles_);
+    detail::appendTriangles(
+        polygon,
+        [&](const Corner& c) {
+          const auto& p = positions_[static_cast<std::size_t>(c.position)];
+          return Eigen::Vector3d(p[0], p[1], p[2]);
+        },
+        triangles_);
   }
 
   SurfaceMesh assemble(const ObjReadOptions& options) const {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "FanTriangulation.h"
+#include "PolygonTriangulation.h"
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -229,6 +229,13 @@ class PlyParser {
     Values values(lines_, content_, format_);
     for (const Element& element : elements_) body(element, values);
     values.expectEnd();
+    // (Polygons are triangulated once every vertex is read: a face element
+    // may come before the vertex element.)
+    for (std::size_t f = 0; f + 1 < faceStarts_.size(); ++f)
+      detail::appendTriangles(
+          std::vector<int>(faceCorners_.begin() + static_cast<std::ptrdiff_t>(faceStarts_[f]),
+                           faceCorners_.begin() + static_cast<std::ptrdiff_t>(faceStarts_[f + 1])),
+          [&](int v) { return Eigen::Vector3d(mesh_.positions.row(v).transpose()); }, triangles_);
     if (triangles_.empty()) throw Error(lines_.sourceName(), 0, "contains no triangles");
     mesh_.triangles.resize(static_cast<Index>(triangles_.size()), 3);
     for (std::size_t t = 0; t < triangles_.size(); ++t)
@@ -437,7 +444,8 @@ class PlyParser {
   void face(const Values& values, const std::vector<int>& polygon) {
     if (polygon.size() < 3)
       values.fail("a face needs at least 3 vertices, found " + std::to_string(polygon.size()));
-    detail::appendFan(polygon, triangles_);
+    faceCorners_.insert(faceCorners_.end(), polygon.begin(), polygon.end());
+    faceStarts_.push_back(faceCorners_.size());
   }
 
   std::string_view content_;
@@ -447,6 +455,8 @@ class PlyParser {
   bool hasNormals_ = false, hasTexcoords_ = false, faceList_ = false;
   long long vertexCount_ = 0;
   SurfaceMesh mesh_;
+  std::vector<int> faceCorners_;               // every face's corners in turn
+  std::vector<std::size_t> faceStarts_ = {0};  // where each face starts in faceCorners_
   std::vector<std::array<int, 3>> triangles_;
 };
 
