@@ -78,6 +78,7 @@ TEST(BoxTexcoords, EveryTriangleTakesTheSideOfItsDominantNormalAxisAndItsPlane) 
   const SurfaceMesh s = sphere(12, 24);
   const double tile = 0.25;
   const BoxTexturedSurface b = boxTexcoords(s.positions, s.triangles, tile);
+  const Eigen::RowVector3d corner = s.positions.colwise().minCoeff();
   ASSERT_EQ(b.triangles.rows(), s.triangles.rows());
   for (Index t = 0; t < s.triangles.rows(); ++t) {
     const Eigen::Vector3d n = faceNormal(s.positions, s.triangles, t);
@@ -90,17 +91,36 @@ TEST(BoxTexcoords, EveryTriangleTakesTheSideOfItsDominantNormalAxisAndItsPlane) 
     for (int k = 0; k < 3; ++k) {
       const Index copy = b.triangles(t, k);
       EXPECT_EQ(b.source[static_cast<std::size_t>(copy)], s.triangles(t, k));
-      // The coordinates are the position's two in-plane components over the tile.
+      // The coordinates are the position's two in-plane components, from
+      // the lowest corner, over the tile.
       const Eigen::Vector3d p = s.positions.row(s.triangles(t, k));
       const Eigen::Vector2d uv = b.texcoords.row(copy) * tile;
       for (int c = 0; c < 3; ++c)
         if (c != axis) {
-          const double value = p[c];
+          const double value = p[c] - corner[c];
           EXPECT_TRUE(std::abs(std::abs(uv[0]) - std::abs(value)) < 1e-12 ||
                       std::abs(std::abs(uv[1]) - std::abs(value)) < 1e-12);
         }
     }
   }
+}
+
+TEST(BoxTexcoords, AMovedSurfaceKeepsItsCoordinates) {
+  // (Before, they were the absolute positions over the tile: 1e6 away, 4e6
+  // tiles, which a float holds to about half a tile.)
+  SurfaceMesh s = sphere(10, 16);
+  // (Turned off the axes: the sphere's faces at 45 degrees between two
+  // sides would go either way on a rounding.)
+  s.positions =
+      s.positions *
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix().transpose();
+  SurfaceMesh moved = s;
+  moved.positions.rowwise() += Eigen::RowVector3d(1e6, -2e6, 5e5);
+  const BoxTexturedSurface here = boxTexcoords(s.positions, s.triangles, 0.25);
+  const BoxTexturedSurface there = boxTexcoords(moved.positions, moved.triangles, 0.25);
+  ASSERT_EQ(there.texcoords.rows(), here.texcoords.rows());
+  EXPECT_LT((there.texcoords - here.texcoords).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_LT(there.texcoords.cwiseAbs().maxCoeff(), 16);  // the sphere spans 8 tiles
 }
 
 TEST(BoxTexcoords, SplitCountIsOneCopyPerVertexAndSide) {

@@ -20,15 +20,22 @@ BoxTexturedSurface boxTexcoords(const Points3& positions, const Triangles& trian
                                 double tileSize) {
   if (!(tileSize > 0) || !std::isfinite(tileSize))
     throw Error("box texture coordinates: the tile size must be positive and finite");
+  // Measured from the surface's lowest corner: the pattern belongs to the
+  // shape wherever it is placed, and no coordinate is large (a model 1e6
+  // away had texture coordinates of 1e8 tiles, beyond a float's 7 digits
+  // on the GPU).
+  const Eigen::RowVector3d corner = positions.rows() > 0
+                                        ? Eigen::RowVector3d(positions.colwise().minCoeff())
+                                        : Eigen::RowVector3d::Zero();
+  auto at = [&](Index v) { return Eigen::Vector3d((positions.row(v) - corner).transpose()); };
   BoxTexturedSurface out;
   out.triangles.resize(triangles.rows(), 3);
   out.sides.resize(static_cast<std::size_t>(triangles.rows()));
   // copyOf[6 * v + side]: the split copy of vertex v for that side, or -1.
   std::vector<Index> copyOf(static_cast<std::size_t>(6 * positions.rows()), -1);
   for (Index t = 0; t < triangles.rows(); ++t) {
-    const Eigen::Vector3d a = positions.row(triangles(t, 0));
-    const Eigen::Vector3d n = (Eigen::Vector3d(positions.row(triangles(t, 1))) - a)
-                                  .cross(Eigen::Vector3d(positions.row(triangles(t, 2))) - a);
+    const Eigen::Vector3d a = at(triangles(t, 0));
+    const Eigen::Vector3d n = (at(triangles(t, 1)) - a).cross(at(triangles(t, 2)) - a);
     const int side = dominantSide(n);
     out.sides[static_cast<std::size_t>(t)] = side;
     for (int k = 0; k < 3; ++k) {
@@ -51,8 +58,9 @@ BoxTexturedSurface boxTexcoords(const Points3& positions, const Triangles& trian
       if (copy < 0) continue;
       const auto& plane = kPlane[static_cast<std::size_t>(side / 2)];
       const double flip = (side % 2) ? -1.0 : 1.0;
-      out.texcoords(copy, 0) = flip * positions(v, plane[0]) / tileSize;
-      out.texcoords(copy, 1) = positions(v, plane[1]) / tileSize;
+      const Eigen::Vector3d p = at(v);
+      out.texcoords(copy, 0) = flip * p[plane[0]] / tileSize;
+      out.texcoords(copy, 1) = p[plane[1]] / tileSize;
     }
   return out;
 }

@@ -26,8 +26,10 @@ struct BoxTexturedSurface {
   Index splitVertexCount() const { return static_cast<Index>(source.size()); }
 };
 
-// `tileSize`: model units one texture tile spans (> 0). Degenerate triangles
-// (no normal) take side 0.
+// `tileSize`: model units one texture tile spans (> 0). Coordinates are
+// measured from the lowest corner of the positions' bounding box, so a
+// moved surface keeps its texture coordinates. Degenerate triangles (no
+// normal) take side 0.
 BoxTexturedSurface boxTexcoords(const Points3& positions, const Triangles& triangles,
                                 double tileSize);
 
