@@ -62,8 +62,8 @@ void run(BuildArgs& a) {
     progress.update(stage, done, total);
   };
   BuildResult result = buildDataset(std::move(inputs), a.options, events);
-  // Only now: bad input or a failed build leaves no empty folder behind.
-  std::filesystem::create_directories(directory);
+  // (The writers make the folder only now: bad input or a failed build
+  // leaves no empty folder behind.)
   saveDataset(json, result.dataset);
   progress.log("");
 

@@ -195,8 +195,8 @@ bool BuildDialog::start() {
       events.cancelled = [this] { return cancelled_.load(); };
       BuildResult result = buildDataset(std::move(inputs), options, events);
       if (cancelled_) throw Cancelled();
-      // Only now: bad input, a failure or a cancel leaves no empty folder.
-      std::filesystem::create_directories(directory);
+      // (The writers make the folder only now: bad input, a failure or a
+      // cancel leaves no empty folder.)
       saveDataset(json, result.dataset);
       post([this, j = QString::fromStdString(json.string())] { finish(true, "done", j); });
     } catch (const Cancelled&) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "ExpectError.h"
 #include "TestFiles.h"
 #include "tetskin/core/Error.h"
@@ -42,16 +44,20 @@ TEST(AtomicFile, FailedWriteLeavesNoNewFile) {
   EXPECT_EQ(dir.listing(), "");
 }
 
-// Both writers check the target's folder first: the streams' and VTK's own
+// Both writers make the folders the target lacks (before, a missing folder
+// was an error for every writer but build's and simulate's, which made it),
+// and check the target's location first: the streams' and VTK's own
 // messages would name the temporary file, or (VTK's PNG writer) a full disk.
-TEST(AtomicFile, AMissingFolderOrAFileForOneIsAClearError) {
+TEST(AtomicFile, MissingFoldersAreMadeAndAFileForOneIsAClearError) {
   test::ScratchDir dir;
   dir.write("file.txt", "not a folder");
-  const std::filesystem::path missing = dir / "missing" / "out.txt";
+  const std::filesystem::path missing = dir / "missing" / "deeper" / "out.txt";
+  writeTextAtomically(missing, [](std::ostream& out) { out << "text"; });
+  EXPECT_TRUE(std::filesystem::is_regular_file(missing));
+  const std::filesystem::path vtk = dir / "made" / "out.vtp";
+  writeFileAtomically(vtk, [](const std::filesystem::path& tmp) { std::ofstream(tmp) << "x"; });
+  EXPECT_TRUE(std::filesystem::is_regular_file(vtk));
   const std::filesystem::path underFile = dir / "file.txt" / "out.vtp";
-  EXPECT_EQ(
-      test::errorText([&] { writeTextAtomically(missing, [](std::ostream&) {}); }),
-      missing.string() + ": cannot be written: " + (dir / "missing").string() + " does not exist");
   EXPECT_EQ(test::errorText([&] {
               writeFileAtomically(underFile, [](const std::filesystem::path&) {
                 ADD_FAILURE() << "the writer ran";
@@ -59,7 +65,20 @@ TEST(AtomicFile, AMissingFolderOrAFileForOneIsAClearError) {
             }),
             underFile.string() + ": cannot be written: " + (dir / "file.txt").string() +
                 " is not a folder");
-  EXPECT_EQ(dir.listing(), "file.txt\n");
+  EXPECT_EQ(dir.listing(), "file.txt\nmade\nmissing\n");
+}
+
+TEST(AtomicFile, AFailedWriteRemovesTheFoldersItMade) {
+  test::ScratchDir dir;
+  std::filesystem::create_directory(dir / "kept");
+  EXPECT_THROW(writeTextAtomically(dir / "kept" / "new" / "deeper" / "out.txt",
+                                   [](std::ostream&) { throw Error("the writer failed"); }),
+               Error);
+  EXPECT_THROW(writeFileAtomically(dir / "other" / "out.vtp",
+                                   [](const std::filesystem::path&) {}),  // writes no file
+               Error);
+  EXPECT_EQ(dir.listing(), "kept\n");  // (made before: it stays)
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "kept"));
 }
 
 TEST(AtomicFile, WriterRejectingInvalidMeshWritesNothing) {

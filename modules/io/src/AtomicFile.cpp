@@ -49,25 +49,58 @@ void requireWritableFolder(const std::filesystem::path& target,
     throw Error(target.string(), 0, "cannot be written: " + folder.string() + " is not writable");
 }
 
-// The writers' own messages for a missing or read-only folder name the
-// temporary file (or, for VTK's PNG writer, a full disk): checked first.
-void requireTargetFolder(const std::filesystem::path& target) {
-  requireWritableFolder(target, std::filesystem::absolute(target).parent_path());
+// Checks the target's location and makes the folders it lacks (a command
+// line's `-o results/run1/out.vtp`, as build and simulate always did);
+// returns the outermost folder made, or an empty path. Checked first: the
+// writers' own messages for a missing or read-only folder name the
+// temporary file (or, for VTK's PNG writer, a full disk).
+std::filesystem::path makeTargetFolder(const std::filesystem::path& target) {
+  requireWritableLocation(target);
+  const std::filesystem::path folder = std::filesystem::absolute(target).parent_path();
+  std::filesystem::path outermost;
+  for (std::filesystem::path f = folder; !f.empty() && f.has_relative_path(); f = f.parent_path()) {
+    std::error_code error;
+    if (std::filesystem::exists(f, error)) break;
+    outermost = f;
+  }
+  if (outermost.empty()) return {};
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error)
+    throw Error(target.string(), 0,
+                "cannot be written: " + folder.string() + " cannot be made: " + error.message());
+  return outermost;
+}
+
+// Removes the folders makeTargetFolder made for `target`, from the inside
+// out, as long as they are empty: a failed write leaves nothing behind.
+void removeMadeFolders(const std::filesystem::path& target,
+                       const std::filesystem::path& outermost) {
+  if (outermost.empty()) return;
+  for (std::filesystem::path f = std::filesystem::absolute(target).parent_path();;
+       f = f.parent_path()) {
+    std::error_code error;
+    if (!std::filesystem::remove(f, error) || f == outermost) return;
+  }
 }
 
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target)
     : target_(std::move(target)), temporary_(temporaryNameFor(target_)) {
-  requireTargetFolder(target_);
+  madeFolder_ = makeTargetFolder(target_);
   stream_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!stream_) throw Error(target_.string(), 0, "cannot open for writing");
+  if (!stream_) {
+    removeMadeFolders(target_, madeFolder_);
+    throw Error(target_.string(), 0, "cannot open for writing");
+  }
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_) {
     stream_.close();
     removeQuietly(temporary_);
+    removeMadeFolders(target_, madeFolder_);
   }
 }
 
@@ -77,11 +110,12 @@ void AtomicFile::commit() {
   stream_.close();
   if (!ok || stream_.fail()) {
     removeQuietly(temporary_);
+    removeMadeFolders(target_, madeFolder_);
     committed_ = true;  // nothing left to clean up
     throw Error(target_.string(), 0, "write failed (disk full?)");
   }
+  renameOnto(temporary_, target_);  // (on failure the destructor clears up)
   committed_ = true;
-  renameOnto(temporary_, target_);
 }
 
 void writeTextAtomically(const std::filesystem::path& target,
@@ -93,16 +127,18 @@ void writeTextAtomically(const std::filesystem::path& target,
 
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& write) {
-  requireTargetFolder(target);
+  const std::filesystem::path madeFolder = makeTargetFolder(target);
   const std::filesystem::path tmp = temporaryNameFor(target);
   try {
     write(tmp);
+    if (!std::filesystem::exists(tmp))
+      throw Error(target.string(), 0, "the writer produced no file");
+    renameOnto(tmp, target);
   } catch (...) {
     removeQuietly(tmp);
+    removeMadeFolders(target, madeFolder);
     throw;
   }
-  if (!std::filesystem::exists(tmp)) throw Error(target.string(), 0, "the writer produced no file");
-  renameOnto(tmp, target);
 }
 
 void requireWritableLocation(const std::filesystem::path& target) {

@@ -2,7 +2,10 @@
 #pragma once
 // All-or-nothing file output: data goes to a temporary file beside the target,
 // which replaces the target only once everything was written. A failed or
-// interrupted run therefore never leaves a half-written output.
+// interrupted run therefore never leaves a half-written output. Folders the
+// target's path lacks are made first (and removed again when the write
+// fails); a file in the way, or a folder that is not writable, is an error
+// naming the target.
 
 #include <filesystem>
 #include <fstream>
@@ -28,6 +31,7 @@ class AtomicFile {
  private:
   std::filesystem::path target_;
   std::filesystem::path temporary_;
+  std::filesystem::path madeFolder_;  // the outermost folder made for the target
   std::ofstream stream_;
   bool committed_ = false;
 };
