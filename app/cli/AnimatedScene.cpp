@@ -38,7 +38,8 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
   const BoundingBox box = boundingBox(rest.nodes);
   const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                             box.max.y(), box.min.z(), box.max.z()};
-  view_->setCamera(o.camera, bounds);
+  view_->setCamera(o.camera, bounds, o.up);
+  up_ = o.up;
   // An unknown scenario or bad parameters fail now, before any frames.
   makeScenario(o.scenario.name, o.scenario.parameters);
   scenarioArgs_ = o.scenario;
@@ -55,7 +56,7 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
 
 void AnimatedScene::startSimulation() {
   const TetMesh rest = extractLevel(dataset_.mesh, level_);
-  SimulationOptions options;
+  SimulationOptions options = uprightAlong(up_, {});
   options.material = dataset_.config.elasticity;  // the body the dataset describes
   simulation_ = std::make_unique<Simulation>(
       dataset_.mesh, level_,

@@ -25,6 +25,7 @@ struct SceneOptions {
   ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
+  UpAxis up = UpAxis::Y;                // of the camera presets and the simulation
   std::string control = "none";         // none, surface, wireframe, shrink
   std::filesystem::path texture;        // PNG applied through the surface's texture coordinates
                                         // (on fur paths: the fur's colour and mask)
@@ -64,6 +65,7 @@ class AnimatedScene {
   std::unique_ptr<ControlMeshActor> control_;
   ScenarioArgs scenarioArgs_;
   std::string datasetName_;
+  UpAxis up_ = UpAxis::Y;
   std::unique_ptr<Simulation> simulation_;  // from the first frames run on
   std::unique_ptr<Scenario> scenario_;
   Points3 nodes_;

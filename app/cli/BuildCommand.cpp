@@ -22,6 +22,7 @@ struct BuildArgs {
   int lodInputs = 0;
   std::string mesher = "tetgen";
   std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
+  std::string up = "y";
   BuildOptions options;
   bool quiet = false;
 };
@@ -44,6 +45,7 @@ void run(BuildArgs& a) {
 
   a.options.mesher = *parseMesherKind(a.mesher);  // CLI checked the name
   a.options.qualities = a.qualities;
+  a.options.up = *parseUpAxis(a.up);  // CLI checked the name
   Progress progress(a.quiet);
   std::vector<SurfaceInput> inputs;
   for (const auto& path : inputPaths(a)) {
@@ -126,6 +128,11 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")
       ->capture_default_str()
       ->check(positiveNumber());
+  cmd->add_option("--up", a->up,
+                  "the axis that points up in the inputs: x, y or z (written to the config; "
+                  "simulation and cameras follow it)")
+      ->check(CLI::IsMember({"x", "y", "z"}))
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
   cmd->callback([a] { run(*a); });
 }

@@ -160,6 +160,7 @@ void printDataset(const std::filesystem::path& path) {
               dataset.mesh.levelCount(), static_cast<long long>(dataset.mesh.nodes.rows()),
               static_cast<long long>(dataset.mesh.elements.rows()));
   printBox(boundingBox(dataset.mesh.nodes));
+  std::printf("  up         %s\n", toString(dataset.config.up));
   std::printf("  elasticity %s\n", describe(dataset.config.elasticity).c_str());
   std::printf("  %-5s %8s %9s %12s %12s  %s\n", "level", "nodes", "elements", "volume",
               "min volume", "source");

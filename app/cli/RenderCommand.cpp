@@ -77,6 +77,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     throw Error(*option + ": applies to simulated frames; give --frames N");
   const Dataset dataset = loadDataset(a.dataset);
   o.fur = furParameters(a, dataset.config);
+  o.up = upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
   std::filesystem::path surfacePath = a.surface;

@@ -73,16 +73,26 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "run)")
       ->check(positiveNumber())
       ->group(kGroup);
-  cmd.add_option("--gravity", a.gravity, "gravity X,Y,Z in m/s^2 (default 0,-9.81,0; y is up)")
+  cmd.add_option("--gravity", a.gravity,
+                 "gravity X,Y,Z in m/s^2 (default 9.81 down the up axis: 0,-9.81,0 for y)")
       ->expected(3)
       ->delimiter(',')
       ->check(finiteNumber())
       ->group(kGroup);
   cmd.add_option("--floor", a.floor,
-                 "a floor plane at this height y, with contact (drop: at the body's lowest point "
-                 "at rest unless given)")
+                 "a floor plane at this height along the up axis, with contact (drop: at the "
+                 "body's lowest point at rest unless given)")
       ->check(finiteNumber())
       ->group(kGroup);
+  // (Not a scenario option: the camera presets follow it too.)
+  cmd.add_option("--up", a.up,
+                 "the axis that points up: x, y or z (default: the dataset config's up, else y); "
+                 "the scenarios, the floor, the default gravity and the camera follow it")
+      ->check(CLI::IsMember({"x", "y", "z"}));
+}
+
+UpAxis upAxisOf(const ScenarioArgs& a, const DatasetConfig& config) {
+  return a.up.empty() ? config.up : *parseUpAxis(a.up);  // (CLI checked the name)
 }
 
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/io/DatasetConfig.h"
 #include "tetskin/simulation/Scenario.h"
 
 namespace tetskin::cli {
@@ -21,10 +22,14 @@ struct ScenarioArgs {
   std::filesystem::path loadCurve;   // scales the loads (io LoadCurveFile.h), or empty
   std::vector<double> gravity;       // x, y, z; empty: the default
   std::optional<double> floor;       // height of a floor plane
+  std::string up;                    // --up: x, y or z; empty: the dataset's
 };
 
-// Adds --scenario and the "Scenario" group of options to `cmd`.
+// Adds --scenario, --up and the "Scenario" group of options to `cmd`.
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& args);
+
+// The up axis: --up, else the dataset config's.
+UpAxis upAxisOf(const ScenarioArgs& args, const DatasetConfig& config);
 
 // --scenario or the first option of the "Scenario" group given on the
 // command line, if any.
@@ -36,7 +41,7 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
                                       Index nodeCount);
 
-// `options` with the given gravity and floor.
+// `options` with the given gravity and floor (over uprightAlong()'s).
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);
 
 }  // namespace tetskin::cli

@@ -72,6 +72,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
   a.options.material = materialOf(a, dataset);
+  a.options = uprightAlong(upAxisOf(a.scenario, dataset.config), a.options);
   const TetMesh rest = extractLevel(dataset.mesh, level);
   const SimulationOptions options =
       scenarioOptions(a.scenario.name, withGravityAndFloor(a.options, a.scenario), rest);
@@ -171,7 +172,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   }
   std::printf("gravity %s m/s^2", commaSeparated(options.gravity).c_str());
   if (options.floorHeight)
-    std::printf(", floor at y = %s", formatNumber(*options.floorHeight).c_str());
+    std::printf(", floor at %s = %s", toString(options.up),
+                formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",

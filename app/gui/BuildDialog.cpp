@@ -60,6 +60,13 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   mesher_ = new QComboBox;
   mesher_->addItems({"tetgen", "netgen"});
   form->addRow("Mesher", mesher_);
+  up_ = new QComboBox;
+  up_->setObjectName("up");
+  up_->addItems({"y", "z", "x"});
+  up_->setToolTip(
+      "the axis that points up in the inputs (z for most CAD and STL files): "
+      "the simulation's scenarios, floor and gravity and the camera follow it");
+  form->addRow("Up axis", up_);
   qualities_ = new QLineEdit("2.0,1.8,1.6,1.4,1.2");
   form->addRow("TetGen qualities", qualities_);
   decimate_ = new QCheckBox("derive coarser inputs by decimation");
@@ -142,6 +149,7 @@ bool BuildDialog::start() {
   options.decimate = decimate_->isChecked();
   options.sizeToTargets = sizeToTargets_->isChecked();
   options.jobs = jobs_->value();
+  options.up = *parseUpAxis(up_->currentText().toStdString());
   options.qualities.clear();
   for (const QString& q : qualities_->text().split(',', Qt::SkipEmptyParts)) {
     bool ok = false;

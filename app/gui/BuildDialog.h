@@ -49,6 +49,7 @@ class BuildDialog : public QDialog {
   QLineEdit* output_;
   QSpinBox *levels_, *minElements_, *maxElements_, *jobs_;
   QComboBox* mesher_;
+  QComboBox* up_;
   QLineEdit* qualities_;
   QCheckBox *decimate_, *sizeToTargets_;
   QProgressBar* progress_;

@@ -560,8 +560,10 @@ void MainWindow::resetSimulation() {
   if (!scene_->hasDataset()) return;
   const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
   const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_->level())];
+  const UpAxis up = scene_->dataset().config.up;
+  scenarioRows_->setUpAxis(up);
   scenarioRows_->setBodyBottom(
-      mesh.nodes.col(1).segment(level.firstNode, level.nodeCount).minCoeff());
+      mesh.nodes.col(axisIndex(up)).segment(level.firstNode, level.nodeCount).minCoeff());
   SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
   options.timeStep = timeStep_->value();
   options.material.youngsModulus = young_->value();

@@ -94,8 +94,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   auto* gravityRow = new QHBoxLayout;
   const char* gravityNames[3] = {"gravityX", "gravityY", "gravityZ"};
   for (int i = 0; i < 3; ++i) {
-    gravity_[i] =
-        numberBox(gravityNames[i], -1000, 1000, 2, plain.gravity[i], "gravity, m/s^2 (y is up)");
+    gravity_[i] = numberBox(gravityNames[i], -1000, 1000, 2, plain.gravity[i], "gravity, m/s^2");
     gravityRow->addWidget(gravity_[i]);
   }
   floor_ = new QCheckBox("at y =");
@@ -166,13 +165,26 @@ ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
 }
 
 SimulationOptions ScenarioRows::withGravityAndFloor(SimulationOptions options) const {
+  options.up = up_;
   options.gravity = {gravity_[0]->value(), gravity_[1]->value(), gravity_[2]->value()};
   if (floor_->isChecked()) options.floorHeight = floorHeight_->value();
   return options;
 }
 
-void ScenarioRows::setBodyBottom(double y) {
-  if (!floor_->isChecked()) floorHeight_->setValue(y);
+void ScenarioRows::setUpAxis(UpAxis up) {
+  const Eigen::Vector3d standard = uprightAlong(up_, {}).gravity;
+  bool untouched = true;
+  for (int i = 0; i < 3; ++i) untouched = untouched && gravity_[i]->value() == standard[i];
+  up_ = up;
+  if (untouched) {
+    const Eigen::Vector3d pull = uprightAlong(up, {}).gravity;
+    for (int i = 0; i < 3; ++i) gravity_[i]->setValue(pull[i]);
+  }
+  floor_->setText(QString("at ") + toString(up) + " =");
+}
+
+void ScenarioRows::setBodyBottom(double height) {
+  if (!floor_->isChecked()) floorHeight_->setValue(height);
 }
 
 }  // namespace tetskin::gui

@@ -32,11 +32,15 @@ class ScenarioRows : public QObject {
   // The parameters, the held nodes, the loads and their curve read from their files (a
   // level of `nodeCount` nodes); throws Error naming the file and line.
   ScenarioParameters parameters(Index nodeCount) const;
-  // `options` with the panel's gravity and floor.
+  // `options` upright along the dataset's up axis, with the panel's gravity
+  // and floor.
   SimulationOptions withGravityAndFloor(SimulationOptions options) const;
+  // The dataset's up axis: the floor's height is along it, and gravity
+  // left at the standard pull down the last axis follows it.
+  void setUpAxis(UpAxis up);
   // The floor's height offered until the user sets one: the body's lowest
-  // point at rest.
-  void setBodyBottom(double y);
+  // point at rest, along the up axis.
+  void setBodyBottom(double height);
 
  private:
   void showRowsOfScenario();
@@ -56,6 +60,7 @@ class ScenarioRows : public QObject {
   QLineEdit* loads_;       // a node forces file (io NodeList.h), or empty
   QLineEdit* loadCurve_;   // a load curve file (io LoadCurveFile.h), or empty
   QCheckBox* floor_;
+  UpAxis up_ = UpAxis::Y;
   // The rows of the parameters only some scenarios read, in form order.
   std::vector<ParameterRow> parameterRows_;
 };

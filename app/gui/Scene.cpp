@@ -318,7 +318,7 @@ void Scene::setCamera(CameraPreset preset) {
       surface_ ? boundingBox(*surface_) : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
   const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                             box.max.y(), box.min.z(), box.max.z()};
-  placeCamera(renderer_, preset, bounds);
+  placeCamera(renderer_, preset, bounds, dataset_->config.up);
 }
 
 void Scene::setOverlayText(const std::string& text) {

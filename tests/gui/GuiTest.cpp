@@ -530,6 +530,46 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
       << window_->lastError().toStdString();
 }
 
+// A dataset whose config says z is up: gravity left at the standard pull
+// turns down z, the floor's height is along z, and the run is upright along
+// it; a gravity the user set stays as set.
+TEST_F(Gui, ADatasetsUpAxisTurnsGravityAndTheFloor) {
+  const std::filesystem::path folder = scratch("up_z");
+  std::filesystem::create_directories(folder);
+  for (const char* file : {"bunny.node", "bunny.ele", "bunny.obj"})
+    std::filesystem::copy_file(kData.toStdString() + file, folder / file,
+                               std::filesystem::copy_options::overwrite_existing);
+  std::ifstream in(kData.toStdString() + "bunny.json");
+  std::stringstream config;
+  config << in.rdbuf();
+  std::string text = config.str();
+  text.insert(text.find('{') + 1, "\n  \"up\": \"z\",");
+  std::ofstream(folder / "bunny.json") << text;
+
+  ASSERT_TRUE(window_->openFiles({QString::fromStdString((folder / "bunny.json").string())}))
+      << window_->lastError().toStdString();
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), 0);
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityZ")->value(), -kStandardGravity);
+  EXPECT_EQ(child<QCheckBox>("floor")->text(), "at z =");
+  const Simulation& sim = window_->runner()->simulation();
+  EXPECT_EQ(sim.options().up, UpAxis::Z);
+  EXPECT_EQ(sim.options().gravity, Eigen::Vector3d(0, 0, -kStandardGravity));
+  EXPECT_NEAR(child<QDoubleSpinBox>("floorHeight")->value(), sim.restMesh().nodes.col(2).minCoeff(),
+              1e-4);
+  // Back to the y-up sample: the standard pull follows; a set one stays.
+  openSample();
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), -kStandardGravity);
+  EXPECT_EQ(child<QCheckBox>("floor")->text(), "at y =");
+  child<QDoubleSpinBox>("gravityY")->setValue(-1.62);  // the Moon
+  ASSERT_TRUE(window_->openFiles({QString::fromStdString((folder / "bunny.json").string())}));
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), -1.62);
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityZ")->value(), 0);
+}
+
 TEST_F(Gui, ShiftDragPullsTheBody) {
   openSample();
   child<QComboBox>("scenario")->setCurrentText("sag");
@@ -916,7 +956,7 @@ TEST_F(Gui, BuildDialogBuildsADatasetAndCancels) {
 }
 
 // The dialog's sizing box reaches targets a box cannot meet by quality alone
-// (6 elements at every quality).
+// (6 elements at every quality), and its up axis reaches the config.
 TEST_F(Gui, BuildDialogSizesABoxToItsTargets) {
   BuildDialog* dialog = window_->buildDialog();
   const std::filesystem::path out = scratch("sized_box");
@@ -925,6 +965,7 @@ TEST_F(Gui, BuildDialogSizesABoxToItsTargets) {
   dialog->setLevels(2, 300, 3000);
   dialog->setQualities("2.0,1.4");
   dialog->setSizeToTargets(true);
+  dialog->findChild<QComboBox*>("up")->setCurrentText("z");  // reaches the config
   ASSERT_TRUE(dialog->start());
   EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 120000));
   ASSERT_TRUE(window_->scene().hasDataset()) << dialog->log().toStdString();
@@ -934,6 +975,7 @@ TEST_F(Gui, BuildDialogSizesABoxToItsTargets) {
   EXPECT_NEAR(static_cast<double>(mesh.levels[0].elementCount), 300, 150);
   EXPECT_NEAR(static_cast<double>(mesh.levels[1].elementCount), 3000, 1500);
   EXPECT_FALSE(dialog->log().contains("warning")) << dialog->log().toStdString();
+  EXPECT_EQ(window_->scene().dataset().config.up, UpAxis::Z);
 }
 
 TEST_F(Gui, ScreenshotMatchesItsBaseline) {

@@ -208,6 +208,21 @@ TEST(DatasetConfig, ElasticitySectionDefaultsValidatesAndRoundTrips) {
                     "/elasticity/densty: is not a known field");
 }
 
+// The up axis: optional (y), "x", "y" or "z" in any letter case, written back.
+TEST(DatasetConfig, UpAxisDefaultsValidatesAndRoundTrips) {
+  EXPECT_EQ(parseDatasetConfig(kConfig, "d.json", "/data").up, UpAxis::Y);
+  const std::string zUp = replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0, "up": "Z",)");
+  const DatasetConfig c = parseDatasetConfig(zUp, "d.json", "/data");
+  EXPECT_EQ(c.up, UpAxis::Z);
+  test::ScratchDir dir;
+  writeDatasetConfig(dir / "d.json", c);
+  EXPECT_NE(test::readText(dir / "d.json").find(R"("up": "z")"), std::string::npos);
+  EXPECT_EQ(readDatasetConfig(dir / "d.json").up, UpAxis::Z);
+  expectConfigError(replaced(zUp, R"("up": "Z")", R"("up": "-z")"),
+                    R"(/up: must be "x", "y" or "z", found "-z")");
+  expectConfigError(replaced(zUp, R"("up": "Z")", R"("up": 2)"), "/up: must be a non-empty string");
+}
+
 TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
   expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
   expectConfigError("", "invalid JSON", 1);

@@ -201,6 +201,11 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     config.levels.push_back(readLevel(levels[k], "/levels/" + std::to_string(k), sourceName));
   if (top.has("scale")) config.scale = top.number("scale", 0.0, 1e12, true);
   top.optional("scale");
+  if (auto up = top.optionalString("up")) {
+    const std::optional<UpAxis> axis = parseUpAxis(*up);
+    if (!axis) top.fail("/up", "must be \"x\", \"y\" or \"z\", found \"" + *up + "\"");
+    config.up = *axis;
+  }
   if (top.has("material")) {
     Fields m(top.get("material"), "/material", sourceName);
     const json& color = m.get("color");
@@ -311,6 +316,7 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
     root["levels"].push_back(l);
   }
   root["scale"] = config.scale;
+  root["up"] = toString(config.up);
   root["material"] = {{"color", config.material.color},
                       {"specular", config.material.specular},
                       {"shininess", config.material.shininess}};

@@ -305,6 +305,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
       dataset.config.surface = r.file;
       break;
     }
+  dataset.config.up = options.up;
   dataset.config.provenance = {{"tool", "tetskin build"},
                                {"inputs", inputsJson},
                                {"options",

@@ -48,11 +48,12 @@ vtkRenderWindow* OffscreenView::window() const {
   return impl_->window;
 }
 
-void OffscreenView::setCamera(CameraPreset preset, const double bounds[6]) {
-  placeCamera(impl_->renderer, preset, bounds);
+void OffscreenView::setCamera(CameraPreset preset, const double bounds[6], UpAxis up) {
+  placeCamera(impl_->renderer, preset, bounds, up);
 }
 
-void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6]) {
+void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6],
+                 UpAxis upAxis) {
   vtkCamera* camera = renderer->GetActiveCamera();
   const double center[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
                             (bounds[4] + bounds[5]) / 2};
@@ -71,9 +72,13 @@ void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds
       direction[0] = 0.6, direction[1] = 0.45, direction[2] = 0.66;
       break;
   }
+  // (The presets are written for y up; a z-up model is seen as a y-up one.)
+  const Eigen::Matrix3d turn = fromYUp(upAxis);
+  const Eigen::Vector3d d = turn * Eigen::Vector3d(direction[0], direction[1], direction[2]);
+  const Eigen::Vector3d u = turn * Eigen::Vector3d(up[0], up[1], up[2]);
   camera->SetFocalPoint(center);
-  camera->SetPosition(center[0] + direction[0], center[1] + direction[1], center[2] + direction[2]);
-  camera->SetViewUp(up);
+  camera->SetPosition(center[0] + d[0], center[1] + d[1], center[2] + d[2]);
+  camera->SetViewUp(u[0], u[1], u[2]);
   renderer->ResetCamera(const_cast<double*>(bounds));
 }
 

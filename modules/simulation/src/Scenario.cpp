@@ -11,18 +11,26 @@
 namespace tetskin {
 namespace {
 
-std::vector<int> nodesBelow(const TetMesh& mesh, double y) {
-  std::vector<int> nodes;
-  for (Index v = 0; v < mesh.nodeCount(); ++v)
-    if (mesh.nodes(v, 1) <= y) nodes.push_back(static_cast<int>(v));
-  return nodes;
+// A node's height: its coordinate along the simulation's up axis.
+double height(const Simulation& sim, Index node) {
+  return sim.restMesh().nodes(node, axisIndex(sim.options().up));
+}
+
+// The rest mesh's lowest height and its extent along the up axis.
+std::pair<double, double> heightRange(const Simulation& sim) {
+  const BoundingBox box = boundingBox(sim.restMesh().nodes);
+  const int up = axisIndex(sim.options().up);
+  return {box.min[up], box.extent()[up]};
 }
 
 // The base: nodes in the lowest share of the height (none for share 0).
-std::vector<int> baseNodes(const TetMesh& rest, double share) {
+std::vector<int> baseNodes(const Simulation& sim, double share) {
   if (share <= 0) return {};
-  const BoundingBox box = boundingBox(rest.nodes);
-  return nodesBelow(rest, box.min.y() + share * box.extent().y());
+  const auto [lowest, extent] = heightRange(sim);
+  std::vector<int> nodes;
+  for (Index v = 0; v < sim.restMesh().nodeCount(); ++v)
+    if (height(sim, v) <= lowest + share * extent) nodes.push_back(static_cast<int>(v));
+  return nodes;
 }
 
 class Sag : public Scenario {
@@ -31,9 +39,7 @@ class Sag : public Scenario {
   const char* name() const override { return "sag"; }
 
  protected:
-  std::vector<int> prepare(Simulation& sim) override {
-    return baseNodes(sim.restMesh(), p_.baseShare);
-  }
+  std::vector<int> prepare(Simulation& sim) override { return baseNodes(sim, p_.baseShare); }
   void drive(Simulation&, double, Points3&) override {}
 };
 
@@ -48,13 +54,16 @@ class Wobble : public Sag {
   }
   std::vector<int> prepare(Simulation& sim) override {
     std::vector<int> fixed = Sag::prepare(sim);
-    const BoundingBox box = boundingBox(sim.restMesh().nodes);
+    const auto [lowest, extent] = heightRange(sim);
     const Eigen::VectorXd mass = sim.nodeMasses();
+    // Sideways: x for y-up, as the y-up frame's x reads for the up axis.
+    const Eigen::RowVector3d sideways =
+        (fromYUp(sim.options().up) * Eigen::Vector3d::UnitX()).transpose();
     pushed_ = Points3::Zero(sim.restMesh().nodeCount(), 3);
     // The upper 40%, weighted by height so the push bends rather than shears.
     for (Index v = 0; v < pushed_.rows(); ++v) {
-      const double t = (sim.restMesh().nodes(v, 1) - box.min.y()) / box.extent().y();
-      if (t > 0.6) pushed_(v, 0) = mass[v] * p_.pushAcceleration * (t - 0.6) / 0.4;
+      const double t = (height(sim, v) - lowest) / extent;
+      if (t > 0.6) pushed_.row(v) = mass[v] * p_.pushAcceleration * (t - 0.6) / 0.4 * sideways;
     }
     return fixed;
   }
@@ -71,9 +80,8 @@ class Drop : public Scenario {
  protected:
   void drive(Simulation&, double, Points3&) override {}
   std::vector<int> prepare(Simulation& sim) override {
-    const BoundingBox box = boundingBox(sim.restMesh().nodes);
     Points3 lifted = sim.restMesh().nodes;
-    lifted.col(1).array() += p_.dropHeight * box.extent().y();
+    lifted.col(axisIndex(sim.options().up)).array() += p_.dropHeight * heightRange(sim).second;
     sim.setPositions(lifted);
     return {};
   }
@@ -87,15 +95,13 @@ class Twist : public Sag {
  protected:
   void drive(Simulation& sim, double time, Points3& forces) override;
   std::vector<int> prepare(Simulation& sim) override {
-    const TetMesh& rest = sim.restMesh();
-    const BoundingBox box = boundingBox(rest.nodes);
-    std::vector<int> fixed = baseNodes(rest, p_.baseShare);
+    const auto [lowest, extent] = heightRange(sim);
+    std::vector<int> fixed = baseNodes(sim, p_.baseShare);
     top_.clear();
-    for (Index v = 0; v < rest.nodeCount(); ++v)
-      if (rest.nodes(v, 1) >= box.max.y() - 0.15 * box.extent().y())
-        top_.push_back(static_cast<int>(v));
+    for (Index v = 0; v < sim.restMesh().nodeCount(); ++v)
+      if (height(sim, v) >= lowest + 0.85 * extent) top_.push_back(static_cast<int>(v));
     fixed.insert(fixed.end(), top_.begin(), top_.end());
-    axis_ = box.center();
+    axis_ = boundingBox(sim.restMesh().nodes).center();
     return fixed;
   }
 
@@ -107,7 +113,7 @@ class Twist : public Sag {
 void Twist::drive(Simulation& sim, double time, Points3&) {
   const double h = sim.options().timeStep;
   const double share = std::min((time + h) / p_.twistSeconds, 1.0);
-  const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, Eigen::Vector3d::UnitY());
+  const Eigen::AngleAxisd turn(share * p_.twistDegrees * M_PI / 180.0, upVector(sim.options().up));
   Points3 targets(static_cast<Index>(top_.size()), 3);
   for (std::size_t i = 0; i < top_.size(); ++i) {
     const Eigen::Vector3d p = sim.restMesh().nodes.row(top_[i]).transpose();
@@ -183,7 +189,8 @@ bool scenarioReads(std::string_view name, ScenarioParameter parameter) {
 
 SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,
                                   const TetMesh& rest) {
-  if (name == "drop" && !options.floorHeight) options.floorHeight = boundingBox(rest.nodes).min.y();
+  if (name == "drop" && !options.floorHeight)
+    options.floorHeight = boundingBox(rest.nodes).min[axisIndex(options.up)];
   return options;
 }
 
@@ -193,10 +200,11 @@ std::string nodesBelowFloor(const Simulation& sim) {
   const Points3 x = sim.state().positions;
   // (A node on the floor, where drop from height 0 puts the lowest, is not below.)
   const double tolerance = 1e-9 * boundingBox(x).diagonal();
-  const auto below = (x.col(1).array() < *floor - tolerance).count();
+  const UpAxis up = sim.options().up;
+  const auto below = (x.col(axisIndex(up)).array() < *floor - tolerance).count();
   if (below == 0) return {};
   return std::to_string(below) + " of " + std::to_string(x.rows()) +
-         " nodes start below the floor at y = " + formatNumber(*floor) +
+         " nodes start below the floor at " + toString(up) + " = " + formatNumber(*floor) +
          "; contact pushes them up at once";
 }
 

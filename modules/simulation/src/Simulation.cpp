@@ -21,6 +21,13 @@ const char* toString(CoarseOperators kind) {
   return kind == CoarseOperators::Galerkin ? "galerkin" : "rediscretized";
 }
 
+SimulationOptions uprightAlong(UpAxis up, SimulationOptions options) {
+  options.up = up;
+  options.gravity.setZero();  // (not -9.81 times the unit vector: no -0 printed)
+  options.gravity[axisIndex(up)] = -kStandardGravity;
+  return options;
+}
+
 const char* toString(Tangent tangent) {
   return tangent == Tangent::Full ? "full" : "warped";
 }
@@ -337,7 +344,7 @@ void Simulation::buildSystem(double h, StepStats& stats) {
     contactDiagonal_.setZero(fem_.dofCount());
     contactForce_.setZero(fem_.dofCount());
     for (Index v = 0; v < rest_.nodeCount(); ++v) {
-      const Index dof = 3 * v + 1;
+      const Index dof = 3 * v + axisIndex(options_.up);
       const double depth = *options_.floorHeight - x_[dof];
       if (depth < 0) continue;  // touching counts: the penalty keeps it from sinking
       ++stats.contacts;
@@ -454,12 +461,13 @@ StepStats Simulation::step() {
   for (std::size_t i = 0; i < kinematicNodes_.size(); ++i)  // exact, free of round-off
     x.segment<3>(3 * kinematicNodes_[i]) = kinematicTargets_.row(static_cast<Index>(i)).transpose();
   if (options_.floorHeight) {
+    const int up = axisIndex(options_.up);
     for (Index node = 0; node < rest_.nodeCount(); ++node) {
-      if (x[3 * node + 1] >= *options_.floorHeight) continue;
-      x[3 * node + 1] = *options_.floorHeight;
-      v[3 * node + 1] = std::max(v[3 * node + 1], 0.0);
-      v[3 * node] *= 1 - options_.friction;
-      v[3 * node + 2] *= 1 - options_.friction;
+      if (x[3 * node + up] >= *options_.floorHeight) continue;
+      x[3 * node + up] = *options_.floorHeight;
+      v[3 * node + up] = std::max(v[3 * node + up], 0.0);
+      v[3 * node + (up + 1) % 3] *= 1 - options_.friction;
+      v[3 * node + (up + 2) % 3] *= 1 - options_.friction;
     }
   }
   // The state stays the last one that was fine. (A solve that overflowed

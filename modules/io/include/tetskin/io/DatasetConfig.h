@@ -2,8 +2,9 @@
 #pragma once
 // The dataset config (`OUT.json`): which .node/.ele files hold the levels,
 // where each level lies in them and where it came from, the defaults a
-// viewer needs to show the object at once (scale, material, texture, surface,
-// fur), and the body's elastic material for the simulation (elasticity).
+// viewer needs to show the object at once (scale, up axis, material,
+// texture, surface, fur), and the body's elastic material for the
+// simulation (elasticity).
 // Reading validates every field; unknown fields are errors, so a typo never
 // passes silently. Relative paths are relative to the config file.
 
@@ -19,6 +20,7 @@
 
 #include "tetskin/core/ElasticMaterial.h"
 #include "tetskin/core/TetMesh.h"
+#include "tetskin/core/UpAxis.h"
 
 namespace tetskin {
 
@@ -89,6 +91,7 @@ struct DatasetConfig {
   std::filesystem::path eleFile;
   std::vector<LevelConfig> levels;  // 0 = coarsest
   double scale = 1.0;
+  UpAxis up = UpAxis::Y;  // `up`: "x", "y" or "z" (optional; y without it)
   Material material;
   std::optional<std::filesystem::path> texture;
   std::optional<std::filesystem::path> surface;

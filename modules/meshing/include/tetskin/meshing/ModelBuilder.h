@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/UpAxis.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/meshing/MeshQuality.h"
 #include "tetskin/meshing/SurfaceRepair.h"
@@ -50,6 +51,7 @@ struct BuildOptions {
   int jobs = 1;  // mesher processes at once
   double timeoutSeconds = 600;
   RepairOptions repair;
+  UpAxis up = UpAxis::Y;  // recorded in the config (`up`) for simulation and viewing
 };
 
 struct CandidateReport {

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/UpAxis.h"
+
 class vtkRenderer;
 class vtkRenderWindow;
 class vtkImageData;
@@ -19,7 +21,8 @@ namespace tetskin {
 enum class CameraPreset { Front, Side, Top, Iso };
 CameraPreset parseCameraPreset(std::string_view name);  // front, side, top, iso
 // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
-void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6]);
+void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6],
+                 UpAxis up = UpAxis::Y);
 // TetSkin's gradient background (every view looks alike).
 void styleBackground(vtkRenderer* renderer);
 
@@ -31,7 +34,7 @@ class OffscreenView {
   vtkRenderer* renderer() const;
   vtkRenderWindow* window() const;
   // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
-  void setCamera(CameraPreset preset, const double bounds[6]);
+  void setCamera(CameraPreset preset, const double bounds[6], UpAxis up = UpAxis::Y);
   void render();
   vtkSmartPointer<vtkImageData> capture();
   void writePng(const std::filesystem::path& path);  // atomic

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Ready-made experiments for `tetskin simulate --scenario` (y is up):
+// Ready-made experiments for `tetskin simulate --scenario`, upright along
+// the simulation's up axis (SimulationOptions::up; y unless told otherwise):
 //   wobble  base fixed, a periodic sideways push on the upper part (the
 //           report's "animated deformation")
 //   drop    the body starts above a floor and falls onto it

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tetskin/core/TetMesh.h"
+#include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/ProjectedInitialGuess.h"
@@ -43,11 +44,14 @@ enum class Tangent { Full, Warped };
 const char* toString(Tangent tangent);
 Tangent tangentFromString(const std::string& name);  // "full" or "warped"
 
+inline constexpr double kStandardGravity = 9.81;  // m/s^2
+
 struct SimulationOptions {
   ElasticMaterial material;
   double timeStep = 1.0 / 60.0;
-  Eigen::Vector3d gravity{0, -9.81, 0};
-  std::optional<double> floorHeight;  // floor plane y = height, normal +y
+  Eigen::Vector3d gravity{0, -kStandardGravity, 0};
+  UpAxis up = UpAxis::Y;              // the floor's normal (and the scenarios' vertical)
+  std::optional<double> floorHeight;  // floor plane: the up coordinate = height
   double floorStiffness = 0;          // penalty; 0 = automatic (stiff enough for this mesh)
   double friction = 0.3;              // share of tangential velocity lost in contact
   Tangent tangent = Tangent::Full;
@@ -66,6 +70,10 @@ struct SimulationOptions {
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = 2000;
 };
+
+// `options` upright along `up`: the floor's normal and the scenarios'
+// vertical, with standard gravity pointing down it.
+SimulationOptions uprightAlong(UpAxis up, SimulationOptions options);
 
 struct StepStats {
   SolverKind solver = SolverKind::ConjugateGradient;  // the one that solved this step

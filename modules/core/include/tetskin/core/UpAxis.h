@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Which coordinate axis points up in a dataset: y for the bundled bunny and
+// most graphics models, z for most CAD, 3D-printing (STL) and GIS data. The
+// scenarios' base, push, drop and twist, the floor, the default gravity and
+// the camera presets follow it, so a z-up model stands on its feet.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string_view>
+
+namespace tetskin {
+
+enum class UpAxis { X = 0, Y = 1, Z = 2 };
+
+// The coordinate index (0, 1, 2) and name ("x", "y", "z").
+inline int axisIndex(UpAxis up) {
+  return static_cast<int>(up);
+}
+const char* toString(UpAxis up);
+// "x", "y" or "z" (any letter case); nullopt for anything else.
+std::optional<UpAxis> parseUpAxis(std::string_view name);
+
+// The unit vector along the axis.
+Eigen::Vector3d upVector(UpAxis up);
+
+// The rotation taking the y-up frame to this one (a proper rotation taking
+// y to the up axis, so what is horizontal for y-up stays horizontal): how a
+// direction given for y-up (a camera preset, a sideways push) reads for this
+// axis. Identity for y.
+Eigen::Matrix3d fromYUp(UpAxis up);
+
+}  // namespace tetskin
