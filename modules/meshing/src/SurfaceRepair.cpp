@@ -221,8 +221,10 @@ Index splitTJunctions(SurfaceMesh& mesh, double tolerance) {
   Index splits = 0;
   // One open edge per triangle is split per pass, fanned from the opposite
   // corner, so every new triangle is proper; a triangle with T-junctions on
-  // two sides is split again in the next pass.
-  for (;;) {
+  // two sides is split again in the next pass. (Each split makes a vertex
+  // an end of the edges beside it, so the passes end; the cap guards
+  // against a vertex a rounding keeps finding inside a shorter piece.)
+  for (int pass = 0; pass < 64; ++pass) {
     struct OpenEdge {
       int triangle, corner;  // the edge runs from corner to corner + 1
     };
@@ -300,6 +302,7 @@ Index splitTJunctions(SurfaceMesh& mesh, double tolerance) {
     for (std::size_t i = 0; i < added.size(); ++i)
       mesh.triangles.row(kept + static_cast<Index>(i)) = added[i].transpose();
   }
+  return splits;
 }
 
 Index removeOpenTriangles(SurfaceMesh& mesh) {
