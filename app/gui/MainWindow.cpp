@@ -166,6 +166,19 @@ QWidget* MainWindow::buildViewDock() {
     scene_->setCamera(parseCameraPreset(name.toStdString()));
     renderNow();
   });
+  // The dataset's up axis (its config's, or y): for a z-up model opened
+  // as bare .node/.ele, or a config that does not say. The camera and the
+  // next run follow it.
+  upAxis_ = combo("up", {"x", "y", "z"});
+  upAxis_->setCurrentText("y");
+  upAxis_->setToolTip("the axis that points up: camera presets, scenarios, floor and gravity");
+  form->addRow("Up axis", upAxis_);
+  connect(upAxis_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+    if (!scene_->hasDataset()) return;
+    scene_->setUpAxis(*parseUpAxis(name.toStdString()));
+    resetSimulation();
+    renderNow();
+  });
   furShells_ = new QSpinBox;
   furShells_->setObjectName("furShells");
   furShells_->setRange(1, 256);
@@ -477,6 +490,10 @@ bool MainWindow::openFile(const QString& qpath) {
 void MainWindow::afterLoad(const QString& path) {
   lastError_.clear();
   rememberRecent(QFileInfo(path).absoluteFilePath());
+  {
+    const QSignalBlocker block(upAxis_);
+    upAxis_->setCurrentText(toString(scene_->dataset().config.up));
+  }
   const int levels = static_cast<int>(scene_->dataset().mesh.levels.size());
   for (QSpinBox* s : {controlLevel_, rebindLevel_}) {
     const QSignalBlocker block(s);

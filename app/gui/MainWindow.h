@@ -128,7 +128,7 @@ class MainWindow : public QMainWindow {
   QTimer* timer_;
   QMenu* recentMenu_;
   // View.
-  QComboBox *renderPath_, *controlStyle_, *camera_;
+  QComboBox *renderPath_, *controlStyle_, *camera_, *upAxis_;
   QSpinBox* controlLevel_;
   QCheckBox* showSurface_;
   QSpinBox* furShells_;

@@ -321,6 +321,12 @@ void Scene::setCamera(CameraPreset preset) {
   placeCamera(renderer_, preset, bounds, dataset_->config.up);
 }
 
+void Scene::setUpAxis(UpAxis up) {
+  if (!dataset_) return;
+  dataset_->config.up = up;
+  setCamera(camera_);
+}
+
 void Scene::setOverlayText(const std::string& text) {
   overlay_->SetInput(text.c_str());
 }

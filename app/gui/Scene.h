@@ -92,6 +92,9 @@ class Scene {
   // Frames the surface (else the control level) from the preset's side; a
   // dataset or surface opened later is framed from the same side.
   void setCamera(CameraPreset preset);
+  // The dataset's up axis from now on (its config in memory; the file is
+  // not changed): the camera is placed again from the same side.
+  void setUpAxis(UpAxis up);
   void setOverlayText(const std::string& text);
 
   // Binding diagnostics.

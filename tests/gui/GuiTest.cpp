@@ -532,7 +532,8 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
 
 // A dataset whose config says z is up: gravity left at the standard pull
 // turns down z, the floor's height is along z, and the run is upright along
-// it; a gravity the user set stays as set.
+// it; a gravity the user set stays as set. The View dock's up axis does the
+// same for a dataset whose config does not say.
 TEST_F(Gui, ADatasetsUpAxisTurnsGravityAndTheFloor) {
   const std::filesystem::path folder = scratch("up_z");
   std::filesystem::create_directories(folder);
@@ -553,6 +554,7 @@ TEST_F(Gui, ADatasetsUpAxisTurnsGravityAndTheFloor) {
   EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), 0);
   EXPECT_EQ(child<QDoubleSpinBox>("gravityZ")->value(), -kStandardGravity);
   EXPECT_EQ(child<QCheckBox>("floor")->text(), "at z =");
+  EXPECT_EQ(child<QComboBox>("up")->currentText(), "z");
   const Simulation& sim = window_->runner()->simulation();
   EXPECT_EQ(sim.options().up, UpAxis::Z);
   EXPECT_EQ(sim.options().gravity, Eigen::Vector3d(0, 0, -kStandardGravity));
@@ -563,6 +565,18 @@ TEST_F(Gui, ADatasetsUpAxisTurnsGravityAndTheFloor) {
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), -kStandardGravity);
   EXPECT_EQ(child<QCheckBox>("floor")->text(), "at y =");
+  EXPECT_EQ(child<QComboBox>("up")->currentText(), "y");
+  // The View dock's up axis turns a dataset whose config does not say: the
+  // camera and the next run follow it.
+  window_->renderNow();
+  vtkSmartPointer<vtkImageData> upright = window_->grabImage();
+  child<QComboBox>("up")->setCurrentText("z");
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().options().up, UpAxis::Z);
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityZ")->value(), -kStandardGravity);
+  EXPECT_GT(changeFrom(upright), 0.05);  // seen from another side
+  child<QComboBox>("up")->setCurrentText("y");
+  EXPECT_EQ(child<QDoubleSpinBox>("gravityY")->value(), -kStandardGravity);
   child<QDoubleSpinBox>("gravityY")->setValue(-1.62);  // the Moon
   ASSERT_TRUE(window_->openFiles({QString::fromStdString((folder / "bunny.json").string())}));
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
