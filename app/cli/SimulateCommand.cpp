@@ -156,6 +156,15 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       toString(options.tangent));
   if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
   std::printf("  material: %s\n", describe(options.material).c_str());
+  {
+    // (Lengths are read as metres: a model written in millimetres shows
+    // here as a body a thousand times too large.)
+    const Eigen::Vector3d size = boundingBox(sim.restMesh().nodes).extent();
+    const double mass = sim.nodeMasses().sum();
+    std::printf("  body: %s x %s x %s m (%s up), mass %s kg\n", formatNumber(size.x()).c_str(),
+                formatNumber(size.y()).c_str(), formatNumber(size.z()).c_str(),
+                toString(options.up), formatNumber(mass).c_str());
+  }
   std::printf("  %zu of %lld nodes fixed, ", sim.fixedNodes().size(),
               static_cast<long long>(sim.restMesh().nodeCount()));
   if (parameters.loads.size() > 0) {
