@@ -13,6 +13,8 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/meshing/MeshQuality.h"
+#include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -21,7 +23,8 @@ namespace tetskin::cli {
 namespace {
 
 struct ConvertOptions {
-  std::filesystem::path input;
+  std::vector<std::filesystem::path> files;  // the inputs, then the output
+  std::filesystem::path input;               // the one input, when there is one
   std::filesystem::path output;
   int level = -1;
 };
@@ -71,6 +74,82 @@ void convertTetrahedra(const ConvertOptions& o) {
   writeBoundary(o.output, mesh, std::to_string(mesh.elementCount()) + " tetrahedra");
 }
 
+// Tetrahedral meshes made elsewhere (.vtu: Gmsh through meshio, ParaView,
+// another mesher), one per level, as a dataset: coarsest first, each with
+// its lower-dimensional cells left out, its unreferenced points dropped and
+// its inverted elements turned.
+void importDataset(const std::vector<std::filesystem::path>& inputs,
+                   const std::filesystem::path& output) {
+  const std::filesystem::path json = datasetConfigPath(output);
+  const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
+  struct Level {
+    std::filesystem::path file;
+    TetMesh mesh;
+    Index skipped = 0, unreferenced = 0, flipped = 0;
+    TetQuality quality;
+  };
+  std::vector<Level> levels;
+  for (const std::filesystem::path& input : inputs) {
+    if (lowerExtension(input) != ".vtu")
+      throw Error(input.string(), 0,
+                  "is not tetrahedra (.vtu): a dataset is made of one tetrahedral mesh per level");
+    ImportedTetrahedra imported = tetrahedraOf(readVtu(input), input.string());
+    Level level;
+    level.file = input;
+    level.mesh = std::move(imported.mesh);
+    level.skipped = imported.skippedCells;
+    level.unreferenced = removeUnreferencedNodes(level.mesh);
+    level.flipped = flipInvertedElements(level.mesh);
+    validateTetMesh(level.mesh, input.string());  // (a flat element stays flat: named here)
+    level.quality = measureQuality(level.mesh);
+    levels.push_back(std::move(level));
+  }
+  std::stable_sort(levels.begin(), levels.end(), [](const Level& a, const Level& b) {
+    return a.mesh.elementCount() < b.mesh.elementCount();
+  });
+  const BoundingBox finest = boundingBox(levels.back().mesh.nodes);
+  for (const Level& level : levels)
+    if (const std::string mismatch = levelOfDetailMismatch(finest, boundingBox(level.mesh.nodes),
+                                                           levels.back().file.string());
+        !mismatch.empty())
+      throw Error(level.file.string(), 0, mismatch);
+  Dataset dataset;
+  nlohmann::json provenance = nlohmann::json::array();
+  for (const Level& level : levels) {
+    appendLevel(dataset.mesh, level.mesh);
+    LevelConfig config;
+    config.source.input =
+        std::filesystem::relative(std::filesystem::absolute(level.file), directory)
+            .generic_string();
+    config.source.mesher = "imported";
+    config.statistics = level.quality.asMap();
+    dataset.config.levels.push_back(config);
+    provenance.push_back({{"file", config.source.input},
+                          {"skipped_cells", level.skipped},
+                          {"unreferenced_nodes_removed", level.unreferenced},
+                          {"flipped_elements", level.flipped}});
+  }
+  dataset.config.provenance = {{"tool", "tetskin convert"}, {"inputs", provenance}};
+  saveDataset(json, dataset);
+  std::printf("%-5s %9s %8s %8s %8s  %s\n", "level", "elements", "nodes", "min dih", "max r/e",
+              "input");
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const Level& level = levels[k];
+    std::printf("%-5zu %9lld %8lld %8.2f %8.3f  %s", k,
+                static_cast<long long>(level.mesh.elementCount()),
+                static_cast<long long>(level.mesh.nodeCount()), level.quality.minDihedralDeg,
+                level.quality.maxRadiusEdge, level.file.c_str());
+    if (level.skipped > 0)
+      std::printf(" (%lld lower cells left out)", static_cast<long long>(level.skipped));
+    if (level.unreferenced > 0)
+      std::printf(" (%lld unused points dropped)", static_cast<long long>(level.unreferenced));
+    if (level.flipped > 0)
+      std::printf(" (%lld inverted elements turned)", static_cast<long long>(level.flipped));
+    std::printf("\n");
+  }
+  std::printf("wrote %s (+ .node, .ele)\n", json.c_str());
+}
+
 }  // namespace
 
 void addConvertCommand(CLI::App& app) {
@@ -78,14 +157,35 @@ void addConvertCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "convert",
       "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level to .vtu for ParaView or to "
-      "its boundary surface, or tetrahedra (.vtu: a run's frame) to their boundary surface");
-  cmd->add_option("IN", o->input, "input surface, dataset (.json/.node/.ele) or tetrahedra (.vtu)")
+      "its boundary surface, tetrahedra (.vtu: a run's frame) to their boundary surface, or "
+      "tetrahedral meshes made elsewhere (.vtu, one per level) to a dataset (.json)");
+  cmd->add_option("FILES", o->files,
+                  "IN OUT: the input (a surface, a dataset .json/.node/.ele, or tetrahedra .vtu) "
+                  "and the output file; or IN IN ... OUT.json: tetrahedra (.vtu), one per level, "
+                  "to a dataset")
       ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("OUT", o->output, "output file")->required();
+      ->expected(-2);
   cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
   cmd->callback([o, cmd] {
-    requireNotAnInput(o->output, {o->input});
+    o->output = o->files.back();
+    const std::vector<std::filesystem::path> inputs(o->files.begin(), o->files.end() - 1);
+    for (const std::filesystem::path& input : inputs) {
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(input, error))
+        throw Error(input.string(), 0, "is not a file that exists");
+      requireNotAnInput(o->output, {input});
+    }
+    if (lowerExtension(o->output) == ".json") {
+      if (cmd->count("--level") > 0)
+        throw Error("--level: applies to a dataset's conversion, not to making one");
+      importDataset(inputs, o->output);
+      return;
+    }
+    if (inputs.size() > 1)
+      throw Error(o->output.string(), 0,
+                  "several inputs convert only to a dataset (.json: tetrahedral meshes, one per "
+                  "level)");
+    o->input = inputs.front();
     if (isSurfaceFile(o->input)) {
       if (cmd->count("--level") > 0)
         throw Error("--level: applies to a dataset's conversion, not to a surface's");

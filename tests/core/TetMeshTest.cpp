@@ -41,6 +41,20 @@ TEST(TetMesh, InvertedElementIsReported) {
   EXPECT_NO_THROW(validateTetMesh(m, "m.ele", /*requirePositiveVolume=*/false));
 }
 
+// A mesh made with the other orientation convention turns positive; a
+// right one is left as it is.
+TEST(TetMesh, InvertedElementsAreTurned) {
+  TetMesh m = twoTets();
+  const TetMesh right = m;
+  EXPECT_EQ(flipInvertedElements(m), 0);
+  EXPECT_EQ(m.elements, right.elements);
+  std::swap(m.elements(1, 0), m.elements(1, 1));
+  EXPECT_EQ(flipInvertedElements(m), 1);
+  EXPECT_NO_THROW(validateTetMesh(m, "m"));
+  EXPECT_NEAR(elementVolume(m, 1), elementVolume(right, 1), 1e-15);
+  EXPECT_EQ(m.elements.row(0), right.elements.row(0));
+}
+
 TEST(TetMesh, NodeIndexOutOfRangeIsReported) {
   TetMesh m = twoTets();
   m.elements(0, 3) = 6;

@@ -10,6 +10,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "ExpectError.h"
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/vtkio/VtkConversion.h"
@@ -120,6 +121,37 @@ TEST(VtkConversion, NonTetraCellIsNamed) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("cell 0 is a vtkTriangle"), std::string::npos) << e.what();
   }
+}
+
+// A mesh made elsewhere (Gmsh through meshio writes boundary triangles,
+// edges and vertices beside the tetrahedra): the lower cells are left out
+// and counted; another 3D cell is named; a mesh of no tetrahedra is refused.
+TEST(VtkConversion, ImportedTetrahedraLeaveOutLowerCells) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  for (const auto& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                        Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)})
+    pts->InsertNextPoint(p.data());
+  grid->SetPoints(pts);
+  const vtkIdType vertex[] = {0}, line[] = {0, 1}, tri[] = {0, 1, 2}, tet[] = {0, 1, 2, 3};
+  grid->InsertNextCell(VTK_VERTEX, 1, vertex);
+  grid->InsertNextCell(VTK_LINE, 2, line);
+  grid->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  EXPECT_NE(test::errorText([&] {
+              tetrahedraOf(grid, "flat.vtu");
+            }).find("flat.vtu: has no tetrahedra (3 cells of lower dimension)"),
+            std::string::npos);
+  grid->InsertNextCell(VTK_TETRA, 4, tet);
+  const ImportedTetrahedra imported = tetrahedraOf(grid, "mixed.vtu");
+  EXPECT_EQ(imported.skippedCells, 3);
+  ASSERT_EQ(imported.mesh.elementCount(), 1);
+  EXPECT_EQ(imported.mesh.elements.row(0), Eigen::RowVector4i(0, 1, 2, 3));
+  const vtkIdType wedge[] = {0, 1, 2, 3, 1, 2};
+  grid->InsertNextCell(VTK_WEDGE, 6, wedge);
+  EXPECT_NE(test::errorText([&] {
+              tetrahedraOf(grid, "mixed.vtu");
+            }).find("mixed.vtu: cell 4 is a vtkWedge, not a linear tetrahedron"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -113,6 +113,16 @@ Index removeUnreferencedNodes(TetMesh& mesh) {
   return static_cast<Index>(unused.size());
 }
 
+Index flipInvertedElements(TetMesh& mesh) {
+  Index flipped = 0;
+  for (Index e = 0; e < mesh.elementCount(); ++e)
+    if (elementVolume(mesh, e) < 0) {
+      std::swap(mesh.elements(e, 2), mesh.elements(e, 3));
+      ++flipped;
+    }
+  return flipped;
+}
+
 TetMesh extractLevel(const MultiLevelTetMesh& mesh, int level) {
   if (level < 0 || level >= mesh.levelCount())
     throw Error("level " + std::to_string(level) + " does not exist (the dataset has " +

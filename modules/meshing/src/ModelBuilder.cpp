@@ -48,21 +48,13 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
   std::stable_sort(inputs.begin(), inputs.end(), [](const SurfaceInput& a, const SurfaceInput& b) {
     return a.mesh.triangleCount() > b.mesh.triangleCount();
   });
-  // Levels of another object (or of this one elsewhere, or in other units)
-  // would make a dataset whose levels the multigrid and the bindings cannot
-  // relate; levels of detail of one object share nearly all their bounding
-  // box.
+  // Levels of another object are refused (levelOfDetailMismatch).
   const BoundingBox finestBox = boundingBox(inputs.front().mesh);
   for (std::size_t j = 1; j < inputs.size(); ++j)
-    if (const double overlap = boxOverlap(finestBox, boundingBox(inputs[j].mesh));
-        overlap < kLevelOfDetailOverlap)
-      throw Error(inputs[j].name, 0,
-                  "is not a level of detail of " + inputs.front().name +
-                      ": their bounding boxes share " +
-                      formatNumber(std::round(1000 * overlap) / 10) +
-                      "% of the volume they span together (levels of detail of one object share "
-                      "most of it); each input is the same object, in the same place and units, "
-                      "at another resolution");
+    if (const std::string mismatch =
+            levelOfDetailMismatch(finestBox, boundingBox(inputs[j].mesh), inputs.front().name);
+        !mismatch.empty())
+      throw Error(inputs[j].name, 0, mismatch);
   std::vector<RepairedInput> prepared;
   std::string firstFailure;
   for (SurfaceInput& input : inputs) {
@@ -191,6 +183,16 @@ std::string selectionHint(const std::vector<Index>& counts, const std::vector<do
 }
 
 }  // namespace
+
+std::string levelOfDetailMismatch(const BoundingBox& finest, const BoundingBox& box,
+                                  const std::string& finestName) {
+  const double overlap = boxOverlap(finest, box);
+  if (overlap >= kLevelOfDetailOverlap) return {};
+  return "is not a level of detail of " + finestName + ": their bounding boxes share " +
+         formatNumber(std::round(1000 * overlap) / 10) +
+         "% of the volume they span together (levels of detail of one object share most of "
+         "it); each is the same object, in the same place and units, at another resolution";
+}
 
 const char* toString(MesherKind mesher) {
   return mesher == MesherKind::TetGen ? "tetgen" : "netgen";

@@ -5,6 +5,7 @@
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkGenericCell.h>
 #include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -143,6 +144,44 @@ vtkSmartPointer<vtkUnstructuredGrid> toVtkUnstructuredGrid(const TetMesh& mesh) 
   types->SetNumberOfValues(mesh.elementCount());
   types->FillValue(VTK_TETRA);
   out->SetCells(types, toCells<4>(mesh.elements));
+  return out;
+}
+
+ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& sourceName) {
+  if (!grid || grid->GetNumberOfCells() == 0) throw Error(sourceName, 0, "contains no cells");
+  ImportedTetrahedra out;
+  std::vector<vtkIdType> tetrahedra;
+  auto cell = vtkSmartPointer<vtkGenericCell>::New();
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    const int type = grid->GetCellType(c);
+    if (type == VTK_TETRA) {
+      tetrahedra.push_back(c);
+      continue;
+    }
+    grid->GetCell(c, cell);
+    if (cell->GetCellDimension() < 3) {
+      ++out.skippedCells;
+    } else {
+      throw Error(sourceName, 0,
+                  "cell " + std::to_string(c) + " is a " +
+                      vtkCellTypes::GetClassNameFromTypeId(type) +
+                      ", not a linear tetrahedron (split the mesh into linear tetrahedra first)");
+    }
+  }
+  if (tetrahedra.empty())
+    throw Error(sourceName, 0,
+                "has no tetrahedra (" + std::to_string(out.skippedCells) +
+                    " cells of lower dimension): a volume mesh is needed");
+  out.mesh.nodes = fromVtkPoints(grid->GetPoints(), sourceName);
+  out.mesh.elements.resize(static_cast<Index>(tetrahedra.size()), 4);
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (std::size_t e = 0; e < tetrahedra.size(); ++e) {
+    grid->GetCellPoints(tetrahedra[e], size, ids);
+    for (int k = 0; k < 4; ++k)
+      out.mesh.elements(static_cast<Index>(e), k) = static_cast<int>(ids[k]);
+  }
+  validateTetMesh(out.mesh, sourceName, /*requirePositiveVolume=*/false);
   return out;
 }
 

@@ -21,6 +21,15 @@ namespace tetskin {
 enum class MesherKind { TetGen, Netgen };
 // "tetgen" or "netgen": in the config, the build options and messages.
 const char* toString(MesherKind mesher);
+
+// Why `box` is not the bounding box of a level of detail of the object whose
+// finest level (`finestName`) spans `finest`: levels of one object share
+// most of the volume their boxes span together (at least half). Empty when
+// it is. Levels of another object, or of this one elsewhere or in other
+// units, make a dataset whose levels the multigrid and bindings cannot
+// relate. (build's inputs, and convert's imported meshes.)
+std::string levelOfDetailMismatch(const BoundingBox& finest, const BoundingBox& box,
+                                  const std::string& finestName);
 std::optional<MesherKind> parseMesherKind(std::string_view name);
 
 // How a candidate (and the level made from it) is named in reports: the

@@ -51,4 +51,14 @@ vtkSmartPointer<vtkUnstructuredGrid> toVtkUnstructuredGrid(const TetMesh& mesh);
 // Requires every cell to be a VTK_TETRA; throws Error naming the first other cell.
 TetMesh fromVtkUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& sourceName);
 
+// The linear tetrahedra of a mesh made elsewhere (Gmsh through meshio,
+// ParaView, another mesher): the cells of lower dimension such files carry
+// (boundary triangles, edges, vertices) are left out and counted; any other
+// cell of three dimensions is an error naming it. Every point stays.
+struct ImportedTetrahedra {
+  TetMesh mesh;
+  Index skippedCells = 0;  // of dimension 0 to 2
+};
+ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& sourceName);
+
 }  // namespace tetskin
