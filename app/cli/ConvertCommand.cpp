@@ -99,7 +99,7 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
     level.mesh = std::move(imported.mesh);
     level.skipped = imported.skippedCells;
     level.unreferenced = removeUnreferencedNodes(level.mesh);
-    level.flipped = flipInvertedElements(level.mesh);
+    level.flipped = orientElementsPositively(level.mesh);
     validateTetMesh(level.mesh, input.string());  // (a flat element stays flat: named here)
     level.quality = measureQuality(level.mesh);
     levels.push_back(std::move(level));

@@ -46,10 +46,10 @@ TEST(TetMesh, InvertedElementIsReported) {
 TEST(TetMesh, InvertedElementsAreTurned) {
   TetMesh m = twoTets();
   const TetMesh right = m;
-  EXPECT_EQ(flipInvertedElements(m), 0);
+  EXPECT_EQ(orientElementsPositively(m), 0);
   EXPECT_EQ(m.elements, right.elements);
   std::swap(m.elements(1, 0), m.elements(1, 1));
-  EXPECT_EQ(flipInvertedElements(m), 1);
+  EXPECT_EQ(orientElementsPositively(m), 1);
   EXPECT_NO_THROW(validateTetMesh(m, "m"));
   EXPECT_NEAR(elementVolume(m, 1), elementVolume(right, 1), 1e-15);
   EXPECT_EQ(m.elements.row(0), right.elements.row(0));

@@ -113,7 +113,7 @@ Index removeUnreferencedNodes(TetMesh& mesh) {
   return static_cast<Index>(unused.size());
 }
 
-Index flipInvertedElements(TetMesh& mesh) {
+Index orientElementsPositively(TetMesh& mesh) {
   Index flipped = 0;
   for (Index e = 0; e < mesh.elementCount(); ++e)
     if (elementVolume(mesh, e) < 0) {

@@ -35,16 +35,6 @@ std::string tetgenError(int code) {
 
 }  // namespace
 
-Index orientElementsPositively(TetMesh& mesh) {
-  Index flipped = 0;
-  for (Index e = 0; e < mesh.elementCount(); ++e)
-    if (elementVolume(mesh, e) < 0) {
-      std::swap(mesh.elements(e, 2), mesh.elements(e, 3));
-      ++flipped;
-    }
-  return flipped;
-}
-
 TetMesh tetrahedralizeWithTetGen(const SurfaceMesh& surface, double radiusEdgeRatio,
                                  double maxVolume) {
   if (!(radiusEdgeRatio > 1.0))

@@ -61,10 +61,11 @@ std::vector<Index> unreferencedNodes(const TetMesh& mesh);
 // nodes were removed.
 Index removeUnreferencedNodes(TetMesh& mesh);
 
-// Swaps two nodes of every element of negative volume (a mesh made with the
-// other orientation convention); returns how many. Elements of zero volume
-// stay as they are (validateTetMesh names them).
-Index flipInvertedElements(TetMesh& mesh);
+// Swaps two nodes of every element of negative volume (a mesher's or
+// another tool's other orientation convention), so all are positive;
+// returns how many. Elements of zero volume stay as they are
+// (validateTetMesh names them).
+Index orientElementsPositively(TetMesh& mesh);
 
 // Level k with level-local node indices.
 TetMesh extractLevel(const MultiLevelTetMesh& mesh, int level);

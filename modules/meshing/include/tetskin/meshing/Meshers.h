@@ -38,8 +38,4 @@ bool netgenAvailable();
 TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness,
                                  double maxEdge = 0.0);
 
-// Flips elements with negative volume so all are positive; returns how many
-// were flipped.
-Index orientElementsPositively(TetMesh& mesh);
-
 }  // namespace tetskin
