@@ -100,7 +100,12 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
     level.skipped = imported.skippedCells;
     level.unreferenced = removeUnreferencedNodes(level.mesh);
     level.flipped = orientElementsPositively(level.mesh);
-    validateTetMesh(level.mesh, input.string());  // (a flat element stays flat: named here)
+    for (Index e = 0; e < level.mesh.elementCount(); ++e)  // (a flat one stays flat)
+      if (!(elementVolume(level.mesh, e) > 0))
+        throw Error(input.string(), 0,
+                    "cell " + std::to_string(imported.cells[static_cast<std::size_t>(e)]) +
+                        ", a tetrahedron, has volume " +
+                        formatNumber(elementVolume(level.mesh, e)) + " (degenerate)");
     level.quality = measureQuality(level.mesh);
     levels.push_back(std::move(level));
   }

@@ -174,6 +174,7 @@ ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& so
                     " cells of lower dimension): a volume mesh is needed");
   out.mesh.nodes = fromVtkPoints(grid->GetPoints(), sourceName);
   out.mesh.elements.resize(static_cast<Index>(tetrahedra.size()), 4);
+  out.cells.assign(tetrahedra.begin(), tetrahedra.end());
   vtkIdType size = 0;
   const vtkIdType* ids = nullptr;
   for (std::size_t e = 0; e < tetrahedra.size(); ++e) {

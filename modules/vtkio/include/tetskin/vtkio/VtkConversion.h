@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
@@ -57,7 +58,8 @@ TetMesh fromVtkUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& so
 // cell of three dimensions is an error naming it. Every point stays.
 struct ImportedTetrahedra {
   TetMesh mesh;
-  Index skippedCells = 0;  // of dimension 0 to 2
+  Index skippedCells = 0;    // of dimension 0 to 2
+  std::vector<Index> cells;  // each element's cell number in the file, for messages
 };
 ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& sourceName);
 
