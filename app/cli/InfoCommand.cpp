@@ -40,21 +40,35 @@ void printBox(const BoundingBox& box) {
 
 // Whether the surface is closed, as build needs it, and what it encloses:
 // its parts, the cavities among them and the volume, wound as build's repair
-// winds them (SurfaceNesting.h); or what keeps it open. Open edges that only
-// meet at T-junctions are closed as build closes them.
+// winds them (SurfaceNesting.h); or what keeps it open. Build's first
+// repairs are made first, as build makes them: duplicate vertices welded (a
+// triangle soup, as STL-like OBJ files are, has only open edges before) and
+// T-junctions split.
 void printClosure(const SurfaceMesh& input) {
   if (input.triangleCount() == 0) return;
-  const auto holes = boundaryLoops(input).size();
   SurfaceMesh mesh = input;
+  const RepairOptions repair;
+  const double diagonal = boundingBox(mesh).diagonal();
+  const Index welded = weldVertices(mesh, repair.weldTolerance * diagonal);
+  if (welded > 0) {
+    removeDegenerateTriangles(mesh, repair.areaTolerance * diagonal * diagonal);
+    removeDuplicateTriangles(mesh);
+  }
   const Index tJunctions =
-      holes > 0
-          ? splitTJunctions(mesh, RepairOptions{}.tJunctionTolerance * boundingBox(mesh).diagonal())
-          : 0;
-  if (const auto left = tJunctions > 0 ? boundaryLoops(mesh).size() : holes; left > 0) {
+      boundaryLoops(mesh).empty() ? 0 : splitTJunctions(mesh, repair.tJunctionTolerance * diagonal);
+  // "build welds 8 duplicate vertices and splits 26 T-junctions"
+  std::string repaired;
+  auto count = [](Index n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  if (welded > 0) repaired = "welds " + count(welded, "duplicate vertex", "duplicate vertices");
+  if (tJunctions > 0)
+    repaired += (repaired.empty() ? "" : " and ") +
+                ("splits " + count(tJunctions, "T-junction", "T-junctions"));
+  if (!repaired.empty()) repaired = "build " + repaired;
+  if (const auto holes = boundaryLoops(mesh).size(); holes > 0) {
     std::printf("  closed     no: %zu chain%s of open edges", holes, holes == 1 ? "" : "s");
-    if (tJunctions > 0)
-      std::printf(", %zu after splitting %lld T-junction%s", left,
-                  static_cast<long long>(tJunctions), tJunctions == 1 ? "" : "s");
+    if (!repaired.empty()) std::printf(" once %s", repaired.c_str());
     std::printf(" (build removes triangles on open edges and refuses real holes)\n");
     return;
   }
@@ -62,9 +76,7 @@ void printClosure(const SurfaceMesh& input) {
   SurfaceMesh wound = mesh;
   const OrientationResult orientation = orientConsistently(wound);
   std::printf("  closed     yes");
-  if (tJunctions > 0)
-    std::printf(" once %lld T-junction%s split (build splits them)",
-                static_cast<long long>(tJunctions), tJunctions == 1 ? " is" : "s are");
+  if (!repaired.empty()) std::printf(" once %s", repaired.c_str());
   if (!orientation.orientable) {
     std::printf(", but not orientable\n");
     return;
