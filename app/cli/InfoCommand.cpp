@@ -47,15 +47,13 @@ void printBox(const BoundingBox& box) {
 void printClosure(const SurfaceMesh& input) {
   if (input.triangleCount() == 0) return;
   SurfaceMesh mesh = input;
-  const RepairOptions repair;
-  const double diagonal = boundingBox(mesh).diagonal();
-  const Index welded = weldVertices(mesh, repair.weldTolerance * diagonal);
+  const RepairTolerances tolerance = repairTolerances({}, boundingBox(mesh).diagonal());
+  const Index welded = weldVertices(mesh, tolerance.weld);
   if (welded > 0) {
-    removeDegenerateTriangles(mesh, repair.areaTolerance * diagonal * diagonal);
+    removeDegenerateTriangles(mesh, tolerance.area);
     removeDuplicateTriangles(mesh);
   }
-  const Index tJunctions =
-      boundaryLoops(mesh).empty() ? 0 : splitTJunctions(mesh, repair.tJunctionTolerance * diagonal);
+  const Index tJunctions = splitTJunctions(mesh, tolerance.tJunction);  // (0 on a closed one)
   // "build welds 8 duplicate vertices and splits 26 T-junctions"
   std::string repaired;
   auto count = [](Index n, const char* one, const char* many) {

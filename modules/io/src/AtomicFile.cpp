@@ -49,27 +49,40 @@ void requireWritableFolder(const std::filesystem::path& target,
     throw Error(target.string(), 0, "cannot be written: " + folder.string() + " is not writable");
 }
 
+// Where a target would go: the nearest folder on its path that exists, and
+// the outermost one after it that does not (empty when the target's own
+// folder exists).
+struct Location {
+  std::filesystem::path existing, outermostMissing;
+};
+Location locate(const std::filesystem::path& target) {
+  Location location;
+  location.existing = std::filesystem::absolute(target).parent_path();
+  std::error_code error;
+  while (!std::filesystem::exists(location.existing, error) &&
+         location.existing.has_relative_path()) {
+    location.outermostMissing = location.existing;
+    location.existing = location.existing.parent_path();
+  }
+  return location;
+}
+
 // Checks the target's location and makes the folders it lacks (a command
 // line's `-o results/run1/out.vtp`, as build and simulate always did);
 // returns the outermost folder made, or an empty path. Checked first: the
 // writers' own messages for a missing or read-only folder name the
 // temporary file (or, for VTK's PNG writer, a full disk).
 std::filesystem::path makeTargetFolder(const std::filesystem::path& target) {
-  requireWritableLocation(target);
+  const Location location = locate(target);
+  requireWritableFolder(target, location.existing);
+  if (location.outermostMissing.empty()) return {};
   const std::filesystem::path folder = std::filesystem::absolute(target).parent_path();
-  std::filesystem::path outermost;
-  for (std::filesystem::path f = folder; !f.empty() && f.has_relative_path(); f = f.parent_path()) {
-    std::error_code error;
-    if (std::filesystem::exists(f, error)) break;
-    outermost = f;
-  }
-  if (outermost.empty()) return {};
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error)
     throw Error(target.string(), 0,
                 "cannot be written: " + folder.string() + " cannot be made: " + error.message());
-  return outermost;
+  return location.outermostMissing;
 }
 
 // Removes the folders makeTargetFolder made for `target`, from the inside
@@ -142,11 +155,7 @@ void writeFileAtomically(const std::filesystem::path& target,
 }
 
 void requireWritableLocation(const std::filesystem::path& target) {
-  std::filesystem::path existing = std::filesystem::absolute(target).parent_path();
-  std::error_code error;
-  while (!std::filesystem::exists(existing, error) && existing.has_relative_path())
-    existing = existing.parent_path();
-  requireWritableFolder(target, existing);
+  requireWritableFolder(target, locate(target).existing);
 }
 
 }  // namespace tetskin

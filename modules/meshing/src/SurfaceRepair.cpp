@@ -463,6 +463,11 @@ std::string collapseWarning(const RepairReport& report, const std::string& name)
          "the parts into one closed surface first";
 }
 
+RepairTolerances repairTolerances(const RepairOptions& options, double diagonal) {
+  return {options.weldTolerance * diagonal, options.areaTolerance * diagonal * diagonal,
+          options.tJunctionTolerance * diagonal};
+}
+
 RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
                            const RepairOptions& options) {
   validateSurface(mesh, name);
@@ -474,17 +479,16 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
   if (mesh.triangleCount() == 0) throw Error(name, 0, "the surface has no triangles");
   const double diagonal = boundingBox(mesh).diagonal();
   if (!(diagonal > 0)) throw Error(name, 0, "the surface has zero extent");
-  const double weldTol = options.weldTolerance * diagonal;
-  const double areaTol = options.areaTolerance * diagonal * diagonal;
+  const RepairTolerances tolerance = repairTolerances(options, diagonal);
 
   // Weld, then clean what welding degenerated; shared by the intersection loop.
   auto clean = [&] {
-    report.weldedVertices += weldVertices(mesh, weldTol);
-    report.degenerateTriangles += removeDegenerateTriangles(mesh, areaTol);
+    report.weldedVertices += weldVertices(mesh, tolerance.weld);
+    report.degenerateTriangles += removeDegenerateTriangles(mesh, tolerance.area);
     report.duplicateTriangles += removeDuplicateTriangles(mesh);
   };
   clean();
-  report.tJunctionsSplit = splitTJunctions(mesh, options.tJunctionTolerance * diagonal);
+  report.tJunctionsSplit = splitTJunctions(mesh, tolerance.tJunction);
   report.holes = static_cast<Index>(boundaryLoops(mesh).size());
   report.openTrianglesRemoved = removeOpenTriangles(mesh);
   if (mesh.triangleCount() == 0)

@@ -150,12 +150,11 @@ vtkSmartPointer<vtkUnstructuredGrid> toVtkUnstructuredGrid(const TetMesh& mesh) 
 ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& sourceName) {
   if (!grid || grid->GetNumberOfCells() == 0) throw Error(sourceName, 0, "contains no cells");
   ImportedTetrahedra out;
-  std::vector<vtkIdType> tetrahedra;
   auto cell = vtkSmartPointer<vtkGenericCell>::New();
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
     const int type = grid->GetCellType(c);
     if (type == VTK_TETRA) {
-      tetrahedra.push_back(c);
+      out.cells.push_back(c);
       continue;
     }
     grid->GetCell(c, cell);
@@ -168,17 +167,16 @@ ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& so
                       ", not a linear tetrahedron (split the mesh into linear tetrahedra first)");
     }
   }
-  if (tetrahedra.empty())
+  if (out.cells.empty())
     throw Error(sourceName, 0,
                 "has no tetrahedra (" + std::to_string(out.skippedCells) +
                     " cells of lower dimension): a volume mesh is needed");
   out.mesh.nodes = fromVtkPoints(grid->GetPoints(), sourceName);
-  out.mesh.elements.resize(static_cast<Index>(tetrahedra.size()), 4);
-  out.cells.assign(tetrahedra.begin(), tetrahedra.end());
+  out.mesh.elements.resize(static_cast<Index>(out.cells.size()), 4);
   vtkIdType size = 0;
   const vtkIdType* ids = nullptr;
-  for (std::size_t e = 0; e < tetrahedra.size(); ++e) {
-    grid->GetCellPoints(tetrahedra[e], size, ids);
+  for (std::size_t e = 0; e < out.cells.size(); ++e) {
+    grid->GetCellPoints(out.cells[e], size, ids);
     for (int k = 0; k < 4; ++k)
       out.mesh.elements(static_cast<Index>(e), k) = static_cast<int>(ids[k]);
   }
@@ -187,23 +185,15 @@ ImportedTetrahedra tetrahedraOf(vtkUnstructuredGrid* grid, const std::string& so
 }
 
 TetMesh fromVtkUnstructuredGrid(vtkUnstructuredGrid* grid, const std::string& sourceName) {
-  if (!grid || grid->GetNumberOfCells() == 0) throw Error(sourceName, 0, "contains no cells");
-  TetMesh mesh;
-  mesh.nodes = fromVtkPoints(grid->GetPoints(), sourceName);
-  mesh.elements.resize(grid->GetNumberOfCells(), 4);
-  vtkIdType size = 0;
-  const vtkIdType* ids = nullptr;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    if (grid->GetCellType(c) != VTK_TETRA)
-      throw Error(sourceName, 0,
-                  "cell " + std::to_string(c) + " is a " +
-                      vtkCellTypes::GetClassNameFromTypeId(grid->GetCellType(c)) +
-                      ", not a linear tetrahedron");
-    grid->GetCellPoints(c, size, ids);
-    for (int k = 0; k < 4; ++k) mesh.elements(c, k) = static_cast<int>(ids[k]);
-  }
-  validateTetMesh(mesh, sourceName, /*requirePositiveVolume=*/false);
-  return mesh;
+  // (Strict: where tetrahedraOf leaves a lower cell out, this names it.)
+  if (grid)
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+      if (grid->GetCellType(c) != VTK_TETRA)
+        throw Error(sourceName, 0,
+                    "cell " + std::to_string(c) + " is a " +
+                        vtkCellTypes::GetClassNameFromTypeId(grid->GetCellType(c)) +
+                        ", not a linear tetrahedron");
+  return tetrahedraOf(grid, sourceName).mesh;
 }
 
 }  // namespace tetskin

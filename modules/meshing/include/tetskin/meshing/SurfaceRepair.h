@@ -78,6 +78,14 @@ struct RepairOptions {
   int maxIntersectionRounds = 8;
 };
 
+// The options' tolerances made absolute for a surface whose bounding-box
+// diagonal is `diagonal`: what repairSurface uses, and what `info` uses to
+// read a surface as build will.
+struct RepairTolerances {
+  double weld = 0, area = 0, tJunction = 0;
+};
+RepairTolerances repairTolerances(const RepairOptions& options, double diagonal);
+
 struct RepairReport {
   Index inputVertices = 0, inputTriangles = 0;
   Index weldedVertices = 0;
