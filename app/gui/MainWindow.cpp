@@ -38,9 +38,11 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "BuildDialog.h"
 #include "HistogramWidget.h"
+#include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/AtomicFile.h"
@@ -337,40 +339,21 @@ QWidget* MainWindow::buildSimulationDock() {
   tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
   tolerance_->setCurrentText("1e-6");
   tolerance_->setToolTip("relative residual of each linear solve (simulate --tolerance)");
-  timeStep_ = new QDoubleSpinBox;
-  timeStep_->setObjectName("timeStep");
-  timeStep_->setDecimals(4);
-  timeStep_->setRange(1e-4, 0.1);
-  timeStep_->setValue(1.0 / 60.0);
-  young_ = new QDoubleSpinBox;
-  young_->setObjectName("young");
-  young_->setRange(1, 1e13);
-  young_->setDecimals(0);
-  young_->setValue(ElasticMaterial{}.youngsModulus);
-  poisson_ = new QDoubleSpinBox;
-  poisson_->setObjectName("poisson");
-  poisson_->setDecimals(4);
-  poisson_->setRange(-0.9999, 0.4999);
+  // The ranges are those the simulation accepts (CorotatedFem, Simulation).
+  const ElasticMaterial material;
+  timeStep_ = numberBox("timeStep", kLeastPositive, kLargest, SimulationOptions{}.timeStep,
+                        "seconds per implicit step (simulate --dt)");
+  young_ =
+      numberBox("young", kLeastPositive, kLargest, material.youngsModulus, "Young's modulus, Pa");
+  poisson_ = numberBox("poisson", std::nextafter(-1.0, 0.0), std::nextafter(0.5, 0.0),
+                       material.poissonRatio, "Poisson's ratio, in (-1, 0.5)");
   poisson_->setSingleStep(0.01);
-  poisson_->setValue(ElasticMaterial{}.poissonRatio);
-  density_ = new QDoubleSpinBox;
-  density_->setObjectName("density");
-  density_->setDecimals(4);
-  density_->setRange(1e-4, 1e6);
-  density_->setValue(ElasticMaterial{}.density);
-  massDamping_ = new QDoubleSpinBox;
-  massDamping_->setObjectName("massDamping");
-  massDamping_->setDecimals(4);
-  massDamping_->setRange(0, 1000);
-  massDamping_->setValue(ElasticMaterial{}.massDamping);
-  massDamping_->setToolTip("Rayleigh alpha: damping proportional to the mass, 1/s");
-  stiffnessDamping_ = new QDoubleSpinBox;
-  stiffnessDamping_->setObjectName("stiffnessDamping");
-  stiffnessDamping_->setDecimals(6);
-  stiffnessDamping_->setRange(0, 10);
-  stiffnessDamping_->setSingleStep(0.001);
-  stiffnessDamping_->setValue(ElasticMaterial{}.stiffnessDamping);
-  stiffnessDamping_->setToolTip("Rayleigh beta: damping proportional to the stiffness, s");
+  poisson_->setStepType(QAbstractSpinBox::DefaultStepType);
+  density_ = numberBox("density", kLeastPositive, kLargest, material.density, "density, kg/m^3");
+  massDamping_ = numberBox("massDamping", 0, kLargest, material.massDamping,
+                           "Rayleigh alpha: damping proportional to the mass, 1/s");
+  stiffnessDamping_ = numberBox("stiffnessDamping", 0, kLargest, material.stiffnessDamping,
+                                "Rayleigh beta: damping proportional to the stiffness, s");
   form->addRow("Solver", solver_);
   form->addRow("Tangent", tangent_);
   form->addRow("Tolerance", tolerance_);

@@ -10,25 +10,13 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <cmath>
 
+#include "ScientificSpinBox.h"
 #include "tetskin/io/LoadCurveFile.h"
 #include "tetskin/io/NodeList.h"
 
 namespace tetskin::gui {
-namespace {
-
-QDoubleSpinBox* numberBox(const char* name, double min, double max, int decimals, double value,
-                          const char* tip) {
-  auto* box = new QDoubleSpinBox;
-  box->setObjectName(name);
-  box->setRange(min, max);
-  box->setDecimals(decimals);
-  box->setValue(value);
-  box->setToolTip(tip);
-  return box;
-}
-
-}  // namespace
 
 ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
     : QObject(form), form_(form), scenarioRow_(form->rowCount()) {
@@ -37,22 +25,26 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
   scenario_->setCurrentText("wobble");
   const ScenarioParameters defaults;
-  baseShare_ = numberBox("baseShare", 0, 0.95, 2, defaults.baseShare,
+  baseShare_ = numberBox("baseShare", 0, std::nextafter(1.0, 0.0), defaults.baseShare,
                          "the lowest share of the height held still (0: none)");
   baseShare_->setSingleStep(0.05);
-  push_ = numberBox("push", -1e4, 1e4, 2, defaults.pushAcceleration,
+  baseShare_->setStepType(QAbstractSpinBox::DefaultStepType);
+  push_ = numberBox("push", -kLargest, kLargest, defaults.pushAcceleration,
                     "peak sideways acceleration of the push on the upper part");
-  pushFrequency_ =
-      numberBox("pushFrequency", 0.01, 100, 2, defaults.pushFrequency, "push frequency");
-  dropHeight_ = numberBox("dropHeight", 0, 10, 2, defaults.dropHeight,
+  pushFrequency_ = numberBox("pushFrequency", kLeastPositive, kLargest, defaults.pushFrequency,
+                             "push frequency");
+  dropHeight_ = numberBox("dropHeight", 0, kLargest, defaults.dropHeight,
                           "start this share of the body's height above the floor");
   dropHeight_->setSingleStep(0.1);
-  twistDegrees_ = numberBox("twistDegrees", -3600, 3600, 1, defaults.twistDegrees,
+  dropHeight_->setStepType(QAbstractSpinBox::DefaultStepType);
+  twistDegrees_ = numberBox("twistDegrees", -kLargest, kLargest, defaults.twistDegrees,
                             "final angle of the top about the vertical axis");
   twistDegrees_->setSingleStep(15);
-  twistSeconds_ =
-      numberBox("twistSeconds", 0.01, 100, 2, defaults.twistSeconds, "seconds to reach it");
+  twistDegrees_->setStepType(QAbstractSpinBox::DefaultStepType);
+  twistSeconds_ = numberBox("twistSeconds", kLeastPositive, kLargest, defaults.twistSeconds,
+                            "seconds to reach it");
   twistSeconds_->setSingleStep(0.1);
+  twistSeconds_->setStepType(QAbstractSpinBox::DefaultStepType);
 
   // A file's name, typed or chosen with "...".
   auto fileRow = [this, interactive](QLineEdit*& edit, const char* name, const char* title,
@@ -87,21 +79,22 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
               "repeated after it, with a last line 'repeat')");
 
   loadSeconds_ =
-      numberBox("loadSeconds", 0, 1e4, 2, 0, "the loads act for this many seconds, then let go");
+      numberBox("loadSeconds", 0, kLargest, 0, "the loads act for this many seconds, then let go");
   loadSeconds_->setSpecialValueText("whole run");  // (at 0)
 
   const SimulationOptions plain;
   auto* gravityRow = new QHBoxLayout;
   const char* gravityNames[3] = {"gravityX", "gravityY", "gravityZ"};
   for (int i = 0; i < 3; ++i) {
-    gravity_[i] = numberBox(gravityNames[i], -1000, 1000, 2, plain.gravity[i], "gravity, m/s^2");
+    gravity_[i] =
+        numberBox(gravityNames[i], -kLargest, kLargest, plain.gravity[i], "gravity, m/s^2");
     gravityRow->addWidget(gravity_[i]);
   }
   floor_ = new QCheckBox("at y =");
   floor_->setObjectName("floor");
   floor_->setToolTip(
       "a floor plane with contact (drop always has one: at the body's lowest point unless set)");
-  floorHeight_ = numberBox("floorHeight", -1e6, 1e6, 4, 0, "height of the floor plane");
+  floorHeight_ = numberBox("floorHeight", -kLargest, kLargest, 0, "height of the floor plane");
   floorHeight_->setEnabled(false);
   connect(floor_, &QCheckBox::toggled, floorHeight_, &QWidget::setEnabled);
   auto* floorRow = new QHBoxLayout;

@@ -326,7 +326,7 @@ TEST_F(Gui, ABlownUpStepPausesTheSimulationWithItsMessage) {
   const Points3 rest = window_->runner()->state().positions;
   child<QPushButton>("step")->click();
   EXPECT_TRUE(window_->lastError().startsWith(
-      "the simulation paused: the simulation diverged in step 1 (t = 0.0167 s): node "))
+      "the simulation paused: the simulation diverged in step 1 (t = 0.0166667 s): node "))
       << window_->lastError().toStdString();
   EXPECT_EQ(window_->runner()->steps(), 0);
   EXPECT_EQ(window_->runner()->state().positions, rest);
@@ -399,6 +399,43 @@ TEST_F(Gui, SimulationTakesTheDatasetsMaterial) {
   EXPECT_EQ(child<QDoubleSpinBox>("young")->value(), 2e5);
   EXPECT_EQ(material().density, 100.0);
   EXPECT_EQ(material().massDamping, ElasticMaterial{}.massDamping);
+}
+
+// The dock's numbers keep the values they are given and read what the user
+// types in any notation. With QDoubleSpinBox's fixed decimals the default
+// time step ran as 0.0167 s (simulate's is 1/60 s), and a stiffness damping
+// of 1e-7 s as 0; the boxes also cut values off at ranges narrower than the
+// simulation's (a Young's modulus of 5e13 Pa at 1e13).
+TEST_F(Gui, NumberBoxesKeepTheirValuesAndReadAnyNotation) {
+  openSample();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_EQ(window_->runner()->simulation().options().timeStep, SimulationOptions{}.timeStep);
+  auto type = [&](const char* name, const char* text) {
+    auto* box = child<QDoubleSpinBox>(name);
+    box->selectAll();
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+    return box->value();
+  };
+  EXPECT_EQ(type("timeStep", "2.5e-5"), 2.5e-5);
+  EXPECT_EQ(type("young", "5E13"), 5e13);
+  EXPECT_EQ(type("poisson", "0.49995"), 0.49995);
+  EXPECT_EQ(type("stiffnessDamping", "1e-7"), 1e-7);
+  EXPECT_EQ(type("density", "x"), ElasticMaterial{}.density);  // refused: unchanged
+  EXPECT_EQ(type("poisson", "0.5"), 0.49995);                  // out of (-1, 0.5): unchanged
+  // A value shown rounded (0.333333) stays exact when its text is read back.
+  auto* push = child<QDoubleSpinBox>("push");
+  push->setValue(1.0 / 3);
+  EXPECT_EQ(push->text(), "0.333333");
+  push->interpretText();
+  EXPECT_EQ(push->value(), 1.0 / 3);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const SimulationOptions& options = window_->runner()->simulation().options();
+  EXPECT_EQ(options.timeStep, 2.5e-5);
+  EXPECT_EQ(options.material.youngsModulus, 5e13);
+  EXPECT_EQ(options.material.poissonRatio, 0.49995);
+  EXPECT_EQ(options.material.stiffnessDamping, 1e-7);
 }
 
 // The dock's solver, tangent and tolerance reach the simulation on Reset.
@@ -484,11 +521,11 @@ TEST_F(Gui, SimulationDockOffersAndAppliesTheScenarioParameters) {
   const double top = dropped.restMesh().nodes.col(1).maxCoeff();
   child<QComboBox>("scenario")->setCurrentText("sag");
   child<QCheckBox>("floor")->setChecked(true);
-  EXPECT_NEAR(child<QDoubleSpinBox>("floorHeight")->value(), bottom, 1e-4);  // offered
+  EXPECT_EQ(child<QDoubleSpinBox>("floorHeight")->value(), bottom);  // offered
   child<QDoubleSpinBox>("floorHeight")->setValue((bottom + top) / 2);
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
-  EXPECT_NEAR(*window_->runner()->simulation().options().floorHeight, (bottom + top) / 2, 1e-4);
+  EXPECT_EQ(*window_->runner()->simulation().options().floorHeight, (bottom + top) / 2);
   EXPECT_TRUE(window_->statusBar()->currentMessage().contains("nodes start below the floor"))
       << window_->statusBar()->currentMessage().toStdString();
   // Loads from a file act in every step.
