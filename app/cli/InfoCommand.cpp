@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "Commands.h"
 #include "tetskin/binding/BindingSummary.h"
@@ -42,28 +43,36 @@ void printBox(const BoundingBox& box) {
 // its parts, the cavities among them and the volume, wound as build's repair
 // winds them (SurfaceNesting.h); or what keeps it open. Build's first
 // repairs are made first, as build makes them: duplicate vertices welded (a
-// triangle soup, as STL-like OBJ files are, has only open edges before) and
-// T-junctions split.
+// triangle soup, as STL-like OBJ files are, has only open edges before),
+// degenerate and duplicate triangles removed, and T-junctions split.
 void printClosure(const SurfaceMesh& input) {
   if (input.triangleCount() == 0) return;
   SurfaceMesh mesh = input;
+  RepairReport report;
   const RepairTolerances tolerance = repairTolerances({}, boundingBox(mesh).diagonal());
-  const Index welded = weldVertices(mesh, tolerance.weld);
-  if (welded > 0) {
-    removeDegenerateTriangles(mesh, tolerance.area);
-    removeDuplicateTriangles(mesh);
-  }
-  const Index tJunctions = splitTJunctions(mesh, tolerance.tJunction);  // (0 on a closed one)
-  // "build welds 8 duplicate vertices and splits 26 T-junctions"
-  std::string repaired;
+  weldAndClean(mesh, tolerance, report);
+  report.tJunctionsSplit = splitTJunctions(mesh, tolerance.tJunction);  // (0 on a closed one)
+  // "build welds 8 duplicate vertices, removes 1 degenerate triangle and
+  // splits 26 T-junctions"
+  std::vector<std::string> repairs;
   auto count = [](Index n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
   };
-  if (welded > 0) repaired = "welds " + count(welded, "duplicate vertex", "duplicate vertices");
-  if (tJunctions > 0)
-    repaired += (repaired.empty() ? "" : " and ") +
-                ("splits " + count(tJunctions, "T-junction", "T-junctions"));
-  if (!repaired.empty()) repaired = "build " + repaired;
+  if (report.weldedVertices > 0)
+    repairs.push_back("welds " +
+                      count(report.weldedVertices, "duplicate vertex", "duplicate vertices"));
+  const Index degenerate = report.degenerateTriangles, duplicate = report.duplicateTriangles;
+  if (degenerate > 0 || duplicate > 0)
+    repairs.push_back(
+        "removes " +
+        (degenerate > 0 ? count(degenerate, "degenerate triangle", "degenerate triangles") : "") +
+        (degenerate > 0 && duplicate > 0 ? " and " : "") +
+        (duplicate > 0 ? count(duplicate, "duplicate triangle", "duplicate triangles") : ""));
+  if (report.tJunctionsSplit > 0)
+    repairs.push_back("splits " + count(report.tJunctionsSplit, "T-junction", "T-junctions"));
+  std::string repaired;
+  for (std::size_t i = 0; i < repairs.size(); ++i)
+    repaired += (i == 0 ? "build " : i + 1 == repairs.size() ? " and " : ", ") + repairs[i];
   if (const auto holes = boundaryLoops(mesh).size(); holes > 0) {
     std::printf("  closed     no: %zu chain%s of open edges", holes, holes == 1 ? "" : "s");
     if (!repaired.empty()) std::printf(" once %s", repaired.c_str());

@@ -468,6 +468,12 @@ RepairTolerances repairTolerances(const RepairOptions& options, double diagonal)
           options.tJunctionTolerance * diagonal};
 }
 
+void weldAndClean(SurfaceMesh& mesh, const RepairTolerances& tolerance, RepairReport& report) {
+  report.weldedVertices += weldVertices(mesh, tolerance.weld);
+  report.degenerateTriangles += removeDegenerateTriangles(mesh, tolerance.area);
+  report.duplicateTriangles += removeDuplicateTriangles(mesh);
+}
+
 RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
                            const RepairOptions& options) {
   validateSurface(mesh, name);
@@ -481,13 +487,7 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
   if (!(diagonal > 0)) throw Error(name, 0, "the surface has zero extent");
   const RepairTolerances tolerance = repairTolerances(options, diagonal);
 
-  // Weld, then clean what welding degenerated; shared by the intersection loop.
-  auto clean = [&] {
-    report.weldedVertices += weldVertices(mesh, tolerance.weld);
-    report.degenerateTriangles += removeDegenerateTriangles(mesh, tolerance.area);
-    report.duplicateTriangles += removeDuplicateTriangles(mesh);
-  };
-  clean();
+  weldAndClean(mesh, tolerance, report);
   report.tJunctionsSplit = splitTJunctions(mesh, tolerance.tJunction);
   report.holes = static_cast<Index>(boundaryLoops(mesh).size());
   report.openTrianglesRemoved = removeOpenTriangles(mesh);
@@ -514,7 +514,7 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
                       " and " + std::to_string(pairs[0].second) + ")");
     report.collapsedTriangles += collapseIntersections(mesh, pairs);
     report.intersectionRounds = round + 1;
-    clean();
+    weldAndClean(mesh, tolerance, report);
     report.openTrianglesRemoved += removeOpenTriangles(mesh);
     if (mesh.triangleCount() == 0)
       throw Error(name, 0, "cannot be repaired: collapsing intersections left nothing");

@@ -123,6 +123,11 @@ constexpr double kCollapseVolumeTolerance = 0.01;
 // kCollapseVolumeTolerance; empty otherwise.
 std::string collapseWarning(const RepairReport& report, const std::string& name);
 
+// Welds duplicate vertices, then removes the degenerate and duplicate
+// triangles (welding makes some), adding to the report's counts: the first
+// of repairSurface's steps, repeated after each collapse of intersections.
+void weldAndClean(SurfaceMesh& mesh, const RepairTolerances& tolerance, RepairReport& report);
+
 // All steps in order: weld, degenerate, duplicates, T-junctions, open
 // triangles, self-intersections (collapse and retry), orientation, unused
 // vertices.
