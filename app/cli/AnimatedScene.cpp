@@ -77,23 +77,33 @@ int AnimatedScene::furShells() const {
   return surface_->fur() ? surface_->fur()->shellsDrawn() : 0;
 }
 
+FrameTimes AnimatedScene::follow(const Points3& positions) {
+  const LevelRange& range = dataset_.mesh.levels[static_cast<std::size_t>(level_)];
+  nodes_.middleRows(range.firstNode, range.nodeCount) = positions;
+  const FrameTimes times = surface_->update(nodes_);
+  if (control_) control_->update(positions);
+  return times;
+}
+
+void AnimatedScene::draw(const Points3& positions, double seconds) {
+  if (seconds > 0) surface_->setFrameSeconds(seconds);
+  follow(positions);
+  view_->render();
+}
+
 FrameStats AnimatedScene::run(int frames) {
   FrameStats s;
   s.frames = frames;
   if (frames > 0 && !simulation_) startSimulation();
-  const LevelRange& range = dataset_.mesh.levels[static_cast<std::size_t>(level_)];
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
     scenario_->beforeStep(*simulation_, simulation_->time());
     simulation_->step();
-    const Points3 positions = simulation_->state().positions;
-    nodes_.middleRows(range.firstNode, range.nodeCount) = positions;
     s.simulation += since(t);
-    const FrameTimes times = surface_->update(nodes_);
+    const FrameTimes times = follow(simulation_->state().positions);
     s.deformation += times.deformSeconds;
     s.upload += times.uploadSeconds;
-    if (control_) control_->update(positions);
     t = std::chrono::steady_clock::now();
     view_->render();
     s.draw += since(t);

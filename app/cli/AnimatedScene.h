@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The animated scene of `tetskin render --frames` and `tetskin bench`: a
-// simulated control level, a bound surface drawn by one render path, an
-// offscreen view; run(N) times N frames stage by stage.
+// The animated scene of `tetskin render --frames`, `render --run` and
+// `tetskin bench`: a simulated or recorded control level, a bound surface
+// drawn by one render path, an offscreen view; run(N) times N simulated
+// frames stage by stage, draw() shows a recorded state.
 
 #include <filesystem>
 #include <memory>
@@ -51,6 +52,9 @@ class AnimatedScene {
   // simulation is set up on the first frames run: a still image needs none
   // (nor a level the simulation would refuse).
   FrameStats run(int frames);
+  // Draws the control level at `positions` (a recorded frame's state),
+  // `seconds` after the state drawn before it (for the fur's drag).
+  void draw(const Points3& positions, double seconds);
   OffscreenView& view() { return *view_; }
   int level() const { return level_; }
   Index elementCount() const;
@@ -71,6 +75,8 @@ class AnimatedScene {
   Points3 nodes_;
 
   void startSimulation();
+  // The surface and control mesh follow the level's nodes at `positions`.
+  FrameTimes follow(const Points3& positions);
 };
 
 }  // namespace tetskin::cli

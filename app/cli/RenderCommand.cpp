@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "AnimatedScene.h"
 #include "Commands.h"
@@ -13,7 +15,10 @@
 #include "ScenarioOptions.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
 namespace tetskin::cli {
@@ -23,7 +28,7 @@ namespace {
 constexpr const char* kFurGroup = "Fur (fur paths; default: the dataset config's fur section)";
 
 struct RenderArgs {
-  std::filesystem::path dataset, surface, output, texture;
+  std::filesystem::path dataset, surface, output, texture, run;
   std::string path = "cpu", camera = "iso", control = "none", size = "800x600";
   ScenarioArgs scenario;
   int level = -1, frames = 0;
@@ -58,6 +63,84 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   return f;
 }
 
+// The control frames (part 0) of the recorded run `pvd`, in time order,
+// each file checked to be there before anything is drawn.
+std::vector<PvdSeries::Entry> controlFrames(const std::filesystem::path& pvd) {
+  const PvdSeries series = PvdSeries::read(pvd);
+  std::vector<PvdSeries::Entry> frames;
+  for (const PvdSeries::Entry& entry : series.entries())
+    if (entry.part == 0) frames.push_back(entry);
+  if (frames.empty()) throw Error(pvd.string(), 0, "has no control-mesh frames (part 0)");
+  std::stable_sort(frames.begin(), frames.end(),
+                   [](const auto& x, const auto& y) { return x.time < y.time; });
+  for (PvdSeries::Entry& frame : frames) {
+    const std::filesystem::path file = pvd.parent_path() / frame.file;
+    if (!std::filesystem::exists(file))
+      throw Error(pvd.string(), 0, "names the frame " + frame.file + ", which is not there");
+    frame.file = file.string();
+  }
+  return frames;
+}
+
+// The level a run's frames are of (their Level array; where the first frame
+// has none, --level's), which --level and a binding must not contradict.
+int runLevel(const std::string& firstFrame, const SurfaceInput& input, const Dataset& dataset,
+             int levelOption, bool levelGiven) {
+  const std::optional<int> recorded = simulationFrameLevel(firstFrame);
+  if (!recorded) return commandLevel(input, dataset.mesh, levelOption, levelGiven);
+  const int level = *recorded;
+  if (level < 0 || level >= static_cast<int>(dataset.mesh.levels.size()))
+    throw Error(firstFrame, 0,
+                "is a frame of level " + std::to_string(level) + "; the dataset has " +
+                    std::to_string(dataset.mesh.levels.size()) + " level(s)");
+  if (levelGiven && resolveLevel(dataset.mesh, levelOption) != level)
+    throw Error("--level " + std::to_string(levelOption) + ": the run's frames are of level " +
+                std::to_string(level) + "; leave --level out");
+  if (input.binding && input.binding->level != level)
+    throw Error(input.path.string(), 0,
+                "is bound to level " + std::to_string(input.binding->level) +
+                    ", the run's frames are of level " + std::to_string(level) +
+                    ": bind the surface to level " + std::to_string(level) +
+                    " or give the plain surface");
+  return level;
+}
+
+// OUT.png -> OUT_00007.png: the image of the run's frame `index`.
+std::filesystem::path frameImage(const std::filesystem::path& output, std::size_t index) {
+  char number[16];
+  std::snprintf(number, sizeof number, "_%05zu", index);
+  std::filesystem::path image = output;
+  image.replace_filename(output.stem().string() + number + output.extension().string());
+  return image;
+}
+
+// Draws every control frame of a recorded run to its own image; a frame
+// that cannot be drawn removes the images drawn before it, and the folders
+// made for them.
+void drawRun(AnimatedScene& scene, const std::vector<PvdSeries::Entry>& frames,
+             const std::filesystem::path& output, const std::string& restName,
+             const TetMesh& rest) {
+  requireWritableLocation(frameImage(output, 0));
+  std::filesystem::path madeFolder;  // the outermost folder the images will make
+  for (std::filesystem::path folder = std::filesystem::absolute(output).parent_path();
+       !folder.empty() && !std::filesystem::exists(folder) && folder != folder.parent_path();
+       folder = folder.parent_path())
+    madeFolder = folder;
+  std::vector<std::filesystem::path> written;
+  try {
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const FrameState state = readSimulationFrame(frames[i].file, rest, restName);
+      scene.draw(state.positions, i > 0 ? frames[i].time - frames[i - 1].time : 0);
+      written.push_back(frameImage(output, i));
+      scene.view().writePng(written.back());
+    }
+  } catch (...) {
+    for (const std::filesystem::path& image : written) std::filesystem::remove(image);
+    if (!madeFolder.empty()) std::filesystem::remove_all(madeFolder);
+    throw;
+  }
+}
+
 void run(const RenderArgs& a, const CLI::App& cmd) {
   SceneOptions o;
   const ImageSize size = checkedImageSize(a.size);
@@ -73,8 +156,11 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   parseControlMeshStyle(o.control);  // reject typos before any work
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
+  if (!a.run.empty() && a.frames > 0)
+    throw Error("--frames: simulates a new run; --run draws the recorded one: give one of them");
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
-    throw Error(*option + ": applies to simulated frames; give --frames N");
+    throw Error(*option + ": applies to simulated frames; give --frames N" +
+                (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
   const Dataset dataset = loadDataset(a.dataset);
   o.fur = furParameters(a, dataset.config);
   o.up = upAxisOf(a.scenario, dataset.config);
@@ -87,14 +173,29 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     surfacePath = dataset.config.resolve(*dataset.config.surface);
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
+  const std::vector<PvdSeries::Entry> frames =
+      a.run.empty() ? std::vector<PvdSeries::Entry>{} : controlFrames(a.run);
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
   const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
-  const int level = commandLevel(input, dataset.mesh, a.level, cmd.count("--level") > 0);
+  const bool levelGiven = cmd.count("--level") > 0;
+  const int level = frames.empty()
+                        ? commandLevel(input, dataset.mesh, a.level, levelGiven)
+                        : runLevel(frames.front().file, input, dataset, a.level, levelGiven);
   o.level = level;
   const SurfaceMesh& surface = input.surface;
   o.scenario.parameters = scenarioParameters(
       cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
   AnimatedScene scene(dataset, input, o);
+  if (!frames.empty()) {
+    drawRun(scene, frames, a.output, "level " + std::to_string(level) + " of " + a.dataset.string(),
+            extractLevel(dataset.mesh, level));
+    std::printf("drew %zu frames of %s (t %g .. %g s), path %s, level %d, %dx%d\n", frames.size(),
+                a.run.c_str(), frames.front().time, frames.back().time, toString(o.path), level,
+                o.width, o.height);
+    std::printf("  renderer: %s\nwrote %s .. %s\n", scene.view().glRenderer().c_str(),
+                frameImage(a.output, 0).c_str(), frameImage(a.output, frames.size() - 1).c_str());
+    return;
+  }
   const FrameStats s = scene.run(a.frames);
   scene.view().writePng(a.output);
   if (a.frames > 0) {
@@ -173,6 +274,11 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--frames", a->frames,
                   "simulate and draw N frames, report frames/s and a breakdown")
       ->check(wholeNumber(0));
+  cmd->add_option("--run", a->run,
+                  "draw a recorded run (.pvd from simulate or the GUI's Record): each control "
+                  "frame to its own image, OUT_00000.png, OUT_00001.png, ... on the frames' level")
+      ->check(CLI::ExistingFile)
+      ->check(fileEnding(".pvd"));
   addScenarioOptions(*cmd, a->scenario);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }

@@ -94,4 +94,12 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
   return state;
 }
 
+std::optional<int> simulationFrameLevel(const std::filesystem::path& path) {
+  vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
+  vtkDataArray* levels = grid->GetCellData()->GetArray("Level");
+  if (!levels || levels->GetNumberOfTuples() == 0 || levels->GetNumberOfComponents() != 1)
+    return std::nullopt;
+  return static_cast<int>(levels->GetTuple1(0));
+}
+
 }  // namespace tetskin

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "tetskin/core/TetMesh.h"
@@ -39,5 +40,9 @@ struct FrameState {
 // missing, or a value not finite.
 FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh& rest,
                                const std::string& restName);
+
+// The dataset level the frame file `path` is of, from its Level cell
+// array; nullopt where it has none (a mesh written by another tool).
+std::optional<int> simulationFrameLevel(const std::filesystem::path& path);
 
 }  // namespace tetskin
