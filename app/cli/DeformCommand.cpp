@@ -5,15 +5,21 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "Commands.h"
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RunRecorder.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -28,13 +34,51 @@ Points3 readPositions(const std::filesystem::path& path) {
   const std::string extension = lowerExtension(path);
   if (extension == ".node") return readNode(path).points;
   if (extension == ".vtu") return fromVtkUnstructuredGrid(readVtu(path), path.string()).nodes;
-  throw Error(path.string(), 0, "positions must be a .node file or a .vtu with deformed points");
+  throw Error(path.string(), 0,
+              "positions must be a .node file, a .vtu with deformed points or a recorded run "
+              "(.pvd)");
+}
+
+// `--positions RUN.pvd`: each control frame of a recorded run applied to the
+// binding, written as the series OUT.pvd of the deformed surface (part 1,
+// as simulate --surface writes it). Every frame is read once before any is
+// written, so a frame of another body or level leaves no output.
+void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) {
+  if (lowerExtension(a.output) != ".pvd")
+    throw Error("-o " + a.output.string() +
+                ": the surface of a recorded run (--positions RUN.pvd) is a series: name a .pvd");
+  const std::vector<PvdSeries::Entry> frames = PvdSeries::read(a.positions).framesOfPart(0);
+  const int level = bound.binding.level;
+  const TetMesh rest = extractLevel(dataset.mesh, level);
+  const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string() +
+                               " (the level " + a.binding.string() + " is bound to)";
+  for (const PvdSeries::Entry& frame : frames) readSimulationFrame(frame.file, rest, restName);
+  requireWritableLocation(a.output);
+  SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
+  bound.dataset = a.dataset.generic_string();
+  RunRecorder series(a.output);
+  Points3 positions, normals;
+  for (const PvdSeries::Entry& frame : frames) {
+    const FrameState state = readSimulationFrame(frame.file, rest, restName);
+    deformer.deform(datasetPositions(dataset.mesh, level, state.positions, frame.file), positions,
+                    normals);
+    bound.deformed = DeformedState{positions, normals};
+    series.addSurfaceFrame(frame.time, bound);
+  }
+  std::printf("wrote %s (%zu frames of %lld vertices deformed by %s, t %g .. %g s)\n",
+              a.output.c_str(), frames.size(), static_cast<long long>(positions.rows()),
+              a.positions.c_str(), frames.front().time, frames.back().time);
 }
 
 void run(const DeformArgs& a) {
   requireNotAnInput(a.output, {a.dataset, a.binding, a.positions});
   const Dataset dataset = loadDataset(a.dataset);
   BoundSurface bound = readBinding(a.binding, dataset.mesh);
+  if (lowerExtension(a.positions) == ".pvd") return deformRun(a, dataset, std::move(bound));
+  if (lowerExtension(a.output) != ".vtp")
+    throw Error("-o " + a.output.string() +
+                ": a deformed surface is a .vtp (a .pvd series is "
+                "written for a recorded run, --positions RUN.pvd)");
   const int level = bound.binding.level;
   const Points3 control =
       datasetPositions(dataset.mesh, level, readPositions(a.positions), a.positions.string());
@@ -60,12 +104,13 @@ void addDeformCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--positions", a->positions,
-                  "deformed control nodes: .node (all dataset nodes or the bound level's) or .vtu")
+                  "deformed control nodes: .node (all dataset nodes or the bound level's), .vtu, "
+                  "or a recorded run (.pvd: every control frame, written as a series)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", a->output, "deformed surface (.vtp)")
-      ->required()
-      ->check(fileEnding(".vtp"));
+  cmd->add_option("-o,--output", a->output,
+                  "deformed surface (.vtp); for a recorded run, its series (.pvd)")
+      ->required();
   cmd->callback([a] { run(*a); });
 }
 

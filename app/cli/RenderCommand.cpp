@@ -63,25 +63,6 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   return f;
 }
 
-// The control frames (part 0) of the recorded run `pvd`, in time order,
-// each file checked to be there before anything is drawn.
-std::vector<PvdSeries::Entry> controlFrames(const std::filesystem::path& pvd) {
-  const PvdSeries series = PvdSeries::read(pvd);
-  std::vector<PvdSeries::Entry> frames;
-  for (const PvdSeries::Entry& entry : series.entries())
-    if (entry.part == 0) frames.push_back(entry);
-  if (frames.empty()) throw Error(pvd.string(), 0, "has no control-mesh frames (part 0)");
-  std::stable_sort(frames.begin(), frames.end(),
-                   [](const auto& x, const auto& y) { return x.time < y.time; });
-  for (PvdSeries::Entry& frame : frames) {
-    const std::filesystem::path file = pvd.parent_path() / frame.file;
-    if (!std::filesystem::exists(file))
-      throw Error(pvd.string(), 0, "names the frame " + frame.file + ", which is not there");
-    frame.file = file.string();
-  }
-  return frames;
-}
-
 // The level a run's frames are of (their Level array; where the first frame
 // has none, --level's), which --level and a binding must not contradict.
 int runLevel(const std::string& firstFrame, const SurfaceInput& input, const Dataset& dataset,
@@ -174,7 +155,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
   const std::vector<PvdSeries::Entry> frames =
-      a.run.empty() ? std::vector<PvdSeries::Entry>{} : controlFrames(a.run);
+      a.run.empty() ? std::vector<PvdSeries::Entry>{} : PvdSeries::read(a.run).framesOfPart(0);
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
   const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
   const bool levelGiven = cmd.count("--level") > 0;

@@ -4,6 +4,7 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -67,6 +68,27 @@ PvdSeries PvdSeries::read(const std::filesystem::path& pvdPath) {
     series.add(time, part, name);
   }
   return series;
+}
+
+std::vector<PvdSeries::Entry> PvdSeries::framesOfPart(int part) const {
+  std::vector<Entry> frames;
+  for (const Entry& entry : entries_)
+    if (entry.part == part) frames.push_back(entry);
+  if (frames.empty())
+    throw Error(path_.string(), 0,
+                "has no frames of part " + std::to_string(part) +
+                    (part == 0   ? " (the control mesh)"
+                     : part == 1 ? " (the surface)"
+                                 : ""));
+  std::stable_sort(frames.begin(), frames.end(),
+                   [](const Entry& x, const Entry& y) { return x.time < y.time; });
+  for (Entry& frame : frames) {
+    const std::filesystem::path file = path_.parent_path() / frame.file;
+    if (!std::filesystem::exists(file))
+      throw Error(path_.string(), 0, "names the frame " + frame.file + ", which is not there");
+    frame.file = file.string();
+  }
+  return frames;
 }
 
 void PvdSeries::add(double time, int part, const std::string& file) {

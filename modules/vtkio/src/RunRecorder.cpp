@@ -40,13 +40,22 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& posi
   writeVtu(framesDirectory_ / name,
            simulationFrame(rest, positions, velocities, externalForces, vonMisesStress, level));
   series_.add(time, 0, folder + name);
-  if (deformedSurface) {
-    std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));
-    writeBinding(framesDirectory_ / name, *deformedSurface);
-    series_.add(time, 1, folder + name);
-  }
+  if (deformedSurface) addSurface(time, *deformedSurface);
   series_.write();
   ++frames_;
+}
+
+void RunRecorder::addSurfaceFrame(double time, const BoundSurface& deformedSurface) {
+  addSurface(time, deformedSurface);
+  series_.write();
+  ++frames_;
+}
+
+void RunRecorder::addSurface(double time, const BoundSurface& deformedSurface) {
+  char name[64];
+  std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));
+  writeBinding(framesDirectory_ / name, deformedSurface);
+  series_.add(time, 1, framesDirectory_.filename().string() + "/" + name);
 }
 
 }  // namespace tetskin

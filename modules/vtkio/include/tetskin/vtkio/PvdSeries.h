@@ -30,6 +30,11 @@ class PvdSeries {
   void write() const;
   std::size_t size() const { return entries_.size(); }
   const std::vector<Entry>& entries() const { return entries_; }
+  // The entries of `part` (0: the control mesh) in time order, each file
+  // given from here (the .pvd's directory joined to it) and checked to be
+  // there. Throws Error naming the .pvd when the part has no entries or a
+  // file is missing: for commands that read a whole run before they work.
+  std::vector<Entry> framesOfPart(int part) const;
 
  private:
   std::filesystem::path path_;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A simulation run as a ParaView time series: RUN.pvd plus RUN_frames/ with
-// one control-mesh .vtu (and optionally one bound-surface .vtp) per frame.
+// one control-mesh .vtu (and optionally one bound-surface .vtp) per frame,
+// or the bound surface's frames alone.
 // The .pvd is rewritten after every frame, so a run stopped at any point
 // leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
 
@@ -27,11 +28,17 @@ class RunRecorder {
                 const Points3& velocities, const Points3& externalForces,
                 const Eigen::VectorXd& vonMisesStress, int level,
                 const BoundSurface* deformedSurface = nullptr);
+  // A frame of the bound surface alone (part 1, as beside a control frame):
+  // `tetskin deform` of a recorded run.
+  void addSurfaceFrame(double time, const BoundSurface& deformedSurface);
 
  private:
   std::filesystem::path framesDirectory_;  // absolute
   PvdSeries series_;
   Index frames_ = 0;
+
+  // Writes this frame's surface file and adds it to the series (unwritten).
+  void addSurface(double time, const BoundSurface& deformedSurface);
 };
 
 }  // namespace tetskin
