@@ -17,9 +17,8 @@
 #include "tetskin/io/FileNames.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
-#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
-#include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -47,27 +46,28 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
   if (lowerExtension(a.output) != ".pvd")
     throw Error("-o " + a.output.string() +
                 ": the surface of a recorded run (--positions RUN.pvd) is a series: name a .pvd");
-  const std::vector<PvdSeries::Entry> frames = PvdSeries::read(a.positions).framesOfPart(0);
+  const RecordedRun recorded(a.positions);
   const int level = bound.binding.level;
   const TetMesh rest = extractLevel(dataset.mesh, level);
   const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string() +
                                " (the level " + a.binding.string() + " is bound to)";
-  for (const PvdSeries::Entry& frame : frames) readSimulationFrame(frame.file, rest, restName);
+  const std::size_t frames = recorded.frameCount();
+  for (std::size_t i = 0; i < frames; ++i) recorded.read(i, rest, restName);
   requireWritableLocation(a.output);
   SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
   bound.dataset = a.dataset.generic_string();
   RunRecorder series(a.output);
   Points3 positions, normals;
-  for (const PvdSeries::Entry& frame : frames) {
-    const FrameState state = readSimulationFrame(frame.file, rest, restName);
-    deformer.deform(datasetPositions(dataset.mesh, level, state.positions, frame.file), positions,
-                    normals);
+  for (std::size_t i = 0; i < frames; ++i) {
+    const FrameState state = recorded.read(i, rest, restName);
+    deformer.deform(datasetPositions(dataset.mesh, level, state.positions, recorded.file(i)),
+                    positions, normals);
     bound.deformed = DeformedState{positions, normals};
-    series.addSurfaceFrame(frame.time, bound);
+    series.addSurfaceFrame(recorded.time(i), bound);
   }
   std::printf("wrote %s (%zu frames of %lld vertices deformed by %s, t %g .. %g s)\n",
-              a.output.c_str(), frames.size(), static_cast<long long>(positions.rows()),
-              a.positions.c_str(), frames.front().time, frames.back().time);
+              a.output.c_str(), frames, static_cast<long long>(positions.rows()),
+              a.positions.c_str(), recorded.time(0), recorded.time(frames - 1));
 }
 
 void run(const DeformArgs& a) {

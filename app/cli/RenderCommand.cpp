@@ -17,8 +17,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
-#include "tetskin/vtkio/PvdSeries.h"
-#include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
 namespace tetskin::cli {
@@ -65,13 +64,12 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
 
 // The level a run's frames are of (their Level array; where the first frame
 // has none, --level's), which --level and a binding must not contradict.
-int runLevel(const std::string& firstFrame, const SurfaceInput& input, const Dataset& dataset,
+int runLevel(const RecordedRun& recorded, const SurfaceInput& input, const Dataset& dataset,
              int levelOption, bool levelGiven) {
-  const std::optional<int> recorded = simulationFrameLevel(firstFrame);
-  if (!recorded) return commandLevel(input, dataset.mesh, levelOption, levelGiven);
-  const int level = *recorded;
+  if (!recorded.level()) return commandLevel(input, dataset.mesh, levelOption, levelGiven);
+  const int level = *recorded.level();
   if (level < 0 || level >= static_cast<int>(dataset.mesh.levels.size()))
-    throw Error(firstFrame, 0,
+    throw Error(recorded.file(0), 0,
                 "is a frame of level " + std::to_string(level) + "; the dataset has " +
                     std::to_string(dataset.mesh.levels.size()) + " level(s)");
   if (levelGiven && resolveLevel(dataset.mesh, levelOption) != level)
@@ -98,9 +96,8 @@ std::filesystem::path frameImage(const std::filesystem::path& output, std::size_
 // Draws every control frame of a recorded run to its own image; a frame
 // that cannot be drawn removes the images drawn before it, and the folders
 // made for them.
-void drawRun(AnimatedScene& scene, const std::vector<PvdSeries::Entry>& frames,
-             const std::filesystem::path& output, const std::string& restName,
-             const TetMesh& rest) {
+void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
+             const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(frameImage(output, 0));
   std::filesystem::path madeFolder;  // the outermost folder the images will make
   for (std::filesystem::path folder = std::filesystem::absolute(output).parent_path();
@@ -109,9 +106,9 @@ void drawRun(AnimatedScene& scene, const std::vector<PvdSeries::Entry>& frames,
     madeFolder = folder;
   std::vector<std::filesystem::path> written;
   try {
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      const FrameState state = readSimulationFrame(frames[i].file, rest, restName);
-      scene.draw(state.positions, i > 0 ? frames[i].time - frames[i - 1].time : 0);
+    for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
+      const FrameState state = recorded.read(i, rest, restName);
+      scene.draw(state.positions, i > 0 ? recorded.time(i) - recorded.time(i - 1) : 0);
       written.push_back(frameImage(output, i));
       scene.view().writePng(written.back());
     }
@@ -154,27 +151,28 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     surfacePath = dataset.config.resolve(*dataset.config.surface);
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
-  const std::vector<PvdSeries::Entry> frames =
-      a.run.empty() ? std::vector<PvdSeries::Entry>{} : PvdSeries::read(a.run).framesOfPart(0);
+  const std::optional<RecordedRun> recorded =
+      a.run.empty() ? std::nullopt : std::optional<RecordedRun>(a.run);
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
   const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
   const bool levelGiven = cmd.count("--level") > 0;
-  const int level = frames.empty()
-                        ? commandLevel(input, dataset.mesh, a.level, levelGiven)
-                        : runLevel(frames.front().file, input, dataset, a.level, levelGiven);
+  const int level = recorded ? runLevel(*recorded, input, dataset, a.level, levelGiven)
+                             : commandLevel(input, dataset.mesh, a.level, levelGiven);
   o.level = level;
   const SurfaceMesh& surface = input.surface;
   o.scenario.parameters = scenarioParameters(
       cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
   AnimatedScene scene(dataset, input, o);
-  if (!frames.empty()) {
-    drawRun(scene, frames, a.output, "level " + std::to_string(level) + " of " + a.dataset.string(),
+  if (recorded) {
+    drawRun(scene, *recorded, a.output,
+            "level " + std::to_string(level) + " of " + a.dataset.string(),
             extractLevel(dataset.mesh, level));
-    std::printf("drew %zu frames of %s (t %g .. %g s), path %s, level %d, %dx%d\n", frames.size(),
-                a.run.c_str(), frames.front().time, frames.back().time, toString(o.path), level,
-                o.width, o.height);
+    const std::size_t frames = recorded->frameCount();
+    std::printf("drew %zu frames of %s (t %g .. %g s), path %s, level %d, %dx%d\n", frames,
+                a.run.c_str(), recorded->time(0), recorded->time(frames - 1), toString(o.path),
+                level, o.width, o.height);
     std::printf("  renderer: %s\nwrote %s .. %s\n", scene.view().glRenderer().c_str(),
-                frameImage(a.output, 0).c_str(), frameImage(a.output, frames.size() - 1).c_str());
+                frameImage(a.output, 0).c_str(), frameImage(a.output, frames - 1).c_str());
     return;
   }
   const FrameStats s = scene.run(a.frames);

@@ -16,6 +16,7 @@
 #include "TestFiles.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -84,6 +85,49 @@ TEST(SimulationFrame, AFrameOfAnotherBodyIsRefusedByName) {
       ->SetComponent(4, 2, std::numeric_limits<double>::quiet_NaN());
   writeVtu(file, grid);
   expectErrorAt(read(f.rest), file, 0, "Velocity of point 4 ");
+}
+
+// A recorded run read back (render --run, deform --positions RUN.pvd, the
+// GUI's replay): its control frames in time order whatever the .pvd's
+// order, the surface's entries left out, the level its frames say; a
+// series without control frames or with a frame file missing is refused,
+// naming the .pvd.
+TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
+  const test::ScratchDir dir;
+  const Frame f;
+  Points3 second = f.positions;
+  second(2, 1) += 0.25;
+  for (const char* name : {"a.vtu", "b.vtu"})
+    writeVtu(dir / name,
+             simulationFrame(f.rest, std::string(name) == "a.vtu" ? f.positions : second,
+                             f.velocities, Points3::Zero(f.rest.nodeCount(), 3),
+                             Eigen::VectorXd::Zero(f.rest.elementCount()), 3));
+  PvdSeries series(dir / "run.pvd");
+  series.add(0.5, 0, "b.vtu");
+  series.add(0.5, 1, "surface.vtp");  // (not read)
+  series.add(0.25, 0, "a.vtu");
+  series.write();
+  const RecordedRun run(dir / "run.pvd");
+  ASSERT_EQ(run.frameCount(), 2u);
+  EXPECT_EQ(run.time(0), 0.25);
+  EXPECT_EQ(run.time(1), 0.5);
+  EXPECT_EQ(run.level(), 3);
+  EXPECT_EQ(run.read(0, f.rest, "the grid").positions, f.positions);
+  EXPECT_EQ(run.read(1, f.rest, "the grid").positions, second);
+
+  const std::string surfaces = (dir / "surfaces.pvd").string();
+  PvdSeries onlySurfaces(surfaces);
+  onlySurfaces.add(0, 1, "surface.vtp");
+  onlySurfaces.write();
+  expectErrorAt([&] { RecordedRun{surfaces}; }, surfaces, 0,
+                "has no frames of part 0 (the control mesh)");
+  const std::string gap = (dir / "gap.pvd").string();
+  PvdSeries withGap(gap);
+  withGap.add(0, 0, "a.vtu");
+  withGap.add(1, 0, "gone/c.vtu");
+  withGap.write();
+  expectErrorAt([&] { RecordedRun{gap}; }, gap, 0,
+                "names the frame gone/c.vtu, which is not there");
 }
 
 // A sag run of 40 steps, and one of 20 steps started again from its 20th

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A run recorded by `tetskin simulate` or the GUI's Record (.pvd), opened
+// to be drawn, deformed or stepped through: its control-mesh frames (part 0;
+// a surface's frames beside them are left out) in time order, each read on
+// demand and checked against the level it is applied to.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
+
+namespace tetskin {
+
+class RecordedRun {
+ public:
+  // Throws Error naming the .pvd when it is no series, has no control-mesh
+  // frames or names a frame file that is not there.
+  explicit RecordedRun(const std::filesystem::path& pvd);
+
+  const std::filesystem::path& path() const { return path_; }
+  std::size_t frameCount() const { return frames_.size(); }
+  double time(std::size_t frame) const { return frames_.at(frame).time; }
+  // The frame's file, as found from the .pvd's folder.
+  const std::string& file(std::size_t frame) const { return frames_.at(frame).file; }
+  // The dataset level the frames are of (the first frame's Level array);
+  // nullopt where it does not say.
+  std::optional<int> level() const { return level_; }
+  // The state of frame `frame` of the mesh `rest` (named `restName` in
+  // messages); throws Error naming the frame's file as readSimulationFrame.
+  FrameState read(std::size_t frame, const TetMesh& rest, const std::string& restName) const;
+
+ private:
+  std::filesystem::path path_;
+  std::vector<PvdSeries::Entry> frames_;
+  std::optional<int> level_;
+};
+
+}  // namespace tetskin
