@@ -34,6 +34,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
+#include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -67,6 +68,11 @@ QComboBox* combo(const char* name, const QStringList& items) {
 // A simulation frame to start from (startFromFrame), not a scene to open.
 bool isFrameFile(const std::filesystem::path& path) {
   return lowerExtension(path) == ".vtu";
+}
+
+// A recorded run to step through (openRun).
+bool isRunFile(const std::filesystem::path& path) {
+  return lowerExtension(path) == ".pvd";
 }
 
 }  // namespace
@@ -257,6 +263,7 @@ QWidget* MainWindow::buildBindingDock() {
     try {
       const auto method = parseBindingMethod(rebindMethod_->currentText().toStdString());
       scene_->rebind(*method, rebindLevel_->value());
+      closeRunIfItNoLongerFits();
       controlLevel_->setValue(scene_->level());
       resetSimulation();
       refreshBindingPanel();
@@ -295,12 +302,47 @@ QWidget* MainWindow::buildSimulationDock() {
   record_->setCheckable(true);
   for (QPushButton* b : {play_, step_, reset_, fromFrame_, record_}) buttons->addWidget(b);
   layout->addLayout(buttons);
+  // A recorded run opened to step through (File > Open of its .pvd).
+  runBox_ = new QGroupBox("Recorded run");
+  runBox_->setObjectName("recordedRun");
+  auto* runLayout = new QVBoxLayout(runBox_);
+  runLabel_ = new QLabel;
+  runLabel_->setObjectName("runLabel");
+  runLabel_->setWordWrap(true);
+  runFrame_ = new QSlider(Qt::Horizontal);
+  runFrame_->setObjectName("runFrame");
+  runFrame_->setToolTip("the recorded frame shown (the simulation pauses)");
+  auto* runButtons = new QHBoxLayout;
+  auto* runContinue = new QPushButton("Continue from here");
+  runContinue->setObjectName("runContinue");
+  runContinue->setToolTip("Reset, then simulate on from the frame shown (as From frame...)");
+  auto* runClose = new QPushButton("Close");
+  runClose->setObjectName("runClose");
+  runButtons->addWidget(runContinue);
+  runButtons->addWidget(runClose);
+  runLayout->addWidget(runLabel_);
+  runLayout->addWidget(runFrame_);
+  runLayout->addLayout(runButtons);
+  runBox_->hide();
+  layout->addWidget(runBox_);
+  connect(runFrame_, &QSlider::valueChanged, this, [this](int frame) { showRunFrame(frame); });
+  connect(runContinue, &QPushButton::clicked, this, [this] {
+    if (run_)
+      startFromFrame(
+          QString::fromStdString(run_->file(static_cast<std::size_t>(runFrame_->value()))));
+  });
+  connect(runClose, &QPushButton::clicked, this, [this] {
+    closeRun();
+    showLatestState();
+  });
   connect(play_, &QPushButton::toggled, this, [this](bool on) {
     if (!runner_) return;
-    if (on)
+    if (on) {
+      replaying_ = false;
       runner_->play();
-    else
+    } else {
       runner_->pause();
+    }
     play_->setText(on ? "Pause" : "Play");
   });
   connect(step_, &QPushButton::clicked, this, [this] {
@@ -375,7 +417,8 @@ void MainWindow::buildMenus() {
       [this] {
         const QStringList files = QFileDialog::getOpenFileNames(
             this, "Open", {},
-            "TetSkin files (*.json *.node *.ele *.obj *.ply *.stl *.vtp *.vtu);;All files (*)");
+            "TetSkin files (*.json *.node *.ele *.obj *.ply *.stl *.vtp *.vtu *.pvd);;All files "
+            "(*)");
         openFiles(files);
       },
       QKeySequence::Open);
@@ -458,9 +501,12 @@ bool MainWindow::openFile(const QString& qpath) {
       scene_->openSurface(path, std::move(read));
     } else if (isFrameFile(path)) {
       return startFromFrame(qpath);  // a state of the open dataset, not a scene to load
+    } else if (isRunFile(path)) {
+      return openRun(qpath);  // states of the open dataset too
     } else {
       throw Error(path.string(), 0,
-                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp .vtu)");
+                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp .vtu "
+                  ".pvd)");
     }
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
@@ -472,6 +518,7 @@ bool MainWindow::openFile(const QString& qpath) {
 
 void MainWindow::afterLoad(const QString& path) {
   lastError_.clear();
+  closeRunIfItNoLongerFits();
   rememberRecent(QFileInfo(path).absoluteFilePath());
   {
     const QSignalBlocker block(upAxis_);
@@ -617,8 +664,88 @@ bool MainWindow::startFromFrame(const QString& qpath) {
   return true;
 }
 
+bool MainWindow::openRun(const QString& qpath) {
+  if (!scene_->hasDataset()) {
+    fail("open the run's dataset before the run (" + qpath + ")");
+    return false;
+  }
+  const std::filesystem::path path = qpath.toStdString();
+  const int level = scene_->level();
+  try {
+    RecordedRun run(path);
+    if (run.level() && *run.level() != level)
+      throw Error(path.string(), 0,
+                  "its frames are of level " + std::to_string(*run.level()) +
+                      "; the simulated level is " + std::to_string(level) +
+                      ": rebind the surface to level " + std::to_string(*run.level()) +
+                      " (Binding dock) first");
+    TetMesh rest = extractLevel(scene_->dataset().mesh, level);
+    std::string restName =
+        "level " + std::to_string(level) + " of " + scene_->datasetPath().filename().string();
+    run.read(0, rest, restName);  // a run of another body is refused now, not at a later frame
+    run_.emplace(std::move(run));
+    runRestName_ = std::move(restName);
+    runRest_ = std::move(rest);
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  runDataset_ = scene_->datasetPath();
+  runLevel_ = level;
+  lastError_.clear();
+  rememberRecent(QFileInfo(qpath).absoluteFilePath());
+  {
+    const QSignalBlocker block(runFrame_);
+    runFrame_->setRange(0, static_cast<int>(run_->frameCount()) - 1);
+    runFrame_->setValue(0);
+  }
+  runBox_->setTitle("Recorded run: " + QFileInfo(qpath).fileName());
+  runBox_->show();
+  if (!showRunFrame(0)) return false;
+  statusBar()->showMessage("opened " + qpath + " (" + QString::number(run_->frameCount()) +
+                           " frames)");
+  return true;
+}
+
+bool MainWindow::showRunFrame(int frame) {
+  if (!run_) return false;
+  const auto index = static_cast<std::size_t>(frame);
+  FrameState state;
+  try {
+    state = run_->read(index, runRest_, runRestName_);
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  if (runner_ && runner_->playing()) {
+    runner_->pause();
+    showPlaying(false);
+  }
+  replaying_ = true;
+  lastTimes_ = scene_->showControlState(state.positions);
+  runLabel_->setText(QString("frame %1 of %2, t = %3 s")
+                         .arg(frame)
+                         .arg(run_->frameCount() - 1)
+                         .arg(run_->time(index)));
+  renderNow();
+  return true;
+}
+
+void MainWindow::closeRunIfItNoLongerFits() {
+  if (run_ && (scene_->datasetPath() != runDataset_ || scene_->level() != runLevel_)) closeRun();
+}
+
+void MainWindow::closeRun() {
+  run_.reset();
+  runRest_ = {};
+  runRestName_.clear();
+  replaying_ = false;
+  runBox_->hide();
+}
+
 void MainWindow::showLatestState() {
   if (!runner_) return;
+  replaying_ = false;
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);
   shownSteps_ = state.steps;
@@ -662,7 +789,7 @@ void MainWindow::reportSimulationProblems() {
 }
 
 void MainWindow::tick() {
-  if (runner_ && runner_->steps() != shownSteps_) showLatestState();
+  if (runner_ && !replaying_ && runner_->steps() != shownSteps_) showLatestState();
   reportSimulationProblems();
   if (std::chrono::steady_clock::now() - overlayStart_ > std::chrono::milliseconds(500))
     refreshOverlay();
@@ -928,11 +1055,11 @@ void MainWindow::dropEvent(QDropEvent* event) {
   for (const QUrl& url : event->mimeData()->urls())
     if (url.isLocalFile()) files << url.toLocalFile();
   // A dataset first, so that surfaces dropped with it bind to it; frames
-  // last, as opening anything else starts the simulation again.
+  // and runs last, as opening anything else starts the simulation again.
   std::stable_sort(files.begin(), files.end(), [](const QString& a, const QString& b) {
     const auto rank = [](const QString& f) {
       const std::filesystem::path path = f.toStdString();
-      return isDatasetFile(path) ? 0 : isFrameFile(path) ? 2 : 1;
+      return isDatasetFile(path) ? 0 : isFrameFile(path) || isRunFile(path) ? 2 : 1;
     };
     return rank(a) < rank(b);
   });

@@ -17,11 +17,14 @@
 #include "ScenarioRows.h"
 #include "Scene.h"
 #include "SimulationRunner.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QGroupBox;
+class QSlider;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -82,6 +85,15 @@ class MainWindow : public QMainWindow {
   // `simulate --initial` does; a frame of another level or body is refused
   // with its file and changes nothing.
   bool startFromFrame(const QString& vtu);
+  // Opens a run recorded of the simulated level (.pvd from Record or
+  // `tetskin simulate`) to step through with the Recorded run slider, at its
+  // first frame; a run of another level or body is refused with its file
+  // and changes nothing. The run stays open while the dataset and the
+  // simulated level do (a surface opened or bound afresh is shown under it).
+  bool openRun(const QString& pvd);
+  // Shows frame `frame` of the open run: the simulation pauses, and Play,
+  // Step or Reset show it again.
+  bool showRunFrame(int frame);
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
   // The FPS and timing overlay (off for reproducible screenshots).
@@ -114,6 +126,9 @@ class MainWindow : public QMainWindow {
   // message is shown (lastError()). Or more of its solves stopped at the
   // iteration limit: a warning in the status bar.
   void reportSimulationProblems();
+  // Closes the open run when the dataset or the simulated level changed.
+  void closeRunIfItNoLongerFits();
+  void closeRun();
 
   bool interactive_;
   bool overlayVisible_ = true;
@@ -148,6 +163,17 @@ class MainWindow : public QMainWindow {
   QComboBox* solver_;
   QComboBox* tolerance_;
   QComboBox* tangent_;
+  // The recorded run being stepped through (openRun), the dataset and level
+  // its frames were checked against, and its row in the Simulation dock.
+  std::optional<RecordedRun> run_;
+  std::filesystem::path runDataset_;
+  int runLevel_ = -1;
+  TetMesh runRest_;
+  std::string runRestName_;  // names runRest_ in messages
+  bool replaying_ = false;   // a run's frame is shown, not the simulation's state
+  QGroupBox* runBox_;
+  QSlider* runFrame_;
+  QLabel* runLabel_;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
   Index shownShortfallSteps_ = 0;  // solveShortfall().steps last reported

@@ -16,11 +16,13 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDropEvent>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
@@ -783,6 +785,58 @@ TEST_F(Gui, StartsFromAFrameAndResetEndsARecording) {
   EXPECT_FALSE(child<QPushButton>("record")->isChecked());
   QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
   EXPECT_EQ(PvdSeries::read(pvd).size(), 4u);  // two frames, control mesh and surface each
+}
+
+// A recorded run opened in the window (File > Open of its .pvd) is stepped
+// through with the Recorded run slider: each frame shows the state the run
+// had (the frames hold it exactly), the live simulation is not drawn over
+// it, and Continue from here simulates on from the frame shown. A run of
+// another level is refused with its file, changing nothing, and a rebind to
+// another level closes an open run.
+TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
+  openSample();
+  const std::filesystem::path pvd = scratch("replay.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  std::vector<Points3> states{window_->runner()->state().positions};
+  for (int i = 0; i < 2; ++i) {
+    QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+    states.push_back(window_->runner()->state().positions);
+  }
+  window_->stopRecording();
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  QTest::mouseClick(child<QPushButton>("play"), Qt::LeftButton);
+  QTest::qWait(100);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  EXPECT_FALSE(window_->runner()->playing());  // paused by the frame shown
+  EXPECT_FALSE(child<QPushButton>("play")->isChecked());
+  EXPECT_FALSE(child<QGroupBox>("recordedRun")->isHidden());
+  auto* slider = child<QSlider>("runFrame");
+  EXPECT_EQ(slider->maximum(), 2);
+  const LevelRange range = window_->scene().dataset().mesh.levels[2];
+  auto shown = [&] {
+    return Points3(window_->scene().controlNodes().middleRows(range.firstNode, range.nodeCount));
+  };
+  QTest::qWait(100);  // the window's timer runs: it does not draw the live state over the frame
+  EXPECT_EQ(shown(), states[0]);
+  slider->setValue(2);
+  EXPECT_EQ(shown(), states[2]);
+  EXPECT_EQ(child<QLabel>("runLabel")->text(), "frame 2 of 2, t = 0.0333333 s");
+  QTest::mouseClick(child<QPushButton>("runContinue"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->state().positions, states[2]);
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_NE(shown(), states[2]);  // the live state again
+
+  child<QSpinBox>("rebindLevel")->setValue(1);
+  QTest::mouseClick(child<QPushButton>("rebind"), Qt::LeftButton);
+  EXPECT_TRUE(child<QGroupBox>("recordedRun")->isHidden());
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(pvd.string())));
+  EXPECT_EQ(window_->lastError().toStdString(),
+            pvd.string() +
+                ": its frames are of level 2; the simulated level is 1: rebind the surface to "
+                "level 2 (Binding dock) first");
+  EXPECT_TRUE(child<QGroupBox>("recordedRun")->isHidden());
 }
 
 // Opening a binding of another level moves the control mesh to that level,
