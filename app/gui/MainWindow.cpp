@@ -1000,7 +1000,10 @@ bool MainWindow::exportFrame(const QString& qpath) {
   const std::filesystem::path path = qpath.toStdString();
   try {
     const std::string ext = lowerExtension(path);
-    if (ext == ".vtu") {
+    if (ext == ".vtu" && replaying_ && run_) {
+      // What is shown: the recorded frame, its arrays as the run wrote them.
+      writeVtu(path, readVtu(run_->file(static_cast<std::size_t>(runFrame_->value()))));
+    } else if (ext == ".vtu") {
       if (!runner_) throw Error("open a dataset first");
       Simulation& sim = runner_->simulation();
       const SimulationState s = runner_->state();

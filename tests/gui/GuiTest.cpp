@@ -822,6 +822,15 @@ TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
   slider->setValue(2);
   EXPECT_EQ(shown(), states[2]);
   EXPECT_EQ(child<QLabel>("runLabel")->text(), "frame 2 of 2, t = 0.0333333 s");
+  // Export writes what is shown: the frame's control mesh and surface.
+  const std::filesystem::path vtu = scratch("replayed.vtu"), vtp = scratch("replayed.vtp");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtu.string())));
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(vtp.string())));
+  EXPECT_EQ(
+      readSimulationFrame(vtu, window_->runner()->simulation().restMesh(), "level 2").positions,
+      states[2]);
+  EXPECT_EQ(readBinding(vtp, window_->scene().dataset().mesh).deformed->positions,
+            window_->scene().deformedPositions());
   QTest::mouseClick(child<QPushButton>("runContinue"), Qt::LeftButton);
   EXPECT_EQ(window_->runner()->state().positions, states[2]);
   EXPECT_EQ(window_->runner()->steps(), 0);
