@@ -43,9 +43,6 @@ Points3 readPositions(const std::filesystem::path& path) {
 // as simulate --surface writes it). Every frame is read once before any is
 // written, so a frame of another body or level leaves no output.
 void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) {
-  if (lowerExtension(a.output) != ".pvd")
-    throw Error("-o " + a.output.string() +
-                ": the surface of a recorded run (--positions RUN.pvd) is a series: name a .pvd");
   const RecordedRun recorded(a.positions);
   const int level = bound.binding.level;
   const TetMesh rest = extractLevel(dataset.mesh, level);
@@ -71,14 +68,19 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
 }
 
 void run(const DeformArgs& a) {
+  // The output's format follows the positions', checked before any work.
+  const bool recordedRun = lowerExtension(a.positions) == ".pvd";
+  if (recordedRun && lowerExtension(a.output) != ".pvd")
+    throw Error("-o " + a.output.string() +
+                ": the surface of a recorded run (--positions RUN.pvd) is a series: name a .pvd");
+  if (!recordedRun && lowerExtension(a.output) != ".vtp")
+    throw Error("-o " + a.output.string() +
+                ": a deformed surface is a .vtp (a .pvd series is written for a recorded run, "
+                "--positions RUN.pvd)");
   requireNotAnInput(a.output, {a.dataset, a.binding, a.positions});
   const Dataset dataset = loadDataset(a.dataset);
   BoundSurface bound = readBinding(a.binding, dataset.mesh);
-  if (lowerExtension(a.positions) == ".pvd") return deformRun(a, dataset, std::move(bound));
-  if (lowerExtension(a.output) != ".vtp")
-    throw Error("-o " + a.output.string() +
-                ": a deformed surface is a .vtp (a .pvd series is "
-                "written for a recorded run, --positions RUN.pvd)");
+  if (recordedRun) return deformRun(a, dataset, std::move(bound));
   const int level = bound.binding.level;
   const Points3 control =
       datasetPositions(dataset.mesh, level, readPositions(a.positions), a.positions.string());
