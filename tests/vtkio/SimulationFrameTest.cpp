@@ -7,6 +7,7 @@
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -17,6 +18,7 @@
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/vtkio/RecordedRun.h"
+#include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -128,6 +130,31 @@ TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
   withGap.write();
   expectErrorAt([&] { RecordedRun{gap}; }, gap, 0,
                 "names the frame gone/c.vtu, which is not there");
+}
+
+// A run written under the name of an earlier, longer one replaces it: the
+// earlier frames past the new run's last are gone (ParaView, opening the
+// folder, would show them after the new ones), other files stay.
+TEST(RunRecorder, ARunWrittenAgainReplacesTheEarlierFrames) {
+  const test::ScratchDir dir;
+  const Frame f;
+  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
+  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
+  {
+    RunRecorder first(dir / "run.pvd");
+    for (int i = 0; i < 4; ++i) first.addFrame(i, f.rest, f.positions, zero, zero, stress, 0);
+  }
+  dir.write("run_frames/notes.txt", "mine");
+  RunRecorder second(dir / "run.pvd");
+  EXPECT_FALSE(std::filesystem::exists(dir / "run.pvd"));  // until its first frame
+  for (int i = 0; i < 2; ++i) second.addFrame(i, f.rest, f.positions, zero, zero, stress, 0);
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "run_frames"))
+    files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files,
+            (std::vector<std::string>{"control_00000.vtu", "control_00001.vtu", "notes.txt"}));
+  EXPECT_EQ(RecordedRun(dir / "run.pvd").frameCount(), 2u);
 }
 
 // A sag run of 40 steps, and one of 20 steps started again from its 20th

@@ -4,6 +4,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <cstdio>
+#include <regex>
 
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SimulationFrame.h"
@@ -27,6 +28,16 @@ std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& 
 RunRecorder::RunRecorder(std::filesystem::path pvd)
     : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)) {
   std::filesystem::create_directories(framesDirectory_);
+  // A run written under the name of an earlier one replaces it. The earlier
+  // frames would otherwise stay beside the new ones, and ParaView, opening
+  // the folder, groups every control_*.vtu into one series across both
+  // runs. Only files named as this class names frames go, and the old .pvd,
+  // which names them.
+  static const std::regex frameName(R"((control_\d{5}\.vtu|surface_\d{5}\.vtp))");
+  for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
+    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
+      std::filesystem::remove(entry.path());
+  std::filesystem::remove(series_.path());
 }
 
 void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& positions,

@@ -16,7 +16,8 @@ namespace tetskin {
 
 class RunRecorder {
  public:
-  // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/.
+  // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/, or
+  // removes the frames of an earlier run written there (and its .pvd).
   explicit RunRecorder(std::filesystem::path pvd);
   // The folder the frames of a run written to `pvd` go to (RUN_frames/).
   static std::filesystem::path framesDirectory(const std::filesystem::path& pvd);
