@@ -93,9 +93,9 @@ std::filesystem::path frameImage(const std::filesystem::path& output, std::size_
   return image;
 }
 
-// Draws every control frame of a recorded run to its own image; a frame
-// that cannot be drawn removes the images drawn before it, and the folders
-// made for them.
+// Draws every control frame of a recorded run to its own image, replacing
+// the images of an earlier drawing under the same name; a frame that cannot
+// be drawn removes the images drawn before it, and the folders made for them.
 void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(frameImage(output, 0));
@@ -117,6 +117,10 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
     if (!madeFolder.empty()) std::filesystem::remove_all(madeFolder);
     throw;
   }
+  // The images of an earlier, longer run drawn under this name would follow
+  // this run's in a film made of the folder's images.
+  for (std::size_t i = recorded.frameCount(); std::filesystem::exists(frameImage(output, i)); ++i)
+    std::filesystem::remove(frameImage(output, i));
 }
 
 void run(const RenderArgs& a, const CLI::App& cmd) {
