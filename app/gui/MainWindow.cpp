@@ -34,7 +34,6 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
-#include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -43,6 +42,7 @@
 
 #include "BuildDialog.h"
 #include "HistogramWidget.h"
+#include "RecordedRunPanel.h"
 #include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -303,35 +303,12 @@ QWidget* MainWindow::buildSimulationDock() {
   for (QPushButton* b : {play_, step_, reset_, fromFrame_, record_}) buttons->addWidget(b);
   layout->addLayout(buttons);
   // A recorded run opened to step through (File > Open of its .pvd).
-  runBox_ = new QGroupBox("Recorded run");
-  runBox_->setObjectName("recordedRun");
-  auto* runLayout = new QVBoxLayout(runBox_);
-  runLabel_ = new QLabel;
-  runLabel_->setObjectName("runLabel");
-  runLabel_->setWordWrap(true);
-  runFrame_ = new QSlider(Qt::Horizontal);
-  runFrame_->setObjectName("runFrame");
-  runFrame_->setToolTip("the recorded frame shown (the simulation pauses)");
-  auto* runButtons = new QHBoxLayout;
-  auto* runContinue = new QPushButton("Continue from here");
-  runContinue->setObjectName("runContinue");
-  runContinue->setToolTip("Reset, then simulate on from the frame shown (as From frame...)");
-  auto* runClose = new QPushButton("Close");
-  runClose->setObjectName("runClose");
-  runButtons->addWidget(runContinue);
-  runButtons->addWidget(runClose);
-  runLayout->addWidget(runLabel_);
-  runLayout->addWidget(runFrame_);
-  runLayout->addLayout(runButtons);
-  runBox_->hide();
-  layout->addWidget(runBox_);
-  connect(runFrame_, &QSlider::valueChanged, this, [this](int frame) { showRunFrame(frame); });
-  connect(runContinue, &QPushButton::clicked, this, [this] {
-    if (run_)
-      startFromFrame(
-          QString::fromStdString(run_->file(static_cast<std::size_t>(runFrame_->value()))));
-  });
-  connect(runClose, &QPushButton::clicked, this, [this] {
+  runPanel_ = new RecordedRunPanel;
+  layout->addWidget(runPanel_);
+  connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
+  connect(runPanel_, &RecordedRunPanel::continueRequested, this,
+          [this](const QString& frame) { startFromFrame(frame); });
+  connect(runPanel_, &RecordedRunPanel::closeRequested, this, [this] {
     closeRun();
     showLatestState();
   });
@@ -669,50 +646,26 @@ bool MainWindow::openRun(const QString& qpath) {
     fail("open the run's dataset before the run (" + qpath + ")");
     return false;
   }
-  const std::filesystem::path path = qpath.toStdString();
-  const int level = scene_->level();
   try {
-    RecordedRun run(path);
-    if (run.level() && *run.level() != level)
-      throw Error(path.string(), 0,
-                  "its frames are of level " + std::to_string(*run.level()) +
-                      "; the simulated level is " + std::to_string(level) +
-                      ": rebind the surface to level " + std::to_string(*run.level()) +
-                      " (Binding dock) first");
-    TetMesh rest = extractLevel(scene_->dataset().mesh, level);
-    std::string restName =
-        "level " + std::to_string(level) + " of " + scene_->datasetPath().filename().string();
-    run.read(0, rest, restName);  // a run of another body is refused now, not at a later frame
-    run_.emplace(std::move(run));
-    runRestName_ = std::move(restName);
-    runRest_ = std::move(rest);
+    runPanel_->open(qpath.toStdString(), scene_->datasetPath(), scene_->level(),
+                    extractLevel(scene_->dataset().mesh, scene_->level()));
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;
   }
-  runDataset_ = scene_->datasetPath();
-  runLevel_ = level;
   lastError_.clear();
   rememberRecent(QFileInfo(qpath).absoluteFilePath());
-  {
-    const QSignalBlocker block(runFrame_);
-    runFrame_->setRange(0, static_cast<int>(run_->frameCount()) - 1);
-    runFrame_->setValue(0);
-  }
-  runBox_->setTitle("Recorded run: " + QFileInfo(qpath).fileName());
-  runBox_->show();
-  if (!showRunFrame(0)) return false;
-  statusBar()->showMessage("opened " + qpath + " (" + QString::number(run_->frameCount()) +
+  if (!showRunFrame()) return false;
+  statusBar()->showMessage("opened " + qpath + " (" + QString::number(runPanel_->frameCount()) +
                            " frames)");
   return true;
 }
 
-bool MainWindow::showRunFrame(int frame) {
-  if (!run_) return false;
-  const auto index = static_cast<std::size_t>(frame);
+bool MainWindow::showRunFrame() {
+  if (!runPanel_->isOpen()) return false;
   FrameState state;
   try {
-    state = run_->read(index, runRest_, runRestName_);
+    state = runPanel_->state();
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;
@@ -723,24 +676,17 @@ bool MainWindow::showRunFrame(int frame) {
   }
   replaying_ = true;
   lastTimes_ = scene_->showControlState(state.positions);
-  runLabel_->setText(QString("frame %1 of %2, t = %3 s")
-                         .arg(frame)
-                         .arg(run_->frameCount() - 1)
-                         .arg(run_->time(index)));
   renderNow();
   return true;
 }
 
 void MainWindow::closeRunIfItNoLongerFits() {
-  if (run_ && (scene_->datasetPath() != runDataset_ || scene_->level() != runLevel_)) closeRun();
+  if (runPanel_->isOfAnotherLevel(scene_->datasetPath(), scene_->level())) closeRun();
 }
 
 void MainWindow::closeRun() {
-  run_.reset();
-  runRest_ = {};
-  runRestName_.clear();
+  runPanel_->close();
   replaying_ = false;
-  runBox_->hide();
 }
 
 void MainWindow::showLatestState() {
@@ -1000,9 +946,9 @@ bool MainWindow::exportFrame(const QString& qpath) {
   const std::filesystem::path path = qpath.toStdString();
   try {
     const std::string ext = lowerExtension(path);
-    if (ext == ".vtu" && replaying_ && run_) {
+    if (ext == ".vtu" && replaying_ && runPanel_->isOpen()) {
       // What is shown: the recorded frame, its arrays as the run wrote them.
-      writeVtu(path, readVtu(run_->file(static_cast<std::size_t>(runFrame_->value()))));
+      writeVtu(path, readVtu(runPanel_->frameFile()));
     } else if (ext == ".vtu") {
       if (!runner_) throw Error("open a dataset first");
       Simulation& sim = runner_->simulation();

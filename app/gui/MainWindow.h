@@ -17,14 +17,11 @@
 #include "ScenarioRows.h"
 #include "Scene.h"
 #include "SimulationRunner.h"
-#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QGroupBox;
-class QSlider;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -39,6 +36,7 @@ class vtkRenderer;
 namespace tetskin::gui {
 
 class HistogramWidget;
+class RecordedRunPanel;
 class BuildDialog;
 
 class MainWindow : public QMainWindow {
@@ -91,9 +89,9 @@ class MainWindow : public QMainWindow {
   // and changes nothing. The run stays open while the dataset and the
   // simulated level do (a surface opened or bound afresh is shown under it).
   bool openRun(const QString& pvd);
-  // Shows frame `frame` of the open run: the simulation pauses, and Play,
+  // Shows the open run's chosen frame: the simulation pauses, and Play,
   // Step or Reset show it again.
-  bool showRunFrame(int frame);
+  bool showRunFrame();
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
   // The FPS and timing overlay (off for reproducible screenshots).
@@ -163,17 +161,10 @@ class MainWindow : public QMainWindow {
   QComboBox* solver_;
   QComboBox* tolerance_;
   QComboBox* tangent_;
-  // The recorded run being stepped through (openRun), the dataset and level
-  // its frames were checked against, and its row in the Simulation dock.
-  std::optional<RecordedRun> run_;
-  std::filesystem::path runDataset_;
-  int runLevel_ = -1;
-  TetMesh runRest_;
-  std::string runRestName_;  // names runRest_ in messages
-  bool replaying_ = false;   // a run's frame is shown, not the simulation's state
-  QGroupBox* runBox_;
-  QSlider* runFrame_;
-  QLabel* runLabel_;
+  // The recorded run being stepped through (openRun), and whether its
+  // frame is shown rather than the simulation's state.
+  RecordedRunPanel* runPanel_;
+  bool replaying_ = false;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
   Index shownShortfallSteps_ = 0;  // solveShortfall().steps last reported

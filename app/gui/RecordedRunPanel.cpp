@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "RecordedRunPanel.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include "tetskin/core/Error.h"
+
+namespace tetskin::gui {
+
+RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", parent) {
+  setObjectName("recordedRun");
+  auto* layout = new QVBoxLayout(this);
+  label_ = new QLabel;
+  label_->setObjectName("runLabel");
+  label_->setWordWrap(true);
+  slider_ = new QSlider(Qt::Horizontal);
+  slider_->setObjectName("runFrame");
+  slider_->setToolTip("the recorded frame shown (the simulation pauses)");
+  auto* buttons = new QHBoxLayout;
+  auto* continueButton = new QPushButton("Continue from here");
+  continueButton->setObjectName("runContinue");
+  continueButton->setToolTip("Reset, then simulate on from the frame shown (as From frame...)");
+  auto* closeButton = new QPushButton("Close");
+  closeButton->setObjectName("runClose");
+  buttons->addWidget(continueButton);
+  buttons->addWidget(closeButton);
+  layout->addWidget(label_);
+  layout->addWidget(slider_);
+  layout->addLayout(buttons);
+  hide();
+  connect(slider_, &QSlider::valueChanged, this, [this](int frame) {
+    showFrameText();
+    Q_EMIT frameChosen(frame);
+  });
+  connect(continueButton, &QPushButton::clicked, this, [this] {
+    if (run_) Q_EMIT continueRequested(QString::fromStdString(frameFile()));
+  });
+  connect(closeButton, &QPushButton::clicked, this, [this] { Q_EMIT closeRequested(); });
+}
+
+void RecordedRunPanel::open(const std::filesystem::path& pvd, const std::filesystem::path& dataset,
+                            int level, TetMesh rest) {
+  RecordedRun run(pvd);
+  if (run.level() && *run.level() != level)
+    throw Error(pvd.string(), 0,
+                "its frames are of level " + std::to_string(*run.level()) +
+                    "; the simulated level is " + std::to_string(level) +
+                    ": rebind the surface to level " + std::to_string(*run.level()) +
+                    " (Binding dock) first");
+  std::string restName = "level " + std::to_string(level) + " of " + dataset.filename().string();
+  run.read(0, rest, restName);  // a run of another body is refused now, not at a later frame
+  run_.emplace(std::move(run));
+  dataset_ = dataset;
+  level_ = level;
+  rest_ = std::move(rest);
+  restName_ = std::move(restName);
+  {
+    const QSignalBlocker block(slider_);
+    slider_->setRange(0, static_cast<int>(run_->frameCount()) - 1);
+    slider_->setValue(0);
+  }
+  setTitle("Recorded run: " + QString::fromStdString(pvd.filename().string()));
+  showFrameText();
+  show();
+}
+
+void RecordedRunPanel::close() {
+  run_.reset();
+  rest_ = {};
+  restName_.clear();
+  hide();
+}
+
+bool RecordedRunPanel::isOfAnotherLevel(const std::filesystem::path& dataset, int level) const {
+  return run_ && (dataset != dataset_ || level != level_);
+}
+
+int RecordedRunPanel::frame() const {
+  return slider_->value();
+}
+
+const std::string& RecordedRunPanel::frameFile() const {
+  return run_->file(static_cast<std::size_t>(frame()));
+}
+
+FrameState RecordedRunPanel::state() const {
+  return run_->read(static_cast<std::size_t>(frame()), rest_, restName_);
+}
+
+void RecordedRunPanel::showFrameText() {
+  if (!run_) return;
+  label_->setText(QString("frame %1 of %2, t = %3 s")
+                      .arg(frame())
+                      .arg(run_->frameCount() - 1)
+                      .arg(run_->time(static_cast<std::size_t>(frame()))));
+}
+
+}  // namespace tetskin::gui

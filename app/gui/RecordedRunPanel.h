@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The Simulation dock's Recorded run box: a run (.pvd from Record or
+// `tetskin simulate`) of the simulated level, opened to step through with a
+// frame slider, with Continue from here and Close. It reads and checks the
+// frames; MainWindow shows them and owns the simulation.
+
+#include <QGroupBox>
+#include <QString>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/vtkio/RecordedRun.h"
+
+class QLabel;
+class QSlider;
+
+namespace tetskin::gui {
+
+class RecordedRunPanel : public QGroupBox {
+  Q_OBJECT
+ public:
+  explicit RecordedRunPanel(QWidget* parent = nullptr);
+
+  // Opens the run `pvd` of level `level` of the dataset `dataset`, whose
+  // rest mesh is `rest`, at its first frame (not yet shown: frameChosen is
+  // not emitted). Throws Error naming the file, and stays as it was, for a
+  // run RecordedRun refuses, frames of another level, or a first frame of
+  // another body.
+  void open(const std::filesystem::path& pvd, const std::filesystem::path& dataset, int level,
+            TetMesh rest);
+  bool isOpen() const { return run_.has_value(); }
+  void close();
+  // Whether the open run is of another dataset or level than these.
+  bool isOfAnotherLevel(const std::filesystem::path& dataset, int level) const;
+  std::size_t frameCount() const { return run_ ? run_->frameCount() : 0; }
+  int frame() const;
+  // The file of the frame chosen, and its state (throws Error naming the
+  // file, as readSimulationFrame). Both only while open.
+  const std::string& frameFile() const;
+  FrameState state() const;
+
+ Q_SIGNALS:
+  // The slider chose another frame.
+  void frameChosen(int frame);
+  void continueRequested(const QString& frameFile);
+  void closeRequested();
+
+ private:
+  std::optional<RecordedRun> run_;
+  std::filesystem::path dataset_;
+  int level_ = -1;
+  TetMesh rest_;
+  std::string restName_;  // names rest_ in messages
+  QSlider* slider_;
+  QLabel* label_;
+
+  void showFrameText();
+};
+
+}  // namespace tetskin::gui
