@@ -315,6 +315,7 @@ QWidget* MainWindow::buildSimulationDock() {
   connect(play_, &QPushButton::toggled, this, [this](bool on) {
     if (!runner_) return;
     if (on) {
+      runPanel_->pause();
       replaying_ = false;
       runner_->play();
     } else {
@@ -691,6 +692,7 @@ void MainWindow::closeRun() {
 
 void MainWindow::showLatestState() {
   if (!runner_) return;
+  runPanel_->pause();
   replaying_ = false;
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);

@@ -6,7 +6,10 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
 
 #include "tetskin/core/Error.h"
 
@@ -22,11 +25,18 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
   slider_->setObjectName("runFrame");
   slider_->setToolTip("the recorded frame shown (the simulation pauses)");
   auto* buttons = new QHBoxLayout;
+  play_ = new QPushButton("Play");
+  play_->setObjectName("runPlay");
+  play_->setCheckable(true);
+  play_->setToolTip("step through the frames at the times they were recorded");
+  timer_ = new QTimer(this);
+  timer_->setSingleShot(true);
   auto* continueButton = new QPushButton("Continue from here");
   continueButton->setObjectName("runContinue");
   continueButton->setToolTip("Reset, then simulate on from the frame shown (as From frame...)");
   auto* closeButton = new QPushButton("Close");
   closeButton->setObjectName("runClose");
+  buttons->addWidget(play_);
   buttons->addWidget(continueButton);
   buttons->addWidget(closeButton);
   layout->addWidget(label_);
@@ -36,6 +46,19 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
   connect(slider_, &QSlider::valueChanged, this, [this](int frame) {
     showFrameText();
     Q_EMIT frameChosen(frame);
+  });
+  connect(play_, &QPushButton::toggled, this, [this](bool on) {
+    play_->setText(on ? "Pause" : "Play");
+    if (!on) {
+      timer_->stop();
+      return;
+    }
+    if (slider_->value() == slider_->maximum()) slider_->setValue(0);  // again from the start
+    scheduleNextFrame();
+  });
+  connect(timer_, &QTimer::timeout, this, [this] {
+    slider_->setValue(slider_->value() + 1);
+    scheduleNextFrame();
   });
   connect(continueButton, &QPushButton::clicked, this, [this] {
     if (run_) Q_EMIT continueRequested(QString::fromStdString(frameFile()));
@@ -54,6 +77,7 @@ void RecordedRunPanel::open(const std::filesystem::path& pvd, const std::filesys
                     " (Binding dock) first");
   std::string restName = "level " + std::to_string(level) + " of " + dataset.filename().string();
   run.read(0, rest, restName);  // a run of another body is refused now, not at a later frame
+  pause();
   run_.emplace(std::move(run));
   dataset_ = dataset;
   level_ = level;
@@ -69,7 +93,22 @@ void RecordedRunPanel::open(const std::filesystem::path& pvd, const std::filesys
   show();
 }
 
+void RecordedRunPanel::scheduleNextFrame() {
+  if (!run_ || slider_->value() >= slider_->maximum()) {
+    play_->setChecked(false);
+    return;
+  }
+  const auto at = static_cast<std::size_t>(slider_->value());
+  const double seconds = run_->time(at + 1) - run_->time(at);
+  timer_->start(static_cast<int>(std::lround(1000 * std::clamp(seconds, 0.0, 10.0))));
+}
+
+void RecordedRunPanel::pause() {
+  play_->setChecked(false);
+}
+
 void RecordedRunPanel::close() {
+  pause();
   run_.reset();
   rest_ = {};
   restName_.clear();

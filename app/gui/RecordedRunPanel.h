@@ -2,8 +2,9 @@
 #pragma once
 // The Simulation dock's Recorded run box: a run (.pvd from Record or
 // `tetskin simulate`) of the simulated level, opened to step through with a
-// frame slider, with Continue from here and Close. It reads and checks the
-// frames; MainWindow shows them and owns the simulation.
+// frame slider, Play (the frames at their recorded times), Continue from
+// here and Close. It reads and checks the frames; MainWindow shows them and
+// owns the simulation.
 
 #include <QGroupBox>
 #include <QString>
@@ -15,7 +16,9 @@
 #include "tetskin/vtkio/RecordedRun.h"
 
 class QLabel;
+class QPushButton;
 class QSlider;
+class QTimer;
 
 namespace tetskin::gui {
 
@@ -33,6 +36,8 @@ class RecordedRunPanel : public QGroupBox {
             TetMesh rest);
   bool isOpen() const { return run_.has_value(); }
   void close();
+  // Stops Play (the simulation's state is to be shown).
+  void pause();
   // Whether the open run is of another dataset or level than these.
   bool isOfAnotherLevel(const std::filesystem::path& dataset, int level) const;
   std::size_t frameCount() const { return run_ ? run_->frameCount() : 0; }
@@ -56,8 +61,12 @@ class RecordedRunPanel : public QGroupBox {
   std::string restName_;  // names rest_ in messages
   QSlider* slider_;
   QLabel* label_;
+  QPushButton* play_;
+  QTimer* timer_;  // plays the frames at their recorded times
 
   void showFrameText();
+  // While playing: the next frame after its recorded time step, or the end.
+  void scheduleNextFrame();
 };
 
 }  // namespace tetskin::gui

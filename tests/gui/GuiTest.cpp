@@ -831,6 +831,19 @@ TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
       states[2]);
   EXPECT_EQ(readBinding(vtp, window_->scene().dataset().mesh).deformed->positions,
             window_->scene().deformedPositions());
+  // Play steps through the frames at their recorded times, from the start
+  // again when at the end, and stops at the last.
+  auto* play = child<QPushButton>("runPlay");
+  QTest::mouseClick(play, Qt::LeftButton);
+  EXPECT_EQ(slider->value(), 0);
+  EXPECT_EQ(shown(), states[0]);
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !play->isChecked(); }, 5000));
+  EXPECT_EQ(slider->value(), 2);
+  EXPECT_EQ(shown(), states[2]);
+  QTest::mouseClick(play, Qt::LeftButton);                        // (from frame 0 again)
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);  // the live state again
+  EXPECT_FALSE(play->isChecked());
+  slider->setValue(2);
   QTest::mouseClick(child<QPushButton>("runContinue"), Qt::LeftButton);
   EXPECT_EQ(window_->runner()->state().positions, states[2]);
   EXPECT_EQ(window_->runner()->steps(), 0);
