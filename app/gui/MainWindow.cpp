@@ -656,6 +656,7 @@ bool MainWindow::openRun(const QString& qpath) {
   }
   lastError_.clear();
   rememberRecent(QFileInfo(qpath).absoluteFilePath());
+  if (auto* dock = findChild<QDockWidget*>("SimulationDock")) dock->raise();  // the run's slider
   if (!showRunFrame()) return false;
   statusBar()->showMessage("opened " + qpath + " (" + QString::number(runPanel_->frameCount()) +
                            " frames)");

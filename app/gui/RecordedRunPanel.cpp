@@ -25,7 +25,7 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
   slider_->setObjectName("runFrame");
   slider_->setToolTip("the recorded frame shown (the simulation pauses)");
   auto* buttons = new QHBoxLayout;
-  play_ = new QPushButton("Play");
+  play_ = new QPushButton("Play run");  // (the simulation's own Play is above)
   play_->setObjectName("runPlay");
   play_->setCheckable(true);
   play_->setToolTip("step through the frames at the times they were recorded");
@@ -48,7 +48,7 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
     Q_EMIT frameChosen(frame);
   });
   connect(play_, &QPushButton::toggled, this, [this](bool on) {
-    play_->setText(on ? "Pause" : "Play");
+    play_->setText(on ? "Pause run" : "Play run");
     if (!on) {
       timer_->stop();
       return;

@@ -811,6 +811,7 @@ TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
   EXPECT_FALSE(window_->runner()->playing());  // paused by the frame shown
   EXPECT_FALSE(child<QPushButton>("play")->isChecked());
   EXPECT_FALSE(child<QGroupBox>("recordedRun")->isHidden());
+  EXPECT_TRUE(child<QGroupBox>("recordedRun")->isVisibleTo(window_.get()));  // its dock raised
   auto* slider = child<QSlider>("runFrame");
   EXPECT_EQ(slider->maximum(), 2);
   const LevelRange range = window_->scene().dataset().mesh.levels[2];
