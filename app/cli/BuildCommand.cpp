@@ -131,7 +131,7 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_option("--up", a->up,
                   "the axis that points up in the inputs: x, y or z (written to the config; "
                   "simulation and cameras follow it)")
-      ->check(CLI::IsMember({"x", "y", "z"}))
+      ->check(CLI::IsMember(upAxisNames()))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
   cmd->callback([a] { run(*a); });

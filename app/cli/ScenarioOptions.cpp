@@ -88,7 +88,7 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   cmd.add_option("--up", a.up,
                  "the axis that points up: x, y or z (default: the dataset config's up, else y); "
                  "the scenarios, the floor, the default gravity and the camera follow it")
-      ->check(CLI::IsMember({"x", "y", "z"}));
+      ->check(CLI::IsMember(upAxisNames()));
 }
 
 UpAxis upAxisOf(const ScenarioArgs& a, const DatasetConfig& config) {

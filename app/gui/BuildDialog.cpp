@@ -62,7 +62,8 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   form->addRow("Mesher", mesher_);
   up_ = new QComboBox;
   up_->setObjectName("up");
-  up_->addItems({"y", "z", "x"});
+  for (const std::string& name : upAxisNames()) up_->addItem(QString::fromStdString(name));
+  up_->setCurrentText(toString(UpAxis::Y));
   up_->setToolTip(
       "the axis that points up in the inputs (z for most CAD and STL files): "
       "the simulation's scenarios, floor and gravity and the camera follow it");

@@ -177,7 +177,9 @@ QWidget* MainWindow::buildViewDock() {
   // The dataset's up axis (its config's, or y): for a z-up model opened
   // as bare .node/.ele, or a config that does not say. The camera and the
   // next run follow it.
-  upAxis_ = combo("up", {"x", "y", "z"});
+  QStringList axes;
+  for (const std::string& name : upAxisNames()) axes << QString::fromStdString(name);
+  upAxis_ = combo("up", axes);
   upAxis_->setCurrentText("y");
   upAxis_->setToolTip("the axis that points up: camera presets, scenarios, floor and gravity");
   form->addRow("Up axis", upAxis_);

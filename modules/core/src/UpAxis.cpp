@@ -32,6 +32,10 @@ std::optional<UpAxis> parseUpAxis(std::string_view name) {
   }
 }
 
+std::vector<std::string> upAxisNames() {
+  return {toString(UpAxis::X), toString(UpAxis::Y), toString(UpAxis::Z)};
+}
+
 Eigen::Vector3d upVector(UpAxis up) {
   return Eigen::Vector3d::Unit(axisIndex(up));
 }

@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace tetskin {
 
@@ -20,6 +22,9 @@ inline int axisIndex(UpAxis up) {
 const char* toString(UpAxis up);
 // "x", "y" or "z" (any letter case); nullopt for anything else.
 std::optional<UpAxis> parseUpAxis(std::string_view name);
+// The names of the axes in coordinate order ("x", "y", "z"): the choices
+// the command line and the GUI offer.
+std::vector<std::string> upAxisNames();
 
 // The unit vector along the axis.
 Eigen::Vector3d upVector(UpAxis up);
