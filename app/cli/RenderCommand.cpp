@@ -99,11 +99,7 @@ std::filesystem::path frameImage(const std::filesystem::path& output, std::size_
 void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(frameImage(output, 0));
-  std::filesystem::path madeFolder;  // the outermost folder the images will make
-  for (std::filesystem::path folder = std::filesystem::absolute(output).parent_path();
-       !folder.empty() && !std::filesystem::exists(folder) && folder != folder.parent_path();
-       folder = folder.parent_path())
-    madeFolder = folder;
+  const std::filesystem::path madeFolder = outermostMissingFolder(output);  // (the images make it)
   std::vector<std::filesystem::path> written;
   try {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {

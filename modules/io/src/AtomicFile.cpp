@@ -131,6 +131,10 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+std::filesystem::path outermostMissingFolder(const std::filesystem::path& target) {
+  return locate(target).outermostMissing;
+}
+
 void writeTextAtomically(const std::filesystem::path& target,
                          const std::function<void(std::ostream&)>& write) {
   AtomicFile file(target);

@@ -45,6 +45,11 @@ void writeTextAtomically(const std::filesystem::path& target,
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& write);
 
+// The outermost folder on `target`'s path that does not exist yet (which
+// writing it would make), or an empty path when its folder exists: for
+// commands writing several files that remove what they made on failure.
+std::filesystem::path outermostMissingFolder(const std::filesystem::path& target);
+
 // Throws Error naming `target` when no file could be written there because
 // the nearest existing folder on its path is a file, or is not writable (the
 // folders after it would be made). For commands that work long before they
