@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "Commands.h"
 #include "OptionChecks.h"
@@ -49,7 +48,17 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
   const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string() +
                                " (the level " + a.binding.string() + " is bound to)";
   const std::size_t frames = recorded.frameCount();
-  for (std::size_t i = 0; i < frames; ++i) recorded.read(i, rest, restName);
+  const std::filesystem::path written = RunRecorder::framesDirectory(a.output);
+  for (std::size_t i = 0; i < frames; ++i) {
+    // (The series' writer clears its folder of earlier frames first.)
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::path(recorded.file(i)).parent_path();
+    if (std::filesystem::equivalent(folder.empty() ? "." : folder, written, error))
+      throw Error(recorded.file(i), 0,
+                  "is in the folder the series -o " + a.output.string() +
+                      " writes its frames to: write it to another name");
+    recorded.read(i, rest, restName);
+  }
   requireWritableLocation(a.output);
   SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
   bound.dataset = a.dataset.generic_string();
