@@ -49,6 +49,7 @@
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -646,8 +647,22 @@ bool MainWindow::startFromFrame(const QString& qpath) {
 
 bool MainWindow::openRun(const QString& qpath) {
   if (!scene_->hasDataset()) {
-    fail("open the run's dataset before the run (" + qpath + ")");
-    return false;
+    // A run recorded with its surface names its dataset in the surface's
+    // frames: opening the first of them (a binding, taken at its rest
+    // shape) brings the dataset and the surface, as a binding does.
+    std::string surfaceFrame;
+    try {
+      const PvdSeries series = PvdSeries::read(qpath.toStdString());
+      if (std::none_of(series.entries().begin(), series.entries().end(),
+                       [](const PvdSeries::Entry& entry) { return entry.part == 1; }))
+        throw Error(qpath.toStdString(), 0,
+                    "has no surface frames naming its dataset: open the dataset first");
+      surfaceFrame = series.framesOfPart(1).front().file;  // (checked to be there)
+    } catch (const std::exception& e) {
+      fail(QString::fromStdString(e.what()));
+      return false;
+    }
+    if (!openFile(QString::fromStdString(surfaceFrame))) return false;
   }
   try {
     runPanel_->open(qpath.toStdString(), scene_->datasetPath(), scene_->level(),

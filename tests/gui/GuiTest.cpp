@@ -862,6 +862,39 @@ TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
   EXPECT_TRUE(child<QGroupBox>("recordedRun")->isHidden());
 }
 
+// A recorded run opened with no dataset open brings its dataset and
+// surface, named by its first surface frame (a binding), as a binding
+// brings its dataset: one file replays the run. A run without surface
+// frames cannot say its dataset.
+TEST_F(Gui, ARecordedRunBringsItsDatasetAndSurface) {
+  openSample();
+  const std::filesystem::path pvd = scratch("own_dataset_run.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const Points3 stepped = window_->runner()->state().positions;
+  const std::filesystem::path dataset = window_->scene().datasetPath();
+  const SurfaceBinding binding = window_->scene().binding();
+  window_->stopRecording();
+  window_ = std::make_unique<MainWindow>(false);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  EXPECT_TRUE(std::filesystem::equivalent(window_->scene().datasetPath(), dataset));
+  EXPECT_EQ(window_->scene().binding().controlIds, binding.controlIds);
+  child<QSlider>("runFrame")->setValue(1);
+  const LevelRange range = window_->scene().dataset().mesh.levels[2];
+  EXPECT_EQ(Points3(window_->scene().controlNodes().middleRows(range.firstNode, range.nodeCount)),
+            stepped);
+
+  PvdSeries controlOnly(scratch("control_only.pvd"));
+  controlOnly.add(0, 0, pvd.stem().string() + "_frames/control_00000.vtu");
+  controlOnly.write();
+  window_ = std::make_unique<MainWindow>(false);
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(scratch("control_only.pvd").string())));
+  EXPECT_EQ(window_->lastError().toStdString(),
+            scratch("control_only.pvd").string() +
+                ": has no surface frames naming its dataset: open the dataset first");
+}
+
 // Opening a binding of another level moves the control mesh to that level,
 // as a rebind does, and the control level field says so.
 // A control level other than the simulated one follows it: a rigid motion
