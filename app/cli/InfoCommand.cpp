@@ -27,6 +27,7 @@
 #include "tetskin/meshing/SurfaceRepair.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -259,6 +260,16 @@ void printSeries(const std::filesystem::path& path) {
       std::printf(", all present\n");
     else
       std::printf(", %zu missing (first: %s)\n", missing, firstMissing.c_str());
+  }
+  // The level of the control-mesh frames, which render --run, deform and
+  // the GUI draw the run on (where the first frame can be read and says).
+  if (const auto control = filesOfPart.find(0); control != filesOfPart.end()) {
+    std::optional<int> level;
+    try {
+      level = simulationFrameLevel(folder / control->second.front());
+    } catch (const Error&) {  // (a missing or broken frame is named above or when read)
+    }
+    if (level) std::printf("  level      %d (of the control-mesh frames)\n", *level);
   }
 }
 
