@@ -4,6 +4,8 @@
 #include <QLocale>
 #include <QRegularExpression>
 #include <cfloat>
+#include <cmath>
+#include <limits>
 
 namespace tetskin::gui {
 namespace {
@@ -47,6 +49,16 @@ QValidator::State ScientificSpinBox::validate(QString& text, int& /*position*/) 
   const double number = QLocale::c().toDouble(typed, &ok);
   if (ok && number >= minimum() && number <= maximum()) return QValidator::Acceptable;
   return ok || isNumberBeingTyped(typed) ? QValidator::Intermediate : QValidator::Invalid;
+}
+
+void ScientificSpinBox::stepBy(int steps) {
+  if (stepType() == QAbstractSpinBox::AdaptiveDecimalStepType &&
+      std::abs(value()) < std::numeric_limits<double>::min()) {
+    setValue(value() + steps * singleStep());
+    selectAll();
+    return;
+  }
+  QDoubleSpinBox::stepBy(steps);
 }
 
 ScientificSpinBox* numberBox(const char* name, double min, double max, double value,

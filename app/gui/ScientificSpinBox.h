@@ -20,6 +20,9 @@ class ScientificSpinBox : public QDoubleSpinBox {
   QString textFromValue(double value) const override;
   double valueFromText(const QString& text) const override;
   QValidator::State validate(QString& text, int& position) const override;
+  // Steps of a tenth of the value's order of magnitude (Qt's adaptive
+  // step); from 0, where that step would be 1e-323, by singleStep().
+  void stepBy(int steps) override;
 };
 
 // The bounds of the ranges the simulation accepts: "> 0" is [kLeastPositive,

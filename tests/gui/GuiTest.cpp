@@ -425,6 +425,15 @@ TEST_F(Gui, NumberBoxesKeepTheirValuesAndReadAnyNotation) {
   EXPECT_EQ(type("stiffnessDamping", "1e-7"), 1e-7);
   EXPECT_EQ(type("density", "x"), ElasticMaterial{}.density);  // refused: unchanged
   EXPECT_EQ(type("poisson", "0.5"), 0.49995);                  // out of (-1, 0.5): unchanged
+  // The arrows step by a tenth of the value's magnitude, and from 0 by 1
+  // (Qt's adaptive step from 0 is 1e-323).
+  auto* gravity = child<QDoubleSpinBox>("gravityX");
+  ASSERT_EQ(gravity->value(), 0);
+  gravity->stepBy(1);
+  EXPECT_EQ(gravity->value(), 1);
+  child<QDoubleSpinBox>("density")->stepBy(1);
+  EXPECT_EQ(child<QDoubleSpinBox>("density")->value(), ElasticMaterial{}.density + 10);
+  gravity->setValue(0);
   // A value shown rounded (0.333333) stays exact when its text is read back.
   auto* push = child<QDoubleSpinBox>("push");
   push->setValue(1.0 / 3);
