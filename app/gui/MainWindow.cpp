@@ -194,12 +194,8 @@ QWidget* MainWindow::buildViewDock() {
   furShells_->setObjectName("furShells");
   furShells_->setRange(1, 256);
   furShells_->setValue(16);
-  furLength_ = new QDoubleSpinBox;
-  furLength_->setObjectName("furLength");
-  furLength_->setRange(0.001, 1);
-  furLength_->setSingleStep(0.005);
-  furLength_->setDecimals(3);
-  furLength_->setValue(0.03);
+  furLength_ = numberBox("furLength", kLeastPositive, 1, FurParameters{}.length,
+                         "fur length / the surface's bounding-box diagonal, in (0, 1]");
   furLighting_ = combo("furLighting", {"velvet", "kajiya-kay"});
   furFins_ = new QCheckBox("fins at silhouettes");
   furFins_->setObjectName("furFins");

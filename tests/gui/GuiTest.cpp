@@ -434,6 +434,13 @@ TEST_F(Gui, NumberBoxesKeepTheirValuesAndReadAnyNotation) {
   child<QDoubleSpinBox>("density")->stepBy(1);
   EXPECT_EQ(child<QDoubleSpinBox>("density")->value(), ElasticMaterial{}.density + 10);
   gravity->setValue(0);
+  // The fur length too (it had 3 decimals: a config's 0.0125 drew as 0.013).
+  window_->setRenderPath("fur-cpu");
+  child<QDoubleSpinBox>("furLength")->setValue(0.025);
+  const double longer = window_->scene().deformable()->fur()->length();
+  child<QDoubleSpinBox>("furLength")->setValue(0.0125);
+  EXPECT_DOUBLE_EQ(window_->scene().deformable()->fur()->length() / longer, 0.5);
+  window_->setRenderPath("cpu");
   // A value shown rounded (0.333333) stays exact when its text is read back.
   auto* push = child<QDoubleSpinBox>("push");
   push->setValue(1.0 / 3);
