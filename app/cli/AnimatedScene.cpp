@@ -35,11 +35,10 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
     view_->renderer()->AddActor(control_->actor());
   }
   // Framed on the control level at rest: the same view for every path.
-  const BoundingBox box = boundingBox(rest.nodes);
-  const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                            box.max.y(), box.min.z(), box.max.z()};
-  view_->setCamera(o.camera, bounds, o.up);
+  restBox_ = boundingBox(rest.nodes);
+  camera_ = o.camera;
   up_ = o.up;
+  frame(restBox_);
   // An unknown scenario or bad parameters fail now, before any frames.
   makeScenario(o.scenario.name, o.scenario.parameters);
   scenarioArgs_ = o.scenario;
@@ -54,6 +53,17 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
   if (const std::string problem = surface_->gpuProblem(); !problem.empty()) throw Error(problem);
 }
 
+void AnimatedScene::frame(const BoundingBox& box) {
+  BoundingBox all = restBox_;
+  if (!box.empty()) {
+    all.extend(box.min);
+    all.extend(box.max);
+  }
+  const double bounds[6] = {all.min.x(), all.max.x(), all.min.y(),
+                            all.max.y(), all.min.z(), all.max.z()};
+  view_->setCamera(camera_, bounds, up_);
+}
+
 void AnimatedScene::startSimulation() {
   const TetMesh rest = extractLevel(dataset_.mesh, level_);
   SimulationOptions options = uprightAlong(up_, {});
@@ -65,6 +75,8 @@ void AnimatedScene::startSimulation() {
   scenario_ = makeScenario(scenarioArgs_.name, scenarioArgs_.parameters);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);
+  // The scenario's start may leave the rest shape's box (drop lifts it).
+  frame(boundingBox(simulation_->state().positions));
 }
 
 AnimatedScene::~AnimatedScene() = default;

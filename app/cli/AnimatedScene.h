@@ -55,6 +55,10 @@ class AnimatedScene {
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);
+  // Frames the camera (the same preset) on `box` together with the control
+  // level at rest: for a motion that leaves the rest shape's box, such as
+  // a drop's lifted start.
+  void frame(const BoundingBox& box);
   OffscreenView& view() { return *view_; }
   int level() const { return level_; }
   Index elementCount() const;
@@ -70,6 +74,8 @@ class AnimatedScene {
   ScenarioArgs scenarioArgs_;
   std::string datasetName_;
   UpAxis up_ = UpAxis::Y;
+  CameraPreset camera_ = CameraPreset::Iso;
+  BoundingBox restBox_;                     // of the control level at rest
   std::unique_ptr<Simulation> simulation_;  // from the first frames run on
   std::unique_ptr<Scenario> scenario_;
   Points3 nodes_;

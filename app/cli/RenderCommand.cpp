@@ -100,6 +100,15 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(frameImage(output, 0));
   const std::filesystem::path madeFolder = outermostMissingFolder(output);  // (the images make it)
+  // Framed on the whole motion, so that no frame leaves the picture (a
+  // drop's start lies above the rest shape): every frame read once first.
+  BoundingBox motion;
+  for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
+    const BoundingBox box = boundingBox(recorded.read(i, rest, restName).positions);
+    motion.extend(box.min);
+    motion.extend(box.max);
+  }
+  scene.frame(motion);
   std::vector<std::filesystem::path> written;
   try {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
