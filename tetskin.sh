@@ -113,10 +113,13 @@ demo() {
     with_display "$tetskin" render "$out/bunny.json" --surface data/bunny_8k_tex.obj \
       --texture data/bunny_texture.png --path "$path" --frames 30 --level 0 -o "$out/bunny_$path.png"
   done
-  log "filming the recorded wobble run with fur (render --run: one image per frame)"
+  log "filming the recorded wobble run with fur (render --run: one image per frame, and a movie)"
   with_display "$tetskin" render "$out/bunny.json" --run "$out/wobble.pvd" \
     --surface data/bunny_8k_tex.obj --texture data/bunny_texture.png --path fur-gpu \
     --size 640x480 -o "$out/film/wobble.png"
+  with_display "$tetskin" render "$out/bunny.json" --run "$out/wobble.pvd" \
+    --surface data/bunny_8k_tex.obj --texture data/bunny_texture.png --path fur-gpu \
+    --size 640x480 -o "$out/wobble.ogv"
   log "export for ParaView"
   "$tetskin" convert data/bunny_64k.obj "$out/bunny_64k.vtp"
   for level in 0 1 2; do "$tetskin" convert "$out/bunny.json" "$out/bunny_level$level.vtu" --level $level; done

@@ -10,6 +10,7 @@
 #include <string>
 #include <system_error>
 #include <type_traits>
+#include <vector>
 
 #include "tetskin/core/Error.h"
 
@@ -113,11 +114,19 @@ CLI::Validator numberFrom(double min, double below) {
 }
 
 CLI::Validator fileEnding(const std::string& extension) {
+  return fileEnding(std::vector<std::string>{extension});
+}
+
+CLI::Validator fileEnding(const std::vector<std::string>& extensions) {
   return CLI::Validator(
-      [extension](std::string& text) -> std::string {
-        if (lowerCase(std::filesystem::path(text).extension().string()) == lowerCase(extension))
-          return {};
-        return "'" + text + "' does not end in " + extension;
+      [extensions](std::string& text) -> std::string {
+        const std::string given = lowerCase(std::filesystem::path(text).extension().string());
+        std::string names;
+        for (const std::string& extension : extensions) {
+          if (given == lowerCase(extension)) return {};
+          names += (names.empty() ? "" : " or ") + extension;
+        }
+        return "'" + text + "' does not end in " + names;
       },
       "");
 }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "tetskin/rendering/ImageSize.h"
 
@@ -49,6 +50,8 @@ CLI::Validator trueOrFalse();
 // output whose format is fixed, checked before any work so that a binding
 // is not written as XML into "out.obj" nor a PNG into "image.jpg".
 CLI::Validator fileEnding(const std::string& extension);
+// One of `extensions` (render -o: an image .png or a movie .ogv).
+CLI::Validator fileEnding(const std::vector<std::string>& extensions);
 
 // An image size "WIDTHxHEIGHT" (rendering ImageSize.h) for --size; and its
 // two numbers once the validator has passed it.

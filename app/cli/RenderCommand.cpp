@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
+#include <vtkImageData.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +20,9 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/FileNames.h"
+#include "tetskin/rendering/MovieFile.h"
+#include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -93,15 +99,11 @@ std::filesystem::path frameImage(const std::filesystem::path& output, std::size_
   return image;
 }
 
-// Draws every control frame of a recorded run to its own image, replacing
-// the images of an earlier drawing under the same name; a frame that cannot
-// be drawn removes the images drawn before it, and the folders made for them.
-void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
-             const std::string& restName, const TetMesh& rest) {
-  requireWritableLocation(frameImage(output, 0));
-  const std::filesystem::path madeFolder = outermostMissingFolder(output);  // (the images make it)
-  // Framed on the whole motion, so that no frame leaves the picture (a
-  // drop's start lies above the rest shape): every frame read once first.
+// Frames the camera on the run's whole motion, so that no frame leaves the
+// picture (a drop's start lies above the rest shape): every frame is read
+// (and checked) once before any is drawn.
+void frameMotion(AnimatedScene& scene, const RecordedRun& recorded, const TetMesh& rest,
+                 const std::string& restName) {
   BoundingBox motion;
   for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
     const BoundingBox box = boundingBox(recorded.read(i, rest, restName).positions);
@@ -109,11 +111,27 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
     motion.extend(box.max);
   }
   scene.frame(motion);
+}
+
+// Draws frame `i` of the run (the fur's drag from the time since the one before).
+void drawFrame(AnimatedScene& scene, const RecordedRun& recorded, std::size_t i,
+               const TetMesh& rest, const std::string& restName) {
+  const FrameState state = recorded.read(i, rest, restName);
+  scene.draw(state.positions, i > 0 ? recorded.time(i) - recorded.time(i - 1) : 0);
+}
+
+// Draws every control frame of a recorded run to its own image, replacing
+// the images of an earlier drawing under the same name; a frame that cannot
+// be drawn removes the images drawn before it, and the folders made for them.
+void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
+             const std::string& restName, const TetMesh& rest) {
+  requireWritableLocation(frameImage(output, 0));
+  const std::filesystem::path madeFolder = outermostMissingFolder(output);  // (the images make it)
+  frameMotion(scene, recorded, rest, restName);
   std::vector<std::filesystem::path> written;
   try {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
-      const FrameState state = recorded.read(i, rest, restName);
-      scene.draw(state.positions, i > 0 ? recorded.time(i) - recorded.time(i - 1) : 0);
+      drawFrame(scene, recorded, i, rest, restName);
       written.push_back(frameImage(output, i));
       scene.view().writePng(written.back());
     }
@@ -126,6 +144,31 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
   // this run's in a film made of the folder's images.
   for (std::size_t i = recorded.frameCount(); std::filesystem::exists(frameImage(output, i)); ++i)
     std::filesystem::remove(frameImage(output, i));
+}
+
+// The movie's rate: the run's frames as fast as they were recorded (31
+// frames over 1 s: 30 frames/s), so that it plays in real time; at least 1.
+int framesPerSecond(const RecordedRun& recorded) {
+  const std::size_t n = recorded.frameCount();
+  const double span = recorded.time(n - 1) - recorded.time(0);
+  if (n < 2 || !(span > 0)) return 1;
+  return static_cast<int>(std::clamp(std::lround(static_cast<double>(n - 1) / span), 1L, 1000L));
+}
+
+// Films a recorded run: every control frame into one movie (.ogv), written
+// atomically (nothing is left where a frame cannot be drawn).
+void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
+             const std::string& restName, const TetMesh& rest) {
+  requireWritableLocation(output);
+  frameMotion(scene, recorded, rest, restName);
+  writeFileAtomically(output, [&](const std::filesystem::path& temporary) {
+    MovieFile movie(temporary, framesPerSecond(recorded));
+    for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
+      drawFrame(scene, recorded, i, rest, restName);
+      movie.add(scene.view().capture());
+    }
+    movie.finish();
+  });
 }
 
 void run(const RenderArgs& a, const CLI::App& cmd) {
@@ -145,6 +188,10 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
   if (!a.run.empty() && a.frames > 0)
     throw Error("--frames: simulates a new run; --run draws the recorded one: give one of them");
+  const bool film = lowerExtension(a.output) == ".ogv";
+  if (film && a.run.empty())
+    throw Error("-o " + a.output.string() +
+                ": a movie is filmed of a recorded run: give --run RUN.pvd");
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
     throw Error(*option + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
@@ -173,15 +220,23 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
       cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
   AnimatedScene scene(dataset, input, o);
   if (recorded) {
-    drawRun(scene, *recorded, a.output,
-            "level " + std::to_string(level) + " of " + a.dataset.string(),
-            extractLevel(dataset.mesh, level));
+    const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string();
+    const TetMesh rest = extractLevel(dataset.mesh, level);
+    if (film)
+      filmRun(scene, *recorded, a.output, restName, rest);
+    else
+      drawRun(scene, *recorded, a.output, restName, rest);
     const std::size_t frames = recorded->frameCount();
     std::printf("drew %zu frames of %s (t %g .. %g s), path %s, level %d, %dx%d\n", frames,
                 a.run.c_str(), recorded->time(0), recorded->time(frames - 1), toString(o.path),
                 level, o.width, o.height);
-    std::printf("  renderer: %s\nwrote %s .. %s\n", scene.view().glRenderer().c_str(),
-                frameImage(a.output, 0).c_str(), frameImage(a.output, frames - 1).c_str());
+    std::printf("  renderer: %s\n", scene.view().glRenderer().c_str());
+    if (film)
+      std::printf("wrote %s (%zu frames at %d frames/s)\n", a.output.c_str(), frames,
+                  framesPerSecond(*recorded));
+    else
+      std::printf("wrote %s .. %s\n", frameImage(a.output, 0).c_str(),
+                  frameImage(a.output, frames - 1).c_str());
     return;
   }
   const FrameStats s = scene.run(a.frames);
@@ -212,7 +267,10 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--path", a->path, "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu")
       ->capture_default_str();
-  cmd->add_option("-o,--output", a->output, "image (.png)")->required()->check(fileEnding(".png"));
+  cmd->add_option("-o,--output", a->output,
+                  "image (.png); with --run, the images OUT_00000.png, ... or one movie (.ogv)")
+      ->required()
+      ->check(fileEnding(std::vector<std::string>{".png", ".ogv"}));
   cmd->add_option("--texture", a->texture,
                   "colour texture (PNG) for a surface with texture coordinates; on fur paths it "
                   "colours the fur and its alpha 0 masks it (default there: the config's "

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// A movie of rendered frames: Ogg Theora (.ogv), the video format Debian's
+// VTK writes (vtkOggTheoraWriter; VLC, ffmpeg and Firefox play it). Frames
+// are added one by one at a fixed rate. The file is written as it goes:
+// callers make it atomic with writeFileAtomically (AtomicFile.h).
+
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+
+class vtkImageData;
+class vtkOggTheoraWriter;
+
+namespace tetskin {
+
+class MovieFile {
+ public:
+  MovieFile(std::filesystem::path path, int framesPerSecond);
+  MovieFile(const MovieFile&) = delete;
+  MovieFile& operator=(const MovieFile&) = delete;
+  ~MovieFile();
+
+  // An 8-bit RGB or RGBA image (OffscreenView::capture), every one the
+  // size of the first. Throws Error naming the file when one is not, or
+  // the encoder fails.
+  void add(vtkImageData* frame);
+  // Ends the stream; throws Error naming the file when no frame was added
+  // or the encoder fails.
+  void finish();
+  int frames() const { return frames_; }
+
+ private:
+  std::filesystem::path path_;
+  vtkSmartPointer<vtkOggTheoraWriter> writer_;
+  int width_ = 0, height_ = 0, frames_ = 0;
+  bool finished_ = false;
+
+  void check(const char* what) const;
+};
+
+}  // namespace tetskin
