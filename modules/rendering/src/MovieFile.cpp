@@ -37,7 +37,7 @@ void MovieFile::add(vtkImageData* frame) {
   if (frames_ == 0) {
     width_ = dims[0];
     height_ = dims[1];
-    // 4:2:0 chroma, which every player takes, needs even sides; else 4:4:4.
+    // 4:2:0 chroma, the common layout, needs even sides; else 4:4:4.
     writer_->SetSubsampling(width_ % 2 == 0 && height_ % 2 == 0);
     writer_->SetInputData(frame);
     writer_->Start();

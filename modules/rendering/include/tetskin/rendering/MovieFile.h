@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A movie of rendered frames: Ogg Theora (.ogv), the video format Debian's
-// VTK writes (vtkOggTheoraWriter; VLC, ffmpeg and Firefox play it). Frames
-// are added one by one at a fixed rate. The file is written as it goes:
-// callers make it atomic with writeFileAtomically (AtomicFile.h).
+// VTK writes (vtkOggTheoraWriter). Frames are added one by one at a fixed
+// rate. The file is written as it goes: callers make it atomic with
+// writeFileAtomically (AtomicFile.h).
 
 #include <vtkSmartPointer.h>
 
