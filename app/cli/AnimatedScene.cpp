@@ -103,10 +103,15 @@ void AnimatedScene::draw(const Points3& positions, double seconds) {
   view_->render();
 }
 
-FrameStats AnimatedScene::run(int frames) {
+double AnimatedScene::frameSeconds() const {
+  return simulation_ ? simulation_->options().timeStep : SimulationOptions{}.timeStep;
+}
+
+FrameStats AnimatedScene::run(int frames, const std::function<void()>& afterDraw) {
   FrameStats s;
   s.frames = frames;
   if (frames > 0 && !simulation_) startSimulation();
+  double outside = 0;  // seconds in afterDraw
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
@@ -119,8 +124,13 @@ FrameStats AnimatedScene::run(int frames) {
     t = std::chrono::steady_clock::now();
     view_->render();
     s.draw += since(t);
+    if (afterDraw) {
+      t = std::chrono::steady_clock::now();
+      afterDraw();
+      outside += since(t);
+    }
   }
-  s.seconds = since(start);
+  s.seconds = since(start) - outside;
   return s;
 }
 

@@ -6,6 +6,7 @@
 // frames stage by stage, draw() shows a recorded state.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -51,7 +52,12 @@ class AnimatedScene {
   // compiles shaders, happens in the constructor and is not counted). The
   // simulation is set up on the first frames run: a still image needs none
   // (nor a level the simulation would refuse).
-  FrameStats run(int frames);
+  // `afterDraw`, if given, runs after each frame is drawn (render's film
+  // takes the picture); its time is left out of the stats.
+  FrameStats run(int frames, const std::function<void()>& afterDraw = {});
+  // Seconds a simulated frame stands for (the time step; 1/60 before the
+  // first run).
+  double frameSeconds() const;
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);

@@ -146,13 +146,19 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
     std::filesystem::remove(frameImage(output, i));
 }
 
-// The movie's rate: the run's frames as fast as they were recorded (31
-// frames over 1 s: 30 frames/s), so that it plays in real time; at least 1.
+// A movie's rate for frames `seconds` apart, so that it plays in real time
+// (1/60 s: 60 frames/s); 1 to 1000.
+int framesPerSecond(double seconds) {
+  if (!(seconds > 0)) return 1;
+  return static_cast<int>(std::clamp(std::lround(1 / seconds), 1L, 1000L));
+}
+
+// A recorded run's frames as fast as they were recorded (31 frames over 1 s:
+// 30 frames/s).
 int framesPerSecond(const RecordedRun& recorded) {
   const std::size_t n = recorded.frameCount();
   const double span = recorded.time(n - 1) - recorded.time(0);
-  if (n < 2 || !(span > 0)) return 1;
-  return static_cast<int>(std::clamp(std::lround(static_cast<double>(n - 1) / span), 1L, 1000L));
+  return n < 2 ? 1 : framesPerSecond(span / static_cast<double>(n - 1));
 }
 
 // Films a recorded run: every control frame into one movie (.ogv), written
@@ -189,9 +195,10 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   if (!a.run.empty() && a.frames > 0)
     throw Error("--frames: simulates a new run; --run draws the recorded one: give one of them");
   const bool film = lowerExtension(a.output) == ".ogv";
-  if (film && a.run.empty())
+  if (film && a.run.empty() && a.frames == 0)
     throw Error("-o " + a.output.string() +
-                ": a movie is filmed of a recorded run: give --run RUN.pvd");
+                ": a movie is filmed of a run: give --frames N (simulated now) or --run RUN.pvd "
+                "(recorded)");
   if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
     throw Error(*option + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
@@ -239,8 +246,19 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
                   frameImage(a.output, frames - 1).c_str());
     return;
   }
-  const FrameStats s = scene.run(a.frames);
-  scene.view().writePng(a.output);
+  FrameStats s;
+  int rate = 0;
+  if (film) {  // every simulated frame into the movie, in real time
+    rate = framesPerSecond(scene.frameSeconds());
+    writeFileAtomically(a.output, [&](const std::filesystem::path& temporary) {
+      MovieFile movie(temporary, rate);
+      s = scene.run(a.frames, [&] { movie.add(scene.view().capture()); });
+      movie.finish();
+    });
+  } else {
+    s = scene.run(a.frames);
+    scene.view().writePng(a.output);
+  }
   if (a.frames > 0) {
     std::printf("%d frames, path %s, %lld triangles, level %d (%lld tetrahedra), %dx%d\n", a.frames,
                 toString(o.path), static_cast<long long>(surface.triangleCount()), scene.level(),
@@ -252,7 +270,11 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
         s.framesPerSecond(), 1e3 * s.simulation / a.frames, 1e3 * s.deformation / a.frames,
         1e3 * s.upload / a.frames, 1e3 * s.draw / a.frames);
   }
-  std::printf("  renderer: %s\nwrote %s\n", scene.view().glRenderer().c_str(), a.output.c_str());
+  std::printf("  renderer: %s\n", scene.view().glRenderer().c_str());
+  if (film)
+    std::printf("wrote %s (%d frames at %d frames/s)\n", a.output.c_str(), a.frames, rate);
+  else
+    std::printf("wrote %s\n", a.output.c_str());
 }
 
 }  // namespace
