@@ -93,15 +93,19 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.up = upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
+  const std::optional<RecordedRun> recorded =
+      a.run.empty() ? std::nullopt : std::optional<RecordedRun>(a.run);
+  // The surface: --surface; else a recorded run's own (its first surface
+  // frame, a binding taken at its rest shape), else the dataset's.
   std::filesystem::path surfacePath = a.surface;
+  if (surfacePath.empty() && recorded && recorded->surfaceFile())
+    surfacePath = *recorded->surfaceFile();
   if (surfacePath.empty()) {
     if (!dataset.config.surface)
       throw Error(a.dataset.string(), 0, "names no default surface; give --surface");
     surfacePath = dataset.config.resolve(*dataset.config.surface);
   }
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
-  const std::optional<RecordedRun> recorded =
-      a.run.empty() ? std::nullopt : std::optional<RecordedRun>(a.run);
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
   const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
   const bool levelGiven = cmd.count("--level") > 0;
@@ -120,9 +124,10 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     else
       drawRun(scene, *recorded, a.output, restName, rest);
     const std::size_t frames = recorded->frameCount();
-    std::printf("drew %zu frames of %s (t %g .. %g s), path %s, level %d, %dx%d\n", frames,
-                a.run.c_str(), recorded->time(0), recorded->time(frames - 1), toString(o.path),
-                level, o.width, o.height);
+    std::printf("drew %zu frames of %s (t %g .. %g s), path %s, %lld triangles, level %d, %dx%d\n",
+                frames, a.run.c_str(), recorded->time(0), recorded->time(frames - 1),
+                toString(o.path), static_cast<long long>(surface.triangleCount()), level, o.width,
+                o.height);
     std::printf("  renderer: %s\n", scene.view().glRenderer().c_str());
     if (film)
       std::printf("wrote %s (%zu frames at %d frames/s)\n", a.output.c_str(), frames,
@@ -166,7 +171,8 @@ void addRenderCommand(CLI::App& app) {
       "render",
       "Headless rendering of a dataset's bound surface to PNG (needs X: use xvfb-run -a)");
   cmd->add_option("DATASET", a->dataset, "dataset (.json)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--surface", a->surface, "surface (default: the dataset's surface)")
+  cmd->add_option("--surface", a->surface,
+                  "surface (default: a recorded run's own, else the dataset's surface)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--path", a->path, "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu")
       ->capture_default_str();

@@ -49,7 +49,7 @@
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/BindingFile.h"
-#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -648,12 +648,11 @@ bool MainWindow::openRun(const QString& qpath) {
     // shape) brings the dataset and the surface, as a binding does.
     std::string surfaceFrame;
     try {
-      const PvdSeries series = PvdSeries::read(qpath.toStdString());
-      if (std::none_of(series.entries().begin(), series.entries().end(),
-                       [](const PvdSeries::Entry& entry) { return entry.part == 1; }))
+      const RecordedRun run(qpath.toStdString());
+      if (!run.surfaceFile())
         throw Error(qpath.toStdString(), 0,
                     "has no surface frames naming its dataset: open the dataset first");
-      surfaceFrame = series.framesOfPart(1).front().file;  // (checked to be there)
+      surfaceFrame = *run.surfaceFile();
     } catch (const std::exception& e) {
       fail(QString::fromStdString(e.what()));
       return false;

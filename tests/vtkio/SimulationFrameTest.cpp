@@ -114,6 +114,7 @@ TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
   EXPECT_EQ(run.time(0), 0.25);
   EXPECT_EQ(run.time(1), 0.5);
   EXPECT_EQ(run.level(), 3);
+  EXPECT_EQ(run.surfaceFile(), (dir / "surface.vtp").string());
   EXPECT_EQ(run.read(0, f.rest, "the grid").positions, f.positions);
   EXPECT_EQ(run.read(1, f.rest, "the grid").positions, second);
 

@@ -1,11 +1,19 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RecordedRun.h"
 
+
 namespace tetskin {
 
-RecordedRun::RecordedRun(const std::filesystem::path& pvd)
-    : path_(pvd), frames_(PvdSeries::read(pvd).framesOfPart(0)) {
+RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
+  const PvdSeries series = PvdSeries::read(pvd);
+  frames_ = series.framesOfPart(0);
   level_ = simulationFrameLevel(frames_.front().file);
+  // (Not checked to be there: only a caller that opens it needs it, and
+  // that names it when it is missing.)
+  const PvdSeries::Entry* first = nullptr;
+  for (const PvdSeries::Entry& entry : series.entries())
+    if (entry.part == 1 && (!first || entry.time < first->time)) first = &entry;
+  if (first) surface_ = (pvd.parent_path() / first->file).string();
 }
 
 FrameState RecordedRun::read(std::size_t frame, const TetMesh& rest,

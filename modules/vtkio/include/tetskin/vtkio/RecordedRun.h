@@ -31,6 +31,10 @@ class RecordedRun {
   // The dataset level the frames are of (the first frame's Level array);
   // nullopt where it does not say.
   std::optional<int> level() const { return level_; }
+  // The run's first surface frame (part 1: the bound surface deformed, a
+  // binding that names its dataset), as found from the .pvd's folder (not
+  // checked to be there); none for a run recorded without a surface.
+  const std::optional<std::string>& surfaceFile() const { return surface_; }
   // The state of frame `frame` of the mesh `rest` (named `restName` in
   // messages); throws Error naming the frame's file as readSimulationFrame.
   FrameState read(std::size_t frame, const TetMesh& rest, const std::string& restName) const;
@@ -39,6 +43,7 @@ class RecordedRun {
   std::filesystem::path path_;
   std::vector<PvdSeries::Entry> frames_;
   std::optional<int> level_;
+  std::optional<std::string> surface_;
 };
 
 }  // namespace tetskin
