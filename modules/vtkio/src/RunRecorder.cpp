@@ -29,10 +29,10 @@ RunRecorder::RunRecorder(std::filesystem::path pvd)
     : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)) {
   std::filesystem::create_directories(framesDirectory_);
   // A run written under the name of an earlier one replaces it. The earlier
-  // frames would otherwise stay beside the new ones, and ParaView, opening
-  // the folder, groups every control_*.vtu into one series across both
-  // runs. Only files named as this class names frames go, and the old .pvd,
-  // which names them.
+  // frames would otherwise stay beside the new ones, in one numbered
+  // sequence with them (control_00000.vtu ...), which file dialogs such as
+  // ParaView's offer as one series. Only files named as this class names
+  // frames go, and the old .pvd, which names them.
   static const std::regex frameName(R"((control_\d{5}\.vtu|surface_\d{5}\.vtp))");
   for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
     if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
