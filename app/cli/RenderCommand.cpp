@@ -18,6 +18,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/rendering/MovieFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -131,7 +132,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     std::printf("  renderer: %s\n", scene.view().glRenderer().c_str());
     if (film)
       std::printf("wrote %s (%zu frames at %d frames/s)\n", a.output.c_str(), frames,
-                  framesPerSecond(*recorded));
+                  movieRate(recorded->meanFrameSeconds()));
     else
       std::printf("wrote %s .. %s\n", frameImage(a.output, 0).c_str(),
                   frameImage(a.output, frames - 1).c_str());
@@ -158,7 +159,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   std::printf("  renderer: %s\n", scene.view().glRenderer().c_str());
   if (film)
     std::printf("wrote %s (%d frames at %d frames/s)\n", a.output.c_str(), a.frames,
-                framesPerSecond(scene.frameSeconds()));
+                movieRate(scene.frameSeconds()));
   else
     std::printf("wrote %s\n", a.output.c_str());
 }

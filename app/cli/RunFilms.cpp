@@ -97,21 +97,6 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
     std::filesystem::remove(frameImage(output, i));
 }
 
-// A movie's rate for frames `seconds` apart, so that it plays in real time
-// (1/60 s: 60 frames/s); 1 to 1000.
-int framesPerSecond(double seconds) {
-  if (!(seconds > 0)) return 1;
-  return static_cast<int>(std::clamp(std::lround(1 / seconds), 1L, 1000L));
-}
-
-// A recorded run's frames as fast as they were recorded (31 frames over 1 s:
-// 30 frames/s).
-int framesPerSecond(const RecordedRun& recorded) {
-  const std::size_t n = recorded.frameCount();
-  const double span = recorded.time(n - 1) - recorded.time(0);
-  return n < 2 ? 1 : framesPerSecond(span / static_cast<double>(n - 1));
-}
-
 // Films a recorded run: every control frame into one movie (.ogv), written
 // atomically (nothing is left where a frame cannot be drawn).
 void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
@@ -119,7 +104,7 @@ void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
   requireWritableLocation(output);
   frameMotion(scene, recorded, rest, restName);
   writeFileAtomically(output, [&](const std::filesystem::path& temporary) {
-    MovieFile movie(temporary, framesPerSecond(recorded));
+    MovieFile movie(temporary, movieRate(recorded.meanFrameSeconds()));
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
       drawFrame(scene, recorded, i, rest, restName);
       movie.add(scene.view().capture());
@@ -131,7 +116,7 @@ void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
 FrameStats filmSimulation(AnimatedScene& scene, int frames, const std::filesystem::path& output) {
   FrameStats stats;
   writeFileAtomically(output, [&](const std::filesystem::path& temporary) {
-    MovieFile movie(temporary, framesPerSecond(scene.frameSeconds()));
+    MovieFile movie(temporary, movieRate(scene.frameSeconds()));
     stats = scene.run(frames, [&] { movie.add(scene.view().capture()); });
     movie.finish();
   });

@@ -41,11 +41,4 @@ void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
 // encoding out.
 FrameStats filmSimulation(AnimatedScene& scene, int frames, const std::filesystem::path& output);
 
-// A movie's rate for frames `seconds` apart, so that it plays in real time
-// (1/60 s: 60 frames/s); 1 to 1000.
-int framesPerSecond(double seconds);
-// A recorded run's frames as fast as they were recorded (31 frames over 1 s:
-// 30 frames/s).
-int framesPerSecond(const RecordedRun& recorded);
-
 }  // namespace tetskin::cli

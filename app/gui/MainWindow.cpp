@@ -48,6 +48,7 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/rendering/MovieFile.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SimulationFrame.h"
@@ -307,6 +308,11 @@ QWidget* MainWindow::buildSimulationDock() {
   connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
   connect(runPanel_, &RecordedRunPanel::continueRequested, this,
           [this](const QString& frame) { startFromFrame(frame); });
+  connect(runPanel_, &RecordedRunPanel::filmRequested, this, [this] {
+    const QString file =
+        interactive_ ? QFileDialog::getSaveFileName(this, "Film run", "run.ogv", "*.ogv") : "";
+    if (!file.isEmpty()) filmRun(file);
+  });
   connect(runPanel_, &RecordedRunPanel::closeRequested, this, [this] {
     closeRun();
     showLatestState();
@@ -691,6 +697,43 @@ bool MainWindow::showRunFrame() {
   replaying_ = true;
   lastTimes_ = scene_->showControlState(state.positions);
   renderNow();
+  return true;
+}
+
+bool MainWindow::filmRun(const QString& qpath) {
+  if (!runPanel_->isOpen()) {
+    fail("open a recorded run (.pvd) to film");
+    return false;
+  }
+  const std::filesystem::path path = qpath.toStdString();
+  if (lowerExtension(path) != ".ogv") {
+    fail(qpath + ": a film is an Ogg Theora movie: the name must end in .ogv");
+    return false;
+  }
+  runPanel_->pause();
+  const int shown = runPanel_->frame();
+  const int rate = movieRate(runPanel_->meanFrameSeconds());
+  const auto frames = static_cast<int>(runPanel_->frameCount());
+  try {
+    writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+      MovieFile movie(temporary, rate);
+      for (int i = 0; i < frames; ++i) {
+        runPanel_->setFrame(i);
+        if (!showRunFrame()) throw Error(lastError_.toStdString());  // (already reported)
+        movie.add(grabImage());
+      }
+      movie.finish();
+    });
+  } catch (const std::exception& e) {
+    runPanel_->setFrame(shown);
+    showRunFrame();
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  runPanel_->setFrame(shown);
+  showRunFrame();
+  statusBar()->showMessage(
+      QString("wrote %1 (%2 frames at %3 frames/s)").arg(qpath).arg(frames).arg(rate));
   return true;
 }
 

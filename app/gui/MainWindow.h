@@ -92,6 +92,10 @@ class MainWindow : public QMainWindow {
   // Shows the open run's chosen frame: the simulation pauses, and Play,
   // Step or Reset show it again.
   bool showRunFrame();
+  // Films the open run into an Ogg Theora movie (.ogv) as the 3D view shows
+  // it (its size, camera, path and diagnostics), at the rate the frames were
+  // recorded; written atomically, the frame shown before is shown again.
+  bool filmRun(const QString& ogv);
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
   // The FPS and timing overlay (off for reproducible screenshots).

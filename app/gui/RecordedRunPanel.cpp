@@ -34,9 +34,15 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
   auto* continueButton = new QPushButton("Continue from here");
   continueButton->setObjectName("runContinue");
   continueButton->setToolTip("Reset, then simulate on from the frame shown (as From frame...)");
+  auto* filmButton = new QPushButton("Film...");
+  filmButton->setObjectName("runFilm");
+  filmButton->setToolTip(
+      "every frame into an Ogg Theora movie (.ogv), as the view shows it, at the rate they were "
+      "recorded");
   auto* closeButton = new QPushButton("Close");
   closeButton->setObjectName("runClose");
   buttons->addWidget(play_);
+  buttons->addWidget(filmButton);
   buttons->addWidget(continueButton);
   buttons->addWidget(closeButton);
   layout->addWidget(label_);
@@ -62,6 +68,9 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
   });
   connect(continueButton, &QPushButton::clicked, this, [this] {
     if (run_) Q_EMIT continueRequested(QString::fromStdString(frameFile()));
+  });
+  connect(filmButton, &QPushButton::clicked, this, [this] {
+    if (run_) Q_EMIT filmRequested();
   });
   connect(closeButton, &QPushButton::clicked, this, [this] { Q_EMIT closeRequested(); });
 }
@@ -117,6 +126,14 @@ void RecordedRunPanel::close() {
 
 bool RecordedRunPanel::isOfAnotherLevel(const std::filesystem::path& dataset, int level) const {
   return run_ && (dataset != dataset_ || level != level_);
+}
+
+void RecordedRunPanel::setFrame(int frame) {
+  {
+    const QSignalBlocker block(slider_);
+    slider_->setValue(frame);
+  }
+  showFrameText();
 }
 
 int RecordedRunPanel::frame() const {

@@ -2,9 +2,9 @@
 #pragma once
 // The Simulation dock's Recorded run box: a run (.pvd from Record or
 // `tetskin simulate`) of the simulated level, opened to step through with a
-// frame slider, Play (the frames at their recorded times), Continue from
-// here and Close. It reads and checks the frames; MainWindow shows them and
-// owns the simulation.
+// frame slider, Play (the frames at their recorded times), Film... (into a
+// movie, as the view shows it), Continue from here and Close. It reads and checks the frames;
+// MainWindow shows them and owns the simulation.
 
 #include <QGroupBox>
 #include <QString>
@@ -42,6 +42,10 @@ class RecordedRunPanel : public QGroupBox {
   bool isOfAnotherLevel(const std::filesystem::path& dataset, int level) const;
   std::size_t frameCount() const { return run_ ? run_->frameCount() : 0; }
   int frame() const;
+  // Chooses frame `frame` without frameChosen (the caller shows it).
+  void setFrame(int frame);
+  // The mean time between the frames (a film's rate); 0 when not open.
+  double meanFrameSeconds() const { return run_ ? run_->meanFrameSeconds() : 0; }
   // The file of the frame chosen, and its state (throws Error naming the
   // file, as readSimulationFrame). Both only while open.
   const std::string& frameFile() const;
@@ -51,6 +55,8 @@ class RecordedRunPanel : public QGroupBox {
   // The slider chose another frame.
   void frameChosen(int frame);
   void continueRequested(const QString& frameFile);
+  // Film...: the run into a movie, as the view shows it.
+  void filmRequested();
   void closeRequested();
 
  private:

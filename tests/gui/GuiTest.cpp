@@ -38,6 +38,7 @@
 #include "HistogramWidget.h"
 #include "ImageCompare.h"
 #include "MainWindow.h"
+#include "MovieDecoding.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
@@ -848,6 +849,26 @@ TEST_F(Gui, ARecordedRunIsSteppedThroughAndContinuedFrom) {
       states[2]);
   EXPECT_EQ(readBinding(vtp, window_->scene().dataset().mesh).deformed->positions,
             window_->scene().deformedPositions());
+  // Film... writes every frame as the view shows it, at the recorded rate;
+  // the frame shown before is shown again. Decoded, the film's first frame
+  // is the view at frame 0.
+  const std::filesystem::path film = scratch("replay.ogv");
+  std::filesystem::remove(film);
+  ASSERT_TRUE(window_->filmRun(QString::fromStdString(film.string())))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(slider->value(), 2);
+  EXPECT_EQ(shown(), states[2]);
+  EXPECT_TRUE(window_->statusBar()->currentMessage().endsWith("(3 frames at 60 frames/s)"))
+      << window_->statusBar()->currentMessage().toStdString();
+  const test::DecodedMovie movie = test::decodeMovie(film);
+  EXPECT_EQ(movie.frames, 3);
+  slider->setValue(0);
+  vtkSmartPointer<vtkImageData> view = window_->grabImage();
+  EXPECT_LT(test::meanLumaDifference(movie.firstLuma, movie.width, movie.height, view), 1.5);
+  slider->setValue(2);
+  EXPECT_FALSE(window_->filmRun(QString::fromStdString(scratch("replay.avi").string())));
+  EXPECT_TRUE(window_->lastError().endsWith("the name must end in .ogv"));
+  EXPECT_FALSE(std::filesystem::exists(scratch("replay.avi")));
   // Play steps through the frames at their recorded times, from the start
   // again when at the end, and stops at the last.
   auto* play = child<QPushButton>("runPlay");

@@ -5,11 +5,18 @@
 #include <vtkImageData.h>
 #include <vtkOggTheoraWriter.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
+
+int movieRate(double secondsPerFrame) {
+  if (!(secondsPerFrame > 0)) return 1;
+  return static_cast<int>(std::clamp(std::lround(1 / secondsPerFrame), 1L, 1000L));
+}
 
 MovieFile::MovieFile(std::filesystem::path path, int framesPerSecond)
     : path_(std::move(path)), writer_(vtkSmartPointer<vtkOggTheoraWriter>::New()) {

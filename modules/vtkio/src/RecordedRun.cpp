@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RecordedRun.h"
 
-
 namespace tetskin {
 
 RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
@@ -14,6 +13,11 @@ RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
   for (const PvdSeries::Entry& entry : series.entries())
     if (entry.part == 1 && (!first || entry.time < first->time)) first = &entry;
   if (first) surface_ = (pvd.parent_path() / first->file).string();
+}
+
+double RecordedRun::meanFrameSeconds() const {
+  const std::size_t n = frames_.size();
+  return n < 2 ? 0 : (frames_.back().time - frames_.front().time) / static_cast<double>(n - 1);
 }
 
 FrameState RecordedRun::read(std::size_t frame, const TetMesh& rest,

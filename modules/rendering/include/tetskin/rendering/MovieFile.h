@@ -14,6 +14,10 @@ class vtkOggTheoraWriter;
 
 namespace tetskin {
 
+// A movie's rate for frames `seconds` apart, so that it plays in real time
+// (1/60 s: 60 frames/s); 1 to 1000.
+int movieRate(double secondsPerFrame);
+
 class MovieFile {
  public:
   MovieFile(std::filesystem::path path, int framesPerSecond);

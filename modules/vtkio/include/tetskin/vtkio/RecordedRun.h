@@ -26,6 +26,8 @@ class RecordedRun {
   const std::filesystem::path& path() const { return path_; }
   std::size_t frameCount() const { return frames_.size(); }
   double time(std::size_t frame) const { return frames_.at(frame).time; }
+  // The mean time between frames (31 frames over 1 s: 1/30 s); 0 for one.
+  double meanFrameSeconds() const;
   // The frame's file, as found from the .pvd's folder.
   const std::string& file(std::size_t frame) const { return frames_.at(frame).file; }
   // The dataset level the frames are of (the first frame's Level array);
