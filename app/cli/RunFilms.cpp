@@ -103,22 +103,18 @@ void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(output);
   frameMotion(scene, recorded, rest, restName);
-  writeFileAtomically(output, [&](const std::filesystem::path& temporary) {
-    MovieFile movie(temporary, movieRate(recorded.meanFrameSeconds()));
+  writeMovieAtomically(output, movieRate(recorded.meanFrameSeconds()), [&](MovieFile& movie) {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
       drawFrame(scene, recorded, i, rest, restName);
       movie.add(scene.view().capture());
     }
-    movie.finish();
   });
 }
 
 FrameStats filmSimulation(AnimatedScene& scene, int frames, const std::filesystem::path& output) {
   FrameStats stats;
-  writeFileAtomically(output, [&](const std::filesystem::path& temporary) {
-    MovieFile movie(temporary, movieRate(scene.frameSeconds()));
+  writeMovieAtomically(output, movieRate(scene.frameSeconds()), [&](MovieFile& movie) {
     stats = scene.run(frames, [&] { movie.add(scene.view().capture()); });
-    movie.finish();
   });
   return stats;
 }

@@ -714,24 +714,24 @@ bool MainWindow::filmRun(const QString& qpath) {
   const int shown = runPanel_->frame();
   const int rate = movieRate(runPanel_->meanFrameSeconds());
   const auto frames = static_cast<int>(runPanel_->frameCount());
+  std::string error;
   try {
-    writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-      MovieFile movie(temporary, rate);
+    writeMovieAtomically(path, rate, [&](MovieFile& movie) {
       for (int i = 0; i < frames; ++i) {
         runPanel_->setFrame(i);
         if (!showRunFrame()) throw Error(lastError_.toStdString());  // (already reported)
         movie.add(grabImage());
       }
-      movie.finish();
     });
   } catch (const std::exception& e) {
-    runPanel_->setFrame(shown);
-    showRunFrame();
-    fail(QString::fromStdString(e.what()));
+    error = e.what();
+  }
+  runPanel_->setFrame(shown);  // the frame shown before, film or not
+  showRunFrame();
+  if (!error.empty()) {
+    fail(QString::fromStdString(error));
     return false;
   }
-  runPanel_->setFrame(shown);
-  showRunFrame();
   statusBar()->showMessage(
       QString("wrote %1 (%2 frames at %3 frames/s)").arg(qpath).arg(frames).arg(rate));
   return true;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
 
 namespace tetskin {
 
@@ -66,6 +67,15 @@ void MovieFile::finish() {
   writer_->End();
   finished_ = true;
   check("ending the stream");
+}
+
+void writeMovieAtomically(const std::filesystem::path& target, int framesPerSecond,
+                          const std::function<void(MovieFile&)>& addFrames) {
+  writeFileAtomically(target, [&](const std::filesystem::path& temporary) {
+    MovieFile movie(temporary, framesPerSecond);
+    addFrames(movie);
+    movie.finish();
+  });
 }
 
 }  // namespace tetskin

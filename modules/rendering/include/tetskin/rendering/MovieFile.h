@@ -2,12 +2,13 @@
 #pragma once
 // A movie of rendered frames: Ogg Theora (.ogv), the video format Debian's
 // VTK writes (vtkOggTheoraWriter). Frames are added one by one at a fixed
-// rate. The file is written as it goes: callers make it atomic with
-// writeFileAtomically (AtomicFile.h).
+// rate. The file is written as it goes: writeMovieAtomically (below) makes
+// the whole movie atomic.
 
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <functional>
 
 class vtkImageData;
 class vtkOggTheoraWriter;
@@ -42,5 +43,10 @@ class MovieFile {
 
   void check(const char* what) const;
 };
+
+// Writes the movie `target` atomically at `framesPerSecond`: addFrames adds
+// its frames, and what it throws leaves no file (and no folder made for it).
+void writeMovieAtomically(const std::filesystem::path& target, int framesPerSecond,
+                          const std::function<void(MovieFile&)>& addFrames);
 
 }  // namespace tetskin
