@@ -23,6 +23,8 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
                              const SceneOptions& o)
     : dataset_(dataset),
       level_(commandLevel(input, dataset.mesh, o.level, false)),
+      material_(o.material),
+      timeStep_(o.timeStep),
       nodes_(dataset.mesh.nodes) {
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, input.surface,
                                                  bindingAt(input, dataset.mesh, level_), o.path,
@@ -67,7 +69,8 @@ void AnimatedScene::frame(const BoundingBox& box) {
 void AnimatedScene::startSimulation() {
   const TetMesh rest = extractLevel(dataset_.mesh, level_);
   SimulationOptions options = uprightAlong(up_, {});
-  options.material = dataset_.config.elasticity;  // the body the dataset describes
+  options.material = materialOf(material_, dataset_.config.elasticity);
+  options.timeStep = timeStep_;
   simulation_ = std::make_unique<Simulation>(
       dataset_.mesh, level_,
       scenarioOptions(scenarioArgs_.name, withGravityAndFloor(options, scenarioArgs_), rest),
@@ -104,7 +107,12 @@ void AnimatedScene::draw(const Points3& positions, double seconds) {
 }
 
 double AnimatedScene::frameSeconds() const {
-  return simulation_ ? simulation_->options().timeStep : SimulationOptions{}.timeStep;
+  return simulation_ ? simulation_->options().timeStep : timeStep_;
+}
+
+ElasticMaterial AnimatedScene::material() const {
+  return simulation_ ? simulation_->options().material
+                     : materialOf(material_, dataset_.config.elasticity);
 }
 
 FrameStats AnimatedScene::run(int frames, const std::function<void()>& afterDraw) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "MaterialOptions.h"
 #include "ScenarioOptions.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -25,6 +26,8 @@ struct SceneOptions {
   int level = -1;  // (a binding's own level, when the surface input is one)
   RenderPath path = RenderPath::Cpu;
   ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
+  MaterialArgs material;  // over the dataset config's elasticity
+  double timeStep = SimulationOptions{}.timeStep;  // seconds per simulated frame
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
   UpAxis up = UpAxis::Y;                // of the camera presets and the simulation
@@ -55,9 +58,11 @@ class AnimatedScene {
   // `afterDraw`, if given, runs after each frame is drawn (render's film
   // takes the picture); its time is left out of the stats.
   FrameStats run(int frames, const std::function<void()>& afterDraw = {});
-  // Seconds a simulated frame stands for (the time step; 1/60 before the
-  // first run).
+  // Seconds a simulated frame stands for (the time step).
   double frameSeconds() const;
+  // The simulated body's material (the dataset config's, with the
+  // options' values over it).
+  ElasticMaterial material() const;
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);
@@ -78,6 +83,8 @@ class AnimatedScene {
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
   ScenarioArgs scenarioArgs_;
+  MaterialArgs material_;
+  double timeStep_;
   std::string datasetName_;
   UpAxis up_ = UpAxis::Y;
   CameraPreset camera_ = CameraPreset::Iso;

@@ -11,6 +11,7 @@
 
 #include "AnimatedScene.h"
 #include "Commands.h"
+#include "MaterialOptions.h"
 #include "OptionChecks.h"
 #include "RunFilms.h"
 #include "ScenarioOptions.h"
@@ -32,6 +33,8 @@ struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture, run;
   std::string path = "cpu", camera = "iso", control = "none", size = "800x600";
   ScenarioArgs scenario;
+  MaterialArgs material;
+  double timeStep = SimulationOptions{}.timeStep;
   int level = -1, frames = 0;
   // Fur: overrides of the dataset config's `fur` section.
   std::optional<int> furShells, furMinShells, furTextureSize;
@@ -73,6 +76,8 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.camera = parseCameraPreset(a.camera);
   o.level = a.level;
   o.scenario = a.scenario;
+  o.material = a.material;
+  o.timeStep = a.timeStep;
   o.control = a.control;
   o.texture = a.texture;
   o.datasetName = a.dataset.string();
@@ -86,10 +91,14 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     throw Error("-o " + a.output.string() +
                 ": a movie is filmed of a run: give --frames N (simulated now) or --run RUN.pvd "
                 "(recorded)");
-  if (const auto option = givenScenarioOption(cmd); option && a.frames == 0)
-    throw Error(*option + ": applies to simulated frames; give --frames N" +
+  std::optional<std::string> simulationOption = givenScenarioOption(cmd);
+  if (!simulationOption) simulationOption = givenOptionOf(cmd, kMaterialGroup);
+  if (!simulationOption && cmd.count("--dt") > 0) simulationOption = "--dt";
+  if (simulationOption && a.frames == 0)
+    throw Error(*simulationOption + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
   const Dataset dataset = loadDataset(a.dataset);
+  materialOf(a.material, dataset.config.elasticity);  // an option out of range fails now
   o.fur = furParameters(a, dataset.config);
   o.up = upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
@@ -149,6 +158,8 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     std::printf("%d frames, path %s, %lld triangles, level %d (%lld tetrahedra), %dx%d\n", a.frames,
                 toString(o.path), static_cast<long long>(surface.triangleCount()), scene.level(),
                 static_cast<long long>(scene.elementCount()), o.width, o.height);
+    std::printf("  scenario %s, %g s per frame, material: %s\n", a.scenario.name.c_str(),
+                scene.frameSeconds(), describe(scene.material()).c_str());
     if (scene.furShells() > 0) std::printf("  fur: %d shells drawn\n", scene.furShells());
     std::printf(
         "  %.1f frames/s; per frame: simulation %.2f ms, deformation %.2f ms, upload %.2f ms, draw "
@@ -236,6 +247,11 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::ExistingFile)
       ->check(fileEnding(".pvd"));
   addScenarioOptions(*cmd, a->scenario);
+  addTimeStepOption(*cmd, a->timeStep)
+      ->description(
+          "with --frames: time step in seconds, the time each frame stands for (a film's "
+          "frames/s is its inverse)");
+  addMaterialOptions(*cmd, a->material);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 

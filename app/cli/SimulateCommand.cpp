@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "Commands.h"
+#include "MaterialOptions.h"
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "ScenarioOptions.h"
@@ -34,24 +35,13 @@ struct SimulateArgs {
   std::string solver = "auto", coarseOperators = "galerkin", tangent = "full";
   ScenarioArgs scenario;
   SimulationOptions options;
-  std::optional<double> young, poisson, density, alpha, beta;  // over the config's elasticity
+  MaterialArgs material;  // over the config's elasticity
   bool quiet = false;
 };
 
 // "x,y,z", as --gravity takes a vector.
 std::string commaSeparated(const Eigen::Vector3d& v) {
   return formatNumber(v.x()) + "," + formatNumber(v.y()) + "," + formatNumber(v.z());
-}
-
-// The config's material with the options given on the command line over it.
-ElasticMaterial materialOf(const SimulateArgs& a, const Dataset& dataset) {
-  ElasticMaterial m = dataset.config.elasticity;
-  m.youngsModulus = a.young.value_or(m.youngsModulus);
-  m.poissonRatio = a.poisson.value_or(m.poissonRatio);
-  m.density = a.density.value_or(m.density);
-  m.massDamping = a.alpha.value_or(m.massDamping);
-  m.stiffnessDamping = a.beta.value_or(m.stiffnessDamping);
-  return m;
 }
 
 void run(SimulateArgs& a, const CLI::App& cmd) {
@@ -71,7 +61,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   a.options.tangent = tangentFromString(a.tangent);
   a.options.coarseOperators =
       a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
-  a.options.material = materialOf(a, dataset);
+  a.options.material = materialOf(a.material, dataset.config.elasticity);
   a.options = uprightAlong(upAxisOf(a.scenario, dataset.config), a.options);
   const TetMesh rest = extractLevel(dataset.mesh, level);
   const SimulationOptions options =
@@ -217,9 +207,7 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
       ->required();
   cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));
-  cmd->add_option("--dt", a->options.timeStep, "time step in seconds")
-      ->capture_default_str()
-      ->check(positiveNumber());
+  addTimeStepOption(*cmd, a->options.timeStep);
   cmd->add_option("--every", a->every, "write every k-th step (and the last)")
       ->capture_default_str()
       ->check(wholeNumber(1));
@@ -256,23 +244,7 @@ void addSimulateCommand(CLI::App& app) {
                   "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
       ->capture_default_str()
       ->check(CLI::IsMember({"galerkin", "rediscretized"}));
-  // Each overrides the dataset config's elasticity section (defaults where
-  // the config has none). Their ranges are validateMaterial's, checked when
-  // the simulation starts.
-  const char* material = "Material (default: the dataset config's elasticity section)";
-  const ElasticMaterial defaults;
-  auto materialOption = [&](const char* name, std::optional<double>& value, const char* what,
-                            double fallback) {
-    cmd->add_option(name, value,
-                    std::string(what) + " (without a config value: " + formatNumber(fallback) + ")")
-        ->check(finiteNumber())
-        ->group(material);
-  };
-  materialOption("--young", a->young, "Young's modulus, Pa", defaults.youngsModulus);
-  materialOption("--poisson", a->poisson, "Poisson's ratio, in (-1, 0.5)", defaults.poissonRatio);
-  materialOption("--density", a->density, "density, kg/m^3", defaults.density);
-  materialOption("--alpha", a->alpha, "Rayleigh mass damping, 1/s", defaults.massDamping);
-  materialOption("--beta", a->beta, "Rayleigh stiffness damping, s", defaults.stiffnessDamping);
+  addMaterialOptions(*cmd, a->material);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")

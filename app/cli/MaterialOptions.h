@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The material options of the commands that simulate (`simulate`, `render
+// --frames`): each overrides one value of the dataset config's elasticity
+// section, and --dt the time step.
+
+#include <CLI/CLI.hpp>
+#include <optional>
+
+#include "tetskin/core/ElasticMaterial.h"
+#include "tetskin/simulation/Simulation.h"
+
+namespace tetskin::cli {
+
+// The --help heading of the material options.
+inline constexpr const char* kMaterialGroup =
+    "Material (default: the dataset config's elasticity section)";
+
+struct MaterialArgs {
+  std::optional<double> young, poisson, density, alpha, beta;
+};
+
+// Adds --young, --poisson, --density, --alpha and --beta (the group
+// kMaterialGroup) to `cmd`. Their ranges are materialProblem's, checked by
+// materialOf.
+void addMaterialOptions(CLI::App& cmd, MaterialArgs& args);
+
+// Adds --dt (seconds, > 0) to `cmd`, setting `timeStep`.
+CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep);
+
+// `config` (the dataset's elasticity) with the values given over it.
+// Throws Error naming the option of a value out of its range ("--poisson:
+// Poisson's ratio must lie in (-1, 0.5), got 0.5").
+ElasticMaterial materialOf(const MaterialArgs& args, const ElasticMaterial& config);
+
+}  // namespace tetskin::cli
