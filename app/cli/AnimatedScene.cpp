@@ -78,8 +78,15 @@ void AnimatedScene::startSimulation() {
   scenario_ = makeScenario(scenarioArgs_.name, scenarioArgs_.parameters);
   scenario_->setUp(*simulation_);
   surface_->setFrameSeconds(simulation_->options().timeStep);
+  if (const auto floor = simulation_->options().floor()) showFloor(*floor);
   // The scenario's start may leave the rest shape's box (drop lifts it).
   frame(boundingBox(simulation_->state().positions));
+}
+
+void AnimatedScene::showFloor(const FloorPlane& floor) {
+  if (floor_) view_->renderer()->RemoveActor(floor_->actor());
+  floor_ = std::make_unique<FloorActor>(floor, restBox_);
+  view_->renderer()->AddActor(floor_->actor());
 }
 
 AnimatedScene::~AnimatedScene() = default;

@@ -17,6 +17,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/rendering/FloorActor.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/simulation/Scenario.h"
 
@@ -66,6 +67,10 @@ class AnimatedScene {
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);
+  // Draws `floor` under the control level (at rest): a run with a floor,
+  // such as a drop, is seen to land. A simulation run() starts shows its
+  // own floor, if it has one.
+  void showFloor(const FloorPlane& floor);
   // Frames the camera (the same preset) on `box` together with the control
   // level at rest: for a motion that leaves the rest shape's box, such as
   // a drop's lifted start.
@@ -82,6 +87,7 @@ class AnimatedScene {
   std::unique_ptr<DeformableSurface> surface_;
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
+  std::unique_ptr<FloorActor> floor_;
   ScenarioArgs scenarioArgs_;
   MaterialArgs material_;
   double timeStep_;

@@ -262,14 +262,18 @@ void printSeries(const std::filesystem::path& path) {
       std::printf(", %zu missing (first: %s)\n", missing, firstMissing.c_str());
   }
   // The level of the control-mesh frames, which render --run, deform and
-  // the GUI draw the run on (where the first frame can be read and says).
+  // the GUI draw the run on, and the run's floor, which they draw (where
+  // the first frame can be read and says).
   if (const auto control = filesOfPart.find(0); control != filesOfPart.end()) {
-    std::optional<int> level;
+    SimulationFrameFacts facts;
     try {
-      level = simulationFrameLevel(folder / control->second.front());
+      facts = simulationFrameFacts(folder / control->second.front());
     } catch (const Error&) {  // (a missing or broken frame is named above or when read)
     }
-    if (level) std::printf("  level      %d (of the control-mesh frames)\n", *level);
+    if (facts.level) std::printf("  level      %d (of the control-mesh frames)\n", *facts.level);
+    if (facts.floor)
+      std::printf("  floor      %s = %s\n", toString(facts.floor->up),
+                  formatNumber(facts.floor->height).c_str());
   }
 }
 

@@ -19,8 +19,9 @@ namespace {
 
 // Frames the camera on the run's whole motion, so that no frame leaves the
 // picture (a drop's start lies above the rest shape): every frame is read
-// (and checked) once before any is drawn.
-void frameMotion(AnimatedScene& scene, const RecordedRun& recorded, const TetMesh& rest,
+// (and checked) once before any is drawn. The run's floor, if it recorded
+// one, is drawn under it.
+void setUpForRun(AnimatedScene& scene, const RecordedRun& recorded, const TetMesh& rest,
                  const std::string& restName) {
   BoundingBox motion;
   for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
@@ -29,6 +30,7 @@ void frameMotion(AnimatedScene& scene, const RecordedRun& recorded, const TetMes
     motion.extend(box.max);
   }
   scene.frame(motion);
+  if (recorded.floor()) scene.showFloor(*recorded.floor());
 }
 
 // Draws frame `i` of the run (the fur's drag from the time since the one before).
@@ -78,7 +80,7 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(frameImage(output, 0));
   const std::filesystem::path madeFolder = outermostMissingFolder(output);  // (the images make it)
-  frameMotion(scene, recorded, rest, restName);
+  setUpForRun(scene, recorded, rest, restName);
   std::vector<std::filesystem::path> written;
   try {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
@@ -102,7 +104,7 @@ void drawRun(AnimatedScene& scene, const RecordedRun& recorded, const std::files
 void filmRun(AnimatedScene& scene, const RecordedRun& recorded, const std::filesystem::path& output,
              const std::string& restName, const TetMesh& rest) {
   requireWritableLocation(output);
-  frameMotion(scene, recorded, rest, restName);
+  setUpForRun(scene, recorded, rest, restName);
   writeMovieAtomically(output, movieRate(recorded.meanFrameSeconds()), [&](MovieFile& movie) {
     for (std::size_t i = 0; i < recorded.frameCount(); ++i) {
       drawFrame(scene, recorded, i, rest, restName);

@@ -584,6 +584,7 @@ FurParameters MainWindow::furFromControls() const {
 void MainWindow::resetSimulation() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
+  scene_->setFloor(std::nullopt);  // (the new simulation's, if it starts)
   shownSteps_ = -1;
   shownShortfallSteps_ = 0;
   showPlaying(false);
@@ -695,6 +696,7 @@ bool MainWindow::showRunFrame() {
     showPlaying(false);
   }
   replaying_ = true;
+  scene_->setFloor(runPanel_->floor());
   lastTimes_ = scene_->showControlState(state.positions);
   renderNow();
   return true;
@@ -750,6 +752,7 @@ void MainWindow::showLatestState() {
   if (!runner_) return;
   runPanel_->pause();
   replaying_ = false;
+  scene_->setFloor(runner_->simulation().options().floor());
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);
   shownSteps_ = state.steps;
@@ -1012,7 +1015,7 @@ bool MainWindow::exportFrame(const QString& qpath) {
       Simulation& sim = runner_->simulation();
       const SimulationState s = runner_->state();
       writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities, s.externalForces,
-                                     sim.vonMisesStress(), scene_->level()));
+                                     sim.vonMisesStress(), scene_->level(), sim.options().floor()));
     } else if (ext == ".vtp") {
       writeBinding(path, scene_->deformedBoundSurface());
     } else {
@@ -1032,7 +1035,8 @@ bool MainWindow::startRecording(const QString& pvd) {
     return false;
   }
   try {
-    recorder_ = std::make_unique<RunRecorder>(pvd.toStdString());
+    recorder_ =
+        std::make_unique<RunRecorder>(pvd.toStdString(), runner_->simulation().options().floor());
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;

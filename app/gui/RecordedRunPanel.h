@@ -46,6 +46,8 @@ class RecordedRunPanel : public QGroupBox {
   void setFrame(int frame);
   // The mean time between the frames (a film's rate); 0 when not open.
   double meanFrameSeconds() const { return run_ ? run_->meanFrameSeconds() : 0; }
+  // The run's floor (RecordedRun::floor); nullopt when not open.
+  std::optional<FloorPlane> floor() const { return run_ ? run_->floor() : std::nullopt; }
   // The file of the frame chosen, and its state (throws Error naming the
   // file, as readSimulationFrame). Both only while open.
   const std::string& frameFile() const;

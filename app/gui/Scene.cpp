@@ -108,6 +108,7 @@ void Scene::openDataset(const std::filesystem::path& path) {
   fur_ = dataset_->config.fur;
   level_ = controlLevel_ = level;
   nodes_ = dataset_->mesh.nodes;
+  setFloor(std::nullopt);  // (another body's)
   previousSummary_.reset();
   picked_.reset();
   rebuildControl();
@@ -309,6 +310,24 @@ void Scene::applyColoring() {
 void Scene::setHighlightProblems(bool on) {
   highlight_ = on;
   updateDiagnostics();
+}
+
+void Scene::setFloor(const std::optional<FloorPlane>& floor) {
+  if (floor && floor_ && *floor == floorPlane_ && floorLevel_ == level_) return;
+  if (floor_) renderer_->RemoveActor(floor_->actor());
+  floor_.reset();
+  if (!floor || !dataset_) return;
+  floor_ =
+      std::make_unique<FloorActor>(*floor, boundingBox(extractLevel(dataset_->mesh, level_).nodes));
+  floor_->actor()->PickableOff();
+  renderer_->AddActor(floor_->actor());
+  floorPlane_ = *floor;
+  floorLevel_ = level_;
+}
+
+std::optional<FloorPlane> Scene::floor() const {
+  if (!floor_) return std::nullopt;
+  return floorPlane_;
 }
 
 void Scene::setCamera(CameraPreset preset) {

@@ -20,6 +20,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/rendering/FloorActor.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -114,6 +115,11 @@ class Scene {
   // World point under display (x, y) at the depth of `near` (for dragging).
   Eigen::Vector3d displayToWorld(int x, int y, const Eigen::Vector3d& near) const;
 
+  // The floor drawn under the bound level at rest (nullopt: none): the
+  // simulation's, or a recorded run's while it is shown. Built again only
+  // when the plane or the level changes.
+  void setFloor(const std::optional<FloorPlane>& floor);
+  std::optional<FloorPlane> floor() const;
   // A simulated frame: the bound level's node positions (level-local).
   FrameTimes showControlState(const Points3& levelPositions);
   // The current state in the dataset's numbering, and the deformed surface.
@@ -170,6 +176,9 @@ class Scene {
   std::unique_ptr<SurfaceDeformer> deformer_;
   std::unique_ptr<DeformableSurface> surfaceDrawing_;
   std::unique_ptr<ControlMeshActor> control_;
+  std::unique_ptr<FloorActor> floor_;
+  FloorPlane floorPlane_;  // (with floor_)
+  int floorLevel_ = -1;    // the level floor_ lies under
   // Shown level's nodes x simulated level's nodes (empty when they are one
   // level): nodalProlongation at the shown level's rest nodes.
   SparseMatrix controlTransfer_;

@@ -932,6 +932,31 @@ TEST_F(Gui, ARecordedRunBringsItsDatasetAndSurface) {
                 ": has no surface frames naming its dataset: open the dataset first");
 }
 
+// The floor a drop lands on is drawn under the body (and recorded with a
+// run, whose replay draws it); a scenario without one has none drawn.
+TEST_F(Gui, DrawsTheFloorOfTheSimulationAndOfARecordedRun) {
+  openSample();
+  EXPECT_EQ(window_->scene().floor(), std::nullopt);  // wobble
+  child<QComboBox>("scenario")->setCurrentText("drop");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const std::optional<FloorPlane> floor = window_->runner()->simulation().options().floor();
+  ASSERT_TRUE(floor.has_value());
+  EXPECT_EQ(window_->scene().floor(), floor);
+  const std::filesystem::path pvd = scratch("drop_run.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  window_->stopRecording();
+  child<QComboBox>("scenario")->setCurrentText("wobble");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(window_->scene().floor(), std::nullopt);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().floor(), floor);  // the run's, while it is shown
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->scene().floor(), std::nullopt);  // the simulation's again
+}
+
 // Opening a binding of another level moves the control mesh to that level,
 // as a rebind does, and the control level field says so.
 // A control level other than the simulated one follows it: a rigid motion

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 #include <vtkActor.h>
+#include <vtkAlgorithm.h>
 #include <vtkDataSet.h>
 #include <vtkMapper.h>
+
+#include <cmath>
 
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/rendering/ControlMeshActor.h"
+#include "tetskin/rendering/FloorActor.h"
 
 namespace tetskin {
 namespace {
@@ -37,6 +41,39 @@ TEST(ControlMeshActor, RefusesPositionsOfAnotherNodeCount) {
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "control mesh positions: 5 rows for 4 nodes");
   }
+}
+
+// The floor lies in its plane under the body, three times the body's
+// widest side across, whatever the up axis.
+TEST(FloorActor, LiesInItsPlaneUnderTheBody) {
+  BoundingBox body;
+  body.extend(Eigen::Vector3d(1, 2, 3));
+  body.extend(Eigen::Vector3d(3, 6, 4));  // 2 x 4 x 1
+  const FloorActor yUp(FloorPlane{UpAxis::Y, 1.5}, body);
+  double b[6];
+  yUp.actor()->GetMapper()->GetInputAlgorithm()->Update();
+  yUp.actor()->GetMapper()->GetInput()->GetBounds(b);
+  // Centred on (2, 3.5) in x and z, 1.5 * 2 either side.
+  EXPECT_DOUBLE_EQ(b[0], -1);
+  EXPECT_DOUBLE_EQ(b[1], 5);
+  EXPECT_DOUBLE_EQ(b[2], 1.5);
+  EXPECT_DOUBLE_EQ(b[3], 1.5);
+  EXPECT_DOUBLE_EQ(b[4], 0.5);
+  EXPECT_DOUBLE_EQ(b[5], 6.5);
+  EXPECT_EQ(yUp.bounds().min, Eigen::Vector3d(-1, 1.5, 0.5));
+  EXPECT_EQ(yUp.bounds().max, Eigen::Vector3d(5, 1.5, 6.5));
+  const FloorActor zUp(FloorPlane{UpAxis::Z, -2}, body);
+  // Widest horizontal side 4 (y): centred on (2, 4), 6 either side.
+  EXPECT_EQ(zUp.bounds().min, Eigen::Vector3d(-4, -2, -2));
+  EXPECT_EQ(zUp.bounds().max, Eigen::Vector3d(8, 10, -2));
+}
+
+TEST(FloorActor, RefusesAnEmptyBodyAndANonFiniteHeight) {
+  EXPECT_THROW(FloorActor(FloorPlane{}, BoundingBox{}), Error);
+  BoundingBox body;
+  body.extend(Eigen::Vector3d(0, 0, 0));
+  body.extend(Eigen::Vector3d(1, 1, 1));
+  EXPECT_THROW(FloorActor(FloorPlane{UpAxis::Y, std::nan("")}, body), Error);
 }
 
 }  // namespace

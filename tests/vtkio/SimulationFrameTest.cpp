@@ -4,6 +4,7 @@
 // started from a frame goes on as the run that wrote it.
 #include <gtest/gtest.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -131,6 +132,41 @@ TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
   withGap.write();
   expectErrorAt([&] { RecordedRun{gap}; }, gap, 0,
                 "names the frame gone/c.vtu, which is not there");
+}
+
+// A run's floor goes into its control frames as field data a ParaView user
+// can read (the plane's normal and height), and comes back from them: the
+// recorded run is drawn with it. A frame without it, or with a plane that
+// is no axis' (not one this program simulates), has none.
+TEST(RecordedRun, KeepsTheRunsFloor) {
+  const test::ScratchDir dir;
+  const Frame f;
+  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
+  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
+  const FloorPlane floor{UpAxis::Z, -0.375};
+  {
+    RunRecorder recorder(dir / "run.pvd", floor);
+    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+  }
+  EXPECT_EQ(RecordedRun(dir / "run.pvd").floor(), floor);
+  const SimulationFrameFacts facts = simulationFrameFacts(dir / "run_frames/control_00000.vtu");
+  EXPECT_EQ(facts.level, 0);
+  EXPECT_EQ(facts.floor, floor);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(dir / "run_frames/control_00000.vtu");
+  const double* normal = grid->GetFieldData()->GetArray("FloorNormal")->GetTuple3(0);
+  EXPECT_EQ(Eigen::Vector3d(normal[0], normal[1], normal[2]), Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(grid->GetFieldData()->GetArray("FloorHeight")->GetTuple1(0), -0.375);
+
+  {
+    RunRecorder recorder(dir / "plain.pvd");
+    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+  }
+  EXPECT_EQ(RecordedRun(dir / "plain.pvd").floor(), std::nullopt);
+
+  grid->GetFieldData()->GetArray("FloorNormal")->SetTuple3(0, 0, 0.6, 0.8);
+  writeVtu(dir / "tilted.vtu", grid);
+  EXPECT_EQ(simulationFrameFacts(dir / "tilted.vtu").floor, std::nullopt);
+  EXPECT_EQ(simulationFrameFacts(dir / "tilted.vtu").level, 0);
 }
 
 // A run written under the name of an earlier, longer one replaces it: the

@@ -6,7 +6,9 @@ namespace tetskin {
 RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
   const PvdSeries series = PvdSeries::read(pvd);
   frames_ = series.framesOfPart(0);
-  level_ = simulationFrameLevel(frames_.front().file);
+  const SimulationFrameFacts facts = simulationFrameFacts(frames_.front().file);
+  level_ = facts.level;
+  floor_ = facts.floor;
   // (Not checked to be there: only a caller that opens it needs it, and
   // that names it when it is missing.)
   const PvdSeries::Entry* first = nullptr;

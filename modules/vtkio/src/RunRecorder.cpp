@@ -25,8 +25,8 @@ std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& 
   return file.parent_path() / (file.stem().string() + "_frames");
 }
 
-RunRecorder::RunRecorder(std::filesystem::path pvd)
-    : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)) {
+RunRecorder::RunRecorder(std::filesystem::path pvd, std::optional<FloorPlane> floor)
+    : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)), floor_(floor) {
   std::filesystem::create_directories(framesDirectory_);
   // A run written under the name of an earlier one replaces it. The earlier
   // frames would otherwise stay beside the new ones, in one numbered
@@ -48,8 +48,8 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& posi
   std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
   // The series names its files relative to the .pvd, which lies beside the folder.
   const std::string folder = framesDirectory_.filename().string() + "/";
-  writeVtu(framesDirectory_ / name,
-           simulationFrame(rest, positions, velocities, externalForces, vonMisesStress, level));
+  writeVtu(framesDirectory_ / name, simulationFrame(rest, positions, velocities, externalForces,
+                                                    vonMisesStress, level, floor_));
   series_.add(time, 0, folder + name);
   if (deformedSurface) addSurface(time, *deformedSurface);
   series_.write();

@@ -3,11 +3,13 @@
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "tetskin/core/Error.h"
@@ -37,7 +39,8 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const Points3& velocities,
                                                      const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
-                                                     int level) {
+                                                     int level,
+                                                     const std::optional<FloorPlane>& floor) {
   TetMesh deformed{positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
   grid->GetPointData()->AddArray(toVtkVectors("Displacement", positions - rest.nodes));
@@ -60,6 +63,15 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetCellData()->AddArray(stress);
   grid->GetCellData()->AddArray(ratio);
   grid->GetCellData()->AddArray(levels);
+  if (floor) {
+    // As a plane ParaView's users can read: its normal and its height
+    // along it.
+    grid->GetFieldData()->AddArray(toVtkVectors("FloorNormal", upVector(floor->up).transpose()));
+    auto height = vtkSmartPointer<vtkDoubleArray>::New();
+    height->SetName("FloorHeight");
+    height->InsertNextValue(floor->height);
+    grid->GetFieldData()->AddArray(height);
+  }
   return grid;
 }
 
@@ -94,12 +106,24 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
   return state;
 }
 
-std::optional<int> simulationFrameLevel(const std::filesystem::path& path) {
+SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {
   vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
+  SimulationFrameFacts facts;
   vtkDataArray* levels = grid->GetCellData()->GetArray("Level");
-  if (!levels || levels->GetNumberOfTuples() == 0 || levels->GetNumberOfComponents() != 1)
-    return std::nullopt;
-  return static_cast<int>(levels->GetTuple1(0));
+  if (levels && levels->GetNumberOfTuples() > 0 && levels->GetNumberOfComponents() == 1)
+    facts.level = static_cast<int>(levels->GetTuple1(0));
+  vtkDataArray* normal = grid->GetFieldData()->GetArray("FloorNormal");
+  vtkDataArray* height = grid->GetFieldData()->GetArray("FloorHeight");
+  if (normal && height && normal->GetNumberOfTuples() == 1 &&
+      normal->GetNumberOfComponents() == 3 && height->GetNumberOfTuples() == 1 &&
+      height->GetNumberOfComponents() == 1 && std::isfinite(height->GetTuple1(0))) {
+    // (Only an axis is a floor this program simulates.)
+    const double* n = normal->GetTuple3(0);
+    for (UpAxis up : {UpAxis::X, UpAxis::Y, UpAxis::Z})
+      if (Eigen::Vector3d(n[0], n[1], n[2]) == upVector(up))
+        facts.floor = FloorPlane{up, height->GetTuple1(0)};
+  }
+  return facts;
 }
 
 }  // namespace tetskin

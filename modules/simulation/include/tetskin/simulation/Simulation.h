@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
@@ -69,6 +70,12 @@ struct SimulationOptions {
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = 2000;
+
+  // The floor plane, if there is one (floorHeight along up).
+  std::optional<FloorPlane> floor() const {
+    if (!floorHeight) return std::nullopt;
+    return FloorPlane{up, *floorHeight};
+  }
 };
 
 // `options` upright along `up`: the floor's normal and the scenarios'

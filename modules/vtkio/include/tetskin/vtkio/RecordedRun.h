@@ -33,6 +33,9 @@ class RecordedRun {
   // The dataset level the frames are of (the first frame's Level array);
   // nullopt where it does not say.
   std::optional<int> level() const { return level_; }
+  // The run's floor (the first frame's FloorNormal and FloorHeight);
+  // nullopt for a run without one, or one recorded before floors were.
+  std::optional<FloorPlane> floor() const { return floor_; }
   // The run's first surface frame (part 1: the bound surface deformed, a
   // binding that names its dataset), as found from the .pvd's folder (not
   // checked to be there); none for a run recorded without a surface.
@@ -45,6 +48,7 @@ class RecordedRun {
   std::filesystem::path path_;
   std::vector<PvdSeries::Entry> frames_;
   std::optional<int> level_;
+  std::optional<FloorPlane> floor_;
   std::optional<std::string> surface_;
 };
 

@@ -7,7 +7,9 @@
 // leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
 
 #include <filesystem>
+#include <optional>
 
+#include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
@@ -18,7 +20,9 @@ class RunRecorder {
  public:
   // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/, or
   // removes the frames of an earlier run written there (and its .pvd).
-  explicit RunRecorder(std::filesystem::path pvd);
+  // The run's `floor`, if any, goes into every control frame
+  // (SimulationFrame.h), so that the run is drawn with it.
+  explicit RunRecorder(std::filesystem::path pvd, std::optional<FloorPlane> floor = {});
   // The folder the frames of a run written to `pvd` go to (RUN_frames/).
   static std::filesystem::path framesDirectory(const std::filesystem::path& pvd);
   const std::filesystem::path& path() const { return series_.path(); }
@@ -36,6 +40,7 @@ class RunRecorder {
  private:
   std::filesystem::path framesDirectory_;  // absolute
   PvdSeries series_;
+  std::optional<FloorPlane> floor_;
   Index frames_ = 0;
 
   // Writes this frame's surface file and adds it to the series (unwritten).

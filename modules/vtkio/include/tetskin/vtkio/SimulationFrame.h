@@ -4,8 +4,9 @@
 // ParaView: tetrahedra at the deformed positions, point arrays
 // Displacement, Velocity and ExternalForce (N per node: loads, scenario
 // forces, pulls; not gravity), cell arrays VonMisesStress, VolumeRatio
-// (current / rest volume, < 0 for inverted elements) and Level; and the
-// state read back from such a frame.
+// (current / rest volume, < 0 for inverted elements) and Level, and for a
+// run with a floor the field data FloorNormal (the up axis' unit vector)
+// and FloorHeight; and the state read back from such a frame.
 
 #include <vtkSmartPointer.h>
 
@@ -14,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/TetMesh.h"
 
 class vtkUnstructuredGrid;
@@ -24,7 +26,8 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const Points3& velocities,
                                                      const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
-                                                     int level);
+                                                     int level,
+                                                     const std::optional<FloorPlane>& floor = {});
 
 // What a simulation restarts from: a frame's positions (its points) and
 // velocities (its Velocity array).
@@ -41,8 +44,14 @@ struct FrameState {
 FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh& rest,
                                const std::string& restName);
 
-// The dataset level the frame file `path` is of, from its Level cell
-// array; nullopt where it has none (a mesh written by another tool).
-std::optional<int> simulationFrameLevel(const std::filesystem::path& path);
+// What a frame file says of its run: the dataset level it is of (its
+// Level cell array) and the run's floor (its FloorNormal and FloorHeight);
+// each nullopt where the frame does not say (a mesh written by another
+// tool, a run without a floor).
+struct SimulationFrameFacts {
+  std::optional<int> level;
+  std::optional<FloorPlane> floor;
+};
+SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path);
 
 }  // namespace tetskin
