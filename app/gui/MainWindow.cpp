@@ -615,6 +615,13 @@ void MainWindow::resetSimulation() {
     return;
   }
   if (scene_->deformable()) scene_->deformable()->setFrameSeconds(options.timeStep);
+  // A drop starts above the rest shape: its ears would start out of view.
+  // (A start within the rest shape's box leaves the camera as it is: a
+  // surface far from its control mesh is framed alone, as opened.)
+  const BoundingBox start = boundingBox(runner_->simulation().state().positions);
+  const BoundingBox rest = boundingBox(runner_->simulation().restMesh().nodes);
+  if ((start.min.array() < rest.min.array()).any() || (start.max.array() > rest.max.array()).any())
+    scene_->keepInView(start);
   if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
     statusBar()->showMessage("warning: " + QString::fromStdString(warning));
   showLatestState();

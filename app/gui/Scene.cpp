@@ -330,14 +330,31 @@ std::optional<FloorPlane> Scene::floor() const {
   return floorPlane_;
 }
 
+BoundingBox Scene::restBox() const {
+  return surface_ ? boundingBox(*surface_)
+                  : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
+}
+
 void Scene::setCamera(CameraPreset preset) {
   camera_ = preset;
   if (!dataset_) return;
-  const BoundingBox box =
-      surface_ ? boundingBox(*surface_) : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
+  const BoundingBox box = restBox();
   const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
                             box.max.y(), box.min.z(), box.max.z()};
   placeCamera(renderer_, preset, bounds, dataset_->config.up);
+}
+
+void Scene::keepInView(const BoundingBox& box) {
+  if (!dataset_ || box.empty()) return;
+  const double start[6] = {box.min.x(), box.max.x(), box.min.y(),
+                           box.max.y(), box.min.z(), box.max.z()};
+  if (boundsInView(renderer_, start)) return;
+  BoundingBox both = restBox();
+  both.extend(box.min);
+  both.extend(box.max);
+  double bounds[6] = {both.min.x(), both.max.x(), both.min.y(),
+                      both.max.y(), both.min.z(), both.max.z()};
+  renderer_->ResetCamera(bounds);  // (its direction and up kept)
 }
 
 void Scene::setUpAxis(UpAxis up) {

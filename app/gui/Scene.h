@@ -93,6 +93,10 @@ class Scene {
   // Frames the surface (else the control level) from the preset's side; a
   // dataset or surface opened later is framed from the same side.
   void setCamera(CameraPreset preset);
+  // Moves the camera back, keeping its direction and up, until `box` (a
+  // simulation's start, such as a drop's lifted body) is in view with the
+  // surface (else the control level); a camera that shows it already stays.
+  void keepInView(const BoundingBox& box);
   // The dataset's up axis from now on (its config in memory; the file is
   // not changed): the camera is placed again from the same side.
   void setUpAxis(UpAxis up);
@@ -138,6 +142,8 @@ class Scene {
   // binding, path or fur makes its drawing first and takes the new state on
   // after, so one that cannot be drawn (e.g. its texture file is gone)
   // throws with the scene as it was.
+  // The box the camera presets frame: the surface's, else the bound level's at rest.
+  BoundingBox restBox() const;
   std::unique_ptr<DeformableSurface> makeDrawing(const Dataset& dataset, const SurfaceMesh& surface,
                                                  const SurfaceBinding& binding, RenderPath path,
                                                  const FurParameters& fur) const;

@@ -39,6 +39,7 @@
 #include "ImageCompare.h"
 #include "MainWindow.h"
 #include "MovieDecoding.h"
+#include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
@@ -955,6 +956,32 @@ TEST_F(Gui, DrawsTheFloorOfTheSimulationAndOfARecordedRun) {
   EXPECT_EQ(window_->scene().floor(), floor);  // the run's, while it is shown
   QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
   EXPECT_EQ(window_->scene().floor(), std::nullopt);  // the simulation's again
+}
+
+// A drop starts above the rest shape: the camera moves back (its direction
+// kept) until the lifted body is in view; a start the camera shows already
+// leaves it where it is.
+TEST_F(Gui, KeepsADropsLiftedStartInView) {
+  openSample();
+  vtkCamera* camera = window_->renderer()->GetActiveCamera();
+  Eigen::Vector3d position, direction;
+  camera->GetPosition(position.data());
+  camera->GetDirectionOfProjection(direction.data());
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);  // wobble: at rest
+  Eigen::Vector3d after;
+  camera->GetPosition(after.data());
+  EXPECT_EQ(after, position);
+  child<QComboBox>("scenario")->setCurrentText("drop");
+  child<QDoubleSpinBox>("dropHeight")->setValue(1.5);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const BoundingBox start = boundingBox(window_->runner()->simulation().state().positions);
+  const double bounds[6] = {start.min.x(), start.max.x(), start.min.y(),
+                            start.max.y(), start.min.z(), start.max.z()};
+  EXPECT_TRUE(boundsInView(window_->renderer(), bounds));
+  Eigen::Vector3d turned;
+  camera->GetDirectionOfProjection(turned.data());
+  EXPECT_NEAR((turned - direction).norm(), 0, 1e-12);
 }
 
 // Opening a binding of another level moves the control mesh to that level,

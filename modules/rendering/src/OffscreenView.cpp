@@ -8,6 +8,7 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "tetskin/core/Error.h"
@@ -80,6 +81,16 @@ void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds
   camera->SetPosition(center[0] + d[0], center[1] + d[1], center[2] + d[2]);
   camera->SetViewUp(u[0], u[1], u[2]);
   renderer->ResetCamera(const_cast<double*>(bounds));
+}
+
+bool boundsInView(vtkRenderer* renderer, const double bounds[6]) {
+  for (int corner = 0; corner < 8; ++corner) {
+    double x = bounds[corner & 1], y = bounds[2 + ((corner >> 1) & 1)],
+           z = bounds[4 + ((corner >> 2) & 1)];
+    renderer->WorldToView(x, y, z);
+    if (!(std::abs(x) <= 1 && std::abs(y) <= 1)) return false;
+  }
+  return true;
 }
 
 void styleBackground(vtkRenderer* renderer) {

@@ -23,6 +23,9 @@ CameraPreset parseCameraPreset(std::string_view name);  // front, side, top, iso
 // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
 void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6],
                  UpAxis up = UpAxis::Y);
+// Whether all eight corners of `bounds` lie in the renderer's view (its
+// active camera, its viewport's aspect).
+bool boundsInView(vtkRenderer* renderer, const double bounds[6]);
 // TetSkin's gradient background (every view looks alike).
 void styleBackground(vtkRenderer* renderer);
 
