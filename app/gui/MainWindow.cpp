@@ -426,6 +426,13 @@ void MainWindow::buildMenus() {
   for (const char* preset : {"iso", "front", "side", "top"})
     viewMenu->addAction(QString("Camera: ") + preset, this,
                         [this, preset] { camera_->setCurrentText(preset); });
+  viewMenu->addSeparator();
+  // Off for a clean picture (a figure for a paper, a film).
+  QAction* overlay = viewMenu->addAction("Frame &statistics");
+  overlay->setObjectName("overlayAction");
+  overlay->setCheckable(true);
+  overlay->setChecked(overlayVisible_);
+  connect(overlay, &QAction::toggled, this, [this](bool on) { setOverlayVisible(on); });
 }
 
 vtkRenderer* MainWindow::renderer() {
@@ -825,7 +832,12 @@ void MainWindow::renderNow() {
 
 void MainWindow::setOverlayVisible(bool visible) {
   overlayVisible_ = visible;
+  if (auto* action = findChild<QAction*>("overlayAction")) {
+    const QSignalBlocker block(action);
+    action->setChecked(visible);
+  }
   if (!visible) scene_->setOverlayText("");
+  renderNow();
 }
 
 void MainWindow::refreshOverlay() {

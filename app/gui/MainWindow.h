@@ -98,8 +98,10 @@ class MainWindow : public QMainWindow {
   bool filmRun(const QString& ogv);
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
-  // The FPS and timing overlay (off for reproducible screenshots).
+  // The FPS and timing overlay (off for reproducible screenshots); View >
+  // Frame statistics, --no-overlay.
   void setOverlayVisible(bool visible);
+  bool overlayVisible() const { return overlayVisible_; }
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // tetskin-gui [DATASET.json] [SURFACE] [--screenshot FILE [--window]] [--path PATH]
 //             [--size WxH] [--camera PRESET] [--control STYLE] [--color-by ARRAY]
-//             [--highlight] [--pick] [--steps N] [--help] [--version]
+//             [--highlight] [--pick] [--scenario NAME] [--steps N] [--no-overlay]
+//             [--help] [--version]
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -40,7 +41,10 @@ struct GuiArguments {
   QCommandLineOption colorBy{"color-by", "material, MinBarycentric, Distance or FaceId", "ARRAY"};
   QCommandLineOption highlight{"highlight", "mark vertices with negative weights or far"};
   QCommandLineOption pick{"pick", "inspect the vertex at the centre of the view"};
+  QCommandLineOption scenario{"scenario", "wobble, drop, twist or sag (the Simulation dock's)",
+                              "NAME"};
   QCommandLineOption steps{"steps", "simulate N steps first", "N", "0"};
+  QCommandLineOption noOverlay{"no-overlay", "hide the frame statistics (View > Frame statistics)"};
   // Checked values.
   int width = 0, height = 0, stepCount = 0;
 
@@ -51,8 +55,8 @@ struct GuiArguments {
     parser.addVersionOption();
     parser.addPositionalArgument("DATASET", "dataset (.json, or a .node/.ele pair)", "[DATASET]");
     parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
-    parser.addOptions(
-        {screenshot, whole, path, size, camera, control, colorBy, highlight, pick, steps});
+    parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight, pick,
+                       scenario, steps, noOverlay});
   }
 
   // Parses the application's arguments; prints help or the version and
@@ -173,6 +177,12 @@ int main(int argc, char** argv) {
   if (parser.isSet(args.colorBy) && !choose("colorBy", "--color-by", parser.value(args.colorBy)))
     return 1;
   if (parser.isSet(args.highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
+  if (parser.isSet(args.noOverlay)) window.setOverlayVisible(false);
+  if (parser.isSet(args.scenario)) {
+    if (!choose("scenario", "--scenario", parser.value(args.scenario))) return 1;
+    window.findChild<QPushButton*>("reset")->click();  // as the dock applies it
+    if (oneShot && !window.lastError().isEmpty()) return fail();
+  }
   for (int i = 0; i < args.stepCount; ++i) window.findChild<QPushButton*>("step")->click();
   // Steps asked for but not taken (the simulation could not start: its
   // error is the window's last) must not pass for a simulated screenshot.

@@ -12,6 +12,7 @@
 #include <vtkRenderer.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -982,6 +983,20 @@ TEST_F(Gui, KeepsADropsLiftedStartInView) {
   Eigen::Vector3d turned;
   camera->GetDirectionOfProjection(turned.data());
   EXPECT_NEAR((turned - direction).norm(), 0, 1e-12);
+}
+
+// The frame statistics overlay is the View menu's to switch, and the menu
+// shows whether it is on however it was switched.
+TEST_F(Gui, TheViewMenuSwitchesTheFrameStatistics) {
+  openSample();
+  auto* action = window_->findChild<QAction*>("overlayAction");
+  ASSERT_NE(action, nullptr);
+  EXPECT_FALSE(action->isChecked());  // (the fixture switched it off)
+  action->trigger();
+  EXPECT_TRUE(window_->overlayVisible());
+  EXPECT_TRUE(action->isChecked());
+  window_->setOverlayVisible(false);
+  EXPECT_FALSE(action->isChecked());
 }
 
 // Opening a binding of another level moves the control mesh to that level,
