@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 #include "Commands.h"
 #include "OptionChecks.h"
@@ -13,6 +14,8 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/io/GmshFormat.h"
+#include "tetskin/io/TetGenFormat.h"
 #include "tetskin/meshing/MeshQuality.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -74,8 +77,8 @@ void convertTetrahedra(const ConvertOptions& o) {
   writeBoundary(o.output, mesh, std::to_string(mesh.elementCount()) + " tetrahedra");
 }
 
-// Tetrahedral meshes made elsewhere (.vtu: Gmsh through meshio, ParaView,
-// another mesher), one per level, as a dataset: coarsest first, each with
+// Tetrahedral meshes made elsewhere (.vtu: ParaView, meshio, another
+// mesher; Gmsh's .msh; TetGen's .node/.ele), one per level, as a dataset: coarsest first, each with
 // its lower-dimensional cells left out, its unreferenced points dropped and
 // its inverted elements turned.
 void importDataset(const std::vector<std::filesystem::path>& inputs,
@@ -90,21 +93,44 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
   };
   std::vector<Level> levels;
   for (const std::filesystem::path& input : inputs) {
-    if (lowerExtension(input) != ".vtu")
-      throw Error(input.string(), 0,
-                  "is not tetrahedra (.vtu): a dataset is made of one tetrahedral mesh per level");
-    ImportedTetrahedra imported = tetrahedraOf(readVtu(input), input.string());
     Level level;
     level.file = input;
-    level.mesh = std::move(imported.mesh);
-    level.skipped = imported.skippedCells;
+    // Each element named as its file names it: a .vtu's cell number, a
+    // .msh's element tag, a TetGen .ele's element number.
+    std::function<std::string(Index)> elementName;
+    const std::string extension = lowerExtension(input);
+    if (extension == ".vtu") {
+      ImportedTetrahedra imported = tetrahedraOf(readVtu(input), input.string());
+      level.mesh = std::move(imported.mesh);
+      level.skipped = imported.skippedCells;
+      elementName = [cells = std::move(imported.cells)](Index e) {
+        return "cell " + std::to_string(cells[static_cast<std::size_t>(e)]);
+      };
+    } else if (extension == ".msh") {
+      GmshTetrahedra imported = readGmshTetrahedra(input);
+      level.mesh = std::move(imported.mesh);
+      level.skipped = imported.skippedElements;
+      elementName = [tags = std::move(imported.elementTags)](Index e) {
+        return "element " + std::to_string(tags[static_cast<std::size_t>(e)]);
+      };
+    } else if (extension == ".ele" || extension == ".node") {
+      std::filesystem::path node = input, ele = input;
+      node.replace_extension(".node");
+      ele.replace_extension(".ele");
+      int first = 0;
+      level.mesh = readTetMesh(node, ele, &first);
+      elementName = [first](Index e) { return "element " + std::to_string(e + first); };
+    } else {
+      throw Error(input.string(), 0,
+                  "is not tetrahedra (.vtu, Gmsh .msh, or a TetGen .node/.ele pair): a dataset "
+                  "is made of one tetrahedral mesh per level");
+    }
     level.unreferenced = removeUnreferencedNodes(level.mesh);
     level.flipped = orientElementsPositively(level.mesh);
     for (Index e = 0; e < level.mesh.elementCount(); ++e)  // (a flat one stays flat)
       if (!(elementVolume(level.mesh, e) > 0))
         throw Error(input.string(), 0,
-                    "cell " + std::to_string(imported.cells[static_cast<std::size_t>(e)]) +
-                        ", a tetrahedron, has volume " +
+                    elementName(e) + ", a tetrahedron, has volume " +
                         formatNumber(elementVolume(level.mesh, e)) + " (degenerate)");
     level.quality = measureQuality(level.mesh);
     levels.push_back(std::move(level));
@@ -163,10 +189,12 @@ void addConvertCommand(CLI::App& app) {
       "convert",
       "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level to .vtu for ParaView or to "
       "its boundary surface, tetrahedra (.vtu: a run's frame) to their boundary surface, or "
-      "tetrahedral meshes made elsewhere (.vtu, one per level) to a dataset (.json)");
+      "tetrahedral meshes made elsewhere (.vtu, Gmsh .msh, TetGen .node/.ele; one per level) to a "
+      "dataset (.json)");
   cmd->add_option("FILES", o->files,
                   "IN OUT: the input (a surface, a dataset .json/.node/.ele, or tetrahedra .vtu) "
-                  "and the output file; or IN IN ... OUT.json: tetrahedra (.vtu), one per level, "
+                  "and the output file; or IN IN ... OUT.json: tetrahedra (.vtu, Gmsh .msh, TetGen "
+                  ".node/.ele), one per level, "
                   "to a dataset")
       ->required()
       ->expected(-2);

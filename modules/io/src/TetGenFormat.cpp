@@ -361,10 +361,12 @@ void writePoly(const std::filesystem::path& path, const PolyFile& file) {
   });
 }
 
-TetMesh readTetMesh(const std::filesystem::path& nodePath, const std::filesystem::path& elePath) {
+TetMesh readTetMesh(const std::filesystem::path& nodePath, const std::filesystem::path& elePath,
+                    int* eleFirstIndex) {
   TetMesh mesh;
   const NodeFile nodes = readNode(nodePath);
   const EleFile ele = readEle(elePath);
+  if (eleFirstIndex) *eleFirstIndex = ele.firstIndex;
   mesh.nodes = nodes.points;
   // The .node file's numbering base is authoritative for the node references.
   mesh.elements = ele.corners().array() + (ele.firstIndex - nodes.firstIndex);

@@ -84,7 +84,9 @@ void writeFace(const std::filesystem::path& path, const FaceFile& file);
 void writePoly(const std::filesystem::path& path, const PolyFile& file);
 
 // A .node/.ele pair as a tetrahedral mesh, validated (indices in range,
-// finite coordinates; volumes are not checked here).
-TetMesh readTetMesh(const std::filesystem::path& nodePath, const std::filesystem::path& elePath);
+// finite coordinates; volumes are not checked here). `eleFirstIndex`, if
+// given, gets the number the .ele file gives its first element (0 or 1).
+TetMesh readTetMesh(const std::filesystem::path& nodePath, const std::filesystem::path& elePath,
+                    int* eleFirstIndex = nullptr);
 
 }  // namespace tetskin
