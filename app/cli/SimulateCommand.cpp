@@ -19,7 +19,9 @@
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/io/StepLogFile.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RunRecorder.h"
@@ -30,7 +32,7 @@ namespace tetskin::cli {
 namespace {
 
 struct SimulateArgs {
-  std::filesystem::path dataset, output, surface, initial;
+  std::filesystem::path dataset, output, surface, initial, log;
   int steps = 120, level = -1, every = 1;
   std::string solver = "auto", coarseOperators = "galerkin", tangent = "full";
   ScenarioArgs scenario;
@@ -51,6 +53,10 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       if (cmd.count(option) > 0)
         throw Error(std::string(option) +
                     ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
+  if (!a.log.empty()) {
+    requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});
+    requireWritableLocation(a.log);  // before the run, not after it
+  }
   const Dataset dataset = loadDataset(a.dataset);
   // A binding from `tetskin bind` follows as it is, on its level.
   std::optional<SurfaceInput> input;
@@ -114,8 +120,37 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
                       sim.vonMisesStress(), level, deformer ? bound.get() : nullptr);
   };
 
+  // --log: the start and every step, written at the end (and by a run cut
+  // short, with the steps before it).
+  std::vector<StepLogRow> log;
+  double startGravitational = 0;
+  auto logRow = [&](Index step, const StepStats* stats, double seconds) {
+    if (a.log.empty()) return;
+    StepLogRow row;
+    row.step = step;
+    row.time = sim.time();
+    if (stats) {
+      row.solver = toString(stats->solver);
+      row.iterations = stats->iterations;
+      row.residual = stats->residual;
+      row.contacts = stats->contacts;
+      row.assemblySeconds = stats->assemblySeconds;
+      row.setupSeconds = stats->setupSeconds;
+      row.solveSeconds = stats->solveSeconds;
+      row.stepSeconds = seconds;
+    }
+    const Energies e = sim.energies();
+    row.kinetic = e.kinetic;
+    row.elastic = e.elastic;
+    // From the start: relative to the origin, it would swamp the others.
+    row.gravitational = e.gravitational - (log.empty() ? e.gravitational : startGravitational);
+    if (log.empty()) startGravitational = e.gravitational;
+    log.push_back(row);
+  };
+
   Progress progress(a.quiet);
   writeFrame();
+  logRow(0, nullptr, 0);
   double stepSeconds = 0;
   long iterations = 0, multigridSteps = 0;
   for (int i = 0; i < a.steps; ++i) {
@@ -125,10 +160,18 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     try {
       stats = sim.step();
     } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
-      throw Error(std::string(e.what()) + "; " + recorder.path().string() + " keeps the " +
-                  std::to_string(recorder.frames()) + " frame(s) written before it");
+      std::string kept = std::string(e.what()) + "; " + recorder.path().string() + " keeps the " +
+                         std::to_string(recorder.frames()) + " frame(s) written before it";
+      if (!a.log.empty()) {
+        writeStepLog(a.log, log);
+        kept += ", " + a.log.string() + " the " + std::to_string(i) + " step(s)";
+      }
+      throw Error(kept);
     }
-    stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stepSeconds += seconds;
+    logRow(i + 1, &stats, seconds);
     iterations += stats.iterations;
     multigridSteps += stats.solver == SolverKind::Multigrid;
     // Every k-th step, and the last one: a run ends with its end state written.
@@ -192,6 +235,11 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
+  if (!a.log.empty()) {
+    writeStepLog(a.log, log);
+    std::printf("wrote %s (%d step%s and the start)\n", a.log.c_str(), a.steps,
+                a.steps == 1 ? "" : "s");
+  }
   if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
     std::fprintf(stderr, "warning: %s\n",
                  describe(shortfall, options, "--solver multigrid").c_str());
@@ -249,6 +297,11 @@ void addSimulateCommand(CLI::App& app) {
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--log", a->log,
+                  "also write every step to this table (.csv): time, solver, iterations, "
+                  "residual, floor contacts, the step's times by stage, kinetic, elastic and "
+                  "gravitational energy")
+      ->check(fileEnding(".csv"));
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
