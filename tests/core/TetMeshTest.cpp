@@ -26,6 +26,10 @@ TEST(TetMesh, ElementVolumesArePositive) {
   EXPECT_NEAR(elementVolume(m, 0), 1.0 / 6.0, 1e-15);
   EXPECT_GT(elementVolume(m, 1), 0.0);
   EXPECT_NO_THROW(validateTetMesh(m, "m"));
+  EXPECT_DOUBLE_EQ(meshVolume(m), elementVolume(m, 0) + elementVolume(m, 1));
+  TetMesh turned = m;  // one element inverted: its volume counts against
+  std::swap(turned.elements(1, 0), turned.elements(1, 1));
+  EXPECT_DOUBLE_EQ(meshVolume(turned), elementVolume(m, 0) - elementVolume(m, 1));
 }
 
 TEST(TetMesh, InvertedElementIsReported) {

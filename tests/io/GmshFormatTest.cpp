@@ -14,12 +14,6 @@
 namespace tetskin {
 namespace {
 
-double totalVolume(const TetMesh& mesh) {
-  double sum = 0;
-  for (Index e = 0; e < mesh.elementCount(); ++e) sum += elementVolume(mesh, e);
-  return sum;
-}
-
 void expectSphere(const GmshTetrahedra& read, Index nodes, Index tetrahedra, Index triangles) {
   EXPECT_EQ(read.mesh.nodeCount(), nodes);
   EXPECT_EQ(read.mesh.elementCount(), tetrahedra);
@@ -29,8 +23,8 @@ void expectSphere(const GmshTetrahedra& read, Index nodes, Index tetrahedra, Ind
     EXPECT_GT(elementVolume(read.mesh, e), 0) << "element " << e;
   // An inscribed polyhedron of the unit sphere: a little less than 4/3 pi.
   const double sphere = 4.0 / 3.0 * std::numbers::pi;
-  EXPECT_LT(totalVolume(read.mesh), sphere);
-  EXPECT_GT(totalVolume(read.mesh), 0.95 * sphere);
+  EXPECT_LT(meshVolume(read.mesh), sphere);
+  EXPECT_GT(meshVolume(read.mesh), 0.95 * sphere);
   const BoundingBox box = boundingBox(read.mesh.nodes);
   EXPECT_NEAR(box.max.z(), 1, 1e-12);  // a pole
   EXPECT_NEAR(box.min.z(), -1, 1e-12);

@@ -12,12 +12,6 @@
 namespace tetskin {
 namespace {
 
-double totalVolume(const TetMesh& m) {
-  double v = 0;
-  for (Index e = 0; e < m.elementCount(); ++e) v += elementVolume(m, e);
-  return v;
-}
-
 TEST(Meshers, TetGenFillsTheBoxWithPositiveTetrahedra) {
   const SurfaceMesh box = test::box({0, 0, 0}, {2, 1, 1});
   const TetMesh coarse = tetrahedralizeWithTetGen(box, 2.0);
@@ -25,7 +19,7 @@ TEST(Meshers, TetGenFillsTheBoxWithPositiveTetrahedra) {
   for (const TetMesh* m : {&coarse, &fine}) {
     EXPECT_NO_THROW(validateTetMesh(*m, "tetgen", /*requirePositiveVolume=*/true));
     EXPECT_TRUE(unreferencedNodes(*m).empty());
-    EXPECT_NEAR(totalVolume(*m), 2.0, 1e-9);
+    EXPECT_NEAR(meshVolume(*m), 2.0, 1e-9);
   }
   EXPECT_GT(fine.elementCount(), coarse.elementCount());
 }
@@ -38,11 +32,11 @@ TEST(Meshers, ACavityStaysEmpty) {
   const SurfaceMesh hollow = test::merge(test::box({-2, -2, -2}, {2, 2, 2}), inner);
   const TetMesh tetgen = tetrahedralizeWithTetGen(hollow, 1.6);
   EXPECT_NO_THROW(validateTetMesh(tetgen, "tetgen", /*requirePositiveVolume=*/true));
-  EXPECT_NEAR(totalVolume(tetgen), 64.0 - 8.0, 1e-9);
+  EXPECT_NEAR(meshVolume(tetgen), 64.0 - 8.0, 1e-9);
   if (!netgenAvailable()) GTEST_SKIP() << "built without Netgen";
   const TetMesh netgen = tetrahedralizeWithNetgen(hollow, NetgenFineness::Moderate);
   EXPECT_NO_THROW(validateTetMesh(netgen, "netgen", /*requirePositiveVolume=*/true));
-  EXPECT_NEAR(totalVolume(netgen), 64.0 - 8.0, 1e-6);
+  EXPECT_NEAR(meshVolume(netgen), 64.0 - 8.0, 1e-6);
 }
 
 TEST(Meshers, TetGenRejectsSelfIntersectingInput) {
@@ -66,7 +60,7 @@ TEST(Meshers, TetGenVolumeBoundBoundsEveryElement) {
   const double bound = 0.01;
   const TetMesh bounded = tetrahedralizeWithTetGen(box, 2.0, bound);
   EXPECT_NO_THROW(validateTetMesh(bounded, "tetgen", /*requirePositiveVolume=*/true));
-  EXPECT_NEAR(totalVolume(bounded), 2.0, 1e-9);
+  EXPECT_NEAR(meshVolume(bounded), 2.0, 1e-9);
   double largest = 0;
   for (Index e = 0; e < bounded.elementCount(); ++e)
     largest = std::max(largest, elementVolume(bounded, e));
@@ -94,7 +88,7 @@ TEST(Meshers, NetgenPresetsAndEdgeBoundsGiveValidMeshes) {
   for (const IsolatedResult& r : results) {
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_NO_THROW(validateTetMesh(r.mesh, "netgen", true));
-    EXPECT_NEAR(totalVolume(r.mesh), 2.0, 1e-6);
+    EXPECT_NEAR(meshVolume(r.mesh), 2.0, 1e-6);
   }
   EXPECT_GE(results[1].mesh.elementCount(), results[0].mesh.elementCount());
   EXPECT_GT(results[3].mesh.elementCount(), results[2].mesh.elementCount());

@@ -18,6 +18,12 @@ double elementVolume(const TetMesh& mesh, Index e) {
                          node(mesh.nodes, t(e, 2)), node(mesh.nodes, t(e, 3)));
 }
 
+double meshVolume(const TetMesh& mesh) {
+  double sum = 0;
+  for (Index e = 0; e < mesh.elementCount(); ++e) sum += elementVolume(mesh, e);
+  return sum;
+}
+
 void validateTetMesh(const TetMesh& mesh, const std::string& name, bool requirePositiveVolume) {
   for (Index v = 0; v < mesh.nodeCount(); ++v) {
     const std::string problem = coordinateProblem(mesh.nodes.row(v));

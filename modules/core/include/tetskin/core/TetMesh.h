@@ -44,6 +44,10 @@ struct MultiLevelTetMesh {
 // Signed volume of element e of `mesh`.
 double elementVolume(const TetMesh& mesh, Index e);
 
+// Sum of the elements' signed volumes (the body's volume when every
+// element is positively oriented).
+double meshVolume(const TetMesh& mesh);
+
 // Throws Error naming `name` and the element or node when a node index is out
 // of range, a coordinate is not finite or (if requirePositiveVolume) an
 // element's signed volume is not positive.
