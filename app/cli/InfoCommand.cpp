@@ -22,6 +22,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/io/GmshFormat.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/meshing/SurfaceNesting.h"
 #include "tetskin/meshing/SurfaceRepair.h"
@@ -234,6 +235,23 @@ void printTetMesh(const std::filesystem::path& path) {
   printArrays("cell data", grid->GetCellData());
 }
 
+// A Gmsh volume mesh (.msh): its tetrahedra as `convert` takes them, and
+// what it leaves out.
+void printGmshMesh(const std::filesystem::path& path) {
+  const GmshTetrahedra read = readGmshTetrahedra(path);
+  std::printf("%s: Gmsh mesh\n", path.c_str());
+  std::printf("  nodes      %lld\n  elements   %lld tetrahedra",
+              static_cast<long long>(read.mesh.nodeCount()),
+              static_cast<long long>(read.mesh.elementCount()));
+  if (read.skippedElements > 0)
+    std::printf(" (%lld elements of lower dimension left out)",
+                static_cast<long long>(read.skippedElements));
+  std::printf("\n");
+  const Volumes v = volumes(read.mesh);
+  std::printf("  volume     %g (smallest element %g)\n", v.total, v.smallest);
+  printBox(boundingBox(read.mesh.nodes));
+}
+
 // A .pvd (from simulate, the GUI's recorder or ParaView): its time steps and,
 // per part, how many files it lists and whether they are all there.
 void printSeries(const std::filesystem::path& path) {
@@ -285,7 +303,7 @@ void addInfoCommand(CLI::App& app) {
       "info",
       "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
       "bound to and their quality), tetrahedral meshes (.vtu from convert or simulate: arrays "
-      "and their ranges), time series (.pvd: steps, files, any missing) and datasets "
+      "and their ranges; Gmsh .msh), time series (.pvd: steps, files, any missing) and datasets "
       "(.json/.node/.ele)");
   cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
   cmd->callback([files] {
@@ -303,12 +321,15 @@ void addInfoCommand(CLI::App& app) {
         printTetMesh(path);
       } else if (extension == ".pvd") {
         printSeries(path);
+      } else if (extension == ".msh") {
+        printGmshMesh(path);
       } else if (isDatasetFile(path)) {
         printDataset(path);
       } else {
         throw Error(
             path.string(), 0,
-            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu), time series "
+            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu, Gmsh .msh), time "
+            "series "
             "(.pvd) and datasets (.json .node .ele), not " +
                 (extension.empty() ? "files without an extension" : "'" + extension + "' files"));
       }
