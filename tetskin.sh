@@ -102,7 +102,11 @@ demo() {
     --positions "$out/bunny_rotated.node" -o "$out/bunny_64k_rotated.vtp"
   log "simulating the finest level (wobble), the 64k bunny following it"
   "$tetskin" simulate "$out/bunny.json" --scenario wobble --steps 60 --every 2 \
-    --surface data/bunny_64k.obj -o "$out/wobble.pvd"
+    --surface data/bunny_64k.obj -o "$out/wobble.pvd" --log "$out/wobble_steps.csv"
+  log "dropping it onto the floor, and filming the drop (the floor drawn under it)"
+  "$tetskin" simulate "$out/bunny.json" --scenario drop --steps 60 --every 2 -o "$out/drop.pvd" -q
+  with_display "$tetskin" render "$out/bunny.json" --run "$out/drop.pvd" --size 640x480 \
+    -o "$out/drop.ogv"
   log "rendering 30 animated frames on each render path"
   for path in cpu gpu-1pass gpu-2pass; do
     with_display "$tetskin" render "$out/bunny.json" --surface data/bunny_64k.obj --path "$path" \
