@@ -41,6 +41,7 @@
 #include <cmath>
 
 #include "BuildDialog.h"
+#include "EnergyPlot.h"
 #include "HistogramWidget.h"
 #include "RecordedRunPanel.h"
 #include "ScientificSpinBox.h"
@@ -305,6 +306,9 @@ QWidget* MainWindow::buildSimulationDock() {
   // A recorded run opened to step through (File > Open of its .pvd).
   runPanel_ = new RecordedRunPanel;
   layout->addWidget(runPanel_);
+  energyPlot_ = new EnergyPlot;
+  energyPlot_->setObjectName("energyPlot");
+  layout->addWidget(energyPlot_);
   connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
   connect(runPanel_, &RecordedRunPanel::continueRequested, this,
           [this](const QString& frame) { startFromFrame(frame); });
@@ -592,6 +596,8 @@ void MainWindow::resetSimulation() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
   scene_->setFloor(std::nullopt);  // (the new simulation's, if it starts)
+  energyPlot_->clear();
+  plottedSteps_ = -1;
   shownSteps_ = -1;
   shownShortfallSteps_ = 0;
   showPlaying(false);
@@ -770,6 +776,7 @@ void MainWindow::showLatestState() {
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);
   shownSteps_ = state.steps;
+  plotEnergy(state);
   if (recorder_) {
     try {
       Simulation& sim = runner_->simulation();
@@ -782,6 +789,18 @@ void MainWindow::showLatestState() {
     }
   }
   renderNow();
+}
+
+void MainWindow::plotEnergy(const SimulationState& state) {
+  // Every step taken by hand; while playing, at most 20 samples a second
+  // of wall-clock time (each costs an element pass).
+  const auto now = std::chrono::steady_clock::now();
+  if (state.steps == plottedSteps_) return;
+  if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(50)) return;
+  const Energies e = runner_->simulation().energies();
+  energyPlot_->add({state.time, e.kinetic, e.elastic});
+  plottedSteps_ = state.steps;
+  lastEnergySample_ = now;
 }
 
 void MainWindow::showPlaying(bool playing) {

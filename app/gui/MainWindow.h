@@ -35,6 +35,7 @@ class vtkRenderer;
 
 namespace tetskin::gui {
 
+class EnergyPlot;
 class HistogramWidget;
 class RecordedRunPanel;
 class BuildDialog;
@@ -126,6 +127,8 @@ class MainWindow : public QMainWindow {
   void tick();
   // The Play button as playing or not, without telling the runner.
   void showPlaying(bool playing);
+  // Adds the simulation's energies at `state` to the energy plot.
+  void plotEnergy(const SimulationState& state);
   // A step of the runner failed (it paused): the button follows, and the
   // message is shown (lastError()). Or more of its solves stopped at the
   // iteration limit: a warning in the status bar.
@@ -158,6 +161,9 @@ class MainWindow : public QMainWindow {
   QComboBox *colorBy_, *rebindMethod_;
   QCheckBox* highlight_;
   HistogramWidget* histogram_;
+  EnergyPlot* energyPlot_;
+  Index plottedSteps_ = -1;  // the step of the energy plot's last sample
+  std::chrono::steady_clock::time_point lastEnergySample_;
   QLabel *vertexInfo_, *comparison_;
   QSpinBox* rebindLevel_;
   // Simulation.

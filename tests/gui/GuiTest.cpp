@@ -36,6 +36,7 @@
 #include <sstream>
 
 #include "BuildDialog.h"
+#include "EnergyPlot.h"
 #include "HistogramWidget.h"
 #include "ImageCompare.h"
 #include "MainWindow.h"
@@ -997,6 +998,30 @@ TEST_F(Gui, TheViewMenuSwitchesTheFrameStatistics) {
   EXPECT_TRUE(action->isChecked());
   window_->setOverlayVisible(false);
   EXPECT_FALSE(action->isChecked());
+}
+
+// The Simulation dock plots the energies of every step taken: a drop
+// gains kinetic energy as it falls; Reset starts the curves again.
+TEST_F(Gui, PlotsTheEnergyOfEachStep) {
+  openSample();
+  auto* plot = window_->findChild<EnergyPlot*>("energyPlot");
+  ASSERT_NE(plot, nullptr);
+  child<QComboBox>("scenario")->setCurrentText("drop");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_EQ(plot->samples().size(), 1u);  // the start
+  EXPECT_EQ(plot->samples().front().time, 0);
+  EXPECT_EQ(plot->samples().front().kinetic, 0);
+  for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  ASSERT_EQ(plot->samples().size(), 4u);
+  const Energies now = window_->runner()->simulation().energies();
+  EXPECT_EQ(plot->samples().back().kinetic, now.kinetic);
+  EXPECT_EQ(plot->samples().back().elastic, now.elastic);
+  EXPECT_NEAR(plot->samples().back().time, 3 * window_->runner()->simulation().options().timeStep,
+              1e-12);
+  for (std::size_t i = 1; i < plot->samples().size(); ++i)
+    EXPECT_GT(plot->samples()[i].kinetic, plot->samples()[i - 1].kinetic) << "falling, step " << i;
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(plot->samples().size(), 1u);
 }
 
 // Opening a binding of another level moves the control mesh to that level,

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The running simulation's kinetic and elastic energy over its last
+// seconds of simulated time, as two curves: a researcher sees the body
+// settle under damping, or a step size grow unstable, as it happens.
+
+#include <QWidget>
+#include <deque>
+
+namespace tetskin::gui {
+
+class EnergyPlot : public QWidget {
+  Q_OBJECT
+ public:
+  struct Sample {
+    double time = 0, kinetic = 0, elastic = 0;
+  };
+  explicit EnergyPlot(QWidget* parent = nullptr);
+  // A sample at simulated `time`; one at an earlier time than the last
+  // (a new run) starts the curves again. Samples older than `window`
+  // seconds before the newest are dropped.
+  void add(const Sample& sample);
+  void clear();
+  const std::deque<Sample>& samples() const { return samples_; }
+  double window() const { return window_; }
+  QSize sizeHint() const override { return {260, 110}; }
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+
+ private:
+  std::deque<Sample> samples_;
+  double window_ = 10;  // seconds of simulated time shown
+};
+
+}  // namespace tetskin::gui
