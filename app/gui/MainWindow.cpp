@@ -792,11 +792,11 @@ void MainWindow::showLatestState() {
 }
 
 void MainWindow::plotEnergy(const SimulationState& state) {
-  // Every step taken by hand; while playing, at most 20 samples a second
+  // Every step taken by hand; while playing, at most 10 samples a second
   // of wall-clock time (each costs an element pass).
   const auto now = std::chrono::steady_clock::now();
   if (state.steps == plottedSteps_) return;
-  if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(50)) return;
+  if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(100)) return;
   const Energies e = runner_->simulation().energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic});
   plottedSteps_ = state.steps;

@@ -2,6 +2,7 @@
 #include "tetskin/simulation/CorotatedFem.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 
 #include "CorotatedElementPass.h"
 #include "CorotatedLanes.h"
@@ -317,14 +319,21 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, Spar
 }
 
 double CorotatedFem::elasticEnergy(const Eigen::VectorXd& x) const {
-  // 1/2 z^T K_e z = V/2 sigma : strain.
-  double energy = 0;
-  for (std::size_t e = 0; e < scatter_.size(); ++e) {
-    const Eigen::Matrix3d F = deformationGradient(e, x);
-    const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
-    energy += 0.5 * volume(e) * linearStress(strain).cwiseProduct(strain).sum();
-  }
-  return energy;
+  // 1/2 z^T K_e z = V/2 sigma : strain. In parallel (a polar decomposition
+  // per element: 7.7 ms at 12.7k elements on one core, which simulate
+  // --log and the GUI's energy plot pay every sample), summed in a fixed
+  // order: the same state gives the same energy, bit for bit.
+  return tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<std::size_t>(0, scatter_.size(), 1024), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& elements, double energy) {
+        for (std::size_t e = elements.begin(); e < elements.end(); ++e) {
+          const Eigen::Matrix3d F = deformationGradient(e, x);
+          const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
+          energy += 0.5 * volume(e) * linearStress(strain).cwiseProduct(strain).sum();
+        }
+        return energy;
+      },
+      std::plus<>());
 }
 
 Eigen::VectorXd CorotatedFem::vonMisesStress(const Eigen::VectorXd& x) const {
