@@ -58,7 +58,7 @@ void addBindCommand(CLI::App& app) {
   auto a = std::make_shared<BindArgs>();
   CLI::App* cmd = app.add_subcommand(
       "bind", "Bind a surface (OBJ/PLY/STL/VTP) to a dataset level's boundary; writes a .vtp");
-  cmd->add_option("DATASET", a->dataset, "dataset (.json, or a .node/.ele pair)")
+  cmd->add_option("DATASET", a->dataset, "dataset (.json, a .node/.ele pair or a Gmsh .msh)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("SURFACE", a->surface, "surface to bind")->required()->check(CLI::ExistingFile);

@@ -77,30 +77,6 @@ void convertTetrahedra(const ConvertOptions& o) {
   writeBoundary(o.output, mesh, std::to_string(mesh.elementCount()) + " tetrahedra");
 }
 
-// A Gmsh volume mesh (.msh) to .vtu for ParaView (which has no reader of
-// its own for it) or to the surface of its boundary: its tetrahedra as a
-// dataset would take them (nodes no tetrahedron uses dropped, elements of
-// the other orientation turned).
-void convertGmsh(const ConvertOptions& o) {
-  const bool toSurface = isSurfaceFile(o.output);
-  if (!toSurface && lowerExtension(o.output) != ".vtu")
-    throw Error(o.output.string(), 0,
-                "a Gmsh mesh converts to .vtu (its tetrahedra), to a surface (.obj .ply .stl "
-                ".vtp: their boundary) or, with other levels, to a dataset (.json)");
-  GmshTetrahedra read = readGmshTetrahedra(o.input);
-  removeUnreferencedNodes(read.mesh);
-  orientElementsPositively(read.mesh);
-  if (toSurface) {
-    writeBoundary(o.output, read.mesh, std::to_string(read.mesh.elementCount()) + " tetrahedra");
-    return;
-  }
-  writeVtu(o.output, toVtkUnstructuredGrid(read.mesh));
-  std::printf("wrote %s (%lld nodes, %lld tetrahedra; %lld elements of lower dimension left out)\n",
-              o.output.c_str(), static_cast<long long>(read.mesh.nodeCount()),
-              static_cast<long long>(read.mesh.elementCount()),
-              static_cast<long long>(read.skippedElements));
-}
-
 // Tetrahedral meshes made elsewhere (.vtu: ParaView, meshio, another
 // mesher; Gmsh's .msh; TetGen's .node/.ele), one per level, as a dataset: coarsest first, each with
 // its lower-dimensional cells left out, its unreferenced points dropped and
@@ -211,14 +187,13 @@ void addConvertCommand(CLI::App& app) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand(
       "convert",
-      "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level to .vtu for ParaView or to "
-      "its boundary surface, tetrahedra (.vtu: a run's frame) to their boundary surface, a Gmsh "
-      "mesh (.msh) to .vtu or its boundary, or "
-      "tetrahedral meshes made elsewhere (.vtu, Gmsh .msh, TetGen .node/.ele; one per level) to a "
-      "dataset (.json)");
+      "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level (a Gmsh .msh too) to .vtu "
+      "for ParaView or to its boundary surface, tetrahedra (.vtu: a run's frame) to their "
+      "boundary surface, or tetrahedral meshes made elsewhere (.vtu, Gmsh .msh, TetGen "
+      ".node/.ele; one per level) to a dataset (.json)");
   cmd->add_option(
          "FILES", o->files,
-         "IN OUT: the input (a surface, a dataset .json/.node/.ele, or tetrahedra .vtu/.msh) "
+         "IN OUT: the input (a surface, a dataset .json/.node/.ele/.msh, or tetrahedra .vtu) "
          "and the output file; or IN IN ... OUT.json: tetrahedra (.vtu, Gmsh .msh, TetGen "
          ".node/.ele), one per level, "
          "to a dataset")
@@ -259,14 +234,10 @@ void addConvertCommand(CLI::App& app) {
       if (cmd->count("--level") > 0)
         throw Error("--level: applies to a dataset's conversion, not to tetrahedra's");
       convertTetrahedra(*o);
-    } else if (lowerExtension(o->input) == ".msh") {
-      if (cmd->count("--level") > 0)
-        throw Error("--level: applies to a dataset's conversion, not to a Gmsh mesh's");
-      convertGmsh(*o);
     } else {
       throw Error(o->input.string(), 0,
                   "is neither a surface (.obj .ply .stl .vtp), a dataset (.json, or a "
-                  ".node/.ele pair) nor tetrahedra (.vtu, Gmsh .msh): convert takes those");
+                  ".node/.ele pair, a Gmsh .msh) nor tetrahedra (.vtu): convert takes those");
     }
   });
 }

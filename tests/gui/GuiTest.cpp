@@ -1024,6 +1024,18 @@ TEST_F(Gui, PlotsTheEnergyOfEachStep) {
   EXPECT_EQ(plot->samples().size(), 1u);
 }
 
+// A Gmsh mesh opens as a dataset of one level, and simulates.
+TEST_F(Gui, OpensAGmshMesh) {
+  ASSERT_TRUE(
+      window_->openFile(QString(TETSKIN_SOURCE_DIR) + "/tests/data/gmsh/sphere_coarse_v41.msh"))
+      << window_->lastError().toStdString();
+  ASSERT_EQ(window_->scene().dataset().mesh.levels.size(), 1u);
+  EXPECT_EQ(window_->scene().dataset().mesh.levels[0].elementCount, 679);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->state().steps, 1);
+}
+
 // Opening a binding of another level moves the control mesh to that level,
 // as a rebind does, and the control level field says so.
 // A control level other than the simulated one follows it: a rigid motion

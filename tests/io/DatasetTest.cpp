@@ -78,8 +78,28 @@ TEST(Dataset, MissingNodeFileIsNamed) {
 TEST(Dataset, OtherExtensionsAreNotDatasets) {
   test::ScratchDir dir;
   const auto obj = dir.write("bunny.obj", "v 0 0 0\n");
-  test::expectErrorAt([&] { loadDataset(obj); }, obj.string(), 0,
-                      "is not a dataset (expected its .json config, or a .node/.ele pair)");
+  test::expectErrorAt(
+      [&] { loadDataset(obj); }, obj.string(), 0,
+      "is not a dataset (expected its .json config, a .node/.ele pair or a Gmsh .msh)");
+}
+
+// A Gmsh mesh is a one-level dataset, as a .node/.ele pair is: its
+// tetrahedra, the nodes no tetrahedron uses dropped, elements of the other
+// orientation turned (the hand-written mesh below lists its one
+// tetrahedron inverted, and a node only a point element uses).
+TEST(Dataset, AGmshMeshIsAOneLevelDataset) {
+  test::ScratchDir dir;
+  const auto msh = dir.write("t.msh",
+                             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n"
+                             "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 7 7 7\n$EndNodes\n"
+                             "$Elements\n2\n1 15 0 5\n2 4 0 2 1 3 4\n$EndElements\n");
+  const Dataset d = loadDataset(msh);
+  ASSERT_EQ(d.mesh.levels.size(), 1u);
+  EXPECT_EQ(d.mesh.nodes.rows(), 4);
+  ASSERT_EQ(d.mesh.elements.rows(), 1);
+  EXPECT_NEAR(meshVolume(extractLevel(d.mesh, 0)), 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(d.config.levels.front().source.mesher, "gmsh");
+  EXPECT_EQ(d.config.levels.front().source.input, "t.msh");
 }
 
 // What `tetskin build -o OUT` (and the GUI's build dialog) writes: OUT.json,

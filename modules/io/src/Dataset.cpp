@@ -3,21 +3,17 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/io/GmshFormat.h"
 #include "tetskin/io/TetGenFormat.h"
 
 namespace tetskin {
 namespace {
 
-Dataset loadNodeElePair(const std::filesystem::path& path) {
-  std::filesystem::path nodePath = path, elePath = path;
-  nodePath.replace_extension(".node");
-  elePath.replace_extension(".ele");
+// `mesh`, read from `path`, as a one-level dataset with default settings.
+Dataset oneLevelDataset(const std::filesystem::path& path, const TetMesh& mesh) {
   Dataset dataset;
-  const TetMesh mesh = readTetMesh(nodePath, elePath);
   appendLevel(dataset.mesh, mesh);
   dataset.config.directory = path.parent_path();
-  dataset.config.nodeFile = nodePath.filename();
-  dataset.config.eleFile = elePath.filename();
   LevelConfig level;
   level.range = dataset.mesh.levels.front();
   level.source.input = path.filename().string();
@@ -25,11 +21,30 @@ Dataset loadNodeElePair(const std::filesystem::path& path) {
   return dataset;
 }
 
+Dataset loadNodeElePair(const std::filesystem::path& path) {
+  std::filesystem::path nodePath = path, elePath = path;
+  nodePath.replace_extension(".node");
+  elePath.replace_extension(".ele");
+  Dataset dataset = oneLevelDataset(path, readTetMesh(nodePath, elePath));
+  dataset.config.nodeFile = nodePath.filename();
+  dataset.config.eleFile = elePath.filename();
+  return dataset;
+}
+
+Dataset loadGmshMesh(const std::filesystem::path& path) {
+  GmshTetrahedra read = readGmshTetrahedra(path);
+  removeUnreferencedNodes(read.mesh);
+  orientElementsPositively(read.mesh);
+  Dataset dataset = oneLevelDataset(path, read.mesh);
+  dataset.config.levels.front().source.mesher = "gmsh";
+  return dataset;
+}
+
 }  // namespace
 
 bool isDatasetFile(const std::filesystem::path& path) {
   const std::string e = lowerExtension(path);
-  return e == ".json" || e == ".node" || e == ".ele";
+  return e == ".json" || e == ".node" || e == ".ele" || e == ".msh";
 }
 
 std::filesystem::path datasetConfigPath(std::filesystem::path output) {
@@ -42,9 +57,10 @@ Dataset loadDataset(const std::filesystem::path& path) {
   // swapped) would otherwise be parsed as JSON and fail on its first line.
   if (!isDatasetFile(path))
     throw Error(path.string(), 0,
-                "is not a dataset (expected its .json config, or a .node/.ele pair)");
+                "is not a dataset (expected its .json config, a .node/.ele pair or a Gmsh .msh)");
   if (lowerExtension(path) == ".node" || lowerExtension(path) == ".ele")
     return loadNodeElePair(path);
+  if (lowerExtension(path) == ".msh") return loadGmshMesh(path);
   Dataset dataset;
   dataset.config = readDatasetConfig(path);
   const std::filesystem::path nodePath = dataset.config.resolve(dataset.config.nodeFile);
