@@ -661,6 +661,8 @@ bool MainWindow::startFromFrame(const QString& qpath) {
   runner_->simulation().setVelocities(start.velocities);
   lastError_.clear();
   rememberRecent(QFileInfo(qpath).absoluteFilePath());
+  energyPlot_->clear();  // (its start was the scenario's, before the frame's state)
+  plottedSteps_ = -1;
   showLatestState();
   QString message = "started from " + qpath;
   if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())

@@ -1022,6 +1022,16 @@ TEST_F(Gui, PlotsTheEnergyOfEachStep) {
     EXPECT_GT(plot->samples()[i].kinetic, plot->samples()[i - 1].kinetic) << "falling, step " << i;
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_EQ(plot->samples().size(), 1u);
+  // Started from a frame: the plot's start is the frame's state.
+  for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const std::filesystem::path frame = scratch("energy_frame.vtu");
+  ASSERT_TRUE(window_->exportFrame(QString::fromStdString(frame.string())))
+      << window_->lastError().toStdString();
+  ASSERT_TRUE(window_->startFromFrame(QString::fromStdString(frame.string())))
+      << window_->lastError().toStdString();
+  ASSERT_EQ(plot->samples().size(), 1u);
+  EXPECT_EQ(plot->samples().front().kinetic, window_->runner()->simulation().energies().kinetic);
+  EXPECT_GT(plot->samples().front().kinetic, 0);
 }
 
 // A Gmsh mesh opens as a dataset of one level, and simulates.
