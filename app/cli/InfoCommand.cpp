@@ -240,9 +240,10 @@ void printTetMesh(const std::filesystem::path& path) {
 void printGmshMesh(const std::filesystem::path& path) {
   const GmshTetrahedra read = readGmshTetrahedra(path);
   std::printf("%s: Gmsh mesh\n", path.c_str());
-  std::printf("  nodes      %lld\n  elements   %lld tetrahedra",
+  std::printf("  nodes      %lld\n  elements   %lld tetrahedr%s",
               static_cast<long long>(read.mesh.nodeCount()),
-              static_cast<long long>(read.mesh.elementCount()));
+              static_cast<long long>(read.mesh.elementCount()),
+              read.mesh.elementCount() == 1 ? "on" : "a");
   if (read.skippedElements > 0)
     std::printf(" (%lld elements of lower dimension left out)",
                 static_cast<long long>(read.skippedElements));

@@ -83,6 +83,20 @@ TEST(GmshFormat, Format41BlocksAndAQuadraticTetrahedron) {
   EXPECT_NEAR(elementVolume(read.mesh, 0), 8.0 / 6.0, 1e-15);
 }
 
+// Windows line ends, and nodes with parametric coordinates after x y z
+// (Gmsh writes them for nodes on curves and surfaces when asked).
+TEST(GmshFormat, WindowsLineEndsAndParametricNodes) {
+  const GmshTetrahedra read = parseGmshTetrahedra(
+      "$MeshFormat\r\n4.1 0 8\r\n$EndMeshFormat\r\n"
+      "$Nodes\r\n1 4 1 4\r\n3 1 1 4\r\n1\r\n2\r\n3\r\n4\r\n"
+      "0 0 0 0 0 0\r\n1 0 0 1 0 0\r\n0 1 0 0 1 0\r\n0 0 1 0 0 1\r\n$EndNodes\r\n"
+      "$Elements\r\n1 1 1 1\r\n3 1 4 1\r\n1 1 2 3 4\r\n$EndElements\r\n",
+      "crlf.msh");
+  ASSERT_EQ(read.mesh.elementCount(), 1);
+  EXPECT_EQ(read.mesh.nodes.row(3), Eigen::RowVector3d(0, 0, 1));
+  EXPECT_NEAR(elementVolume(read.mesh, 0), 1.0 / 6.0, 1e-15);
+}
+
 void expectBad(const std::string& content, long line, const std::string& what) {
   test::expectErrorAt([&] { parseGmshTetrahedra(content, "bad.msh"); }, "bad.msh", line, what);
 }
