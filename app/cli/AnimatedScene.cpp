@@ -23,7 +23,7 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
                              const SceneOptions& o)
     : dataset_(dataset),
       level_(commandLevel(input, dataset.mesh, o.level, false)),
-      material_(o.material),
+      material_(o.material.value_or(dataset.config.elasticity)),
       timeStep_(o.timeStep),
       nodes_(dataset.mesh.nodes) {
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, input.surface,
@@ -69,7 +69,7 @@ void AnimatedScene::frame(const BoundingBox& box) {
 void AnimatedScene::startSimulation() {
   const TetMesh rest = extractLevel(dataset_.mesh, level_);
   SimulationOptions options = uprightAlong(up_, {});
-  options.material = materialOf(material_, dataset_.config.elasticity);
+  options.material = material_;
   options.timeStep = timeStep_;
   simulation_ = std::make_unique<Simulation>(
       dataset_.mesh, level_,
@@ -111,15 +111,6 @@ void AnimatedScene::draw(const Points3& positions, double seconds) {
   if (seconds > 0) surface_->setFrameSeconds(seconds);
   follow(positions);
   view_->render();
-}
-
-double AnimatedScene::frameSeconds() const {
-  return simulation_ ? simulation_->options().timeStep : timeStep_;
-}
-
-ElasticMaterial AnimatedScene::material() const {
-  return simulation_ ? simulation_->options().material
-                     : materialOf(material_, dataset_.config.elasticity);
 }
 
 FrameStats AnimatedScene::run(int frames, const std::function<void()>& afterDraw) {

@@ -8,11 +8,12 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
-#include "MaterialOptions.h"
 #include "ScenarioOptions.h"
 #include "SurfaceInput.h"
+#include "tetskin/core/ElasticMaterial.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
@@ -27,7 +28,7 @@ struct SceneOptions {
   int level = -1;  // (a binding's own level, when the surface input is one)
   RenderPath path = RenderPath::Cpu;
   ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
-  MaterialArgs material;  // over the dataset config's elasticity
+  std::optional<ElasticMaterial> material;         // nullopt: the dataset config's elasticity
   double timeStep = SimulationOptions{}.timeStep;  // seconds per simulated frame
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
@@ -60,10 +61,9 @@ class AnimatedScene {
   // takes the picture); its time is left out of the stats.
   FrameStats run(int frames, const std::function<void()>& afterDraw = {});
   // Seconds a simulated frame stands for (the time step).
-  double frameSeconds() const;
-  // The simulated body's material (the dataset config's, with the
-  // options' values over it).
-  ElasticMaterial material() const;
+  double frameSeconds() const { return timeStep_; }
+  // The simulated body's material.
+  const ElasticMaterial& material() const { return material_; }
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);
@@ -89,7 +89,7 @@ class AnimatedScene {
   std::unique_ptr<ControlMeshActor> control_;
   std::unique_ptr<FloorActor> floor_;
   ScenarioArgs scenarioArgs_;
-  MaterialArgs material_;
+  ElasticMaterial material_;
   double timeStep_;
   std::string datasetName_;
   UpAxis up_ = UpAxis::Y;

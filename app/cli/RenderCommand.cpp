@@ -76,7 +76,6 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.camera = parseCameraPreset(a.camera);
   o.level = a.level;
   o.scenario = a.scenario;
-  o.material = a.material;
   o.timeStep = a.timeStep;
   o.control = a.control;
   o.texture = a.texture;
@@ -98,7 +97,8 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
     throw Error(*simulationOption + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
   const Dataset dataset = loadDataset(a.dataset);
-  materialOf(a.material, dataset.config.elasticity);  // an option out of range fails now
+  // (An option out of range fails now, before any drawing.)
+  o.material = materialOf(a.material, dataset.config.elasticity);
   o.fur = furParameters(a, dataset.config);
   o.up = upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)

@@ -143,8 +143,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     row.kinetic = e.kinetic;
     row.elastic = e.elastic;
     // From the start: relative to the origin, it would swamp the others.
-    row.gravitational = e.gravitational - (log.empty() ? e.gravitational : startGravitational);
     if (log.empty()) startGravitational = e.gravitational;
+    row.gravitational = e.gravitational - startGravitational;
     log.push_back(row);
   };
 
