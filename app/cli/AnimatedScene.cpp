@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin::cli {
@@ -61,9 +62,8 @@ void AnimatedScene::frame(const BoundingBox& box) {
     all.extend(box.min);
     all.extend(box.max);
   }
-  const double bounds[6] = {all.min.x(), all.max.x(), all.min.y(),
-                            all.max.y(), all.min.z(), all.max.z()};
-  view_->setCamera(camera_, bounds, up_);
+  const std::array<double, 6> bounds = toVtkBounds(all);
+  view_->setCamera(camera_, bounds.data(), up_);
 }
 
 void AnimatedScene::startSimulation() {

@@ -24,6 +24,7 @@
 #include "tetskin/simulation/Prolongation.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::gui {
@@ -339,22 +340,19 @@ void Scene::setCamera(CameraPreset preset) {
   camera_ = preset;
   if (!dataset_) return;
   const BoundingBox box = restBox();
-  const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                            box.max.y(), box.min.z(), box.max.z()};
-  placeCamera(renderer_, preset, bounds, dataset_->config.up);
+  const std::array<double, 6> bounds = toVtkBounds(box);
+  placeCamera(renderer_, preset, bounds.data(), dataset_->config.up);
 }
 
 void Scene::keepInView(const BoundingBox& box) {
   if (!dataset_ || box.empty()) return;
-  const double start[6] = {box.min.x(), box.max.x(), box.min.y(),
-                           box.max.y(), box.min.z(), box.max.z()};
-  if (boundsInView(renderer_, start)) return;
+  const std::array<double, 6> start = toVtkBounds(box);
+  if (boundsInView(renderer_, start.data())) return;
   BoundingBox both = restBox();
   both.extend(box.min);
   both.extend(box.max);
-  double bounds[6] = {both.min.x(), both.max.x(), both.min.y(),
-                      both.max.y(), both.min.z(), both.max.z()};
-  renderer_->ResetCamera(bounds);  // (its direction and up kept)
+  std::array<double, 6> bounds = toVtkBounds(both);
+  renderer_->ResetCamera(bounds.data());  // (its direction and up kept)
 }
 
 void Scene::setUpAxis(UpAxis up) {

@@ -46,6 +46,7 @@
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::gui {
@@ -978,9 +979,8 @@ TEST_F(Gui, KeepsADropsLiftedStartInView) {
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
   const BoundingBox start = boundingBox(window_->runner()->simulation().state().positions);
-  const double bounds[6] = {start.min.x(), start.max.x(), start.min.y(),
-                            start.max.y(), start.min.z(), start.max.z()};
-  EXPECT_TRUE(boundsInView(window_->renderer(), bounds));
+  const std::array<double, 6> bounds = toVtkBounds(start);
+  EXPECT_TRUE(boundsInView(window_->renderer(), bounds.data()));
   Eigen::Vector3d turned;
   camera->GetDirectionOfProjection(turned.data());
   EXPECT_NEAR((turned - direction).norm(), 0, 1e-12);

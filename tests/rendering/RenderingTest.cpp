@@ -35,6 +35,7 @@
 #include "tetskin/rendering/XDisplay.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -100,9 +101,8 @@ class Rendering : public ::testing::Test {
     }
     deformable.update(control);
     const BoundingBox box = boundingBox(extractLevel(dataset_.mesh, 1).nodes);
-    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                              box.max.y(), box.min.z(), box.max.z()};
-    view.setCamera(CameraPreset::Iso, bounds);
+    const std::array<double, 6> bounds = toVtkBounds(box);
+    view.setCamera(CameraPreset::Iso, bounds.data());
     view.render();
     gpuProblem_ = deformable.gpuProblem();
     return view.capture();
@@ -207,9 +207,8 @@ TEST_F(Rendering, Gpu1PassDrawsADisplacementBindingAsTheCpuPath) {
     OffscreenView view(256, 256);
     deformable.addTo(view.renderer());
     deformable.update(control);
-    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                              box.max.y(), box.min.z(), box.max.z()};
-    view.setCamera(CameraPreset::Iso, bounds);
+    const std::array<double, 6> bounds = toVtkBounds(box);
+    view.setCamera(CameraPreset::Iso, bounds.data());
     view.render();
     return view.capture();
   };
@@ -453,9 +452,8 @@ TEST_F(Rendering, GpuPathsDrawAModelFarFromTheOriginAsAtTheOrigin) {
     const Points3 control = twisted(dataset_.mesh.nodes).rowwise() + offset;
     deformable.update(control);
     const BoundingBox box = boundingBox(extractLevel(mesh, 1).nodes);
-    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                              box.max.y(), box.min.z(), box.max.z()};
-    view.setCamera(CameraPreset::Iso, bounds);
+    const std::array<double, 6> bounds = toVtkBounds(box);
+    view.setCamera(CameraPreset::Iso, bounds.data());
     view.render();
     return view.capture();
   };
@@ -492,9 +490,8 @@ TEST_F(Rendering, CameraPresetsFollowTheUpAxis) {
     deformable.addTo(view.renderer());
     deformable.update(mesh.nodes);
     const BoundingBox box = boundingBox(extractLevel(mesh, 1).nodes);
-    const double bounds[6] = {box.min.x(), box.max.x(), box.min.y(),
-                              box.max.y(), box.min.z(), box.max.z()};
-    view.setCamera(preset, bounds, cameraUp);
+    const std::array<double, 6> bounds = toVtkBounds(box);
+    view.setCamera(preset, bounds.data(), cameraUp);
     view.render();
     return view.capture();
   };

@@ -31,6 +31,14 @@ SurfaceMesh triangle() {
   return m;
 }
 
+// VTK orders bounds by axis, each min before max.
+TEST(VtkConversion, BoxAsVtkBounds) {
+  BoundingBox box;
+  box.extend(Eigen::Vector3d(1, -2, 3));
+  box.extend(Eigen::Vector3d(4, 5, -6));
+  EXPECT_EQ(toVtkBounds(box), (std::array<double, 6>{1, 4, -2, 5, -6, 3}));
+}
+
 TEST(VtkConversion, SurfaceRoundTripKeepsAttributes) {
   const SurfaceMesh m = triangle();
   vtkSmartPointer<vtkPolyData> pd = toVtkPolyData(m);

@@ -5,10 +5,12 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "tetskin/core/Geometry.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
@@ -19,6 +21,12 @@ class vtkPolyData;
 class vtkUnstructuredGrid;
 
 namespace tetskin {
+
+// A box as VTK's bounds: xmin, xmax, ymin, ymax, zmin, zmax (for cameras
+// and renderers: `.data()` where they take `const double[6]`).
+inline std::array<double, 6> toVtkBounds(const BoundingBox& box) {
+  return {box.min.x(), box.max.x(), box.min.y(), box.max.y(), box.min.z(), box.max.z()};
+}
 
 // Rows as double points, and back: the way back throws Error naming
 // `sourceName` and the point when a coordinate is not finite; no points
