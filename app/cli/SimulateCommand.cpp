@@ -123,7 +123,6 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   // --log: the start and every step, written at the end (and by a run cut
   // short, with the steps before it).
   std::vector<StepLogRow> log;
-  double startGravitational = 0;
   auto logRow = [&](Index step, const StepStats* stats, double seconds) {
     if (a.log.empty()) return;
     StepLogRow row;
@@ -142,9 +141,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     const Energies e = sim.energies();
     row.kinetic = e.kinetic;
     row.elastic = e.elastic;
-    // From the start: relative to the origin, it would swamp the others.
-    if (log.empty()) startGravitational = e.gravitational;
-    row.gravitational = e.gravitational - startGravitational;
+    row.gravitational = e.gravitational;
     log.push_back(row);
   };
 
@@ -232,7 +229,9 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n", multigridSteps,
                 a.steps, verdict.c_str());
   }
-  std::printf("  final energy: kinetic %.4g, elastic %.4g\n", e.kinetic, e.elastic);
+  std::printf(
+      "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",
+      e.kinetic, e.elastic, e.gravitational);
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (!a.log.empty()) {

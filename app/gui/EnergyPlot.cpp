@@ -4,18 +4,37 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <algorithm>
+#include <array>
 
 namespace tetskin::gui {
 namespace {
 
-const QColor kKinetic(70, 130, 200);
-const QColor kElastic(220, 130, 40);
+struct Curve {
+  const char* name;
+  double (*value)(const EnergyPlot::Sample&);
+  QColor color;
+  qreal width;
+};
+
+const std::array<Curve, 4> kCurves{{
+    {"kinetic", [](const EnergyPlot::Sample& s) { return s.kinetic; }, QColor(70, 130, 200), 1.5},
+    {"elastic", [](const EnergyPlot::Sample& s) { return s.elastic; }, QColor(220, 130, 40), 1.5},
+    {"gravitational", [](const EnergyPlot::Sample& s) { return s.gravitational; },
+     QColor(60, 160, 80), 1.5},
+    {"total", [](const EnergyPlot::Sample& s) { return s.total(); }, QColor(90, 90, 90), 2.0},
+}};
+
+QString number(double value) {
+  return QString::number(value, 'g', 3);
+}
 
 }  // namespace
 
 EnergyPlot::EnergyPlot(QWidget* parent) : QWidget(parent) {
-  setMinimumHeight(90);
-  setToolTip("kinetic and elastic energy (J) over the last seconds of simulated time");
+  setMinimumHeight(110);
+  setToolTip(
+      "kinetic, elastic and gravitational energy and their total (J) over the last seconds of "
+      "simulated time; the gravitational energy is measured from the rest shape");
 }
 
 void EnergyPlot::add(const Sample& sample) {
@@ -34,44 +53,61 @@ void EnergyPlot::paintEvent(QPaintEvent*) {
   QPainter p(this);
   p.fillRect(rect(), palette().base());
   p.setRenderHint(QPainter::Antialiasing);
-  const int top = 18, bottom = height() - 4, left = 4, right = width() - 4;
+  const QFontMetrics metrics = p.fontMetrics();
+  const int line = metrics.height();
+  const int left = 4, right = width() - 4, bottom = height() - 4;
   p.setPen(palette().text().color());
   if (samples_.empty()) {
-    p.drawText(left, 13, "energy: no simulation");
+    p.drawText(left, line, "energy: no simulation");
     return;
   }
   const Sample& last = samples_.back();
-  // One scale for both curves, from 0: their sizes compare at a glance.
-  double most = 0;
-  for (const Sample& s : samples_) most = std::max({most, s.kinetic, s.elastic});
-  if (!(most > 0)) most = 1;
-  p.drawText(left, 13, QString("energy (J), max %1:").arg(most, 0, 'g', 3));
-  const int legend = left + p.fontMetrics().horizontalAdvance(
-                                QString("energy (J), max %1: ").arg(most, 0, 'g', 3));
-  p.setPen(kKinetic);
-  const QString kinetic = QString("kinetic %1").arg(last.kinetic, 0, 'g', 3);
-  p.drawText(legend, 13, kinetic);
-  p.setPen(kElastic);
-  p.drawText(legend + p.fontMetrics().horizontalAdvance(kinetic + "  "), 13,
-             QString("elastic %1").arg(last.elastic, 0, 'g', 3));
+  // One scale for all curves, with 0 in it: their sizes compare at a
+  // glance, and the gravitational energy falls below 0 as a body sinks.
+  double lowest = 0, highest = 0;
+  for (const Sample& s : samples_)
+    for (const Curve& c : kCurves) {
+      lowest = std::min(lowest, c.value(s));
+      highest = std::max(highest, c.value(s));
+    }
+  if (!(highest > lowest)) highest = lowest + 1;
+  p.drawText(left, line, QString("energy (J), %1 to %2").arg(number(lowest), number(highest)));
+  // The legend, with each curve's latest value, wrapped in a narrow dock.
+  int x = left, baseline = 2 * line;
+  for (const Curve& c : kCurves) {
+    const QString label = QString("%1 %2").arg(c.name, number(c.value(last)));
+    const int advance = metrics.horizontalAdvance(label + "  ");
+    if (x > left && x + metrics.horizontalAdvance(label) > right) {
+      x = left;
+      baseline += line;
+    }
+    p.setPen(c.color);
+    p.drawText(x, baseline, label);
+    x += advance;
+  }
+  const int top = baseline + 6;
+  auto yOf = [&](double value) {
+    return bottom - (value - lowest) / (highest - lowest) * (bottom - top);
+  };
+  if (lowest < 0) {  // the zero line
+    p.setPen(QPen(palette().mid().color(), 1, Qt::DotLine));
+    p.drawLine(QPointF(left, yOf(0)), QPointF(right, yOf(0)));
+  }
   const double start = std::max(samples_.front().time, last.time - window_);
   const double span = std::max(last.time - start, 1e-12);
-  auto curve = [&](double Sample::*value, const QColor& color) {
+  for (const Curve& c : kCurves) {
     QPainterPath path;
     for (std::size_t i = 0; i < samples_.size(); ++i) {
       const Sample& s = samples_[i];
-      const QPointF point(left + (s.time - start) / span * (right - left),
-                          bottom - s.*value / most * (bottom - top));
+      const QPointF point(left + (s.time - start) / span * (right - left), yOf(c.value(s)));
       if (i == 0)
         path.moveTo(point);
       else
         path.lineTo(point);
     }
-    p.setPen(QPen(color, 1.5));
+    p.setPen(QPen(c.color, c.width));
     p.drawPath(path);
-  };
-  curve(&Sample::kinetic, kKinetic);
-  curve(&Sample::elastic, kElastic);
+  }
 }
 
 }  // namespace tetskin::gui

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The running simulation's kinetic and elastic energy over its last
-// seconds of simulated time, as two curves: a researcher sees the body
-// settle under damping, or a step size grow unstable, as it happens.
+// The running simulation's energies over its last seconds of simulated
+// time: kinetic, elastic, gravitational (from the rest shape, as
+// Simulation measures it) and their sum. A researcher sees a drop trade
+// height for speed and the landing's losses, the body settle under
+// damping, or a step size grow unstable, as it happens.
 
 #include <QWidget>
 #include <deque>
@@ -13,7 +15,8 @@ class EnergyPlot : public QWidget {
   Q_OBJECT
  public:
   struct Sample {
-    double time = 0, kinetic = 0, elastic = 0;
+    double time = 0, kinetic = 0, elastic = 0, gravitational = 0;
+    double total() const { return kinetic + elastic + gravitational; }
   };
   explicit EnergyPlot(QWidget* parent = nullptr);
   // A sample at simulated `time`; one at an earlier time than the last
@@ -23,7 +26,7 @@ class EnergyPlot : public QWidget {
   void clear();
   const std::deque<Sample>& samples() const { return samples_; }
   double window() const { return window_; }
-  QSize sizeHint() const override { return {260, 110}; }
+  QSize sizeHint() const override { return {260, 130}; }
 
  protected:
   void paintEvent(QPaintEvent* event) override;

@@ -801,7 +801,7 @@ void MainWindow::plotEnergy(const SimulationState& state) {
   if (state.steps == plottedSteps_) return;
   if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(100)) return;
   const Energies e = runner_->simulation().energies();
-  energyPlot_->add({state.time, e.kinetic, e.elastic});
+  energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
 }

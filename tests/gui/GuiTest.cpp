@@ -1016,14 +1016,22 @@ TEST_F(Gui, PlotsTheEnergyOfEachStep) {
   const Energies now = window_->runner()->simulation().energies();
   EXPECT_EQ(plot->samples().back().kinetic, now.kinetic);
   EXPECT_EQ(plot->samples().back().elastic, now.elastic);
+  EXPECT_EQ(plot->samples().back().gravitational, now.gravitational);
+  // A drop starts lifted above its rest shape and loses height each step.
+  EXPECT_GT(plot->samples().front().gravitational, 0);
   EXPECT_NEAR(plot->samples().back().time, 3 * window_->runner()->simulation().options().timeStep,
               1e-12);
-  for (std::size_t i = 1; i < plot->samples().size(); ++i)
+  for (std::size_t i = 1; i < plot->samples().size(); ++i) {
     EXPECT_GT(plot->samples()[i].kinetic, plot->samples()[i - 1].kinetic) << "falling, step " << i;
+    EXPECT_LT(plot->samples()[i].gravitational, plot->samples()[i - 1].gravitational) << i;
+    // Damping takes energy away; nothing adds any.
+    EXPECT_LT(plot->samples()[i].total(), plot->samples()[i - 1].total()) << i;
+  }
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_EQ(plot->samples().size(), 1u);
   // Started from a frame: the plot's start is the frame's state.
   for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  const Energies beforeFrame = window_->runner()->simulation().energies();
   const std::filesystem::path frame = scratch("energy_frame.vtu");
   ASSERT_TRUE(window_->exportFrame(QString::fromStdString(frame.string())))
       << window_->lastError().toStdString();
@@ -1032,6 +1040,10 @@ TEST_F(Gui, PlotsTheEnergyOfEachStep) {
   ASSERT_EQ(plot->samples().size(), 1u);
   EXPECT_EQ(plot->samples().front().kinetic, window_->runner()->simulation().energies().kinetic);
   EXPECT_GT(plot->samples().front().kinetic, 0);
+  // Measured from the rest shape, the frame's gravitational energy is the
+  // one the run that wrote it had there: the curves carry on.
+  EXPECT_NEAR(plot->samples().front().gravitational, beforeFrame.gravitational,
+              1e-9 * beforeFrame.gravitational);
 }
 
 // A Gmsh mesh opens as a dataset of one level, and simulates.

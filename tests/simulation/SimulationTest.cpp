@@ -309,6 +309,31 @@ TEST(Simulation, UndampedEnergyNeverRisesAndDampedEnergyDecays) {
   }
 }
 
+// Gravitational energy is measured from the rest shape: none there, m g d
+// for the body lifted by d (a rigid lift: no elastic energy), the same
+// however far the rest shape lies from the origin.
+TEST(Simulation, GravitationalEnergyIsMeasuredFromTheRestShape) {
+  for (double offset : {0.0, 1e3}) {
+    TetMesh block = test::tetGrid(3, 2, 2, {1.5, 1, 1});
+    block.nodes.col(1).array() += offset;
+    SimulationOptions options;
+    options.gravity = {0, -9.81, 0};
+    Simulation sim(oneLevel(block), 0, options);
+    const Energies atRest = sim.energies();
+    EXPECT_EQ(atRest.kinetic, 0);
+    EXPECT_EQ(atRest.gravitational, 0) << "offset " << offset;
+    EXPECT_LT(std::abs(atRest.elastic), 1e-12);
+    Points3 lifted = block.nodes;
+    lifted.col(1).array() += 0.25;
+    sim.setPositions(lifted);
+    const double mass = sim.nodeMasses().sum();
+    EXPECT_GT(mass, 0);
+    EXPECT_NEAR(sim.energies().gravitational, mass * 9.81 * 0.25, 1e-9 * mass * 9.81 * 0.25)
+        << "offset " << offset;
+    EXPECT_LT(std::abs(sim.energies().elastic), 1e-9);
+  }
+}
+
 TEST(Simulation, InvertedElementsRecoverWithoutNaN) {
   const TetMesh block = test::tetGrid(3, 3, 3, {1, 1, 1});
   SimulationOptions options;

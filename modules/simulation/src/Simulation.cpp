@@ -539,8 +539,9 @@ Energies Simulation::energies() const {
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   e.kinetic = 0.5 * v.dot(mass.cwiseProduct(v));
   e.elastic = fem_.elasticEnergy(x);
-  for (Index node = 0; node < rest_.nodeCount(); ++node)
-    e.gravitational -= mass[3 * node] * options_.gravity.dot(x.segment<3>(3 * node));
+  for (Index node = 0; node < internal_.nodeCount(); ++node)
+    e.gravitational -= mass[3 * node] * options_.gravity.dot(x.segment<3>(3 * node) -
+                                                             internal_.nodes.row(node).transpose());
   return e;
 }
 

@@ -22,8 +22,8 @@ struct StepLogRow {
   // Wall-clock seconds of the step: element pass, preconditioner setup,
   // solve, and the whole step.
   double assemblySeconds = 0, setupSeconds = 0, solveSeconds = 0, stepSeconds = 0;
-  // Joules after the step (gravitational: as the caller measures it;
-  // simulate's log measures it from the start).
+  // Joules after the step (gravitational: from whatever zero the caller
+  // measures it; simulate's log from the rest shape, as Simulation does).
   double kinetic = 0, elastic = 0, gravitational = 0;
 };
 

@@ -118,6 +118,11 @@ struct SolveShortfall {
 std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options,
                      const std::string& multigrid);
 
+// Joules. The gravitational energy is measured from the rest shape where
+// the dataset puts it: the body at rest there has none of the three, any
+// state of a run has the same zero whichever state the run started from
+// (a run continued from a frame carries its energies on), and a body far
+// from the origin does not swamp the others with its height's energy.
 struct Energies {
   double kinetic = 0, elastic = 0, gravitational = 0;
   double total() const { return kinetic + elastic + gravitational; }

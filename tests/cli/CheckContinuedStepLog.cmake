@@ -1,0 +1,27 @@
+# cmake -DFIRST=a.csv -DSTEP=K -DCONTINUED=b.csv -P CheckContinuedStepLog.cmake:
+# a run continued with --initial from the frame after step K of another run
+# starts (its step 0) with the energies that run logged for step K:
+# kinetic, elastic, gravitational (from the rest shape, whatever the
+# run's start) and total, the last four fields, the same to the digit.
+function(energies_of file index out)
+  file(STRINGS "${file}" lines)
+  math(EXPR line "${index} + 1")
+  list(GET lines ${line} row)
+  string(REGEX MATCH "[^,]+,[^,]+,[^,]+,[^,]+$" fields "${row}")
+  if(fields STREQUAL "")
+    message(FATAL_ERROR "${file}: step ${index}: no energies in '${row}'")
+  endif()
+  set(${out} "${fields}" PARENT_SCOPE)
+endfunction()
+energies_of("${FIRST}" ${STEP} first)
+energies_of("${CONTINUED}" 0 continued)
+if(NOT first STREQUAL continued)
+  message(FATAL_ERROR "${CONTINUED} starts with energies ${continued}; "
+                      "${FIRST} logged ${first} for step ${STEP}")
+endif()
+# The drop starts lifted above its rest shape: gravitational energy to lose.
+energies_of("${FIRST}" 0 start)
+if(NOT start MATCHES "^0,[^,]+,[1-9][0-9.]*(e\\+[0-9]+)?,[1-9]")
+  message(FATAL_ERROR "${FIRST}: a drop's start has energies ${start}")
+endif()
+message(STATUS "${CONTINUED} starts with ${FIRST}'s step ${STEP}: ${first}")
