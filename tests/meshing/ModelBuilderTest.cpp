@@ -55,6 +55,42 @@ TEST(ModelBuilder, BundledBunnyGivesTheRequestedLevels) {
   EXPECT_GE(r.candidates.size(), 25u);  // the input and its decimations, 5 qualities each
 }
 
+// A decimated cylinder's surface gives TetGen slivers at every quality:
+// build says so for the level, and how to avoid them; Netgen's level of
+// the same surface has none, and no warning.
+TEST(ModelBuilder, WarnsOfSliversWhereTetGenMakesThem) {
+  const std::string file = std::string(TETSKIN_SOURCE_DIR) + "/tests/data/decimated_cylinder.obj";
+  std::vector<SurfaceInput> inputs = {{"decimated_cylinder.obj", readObj(file), ""}};
+  BuildOptions options;
+  options.levels = 1;
+  options.minElements = options.maxElements = 4000;
+  options.jobs = 2;
+  auto sliverLines = [](const std::vector<std::string>& log) {
+    std::vector<std::string> lines;
+    for (const std::string& line : log)
+      if (line.find("slivers") != std::string::npos) lines.push_back(line);
+    return lines;
+  };
+  std::vector<std::string> log;
+  const BuildEvents events{[&](const std::string& l) { log.push_back(l); }, {}, {}};
+  const BuildResult tetgen = buildDataset(inputs, options, events);
+  const double worst = tetgen.dataset.config.levels[0].statistics.at("min_dihedral_deg");
+  EXPECT_LT(worst, 1.0);
+  const std::vector<std::string> warned = sliverLines(log);
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_EQ(warned[0].rfind("warning: level 0 has slivers (smallest dihedral angle ", 0), 0u)
+      << warned[0];
+  if (netgenAvailable()) {
+    EXPECT_NE(warned[0].find("; --mesher netgen remeshes the surface"), std::string::npos)
+        << warned[0];
+    log.clear();
+    options.mesher = MesherKind::Netgen;
+    const BuildResult netgen = buildDataset(inputs, options, events);
+    EXPECT_GT(netgen.dataset.config.levels[0].statistics.at("min_dihedral_deg"), 10.0);
+    EXPECT_TRUE(sliverLines(log).empty()) << sliverLines(log).front();
+  }
+}
+
 TEST(ModelBuilder, SearchOrderIsFinestInputAndBestQualityFirst) {
   const SurfaceMesh fine = test::box({0, 0, 0}, {1, 1, 1});
   std::vector<SurfaceInput> inputs = {{"a", fine, ""},
