@@ -179,6 +179,10 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
     std::printf("\n");
   }
   std::printf("wrote %s (+ .node, .ele)\n", json.c_str());
+  for (std::size_t k = 0; k < levels.size(); ++k)
+    if (const std::string problem = sliverProblem(levels[k].quality); !problem.empty())
+      std::fprintf(stderr, "warning: level %zu (%s) %s\n", k, levels[k].file.c_str(),
+                   problem.c_str());
 }
 
 }  // namespace

@@ -183,8 +183,8 @@ void printDataset(const std::filesystem::path& path) {
   printBox(boundingBox(dataset.mesh.nodes));
   std::printf("  up         %s\n", toString(dataset.config.up));
   std::printf("  elasticity %s\n", describe(dataset.config.elasticity).c_str());
-  std::printf("  %-5s %8s %9s %12s %12s  %s\n", "level", "nodes", "elements", "volume",
-              "min volume", "source");
+  std::printf("  %-5s %8s %9s %12s %12s %8s  %s\n", "level", "nodes", "elements", "volume",
+              "min volume", "min dih", "source");
   std::string warnings;
   for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
     const TetMesh level = extractLevel(dataset.mesh, k);
@@ -195,14 +195,19 @@ void printDataset(const std::filesystem::path& path) {
                   " inverted or degenerate element(s) (first: element " +
                   std::to_string(v.firstNonPositive) +
                   "); simulate refuses it (and multigrid on finer levels)\n";
+    // Measured, not the config's statistics: a dataset converted or edited
+    // elsewhere may have none, or stale ones.
+    const TetQuality quality = measureQuality(level);
+    if (const std::string problem = sliverProblem(quality); !problem.empty())
+      warnings += "  warning: level " + std::to_string(k) + " " + problem + "\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::string how = src.mesher;
     if (const std::optional<MesherKind> mesher = parseMesherKind(src.mesher))
       how += " " + meshingLabel(*mesher, src.quality, src.sizeBound);
-    std::printf("  %-5d %8lld %9lld %12g %12g  %s %s\n", k,
+    std::printf("  %-5d %8lld %9lld %12g %12g %8.2f  %s %s\n", k,
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,
-                src.input.c_str(), how.c_str());
+                quality.minDihedralDeg, src.input.c_str(), how.c_str());
   }
   std::fputs(warnings.c_str(), stdout);
 }

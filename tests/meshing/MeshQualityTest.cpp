@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "Shapes.h"
 #include "tetskin/meshing/MeshQuality.h"
@@ -34,6 +36,27 @@ TEST(MeshQuality, CornerTetrahedron) {
   EXPECT_NEAR(angles[3], std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
   // Circumradius sqrt(3)/2 over shortest edge 1.
   EXPECT_NEAR(radiusEdgeRatio(m, 0), std::sqrt(3.0) / 2.0, 1e-12);
+}
+
+// A sliver: four points of a square lifted alternately by h, nearly flat.
+// Its smallest dihedral angle is under 1 degree, and sliverProblem says so
+// with the angle; the corner tetrahedron has none.
+TEST(MeshQuality, SliversAreNamedWithTheirAngle) {
+  TetMesh m;
+  m.nodes.resize(4, 3);
+  const double h = 0.005;
+  m.nodes << 0, 0, 0, 1, 0, h, 1, 1, 0, 0, 1, h;
+  m.elements.resize(1, 4);
+  m.elements << 0, 1, 2, 3;
+  if (elementVolume(m, 0) < 0) std::swap(m.elements(0, 2), m.elements(0, 3));
+  const TetQuality q = measureQuality(m);
+  ASSERT_LT(q.minDihedralDeg, kSliverDihedralDeg);
+  const std::string problem = sliverProblem(q);
+  char angle[32];
+  std::snprintf(angle, sizeof angle, "%.3g deg", q.minDihedralDeg);
+  EXPECT_EQ(problem.rfind("has slivers (smallest dihedral angle ", 0), 0u) << problem;
+  EXPECT_NE(problem.find(angle), std::string::npos) << problem << " / " << angle;
+  EXPECT_EQ(sliverProblem(measureQuality(test::unitTetrahedron())), "");
 }
 
 }  // namespace

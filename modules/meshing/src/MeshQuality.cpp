@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -70,6 +71,16 @@ TetQuality measureQuality(const TetMesh& mesh) {
   }
   q.meanRadiusEdge = sumRatio / static_cast<double>(mesh.elementCount());
   return q;
+}
+
+std::string sliverProblem(const TetQuality& quality) {
+  if (!(quality.minDihedralDeg < kSliverDihedralDeg)) return {};
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "has slivers (smallest dihedral angle %.3g deg, largest radius-edge ratio %.3g), "
+                "which slow the solvers",
+                quality.minDihedralDeg, quality.maxRadiusEdge);
+  return text;
 }
 
 std::map<std::string, double> TetQuality::asMap() const {

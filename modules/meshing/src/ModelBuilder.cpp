@@ -182,13 +182,6 @@ std::string selectionHint(const std::vector<Index>& counts, const std::vector<do
   return hint;
 }
 
-// Below this smallest dihedral angle a level's worst elements are slivers:
-// nearly flat, they make the level's system ill-conditioned. (A TetGen
-// level of a decimated cylinder, 0.25 deg at worst: 75.7 CG iterations a
-// step under sag, against 32.4 on Netgen's level of about the same size,
-// 3889 and 3171 elements, 20 deg.)
-constexpr double kSliverDihedralDeg = 1.0;
-
 // One warning per chosen level with slivers, and for TetGen's the way
 // around them: Netgen remeshes the input surface, TetGen meshes within its
 // triangles (a decimated surface's can give slivers at every quality).
@@ -197,14 +190,10 @@ std::vector<std::string> sliverWarnings(const std::vector<CandidateReport>& cand
   std::vector<std::string> warnings;
   for (std::size_t level = 0; level < chosen.size(); ++level) {
     const CandidateReport& c = candidates[static_cast<std::size_t>(chosen[level])];
-    if (!(c.statistics.minDihedralDeg < kSliverDihedralDeg)) continue;
+    const std::string problem = sliverProblem(c.statistics);
+    if (problem.empty()) continue;
     if (level > 0 && chosen[level] == chosen[level - 1]) continue;  // said for the level before
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "level %zu has slivers (smallest dihedral angle %.3g deg, largest radius-edge "
-                  "ratio %.3g), which slow the solvers",
-                  level, c.statistics.minDihedralDeg, c.statistics.maxRadiusEdge);
-    std::string warning = text;
+    std::string warning = "level " + std::to_string(level) + " " + problem;
     if (c.mesher == toString(MesherKind::TetGen))
       warning += netgenAvailable()
                      ? "; --mesher netgen remeshes the surface"
