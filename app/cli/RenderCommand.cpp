@@ -123,8 +123,9 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
                              : commandLevel(input, dataset.mesh, a.level, levelGiven);
   o.level = level;
   const SurfaceMesh& surface = input.surface;
+  const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
   o.scenario.parameters = scenarioParameters(
-      cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount);
+      cmd, a.scenario, dataset.mesh.nodes.middleRows(range.firstNode, range.nodeCount));
   AnimatedScene scene(dataset, input, o);
   if (recorded) {
     const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string();

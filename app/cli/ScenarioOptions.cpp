@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "ScenarioOptions.h"
 
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
 #include "OptionChecks.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/io/LoadCurveFile.h"
 #include "tetskin/io/NodeList.h"
 
@@ -57,6 +60,13 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  "(the point ids of its .vtu), separated by spaces or lines, # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
+  cmd.add_option("--fixed-box", a.fixedBox,
+                 "also hold still the nodes of the level inside this box: XMIN,YMIN,ZMIN,XMAX,YMAX,"
+                 "ZMAX in the dataset's coordinates, faces included (a beam's end, say)")
+      ->expected(6)
+      ->delimiter(',')
+      ->check(finiteNumber())
+      ->group(kGroup);
   cmd.add_option("--loads", a.loads,
                  "forces on nodes of the level: a text file of lines NODE FX FY FZ "
                  "(newtons), # comments")
@@ -100,7 +110,9 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
   return givenOptionOf(cmd, kGroup);
 }
 
-ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount) {
+ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a,
+                                      const Points3& restNodes) {
+  const Index nodeCount = restNodes.rows();
   for (const auto& [option, parameter] : kScenarioOnly)
     if (cmd.count(option) > 0 && !scenarioReads(a.name, parameter)) {
       const std::vector<std::string> scenarios = scenariosReading(parameter);
@@ -114,6 +126,29 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
   // whole set again for its other callers.)
   ScenarioParameters p = a.parameters;
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
+  if (a.fixedBox.size() == 6) {
+    BoundingBox box;
+    box.min = {a.fixedBox[0], a.fixedBox[1], a.fixedBox[2]};
+    box.max = {a.fixedBox[3], a.fixedBox[4], a.fixedBox[5]};
+    auto corner = [](const Eigen::Vector3d& at) {
+      return formatNumber(at.x()) + "," + formatNumber(at.y()) + "," + formatNumber(at.z());
+    };
+    if (box.empty())
+      throw Error("--fixed-box: its minimum " + corner(box.min) + " exceeds its maximum " +
+                  corner(box.max) + " along an axis");
+    const std::vector<int> inside = pointsInBox(restNodes, box);
+    if (inside.empty()) {
+      const BoundingBox level = boundingBox(restNodes);
+      throw Error("--fixed-box: no node of the level lies in " + corner(box.min) + " .. " +
+                  corner(box.max) + " (the level spans " + corner(level.min) + " .. " +
+                  corner(level.max) + ")");
+    }
+    // Both ways of holding nodes at once: the union, sorted, each once.
+    std::vector<int> held;
+    std::set_union(p.heldNodes.begin(), p.heldNodes.end(), inside.begin(), inside.end(),
+                   std::back_inserter(held));
+    p.heldNodes = std::move(held);
+  }
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
   return p;

@@ -18,6 +18,7 @@ struct ScenarioArgs {
   std::string name = "wobble";
   ScenarioParameters parameters;
   std::filesystem::path fixedNodes;  // a node list (io NodeList.h), or empty
+  std::vector<double> fixedBox;      // --fixed-box: min x, y, z, max x, y, z; empty: none
   std::filesystem::path loads;       // node forces (io NodeList.h), or empty
   std::filesystem::path loadCurve;   // scales the loads (io LoadCurveFile.h), or empty
   std::vector<double> gravity;       // x, y, z; empty: the default
@@ -35,11 +36,13 @@ UpAxis upAxisOf(const ScenarioArgs& args, const DatasetConfig& config);
 // command line, if any.
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
-// The scenario's parameters with the held nodes, the loads and their curve
-// read (a level of `nodeCount` nodes). Throws Error for an option of another scenario than
-// the chosen one (e.g. --push with drop): it would change nothing.
+// The scenario's parameters with the held nodes (--fixed-nodes and
+// --fixed-box together), the loads and their curve read, for a level whose
+// rest positions are `restNodes`. Throws Error for an option of another
+// scenario than the chosen one (e.g. --push with drop): it would change
+// nothing; and for a box that holds no node of the level.
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
-                                      Index nodeCount);
+                                      const Points3& restNodes);
 
 // `options` with the given gravity and floor (over uprightAlong()'s).
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);

@@ -72,7 +72,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   const TetMesh rest = extractLevel(dataset.mesh, level);
   const SimulationOptions options =
       scenarioOptions(a.scenario.name, withGravityAndFloor(a.options, a.scenario), rest);
-  const ScenarioParameters parameters = scenarioParameters(cmd, a.scenario, rest.nodeCount());
+  const ScenarioParameters parameters = scenarioParameters(cmd, a.scenario, rest.nodes);
   std::unique_ptr<Scenario> scenario = makeScenario(a.scenario.name, parameters);
   Simulation sim(dataset.mesh, level, options, a.dataset.string());
   scenario->setUp(sim);

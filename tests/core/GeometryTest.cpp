@@ -19,6 +19,19 @@ TEST(Geometry, NearestPointIsTheClosestRowAndTheFirstOnTies) {
   EXPECT_EQ(nearestPoint(Points3(), {0, 0, 0}), -1);
 }
 
+// Faces included, rows in order; an empty box holds none.
+TEST(Geometry, PointsInBoxIncludeItsFaces) {
+  Points3 points(4, 3);
+  points << 0, 0, 0, 1, 1, 1, 0.5, 2, 0.5, 1.0000001, 0.5, 0.5;
+  BoundingBox box;
+  box.min = {0, 0, 0};
+  box.max = {1, 1, 1};
+  EXPECT_EQ(pointsInBox(points, box), (std::vector<int>{0, 1}));
+  box.max.y() = 2;
+  EXPECT_EQ(pointsInBox(points, box), (std::vector<int>{0, 1, 2}));
+  EXPECT_TRUE(pointsInBox(points, BoundingBox{}).empty());
+}
+
 TEST(Geometry, UnitTetrahedronHasVolumeOneSixthAndSignFollowsOrientation) {
   EXPECT_DOUBLE_EQ(signedTetVolume(O, X, Y, Z), 1.0 / 6.0);
   EXPECT_DOUBLE_EQ(signedTetVolume(O, Y, X, Z), -1.0 / 6.0);

@@ -22,6 +22,15 @@ BoundingBox boundingBox(const Points3& points) {
   return box;
 }
 
+std::vector<int> pointsInBox(const Points3& points, const BoundingBox& box) {
+  std::vector<int> inside;
+  for (Index i = 0; i < points.rows(); ++i)
+    if ((points.row(i).transpose().array() >= box.min.array()).all() &&
+        (points.row(i).transpose().array() <= box.max.array()).all())
+      inside.push_back(static_cast<int>(i));
+  return inside;
+}
+
 double boxOverlap(const BoundingBox& a, const BoundingBox& b) {
   if (a.empty() || b.empty()) return 0.0;
   const double shared = (a.max.cwiseMin(b.max) - a.min.cwiseMax(b.min)).cwiseMax(0.0).prod();

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "tetskin/core/Types.h"
 
@@ -29,6 +30,9 @@ BoundingBox boundingBox(const Points3& points);
 // union): 1 for equal boxes, 0 for disjoint ones (and for an empty one, or
 // flat ones that differ).
 double boxOverlap(const BoundingBox& a, const BoundingBox& b);
+
+// The rows of `points` inside `box` (its faces included), in order.
+std::vector<int> pointsInBox(const Points3& points, const BoundingBox& box);
 
 // Row of `points` nearest to `query` (the lowest on ties); -1 when empty.
 Index nearestPoint(const Points3& points, const Eigen::Vector3d& query);
