@@ -114,11 +114,9 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
         return "element " + std::to_string(tags[static_cast<std::size_t>(e)]);
       };
     } else if (extension == ".ele" || extension == ".node") {
-      std::filesystem::path node = input, ele = input;
-      node.replace_extension(".node");
-      ele.replace_extension(".ele");
+      const NodeElePaths pair = nodeElePair(input);
       int first = 0;
-      level.mesh = readTetMesh(node, ele, &first);
+      level.mesh = readTetMesh(pair.node, pair.ele, &first);
       elementName = [first](Index e) { return "element " + std::to_string(e + first); };
     } else {
       throw Error(input.string(), 0,

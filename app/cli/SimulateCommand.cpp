@@ -41,11 +41,6 @@ struct SimulateArgs {
   bool quiet = false;
 };
 
-// "x,y,z", as --gravity takes a vector.
-std::string commaSeparated(const Eigen::Vector3d& v) {
-  return formatNumber(v.x()) + "," + formatNumber(v.y()) + "," + formatNumber(v.z());
-}
-
 void run(SimulateArgs& a, const CLI::App& cmd) {
   // (Checked before any work, as a typo would be.)
   if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)

@@ -22,12 +22,10 @@ Dataset oneLevelDataset(const std::filesystem::path& path, const TetMesh& mesh) 
 }
 
 Dataset loadNodeElePair(const std::filesystem::path& path) {
-  std::filesystem::path nodePath = path, elePath = path;
-  nodePath.replace_extension(".node");
-  elePath.replace_extension(".ele");
-  Dataset dataset = oneLevelDataset(path, readTetMesh(nodePath, elePath));
-  dataset.config.nodeFile = nodePath.filename();
-  dataset.config.eleFile = elePath.filename();
+  const NodeElePaths pair = nodeElePair(path);
+  Dataset dataset = oneLevelDataset(path, readTetMesh(pair.node, pair.ele));
+  dataset.config.nodeFile = pair.node.filename();
+  dataset.config.eleFile = pair.ele.filename();
   return dataset;
 }
 

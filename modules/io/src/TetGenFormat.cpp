@@ -240,6 +240,13 @@ FaceFile readFace(const std::filesystem::path& path) {
   return parseFace(detail::readWholeFile(path), path.string());
 }
 
+NodeElePaths nodeElePair(const std::filesystem::path& either) {
+  NodeElePaths pair{either, either};
+  pair.node.replace_extension(".node");
+  pair.ele.replace_extension(".ele");
+  return pair;
+}
+
 PolyFile readPoly(const std::filesystem::path& path) {
   const std::string content = detail::readWholeFile(path);
   PolyFile poly = parsePoly(content, path.string());

@@ -83,6 +83,13 @@ void writeEle(const std::filesystem::path& path, const EleFile& file);
 void writeFace(const std::filesystem::path& path, const FaceFile& file);
 void writePoly(const std::filesystem::path& path, const PolyFile& file);
 
+// The two files of the .node/.ele pair that `either` names (a.node or
+// a.ele: a.node and a.ele beside each other).
+struct NodeElePaths {
+  std::filesystem::path node, ele;
+};
+NodeElePaths nodeElePair(const std::filesystem::path& either);
+
 // A .node/.ele pair as a tetrahedral mesh, validated (indices in range,
 // finite coordinates; volumes are not checked here). `eleFirstIndex`, if
 // given, gets the number the .ele file gives its first element (0 or 1).
