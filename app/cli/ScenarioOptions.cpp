@@ -130,29 +130,15 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
     BoundingBox box;
     box.min = {a.fixedBox[0], a.fixedBox[1], a.fixedBox[2]};
     box.max = {a.fixedBox[3], a.fixedBox[4], a.fixedBox[5]};
-    if (box.empty())
-      throw Error("--fixed-box: its minimum " + commaSeparated(box.min) + " exceeds its maximum " +
-                  commaSeparated(box.max) + " along an axis");
-    const std::vector<int> inside = pointsInBox(restNodes, box);
-    if (inside.empty()) {
-      const BoundingBox level = boundingBox(restNodes);
-      throw Error("--fixed-box: no node of the level lies in " + commaSeparated(box.min) + " .. " +
-                  commaSeparated(box.max) + " (the level spans " + commaSeparated(level.min) +
-                  " .. " + commaSeparated(level.max) + ")");
+    try {
+      p.heldNodes = heldWithNodesInBox(p.heldNodes, restNodes, box);
+    } catch (const Error& e) {
+      throw Error(std::string("--fixed-box: ") + e.what());
     }
-    // Both ways of holding nodes at once: the union, sorted, each once.
-    std::vector<int> held;
-    std::set_union(p.heldNodes.begin(), p.heldNodes.end(), inside.begin(), inside.end(),
-                   std::back_inserter(held));
-    p.heldNodes = std::move(held);
   }
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
   return p;
-}
-
-std::string commaSeparated(const Eigen::Vector3d& v) {
-  return formatNumber(v.x()) + "," + formatNumber(v.y()) + "," + formatNumber(v.z());
 }
 
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& a) {

@@ -44,9 +44,6 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
                                       const Points3& restNodes);
 
-// Three numbers as --gravity and --fixed-box take them: "0,-9.81,0".
-std::string commaSeparated(const Eigen::Vector3d& v);
-
 // `options` with the given gravity and floor (over uprightAlong()'s).
 SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);
 

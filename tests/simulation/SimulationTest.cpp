@@ -1119,6 +1119,35 @@ TEST(Simulation, ScenarioParametersOutOfRangeAreErrorsNamingTheParameter) {
   }
 }
 
+// A box adds the nodes inside it (faces included) to the held ones, each
+// once and sorted; a box inside out, or around no node, is an error naming
+// the box (and the level's extent).
+TEST(Simulation, HeldNodesInABoxJoinTheHeldOnes) {
+  const TetMesh block = test::tetGrid(2, 1, 1, {2, 1, 1});  // x = 0, 1, 2
+  BoundingBox end;
+  end.min = {-1, -1, -1};
+  end.max = {0, 5, 5};  // the face x = 0: 4 nodes
+  const std::vector<int> box = heldWithNodesInBox({}, block.nodes, end);
+  ASSERT_EQ(box.size(), 4u);
+  for (int node : box) EXPECT_EQ(block.nodes(node, 0), 0.0);
+  EXPECT_TRUE(std::is_sorted(box.begin(), box.end()));
+  const int other = static_cast<int>(block.nodeCount()) - 1;  // at x = 2
+  std::vector<int> withOther = box;
+  withOther.push_back(other);
+  EXPECT_EQ(heldWithNodesInBox({box[1], other}, block.nodes, end), withOther);
+
+  BoundingBox outside;
+  outside.min = {3, 0, 0};
+  outside.max = {4, 1, 1};
+  EXPECT_EQ(test::errorText([&] { heldWithNodesInBox({}, block.nodes, outside); }),
+            "no node of the level lies in 3,0,0 .. 4,1,1 (the level spans 0,0,0 .. 2,1,1)");
+  BoundingBox insideOut;
+  insideOut.min = {1, 0, 0};
+  insideOut.max = {0, 1, 1};
+  EXPECT_EQ(test::errorText([&] { heldWithNodesInBox({}, block.nodes, insideOut); }),
+            "its minimum 1,0,0 exceeds its maximum 0,1,1 along an axis");
+}
+
 // Each option out of its range, NaN and infinity included, is an error
 // that names it, and a valid set is not.
 TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {

@@ -31,6 +31,10 @@ std::vector<int> pointsInBox(const Points3& points, const BoundingBox& box) {
   return inside;
 }
 
+std::string commaSeparated(const Eigen::Vector3d& v) {
+  return formatNumber(v.x()) + "," + formatNumber(v.y()) + "," + formatNumber(v.z());
+}
+
 double boxOverlap(const BoundingBox& a, const BoundingBox& b) {
   if (a.empty() || b.empty()) return 0.0;
   const double shared = (a.max.cwiseMin(b.max) - a.min.cwiseMax(b.min)).cwiseMax(0.0).prod();

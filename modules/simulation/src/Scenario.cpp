@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -162,6 +163,23 @@ void Scenario::beforeStep(Simulation& sim, double time) {
     forces_.setZero(sim.restMesh().nodeCount(), 3);
   drive(sim, time, forces_);
   sim.setExternalForces(forces_);
+}
+
+std::vector<int> heldWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
+                                    const BoundingBox& box) {
+  if (box.empty())
+    throw Error("its minimum " + commaSeparated(box.min) + " exceeds its maximum " +
+                commaSeparated(box.max) + " along an axis");
+  const std::vector<int> inside = pointsInBox(restNodes, box);
+  if (inside.empty()) {
+    const BoundingBox level = boundingBox(restNodes);
+    throw Error("no node of the level lies in " + commaSeparated(box.min) + " .. " +
+                commaSeparated(box.max) + " (the level spans " + commaSeparated(level.min) +
+                " .. " + commaSeparated(level.max) + ")");
+  }
+  std::vector<int> both;
+  std::set_union(held.begin(), held.end(), inside.begin(), inside.end(), std::back_inserter(both));
+  return both;
 }
 
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {

@@ -34,6 +34,10 @@ double boxOverlap(const BoundingBox& a, const BoundingBox& b);
 // The rows of `points` inside `box` (its faces included), in order.
 std::vector<int> pointsInBox(const Points3& points, const BoundingBox& box);
 
+// Three numbers as the command line takes them and messages show them
+// (formatNumber each): "0,-9.81,0".
+std::string commaSeparated(const Eigen::Vector3d& v);
+
 // Row of `points` nearest to `query` (the lowest on ties); -1 when empty.
 Index nearestPoint(const Points3& points, const Eigen::Vector3d& query);
 

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tetskin/core/Geometry.h"
 #include "tetskin/core/LoadCurve.h"
 #include "tetskin/simulation/Simulation.h"
 
@@ -35,6 +36,13 @@ struct ScenarioParameters {
       std::numeric_limits<double>::infinity();  // the loads act in the
                                                 // steps that start before this time, then let go
 };
+
+// `held` (sorted node ids) with the nodes of `restNodes` inside `box` (its
+// faces included) added: the union, sorted, each once. Throws Error for a
+// box turned inside out, and for one that holds no node (naming the
+// level's extent): either would hold nothing, without a word.
+std::vector<int> heldWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
+                                    const BoundingBox& box);
 
 // The parameters that only some scenarios read (heldNodes: every one).
 enum class ScenarioParameter {
