@@ -286,8 +286,8 @@ void printSeries(const std::filesystem::path& path) {
       std::printf(", %zu missing (first: %s)\n", missing, firstMissing.c_str());
   }
   // The level of the control-mesh frames, which render --run, deform and
-  // the GUI draw the run on, and the run's floor, which they draw (where
-  // the first frame can be read and says).
+  // the GUI draw the run on, the run's floor, which they draw, and how many
+  // nodes it held or drove (where the first frame can be read and says).
   if (const auto control = filesOfPart.find(0); control != filesOfPart.end()) {
     SimulationFrameFacts facts;
     try {
@@ -295,9 +295,11 @@ void printSeries(const std::filesystem::path& path) {
     } catch (const Error&) {  // (a missing or broken frame is named above or when read)
     }
     if (facts.level) std::printf("  level      %d (of the control-mesh frames)\n", *facts.level);
-    if (facts.floor)
-      std::printf("  floor      %s = %s\n", toString(facts.floor->up),
-                  formatNumber(facts.floor->height).c_str());
+    if (const std::optional<FloorPlane>& floor = facts.conditions.floor)
+      std::printf("  floor      %s = %s\n", toString(floor->up),
+                  formatNumber(floor->height).c_str());
+    if (const std::size_t held = facts.conditions.prescribedNodes.size(); held > 0)
+      std::printf("  prescribed %zu node%s (held still or driven)\n", held, held == 1 ? "" : "s");
   }
 }
 

@@ -101,7 +101,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
         std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
   }
 
-  RunRecorder recorder(a.output, options.floor());
+  RunRecorder recorder(a.output, sim.conditions());
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
   Points3 controlAll = dataset.mesh.nodes;
 

@@ -1056,7 +1056,7 @@ bool MainWindow::exportFrame(const QString& qpath) {
       Simulation& sim = runner_->simulation();
       const SimulationState s = runner_->state();
       writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities, s.externalForces,
-                                     sim.vonMisesStress(), scene_->level(), sim.options().floor()));
+                                     sim.vonMisesStress(), scene_->level(), sim.conditions()));
     } else if (ext == ".vtp") {
       writeBinding(path, scene_->deformedBoundSurface());
     } else {
@@ -1077,7 +1077,7 @@ bool MainWindow::startRecording(const QString& pvd) {
   }
   try {
     recorder_ =
-        std::make_unique<RunRecorder>(pvd.toStdString(), runner_->simulation().options().floor());
+        std::make_unique<RunRecorder>(pvd.toStdString(), runner_->simulation().conditions());
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;

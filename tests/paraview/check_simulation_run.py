@@ -65,6 +65,10 @@ for index, time in enumerate([times[0], times[-1]]):
         fail("ExternalForce before the first step: %s" % (push,))
     if index == 1 and not (push[0] < 0.0 or push[1] > 0.0):
         fail("ExternalForce: no push in the last frame")
+    # The wobble holds its base still and leaves the rest free.
+    if array_range(grid, "point", "Prescribed") != (0.0, 1.0):
+        fail("Prescribed should be 1 at the held base and 0 elsewhere, ranges %s"
+             % (array_range(grid, "point", "Prescribed"),))
     if levels != (level, level):
         fail("Level should be %d everywhere, is %s" % (level, levels))
     if index == 0 and displacement[1] != 0.0:

@@ -145,13 +145,13 @@ TEST(RecordedRun, KeepsTheRunsFloor) {
   const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
   const FloorPlane floor{UpAxis::Z, -0.375};
   {
-    RunRecorder recorder(dir / "run.pvd", floor);
+    RunRecorder recorder(dir / "run.pvd", RunConditions{floor, {}});
     recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
   }
   EXPECT_EQ(RecordedRun(dir / "run.pvd").floor(), floor);
   const SimulationFrameFacts facts = simulationFrameFacts(dir / "run_frames/control_00000.vtu");
   EXPECT_EQ(facts.level, 0);
-  EXPECT_EQ(facts.floor, floor);
+  EXPECT_EQ(facts.conditions.floor, floor);
   vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(dir / "run_frames/control_00000.vtu");
   const double* normal = grid->GetFieldData()->GetArray("FloorNormal")->GetTuple3(0);
   EXPECT_EQ(Eigen::Vector3d(normal[0], normal[1], normal[2]), Eigen::Vector3d(0, 0, 1));
@@ -165,8 +165,43 @@ TEST(RecordedRun, KeepsTheRunsFloor) {
 
   grid->GetFieldData()->GetArray("FloorNormal")->SetTuple3(0, 0, 0.6, 0.8);
   writeVtu(dir / "tilted.vtu", grid);
-  EXPECT_EQ(simulationFrameFacts(dir / "tilted.vtu").floor, std::nullopt);
+  EXPECT_EQ(simulationFrameFacts(dir / "tilted.vtu").conditions.floor, std::nullopt);
   EXPECT_EQ(simulationFrameFacts(dir / "tilted.vtu").level, 0);
+}
+
+// The nodes a run prescribes go into its control frames as a 0/1 point
+// array (ParaView thresholds by it) and come back from them, sorted; a run
+// recorded before frames said has none. A node the mesh lacks is an error.
+TEST(RecordedRun, KeepsTheRunsPrescribedNodes) {
+  const test::ScratchDir dir;
+  const Frame f;
+  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
+  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
+  {
+    RunRecorder recorder(dir / "run.pvd", RunConditions{std::nullopt, {7, 2, 5}});
+    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+  }
+  const RecordedRun run(dir / "run.pvd");
+  EXPECT_EQ(run.prescribedNodes(), (std::vector<int>{2, 5, 7}));
+  EXPECT_EQ(run.floor(), std::nullopt);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(dir / "run_frames/control_00000.vtu");
+  vtkDataArray* prescribed = grid->GetPointData()->GetArray("Prescribed");
+  ASSERT_NE(prescribed, nullptr);
+  ASSERT_EQ(prescribed->GetNumberOfTuples(), f.rest.nodeCount());
+  for (vtkIdType v = 0; v < prescribed->GetNumberOfTuples(); ++v)
+    EXPECT_EQ(prescribed->GetTuple1(v), v == 2 || v == 5 || v == 7 ? 1.0 : 0.0) << v;
+
+  grid->GetPointData()->RemoveArray("Prescribed");
+  writeVtu(dir / "older.vtu", grid);
+  EXPECT_TRUE(simulationFrameFacts(dir / "older.vtu").conditions.prescribedNodes.empty());
+
+  const int missing = static_cast<int>(f.rest.nodeCount());
+  EXPECT_EQ(test::errorText([&] {
+              simulationFrame(f.rest, f.positions, zero, zero, stress, 0,
+                              RunConditions{std::nullopt, {missing}});
+            }),
+            "prescribed node " + std::to_string(missing) + " does not exist (the mesh has " +
+                std::to_string(missing) + " nodes)");
 }
 
 // A run written under the name of an earlier, longer one replaces it: the

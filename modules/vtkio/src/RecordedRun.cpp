@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RecordedRun.h"
 
+#include <utility>
+
 namespace tetskin {
 
 RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
   const PvdSeries series = PvdSeries::read(pvd);
   frames_ = series.framesOfPart(0);
-  const SimulationFrameFacts facts = simulationFrameFacts(frames_.front().file);
+  SimulationFrameFacts facts = simulationFrameFacts(frames_.front().file);
   level_ = facts.level;
-  floor_ = facts.floor;
+  conditions_ = std::move(facts.conditions);
   // (Not checked to be there: only a caller that opens it needs it, and
   // that names it when it is missing.)
   const PvdSeries::Entry* first = nullptr;

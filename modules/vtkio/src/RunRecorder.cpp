@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <regex>
+#include <utility>
 
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SimulationFrame.h"
@@ -25,8 +26,10 @@ std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& 
   return file.parent_path() / (file.stem().string() + "_frames");
 }
 
-RunRecorder::RunRecorder(std::filesystem::path pvd, std::optional<FloorPlane> floor)
-    : framesDirectory_(framesDirectory(pvd)), series_(withPvdExtension(pvd)), floor_(floor) {
+RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions)
+    : framesDirectory_(framesDirectory(pvd)),
+      series_(withPvdExtension(pvd)),
+      conditions_(std::move(conditions)) {
   std::filesystem::create_directories(framesDirectory_);
   // A run written under the name of an earlier one replaces it. The earlier
   // frames would otherwise stay beside the new ones, in one numbered
@@ -49,7 +52,7 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& posi
   // The series names its files relative to the .pvd, which lies beside the folder.
   const std::string folder = framesDirectory_.filename().string() + "/";
   writeVtu(framesDirectory_ / name, simulationFrame(rest, positions, velocities, externalForces,
-                                                    vonMisesStress, level, floor_));
+                                                    vonMisesStress, level, conditions_));
   series_.add(time, 0, folder + name);
   if (deformedSurface) addSurface(time, *deformedSurface);
   series_.write();

@@ -6,6 +6,7 @@
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -39,13 +40,24 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const Points3& velocities,
                                                      const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
-                                                     int level,
-                                                     const std::optional<FloorPlane>& floor) {
+                                                     int level, const RunConditions& conditions) {
   TetMesh deformed{positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
   grid->GetPointData()->AddArray(toVtkVectors("Displacement", positions - rest.nodes));
   grid->GetPointData()->AddArray(toVtkVectors("Velocity", velocities));
   grid->GetPointData()->AddArray(toVtkVectors("ExternalForce", externalForces));
+  // 0/1 per node rather than a list: ParaView thresholds or colours by it.
+  auto prescribed = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  prescribed->SetName("Prescribed");
+  prescribed->SetNumberOfValues(rest.nodeCount());
+  prescribed->FillValue(0);
+  for (int node : conditions.prescribedNodes) {
+    if (node < 0 || node >= rest.nodeCount())
+      throw Error("prescribed node " + std::to_string(node) + " does not exist (the mesh has " +
+                  std::to_string(rest.nodeCount()) + " nodes)");
+    prescribed->SetValue(node, 1);
+  }
+  grid->GetPointData()->AddArray(prescribed);
   auto stress = vtkSmartPointer<vtkDoubleArray>::New();
   stress->SetName("VonMisesStress");
   auto ratio = vtkSmartPointer<vtkDoubleArray>::New();
@@ -63,7 +75,7 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetCellData()->AddArray(stress);
   grid->GetCellData()->AddArray(ratio);
   grid->GetCellData()->AddArray(levels);
-  if (floor) {
+  if (const std::optional<FloorPlane>& floor = conditions.floor) {
     // As a plane ParaView's users can read: its normal and its height
     // along it.
     grid->GetFieldData()->AddArray(toVtkVectors("FloorNormal", upVector(floor->up).transpose()));
@@ -121,8 +133,14 @@ SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {
     const double* n = normal->GetTuple3(0);
     for (UpAxis up : {UpAxis::X, UpAxis::Y, UpAxis::Z})
       if (Eigen::Vector3d(n[0], n[1], n[2]) == upVector(up))
-        facts.floor = FloorPlane{up, height->GetTuple1(0)};
+        facts.conditions.floor = FloorPlane{up, height->GetTuple1(0)};
   }
+  vtkDataArray* prescribed = grid->GetPointData()->GetArray("Prescribed");
+  if (prescribed && prescribed->GetNumberOfComponents() == 1 &&
+      prescribed->GetNumberOfTuples() == grid->GetNumberOfPoints())
+    for (vtkIdType v = 0; v < prescribed->GetNumberOfTuples(); ++v)
+      if (prescribed->GetTuple1(v) != 0)
+        facts.conditions.prescribedNodes.push_back(static_cast<int>(v));
   return facts;
 }
 

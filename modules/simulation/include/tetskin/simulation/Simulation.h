@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tetskin/core/FloorPlane.h"
+#include "tetskin/core/RunConditions.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
@@ -152,6 +153,8 @@ class Simulation {
   // a kinematic target.
   void setFixedNodes(const std::vector<int>& nodes);
   const std::vector<int>& fixedNodes() const { return fixedNodes_; }
+  // The floor and the fixed nodes: what a recorded run keeps of them.
+  RunConditions conditions() const { return {options_.floor(), fixedNodes_}; }
   // Positions the given fixed nodes must reach at the end of the next step.
   void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
   // Per-node external forces (level-local), kept until replaced.

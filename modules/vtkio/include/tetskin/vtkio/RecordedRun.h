@@ -35,7 +35,11 @@ class RecordedRun {
   std::optional<int> level() const { return level_; }
   // The run's floor (the first frame's FloorNormal and FloorHeight);
   // nullopt for a run without one, or one recorded before floors were.
-  std::optional<FloorPlane> floor() const { return floor_; }
+  std::optional<FloorPlane> floor() const { return conditions_.floor; }
+  // The nodes whose motion the run prescribed (the first frame's
+  // Prescribed array), sorted; empty for none, or a run recorded before
+  // frames said.
+  const std::vector<int>& prescribedNodes() const { return conditions_.prescribedNodes; }
   // The run's first surface frame (part 1: the bound surface deformed, a
   // binding that names its dataset), as found from the .pvd's folder (not
   // checked to be there); none for a run recorded without a surface.
@@ -48,7 +52,7 @@ class RecordedRun {
   std::filesystem::path path_;
   std::vector<PvdSeries::Entry> frames_;
   std::optional<int> level_;
-  std::optional<FloorPlane> floor_;
+  RunConditions conditions_;
   std::optional<std::string> surface_;
 };
 

@@ -13,6 +13,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 
 namespace tetskin {
 
@@ -20,9 +21,10 @@ class RunRecorder {
  public:
   // `pvd` gets the .pvd extension if it lacks it; creates RUN_frames/, or
   // removes the frames of an earlier run written there (and its .pvd).
-  // The run's `floor`, if any, goes into every control frame
-  // (SimulationFrame.h), so that the run is drawn with it.
-  explicit RunRecorder(std::filesystem::path pvd, std::optional<FloorPlane> floor = {});
+  // The run's `conditions` (its floor, if any, and prescribed nodes) go
+  // into every control frame (SimulationFrame.h), so that the run is drawn
+  // with them.
+  explicit RunRecorder(std::filesystem::path pvd, RunConditions conditions = {});
   // The folder the frames of a run written to `pvd` go to (RUN_frames/).
   static std::filesystem::path framesDirectory(const std::filesystem::path& pvd);
   const std::filesystem::path& path() const { return series_.path(); }
@@ -40,7 +42,7 @@ class RunRecorder {
  private:
   std::filesystem::path framesDirectory_;  // absolute
   PvdSeries series_;
-  std::optional<FloorPlane> floor_;
+  RunConditions conditions_;
   Index frames_ = 0;
 
   // Writes this frame's surface file and adds it to the series (unwritten).

@@ -2,11 +2,13 @@
 #pragma once
 // One simulated frame of the control mesh as a vtkUnstructuredGrid for
 // ParaView: tetrahedra at the deformed positions, point arrays
-// Displacement, Velocity and ExternalForce (N per node: loads, scenario
-// forces, pulls; not gravity), cell arrays VonMisesStress, VolumeRatio
-// (current / rest volume, < 0 for inverted elements) and Level, and for a
-// run with a floor the field data FloorNormal (the up axis' unit vector)
-// and FloorHeight; and the state read back from such a frame.
+// Displacement, Velocity, ExternalForce (N per node: loads, scenario
+// forces, pulls; not gravity) and Prescribed (1 where the run prescribes
+// the node's motion: held still, or driven as the twist's top; else 0),
+// cell arrays VonMisesStress, VolumeRatio (current / rest volume, < 0 for
+// inverted elements) and Level, and for a run with a floor the field data
+// FloorNormal (the up axis' unit vector) and FloorHeight; and the state
+// read back from such a frame.
 
 #include <vtkSmartPointer.h>
 
@@ -15,7 +17,7 @@
 #include <optional>
 #include <string>
 
-#include "tetskin/core/FloorPlane.h"
+#include "tetskin/core/RunConditions.h"
 #include "tetskin/core/TetMesh.h"
 
 class vtkUnstructuredGrid;
@@ -27,7 +29,7 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const Points3& externalForces,
                                                      const Eigen::VectorXd& vonMisesStress,
                                                      int level,
-                                                     const std::optional<FloorPlane>& floor = {});
+                                                     const RunConditions& conditions = {});
 
 // What a simulation restarts from: a frame's positions (its points) and
 // velocities (its Velocity array).
@@ -45,12 +47,13 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
                                const std::string& restName);
 
 // What a frame file says of its run: the dataset level it is of (its
-// Level cell array) and the run's floor (its FloorNormal and FloorHeight);
+// Level cell array), the run's floor (its FloorNormal and FloorHeight),
 // each nullopt where the frame does not say (a mesh written by another
-// tool, a run without a floor).
+// tool, a run without a floor), and its prescribed nodes, sorted (its
+// Prescribed array; empty where it has none).
 struct SimulationFrameFacts {
   std::optional<int> level;
-  std::optional<FloorPlane> floor;
+  RunConditions conditions;
 };
 SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path);
 
