@@ -155,6 +155,16 @@ QWidget* MainWindow::buildViewDock() {
     scene_->setFurVisible(on);
     renderNow();
   });
+  auto* showPrescribed = new QCheckBox("prescribed nodes (held or driven)");
+  showPrescribed->setObjectName("showPrescribed");
+  showPrescribed->setToolTip(
+      "marks the simulated level's nodes that the scenario, the fixed nodes and the fixed box "
+      "hold still or drive (a recorded run's while it is shown)");
+  form->addRow("", showPrescribed);
+  connect(showPrescribed, &QCheckBox::toggled, this, [this](bool on) {
+    scene_->setPrescribedNodesShown(on);
+    renderNow();
+  });
   QStringList controlStyles;
   for (const char* style : kControlMeshStyleNames) controlStyles << style;
   controlStyle_ = combo("controlStyle", controlStyles);
@@ -596,7 +606,7 @@ FurParameters MainWindow::furFromControls() const {
 void MainWindow::resetSimulation() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
-  scene_->setFloor(std::nullopt);  // (the new simulation's, if it starts)
+  scene_->setRunConditions({});  // (the new simulation's, if it starts)
   energyPlot_->clear();
   plottedSteps_ = -1;
   shownSteps_ = -1;
@@ -607,8 +617,10 @@ void MainWindow::resetSimulation() {
   const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_->level())];
   const UpAxis up = scene_->dataset().config.up;
   scenarioRows_->setUpAxis(up);
-  scenarioRows_->setBodyBottom(
-      mesh.nodes.col(axisIndex(up)).segment(level.firstNode, level.nodeCount).minCoeff());
+  const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
+  const BoundingBox restBox = boundingBox(restNodes);
+  scenarioRows_->setBodyBottom(restBox.min[axisIndex(up)]);
+  scenarioRows_->setBodyBox(restBox);
   SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
   options.timeStep = timeStep_->value();
   options.material.youngsModulus = young_->value();
@@ -620,7 +632,7 @@ void MainWindow::resetSimulation() {
   options.tolerance = tolerance_->currentText().toDouble();
   options.tangent = tangentFromString(tangent_->currentText().toStdString());
   try {
-    const ScenarioParameters parameters = scenarioRows_->parameters(level.nodeCount);
+    const ScenarioParameters parameters = scenarioRows_->parameters(restNodes);
     runner_ = std::make_unique<SimulationRunner>(mesh, scene_->level(), options,
                                                  scenarioRows_->scenario(),
                                                  scene_->datasetPath().string(), parameters);
@@ -719,7 +731,7 @@ bool MainWindow::showRunFrame() {
     showPlaying(false);
   }
   replaying_ = true;
-  scene_->setFloor(runPanel_->floor());
+  scene_->setRunConditions(runPanel_->conditions());
   lastTimes_ = scene_->showControlState(state.positions);
   renderNow();
   return true;
@@ -775,7 +787,7 @@ void MainWindow::showLatestState() {
   if (!runner_) return;
   runPanel_->pause();
   replaying_ = false;
-  scene_->setFloor(runner_->simulation().options().floor());
+  scene_->setRunConditions(runner_->simulation().conditions());
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);
   shownSteps_ = state.steps;

@@ -46,8 +46,10 @@ class RecordedRunPanel : public QGroupBox {
   void setFrame(int frame);
   // The mean time between the frames (a film's rate); 0 when not open.
   double meanFrameSeconds() const { return run_ ? run_->meanFrameSeconds() : 0; }
-  // The run's floor (RecordedRun::floor); nullopt when not open.
-  std::optional<FloorPlane> floor() const { return run_ ? run_->floor() : std::nullopt; }
+  // The run's floor and prescribed nodes (RecordedRun); none when not open.
+  RunConditions conditions() const {
+    return run_ ? RunConditions{run_->floor(), run_->prescribedNodes()} : RunConditions{};
+  }
   // The file of the frame chosen, and its state (throws Error naming the
   // file, as readSimulationFrame). Both only while open.
   const std::string& frameFile() const;

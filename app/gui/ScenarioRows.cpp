@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "ScientificSpinBox.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/io/LoadCurveFile.h"
 #include "tetskin/io/NodeList.h"
 
@@ -78,6 +79,28 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
               "linear between the points, held before the first and after the last (or "
               "repeated after it, with a last line 'repeat')");
 
+  fixedBox_ = new QCheckBox("hold the nodes inside");
+  fixedBox_->setObjectName("fixedBox");
+  fixedBox_->setToolTip(
+      "also hold still the nodes of the simulated level inside this box, faces included, in "
+      "the dataset's coordinates (a beam's end, say), in any scenario");
+  auto* boxMinRow = new QHBoxLayout;
+  auto* boxMaxRow = new QHBoxLayout;
+  const char* axes = "xyz";
+  for (int i = 0; i < 3; ++i) {
+    const std::string minName = std::string("fixedBoxMin") + axes[i];
+    const std::string maxName = std::string("fixedBoxMax") + axes[i];
+    boxMin_[i] = numberBox(minName.c_str(), -kLargest, kLargest, 0, "the box's least coordinate");
+    boxMax_[i] =
+        numberBox(maxName.c_str(), -kLargest, kLargest, 0, "the box's greatest coordinate");
+    boxMin_[i]->setEnabled(false);
+    boxMax_[i]->setEnabled(false);
+    connect(fixedBox_, &QCheckBox::toggled, boxMin_[i], &QWidget::setEnabled);
+    connect(fixedBox_, &QCheckBox::toggled, boxMax_[i], &QWidget::setEnabled);
+    boxMinRow->addWidget(boxMin_[i]);
+    boxMaxRow->addWidget(boxMax_[i]);
+  }
+
   loadSeconds_ =
       numberBox("loadSeconds", 0, kLargest, 0, "the loads act for this many seconds, then let go");
   loadSeconds_->setSpecialValueText("whole run");  // (at 0)
@@ -111,6 +134,9 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
       {new QLabel("Twist time (s)"), twistSeconds_, ScenarioParameter::TwistSeconds}};
   for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
   form_->addRow("Fixed nodes", fixedRow);
+  form_->addRow("Fixed box", fixedBox_);
+  form_->addRow("  from (x, y, z)", boxMinRow);
+  form_->addRow("  to (x, y, z)", boxMaxRow);
   form_->addRow("Loads", loadsRow);
   form_->addRow("Load curve", loadCurveRow);
   form_->addRow("Loads act for (s)", loadSeconds_);
@@ -141,7 +167,8 @@ std::string ScenarioRows::scenario() const {
   return scenario_->currentText().toStdString();
 }
 
-ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
+ScenarioParameters ScenarioRows::parameters(const Points3& restNodes) const {
+  const Index nodeCount = restNodes.rows();
   ScenarioParameters p;
   p.baseShare = baseShare_->value();
   p.pushAcceleration = push_->value();
@@ -151,6 +178,18 @@ ScenarioParameters ScenarioRows::parameters(Index nodeCount) const {
   p.twistSeconds = twistSeconds_->value();
   if (!fixedNodes_->text().isEmpty())
     p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
+  if (fixedBox_->isChecked()) {
+    BoundingBox box;
+    for (int i = 0; i < 3; ++i) {
+      box.min[i] = boxMin_[i]->value();
+      box.max[i] = boxMax_[i]->value();
+    }
+    try {
+      p.heldNodes = heldWithNodesInBox(p.heldNodes, restNodes, box);
+    } catch (const Error& e) {
+      throw Error(std::string("the fixed box: ") + e.what());
+    }
+  }
   if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
   if (!loadCurve_->text().isEmpty()) p.loadCurve = readLoadCurve(loadCurve_->text().toStdString());
   if (loadSeconds_->value() > 0) p.loadSeconds = loadSeconds_->value();
@@ -178,6 +217,14 @@ void ScenarioRows::setUpAxis(UpAxis up) {
 
 void ScenarioRows::setBodyBottom(double height) {
   if (!floor_->isChecked()) floorHeight_->setValue(height);
+}
+
+void ScenarioRows::setBodyBox(const BoundingBox& box) {
+  if (fixedBox_->isChecked()) return;
+  for (int i = 0; i < 3; ++i) {
+    boxMin_[i]->setValue(box.min[i]);
+    boxMax_[i]->setValue(box.max[i]);
+  }
 }
 
 }  // namespace tetskin::gui

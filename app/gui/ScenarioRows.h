@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The Simulation dock's scenario rows: which scenario, its parameters
-// (simulation Scenario.h), nodes held still and forces on nodes from files,
-// gravity and a floor; what `tetskin simulate` takes as its "Scenario" options. A
+// (simulation Scenario.h), nodes held still from a file and in a box, forces
+// on nodes from files, gravity and a floor; what `tetskin simulate` takes as
+// its "Scenario" options. A
 // parameter the chosen scenario does not read is taken out of the form.
 
 #include <QObject>
@@ -29,9 +30,11 @@ class ScenarioRows : public QObject {
   ScenarioRows(QFormLayout* form, bool interactive);
 
   std::string scenario() const;
-  // The parameters, the held nodes, the loads and their curve read from their files (a
-  // level of `nodeCount` nodes); throws Error naming the file and line.
-  ScenarioParameters parameters(Index nodeCount) const;
+  // The parameters, the held nodes (from the file and the box), the loads
+  // and their curve read from their files, for a level whose rest positions
+  // are `restNodes`; throws Error naming the file and line, or the box
+  // (one around no node, or inside out).
+  ScenarioParameters parameters(const Points3& restNodes) const;
   // `options` upright along the dataset's up axis, with the panel's gravity
   // and floor.
   SimulationOptions withGravityAndFloor(SimulationOptions options) const;
@@ -41,6 +44,9 @@ class ScenarioRows : public QObject {
   // The floor's height offered until the user sets one: the body's lowest
   // point at rest, along the up axis.
   void setBodyBottom(double height);
+  // The fixed box offered until the user holds nodes in one: the level's
+  // extent at rest, to narrow to a beam's end, say.
+  void setBodyBox(const BoundingBox& box);
 
  private:
   void showRowsOfScenario();
@@ -60,6 +66,8 @@ class ScenarioRows : public QObject {
   QLineEdit* loads_;       // a node forces file (io NodeList.h), or empty
   QLineEdit* loadCurve_;   // a load curve file (io LoadCurveFile.h), or empty
   QCheckBox* floor_;
+  QCheckBox* fixedBox_;  // hold the nodes in the box below
+  QDoubleSpinBox *boxMin_[3], *boxMax_[3];
   UpAxis up_ = UpAxis::Y;
   // The rows of the parameters only some scenarios read, in form order.
   std::vector<ParameterRow> parameterRows_;

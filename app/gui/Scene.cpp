@@ -70,8 +70,10 @@ Scene::Scene(vtkRenderer* renderer) : renderer_(renderer) {
   styleBackground(renderer_);
   problems_ = overlayActor(1.0, 0.15, 0.1, 7);
   triangle_ = overlayActor(1.0, 0.85, 0.1, 11);
+  prescribed_ = overlayActor(0.15, 0.45, 1.0, 8);
   renderer_->AddActor(problems_);
   renderer_->AddActor(triangle_);
+  renderer_->AddActor(prescribed_);
   legend_ = vtkSmartPointer<vtkScalarBarActor>::New();
   legend_->SetNumberOfLabels(5);
   legend_->SetWidth(0.08);
@@ -109,7 +111,7 @@ void Scene::openDataset(const std::filesystem::path& path) {
   fur_ = dataset_->config.fur;
   level_ = controlLevel_ = level;
   nodes_ = dataset_->mesh.nodes;
-  setFloor(std::nullopt);  // (another body's)
+  setRunConditions({});  // (another body's)
   previousSummary_.reset();
   picked_.reset();
   rebuildControl();
@@ -326,6 +328,39 @@ void Scene::setFloor(const std::optional<FloorPlane>& floor) {
   floorLevel_ = level_;
 }
 
+void Scene::setRunConditions(const RunConditions& conditions) {
+  setFloor(conditions.floor);
+  if (conditions.prescribedNodes == prescribedNodes_) return;  // (each frame shown sets them)
+  prescribedNodes_ = conditions.prescribedNodes;
+  updatePrescribedMarks();
+}
+
+void Scene::setPrescribedNodesShown(bool shown) {
+  prescribedShown_ = shown;
+  updatePrescribedMarks();
+}
+
+void Scene::updatePrescribedMarks() {
+  markedPrescribed_ = 0;
+  if (prescribedShown_ && dataset_) {
+    const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(level_)];
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto verts = vtkSmartPointer<vtkCellArray>::New();
+    for (int node : prescribedNodes_) {
+      if (node < 0 || node >= r.nodeCount) continue;  // (of a level no longer bound)
+      const Eigen::Vector3d p = nodes_.row(r.firstNode + node).transpose();
+      const vtkIdType id = points->InsertNextPoint(p.data());
+      verts->InsertNextCell(1, &id);
+      ++markedPrescribed_;
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetVerts(verts);
+    vtkPolyDataMapper::SafeDownCast(prescribed_->GetMapper())->SetInputData(poly);
+  }
+  prescribed_->SetVisibility(markedPrescribed_ > 0);
+}
+
 std::optional<FloorPlane> Scene::floor() const {
   if (!floor_) return std::nullopt;
   return floorPlane_;
@@ -455,6 +490,7 @@ FrameTimes Scene::showControlState(const Points3& levelPositions) {
   if (surfaceDrawing_) times = surfaceDrawing_->update(nodes_);
   updateControlActor();
   updateDiagnostics();
+  updatePrescribedMarks();
   return times;
 }
 

@@ -13,8 +13,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/RunConditions.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/Dataset.h"
@@ -119,11 +121,17 @@ class Scene {
   // World point under display (x, y) at the depth of `near` (for dragging).
   Eigen::Vector3d displayToWorld(int x, int y, const Eigen::Vector3d& near) const;
 
-  // The floor drawn under the bound level at rest (nullopt: none): the
-  // simulation's, or a recorded run's while it is shown. Built again only
-  // when the plane or the level changes.
-  void setFloor(const std::optional<FloorPlane>& floor);
+  // The conditions of the run shown: the simulation's, or a recorded run's
+  // while it is shown. Its floor is drawn under the bound level at rest
+  // (built again only when the plane or the level changes); its prescribed
+  // nodes (of the bound level) are marked while setPrescribedNodesShown is on.
+  void setRunConditions(const RunConditions& conditions);
   std::optional<FloorPlane> floor() const;
+  const std::vector<int>& prescribedNodes() const { return prescribedNodes_; }
+  void setPrescribedNodesShown(bool shown);
+  bool prescribedNodesShown() const { return prescribedShown_; }
+  // The nodes marked this frame (0 while the marks are off).
+  Index markedPrescribedCount() const { return markedPrescribed_; }
   // A simulated frame: the bound level's node positions (level-local).
   FrameTimes showControlState(const Points3& levelPositions);
   // The current state in the dataset's numbering, and the deformed surface.
@@ -159,6 +167,8 @@ class Scene {
   void showControlAtBindingLevel();
   void applyColoring();
   void updateDiagnostics();
+  void updatePrescribedMarks();
+  void setFloor(const std::optional<FloorPlane>& floor);
 
   vtkRenderer* renderer_;
   std::optional<Dataset> dataset_;
@@ -183,12 +193,15 @@ class Scene {
   std::unique_ptr<DeformableSurface> surfaceDrawing_;
   std::unique_ptr<ControlMeshActor> control_;
   std::unique_ptr<FloorActor> floor_;
-  FloorPlane floorPlane_;  // (with floor_)
-  int floorLevel_ = -1;    // the level floor_ lies under
+  FloorPlane floorPlane_;             // (with floor_)
+  int floorLevel_ = -1;               // the level floor_ lies under
+  std::vector<int> prescribedNodes_;  // the bound level's numbering
+  bool prescribedShown_ = false;
+  Index markedPrescribed_ = 0;
   // Shown level's nodes x simulated level's nodes (empty when they are one
   // level): nodalProlongation at the shown level's rest nodes.
   SparseMatrix controlTransfer_;
-  vtkSmartPointer<vtkActor> problems_, triangle_;
+  vtkSmartPointer<vtkActor> problems_, triangle_, prescribed_;
   vtkSmartPointer<vtkScalarBarActor> legend_;
   vtkSmartPointer<vtkTextActor> overlay_;
 };

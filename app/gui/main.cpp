@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // tetskin-gui [DATASET.json] [SURFACE] [--screenshot FILE [--window]] [--path PATH]
 //             [--size WxH] [--camera PRESET] [--control STYLE] [--color-by ARRAY]
-//             [--highlight] [--pick] [--scenario NAME] [--steps N] [--no-overlay]
+//             [--highlight] [--prescribed] [--pick] [--scenario NAME] [--steps N]
+//             [--no-overlay]
 //             [--help] [--version]
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -40,6 +41,8 @@ struct GuiArguments {
   QCommandLineOption control{"control", "control mesh: none, surface, wireframe, shrink", "STYLE"};
   QCommandLineOption colorBy{"color-by", "material, MinBarycentric, Distance or FaceId", "ARRAY"};
   QCommandLineOption highlight{"highlight", "mark vertices with negative weights or far"};
+  QCommandLineOption prescribed{"prescribed",
+                                "mark the nodes the simulation holds still or drives"};
   QCommandLineOption pick{"pick", "inspect the vertex at the centre of the view"};
   QCommandLineOption scenario{"scenario", "wobble, drop, twist or sag (the Simulation dock's)",
                               "NAME"};
@@ -56,8 +59,8 @@ struct GuiArguments {
     parser.addPositionalArgument("DATASET", "dataset (.json, a .node/.ele pair or a Gmsh .msh)",
                                  "[DATASET]");
     parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
-    parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight, pick,
-                       scenario, steps, noOverlay});
+    parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight,
+                       prescribed, pick, scenario, steps, noOverlay});
   }
 
   // Parses the application's arguments; prints help or the version and
@@ -178,6 +181,8 @@ int main(int argc, char** argv) {
   if (parser.isSet(args.colorBy) && !choose("colorBy", "--color-by", parser.value(args.colorBy)))
     return 1;
   if (parser.isSet(args.highlight)) window.findChild<QCheckBox*>("highlight")->setChecked(true);
+  if (parser.isSet(args.prescribed))
+    window.findChild<QCheckBox*>("showPrescribed")->setChecked(true);
   if (parser.isSet(args.noOverlay)) window.setOverlayVisible(false);
   if (parser.isSet(args.scenario)) {
     if (!choose("scenario", "--scenario", parser.value(args.scenario))) return 1;

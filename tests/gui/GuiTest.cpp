@@ -41,6 +41,8 @@
 #include "ImageCompare.h"
 #include "MainWindow.h"
 #include "MovieDecoding.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -500,6 +502,83 @@ TEST_F(Gui, SimulationHoldsTheBaseShareAndTheListedNodes) {
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_TRUE(window_->lastError().contains("bad_nodes.txt:2: node 99999 does not exist"))
       << window_->lastError().toStdString();
+}
+
+// The dock's fixed box holds the nodes inside it, with the listed ones, on
+// Reset; it is offered at the level's extent, and one around no node is
+// reported, naming the box and the extent.
+TEST_F(Gui, SimulationHoldsTheNodesInTheFixedBox) {
+  openSample();
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  child<QDoubleSpinBox>("baseShare")->setValue(0);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_TRUE(window_->runner()->simulation().fixedNodes().empty());
+  const Points3 rest = window_->runner()->simulation().restMesh().nodes;
+  const BoundingBox extent = boundingBox(rest);
+  EXPECT_EQ(child<QDoubleSpinBox>("fixedBoxMiny")->value(), extent.min.y());  // offered
+  EXPECT_EQ(child<QDoubleSpinBox>("fixedBoxMaxz")->value(), extent.max.z());
+  EXPECT_FALSE(child<QDoubleSpinBox>("fixedBoxMinx")->isEnabled());
+
+  // The left fifth of the body (along x), and the listed nodes.
+  child<QCheckBox>("fixedBox")->setChecked(true);
+  EXPECT_TRUE(child<QDoubleSpinBox>("fixedBoxMinx")->isEnabled());
+  BoundingBox box = extent;
+  box.max.x() = extent.min.x() + 0.2 * extent.extent().x();
+  child<QDoubleSpinBox>("fixedBoxMaxx")->setValue(box.max.x());
+  child<QLineEdit>("fixedNodes")
+      ->setText(QString(TETSKIN_SOURCE_DIR) + "/tests/data/held_nodes.txt");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const std::vector<int> inBox = pointsInBox(rest, box);
+  ASSERT_GT(inBox.size(), 3u);
+  EXPECT_EQ(window_->runner()->simulation().fixedNodes(), heldWithNodesInBox({0, 1, 2}, rest, box));
+  EXPECT_EQ(child<QDoubleSpinBox>("fixedBoxMaxx")->value(), box.max.x());  // kept on Reset
+
+  child<QDoubleSpinBox>("fixedBoxMinx")->setValue(extent.max.x() + 1);
+  child<QDoubleSpinBox>("fixedBoxMaxx")->setValue(extent.max.x() + 2);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner(), nullptr);
+  EXPECT_TRUE(
+      window_->lastError().startsWith("the fixed box: no node of the level lies in " +
+                                      QString::fromStdString(formatNumber(extent.max.x() + 1))))
+      << window_->lastError().toStdString();
+  EXPECT_TRUE(window_->lastError().contains(" (the level spans "))
+      << window_->lastError().toStdString();
+}
+
+// The prescribed nodes (held or driven) are marked on demand: the
+// simulation's, and a recorded run's while it is shown.
+TEST_F(Gui, MarksThePrescribedNodesOfTheSimulationAndOfARecordedRun) {
+  openSample();
+  child<QComboBox>("scenario")->setCurrentText("twist");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const std::vector<int> twisted = window_->runner()->simulation().fixedNodes();
+  ASSERT_FALSE(twisted.empty());
+  EXPECT_EQ(window_->scene().prescribedNodes(), twisted);
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), 0);  // (off by default)
+  window_->renderNow();
+  vtkSmartPointer<vtkImageData> unmarked = window_->grabImage();
+  child<QCheckBox>("showPrescribed")->setChecked(true);
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), static_cast<Index>(twisted.size()));
+  EXPECT_GT(changeFrom(unmarked), 0.001);
+
+  const std::filesystem::path pvd = scratch("twist_run.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  window_->stopRecording();
+  child<QComboBox>("scenario")->setCurrentText("drop");  // holds nothing
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), 0);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().prescribedNodes(), twisted);  // the run's, while it is shown
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), static_cast<Index>(twisted.size()));
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), 0);  // the simulation's again
+  child<QCheckBox>("showPrescribed")->setChecked(false);
+  EXPECT_EQ(window_->scene().markedPrescribedCount(), 0);
 }
 
 // The dock shows the parameters of the chosen scenario only (those
