@@ -111,8 +111,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
       deformer->deform(controlAll, bound->deformed->positions, bound->deformed->normals);
     }
-    recorder.addFrame(s.time, sim.restMesh(), s.positions, s.velocities, s.externalForces,
-                      sim.vonMisesStress(), level, deformer ? bound.get() : nullptr);
+    recorder.addFrame(s.time, sim.restMesh(), sim.frameFields(s), level,
+                      deformer ? bound.get() : nullptr);
   };
 
   // --log: the start and every step, written at the end (and by a run cut
@@ -227,6 +227,12 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf(
       "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",
       e.kinetic, e.elastic, e.gravitational);
+  if (!sim.fixedNodes().empty()) {
+    // What the supports carry: a settled body's weight and loads, opposed.
+    const Eigen::RowVector3d reaction = sim.reactionForces(sim.state()).colwise().sum();
+    std::printf("  supports: reaction %s N in all at the end, on the %zu fixed nodes\n",
+                commaSeparated(reaction.transpose()).c_str(), sim.fixedNodes().size());
+  }
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (!a.log.empty()) {

@@ -796,8 +796,8 @@ void MainWindow::showLatestState() {
     try {
       Simulation& sim = runner_->simulation();
       const BoundSurface surface = scene_->deformedBoundSurface();
-      recorder_->addFrame(state.time, sim.restMesh(), state.positions, state.velocities,
-                          state.externalForces, sim.vonMisesStress(), scene_->level(), &surface);
+      recorder_->addFrame(state.time, sim.restMesh(), sim.frameFields(state), scene_->level(),
+                          &surface);
     } catch (const std::exception& e) {
       stopRecording();
       fail(QString::fromStdString(e.what()));
@@ -1067,8 +1067,8 @@ bool MainWindow::exportFrame(const QString& qpath) {
       if (!runner_) throw Error("open a dataset first");
       Simulation& sim = runner_->simulation();
       const SimulationState s = runner_->state();
-      writeVtu(path, simulationFrame(sim.restMesh(), s.positions, s.velocities, s.externalForces,
-                                     sim.vonMisesStress(), scene_->level(), sim.conditions()));
+      writeVtu(path, simulationFrame(sim.restMesh(), sim.frameFields(s), scene_->level(),
+                                     sim.conditions()));
     } else if (ext == ".vtp") {
       writeBinding(path, scene_->deformedBoundSurface());
     } else {

@@ -37,6 +37,7 @@
 
 #include "BuildDialog.h"
 #include "EnergyPlot.h"
+#include "Frames.h"
 #include "HistogramWidget.h"
 #include "ImageCompare.h"
 #include "MainWindow.h"
@@ -865,10 +866,8 @@ TEST_F(Gui, StartsFromAFrameAndResetEndsARecording) {
   QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
   const Points3 before = window_->runner()->state().positions;
   const TetMesh coarse = extractLevel(window_->scene().dataset().mesh, 0);
-  const Points3 zero = Points3::Zero(coarse.nodeCount(), 3);
   const std::filesystem::path other = scratch("level0.vtu");
-  writeVtu(other, simulationFrame(coarse, coarse.nodes, zero, zero,
-                                  Eigen::VectorXd::Zero(coarse.elementCount()), 0));
+  writeVtu(other, simulationFrame(coarse, test::unloadedFrame(coarse, coarse.nodes), 0));
   EXPECT_FALSE(window_->startFromFrame(QString::fromStdString(other.string())));
   EXPECT_NE(window_->lastError().indexOf("level0.vtu: has 224 points and 598 tetrahedra"), -1)
       << window_->lastError().toStdString();

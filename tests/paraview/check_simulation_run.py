@@ -69,6 +69,24 @@ for index, time in enumerate([times[0], times[-1]]):
     if array_range(grid, "point", "Prescribed") != (0.0, 1.0):
         fail("Prescribed should be 1 at the held base and 0 elsewhere, ranges %s"
              % (array_range(grid, "point", "Prescribed"),))
+    # The supports' reactions: zero at the free nodes; at the start (at
+    # rest) each held node carries its own weight, straight up (y); once the
+    # body is pushed sideways the base holds it back along x too.
+    reactions = grid.GetPointData().GetArray("ReactionForce")
+    prescribed = grid.GetPointData().GetArray("Prescribed")
+    if reactions is None or reactions.GetNumberOfComponents() != 3:
+        fail("ReactionForce (3 components per point) missing")
+    sideways = 0.0
+    for p in range(grid.GetNumberOfPoints()):
+        r = reactions.GetTuple3(p)
+        if prescribed.GetTuple1(p) == 0.0:
+            if r != (0.0, 0.0, 0.0):
+                fail("ReactionForce %s at the free point %d" % (r, p))
+        elif index == 0 and not (r[1] > 0.0 and abs(r[0]) + abs(r[2]) < 1e-6 * r[1]):
+            fail("ReactionForce %s at held point %d at rest: not its weight, up" % (r, p))
+        sideways = max(sideways, abs(r[0]))
+    if index == 1 and not sideways > 0.0:
+        fail("ReactionForce: the base does not hold the pushed body back along x")
     if levels != (level, level):
         fail("Level should be %d everywhere, is %s" % (level, levels))
     if index == 0 and displacement[1] != 0.0:

@@ -306,6 +306,38 @@ TEST(CorotatedFem, SystemTermsEqualScaledStiffnessPlusDiagonalAndDampedForce) {
   EXPECT_THROW(fem.update(x, fTerms, A, terms), Error);
 }
 
+// The force queried between steps is the element pass's own, f_el - beta K
+// v, without its matrix; and it leaves the pass's state alone (the next
+// update() gives what it gave before the query).
+TEST(CorotatedFem, DampedElasticForceIsTheElementPasssForce) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  CorotatedFem fem(mesh, material());
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0, 0.1);
+  Eigen::VectorXd x = fem.restPositions(), v(fem.dofCount());
+  for (Index i = 0; i < x.size(); ++i) {
+    x[i] += noise(rng);
+    v[i] = noise(rng);
+  }
+  Eigen::VectorXd f, fDamped, fAgain;
+  SparseMatrix K = fem.pattern(), A = fem.pattern();
+  fem.update(x, f, K);
+  CorotatedFem::SystemTerms terms;
+  terms.velocity = &v;
+  terms.velocityWeight = 0.7;
+  fem.update(x, fDamped, A, terms);
+  ASSERT_GT((fDamped - f).norm(), 0.1 * f.norm());  // the damping counts
+  EXPECT_LT((fem.dampedElasticForce(x, v, 0.7) - fDamped).norm(), 1e-9 * fDamped.norm());
+  EXPECT_LT((fem.dampedElasticForce(x, v, 0) - f).norm(), 1e-9 * f.norm());
+  // Internal forces balance: they sum to zero over the body.
+  const Eigen::VectorXd q = fem.dampedElasticForce(x, v, 0.7);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (Index node = 0; node < fem.nodeCount(); ++node) sum += q.segment<3>(3 * node);
+  EXPECT_LT(sum.norm(), 1e-9 * q.norm());
+  fem.update(x, fAgain, A, terms);
+  EXPECT_EQ(fAgain, fDamped);
+}
+
 // Rotated and stretched by 5% in every direction (plus a little noise), every
 // element is under tension, where no mode of the rotation term is dropped:
 // K + K_rot is then the exact derivative of the force, -df/dx, as central

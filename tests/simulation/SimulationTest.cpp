@@ -179,6 +179,100 @@ TEST(Simulation, CantileverMatchesEulerBernoulli) {
   EXPECT_LT(tip, expected * 1.02);  // linear tetrahedra are, if anything, too stiff
 }
 
+// The supports' reactions: at rest before any step the held nodes carry
+// only their own weight; once the cantilever has settled its clamp carries
+// the whole weight W (up) and the moment W L / 2 about it, with the
+// deformed positions: the reactions and gravity are in equilibrium, forces
+// and moments. Free nodes have none.
+TEST(Simulation, ReactionsOfASettledCantileverCarryItsWeightAndMoment) {
+  const double L = kBeamLength;
+  const TetMesh beam = test::tetGrid(20, 2, 2, {L, kBeamHeight, kBeamWidth});
+  const SimulationOptions options = staticBeamOptions();
+  Simulation sim(oneLevel(beam), 0, options);
+  const std::vector<int> clamp = nodesWithXBelow(beam, 1e-9);
+  sim.setFixedNodes(clamp);
+  const Eigen::VectorXd mass = sim.nodeMasses();
+  const double weight = mass.sum() * 9.81;
+  ASSERT_NEAR(weight, options.material.density * 9.81 * L * kBeamHeight * kBeamWidth, 1e-9);
+  auto isClamped = [&](Index v) { return std::find(clamp.begin(), clamp.end(), v) != clamp.end(); };
+
+  const Points3 atRest = sim.reactionForces(sim.state());
+  for (Index v = 0; v < beam.nodeCount(); ++v) {
+    const Eigen::Vector3d expected(0, isClamped(v) ? mass[v] * 9.81 : 0, 0);
+    EXPECT_LT((atRest.row(v).transpose() - expected).norm(), 1e-12 * weight) << v;
+  }
+
+  settledTipDeflection(sim, nullptr);
+  const FrameFields settled = sim.frameFields(sim.state());
+  EXPECT_EQ(settled.reactionForces, sim.reactionForces(sim.state()));
+  EXPECT_EQ(settled.positions, sim.state().positions);
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero(),
+                  clampMoment = Eigen::Vector3d::Zero();
+  for (Index v = 0; v < beam.nodeCount(); ++v) {
+    const Eigen::Vector3d x = settled.positions.row(v).transpose();
+    const Eigen::Vector3d reaction = settled.reactionForces.row(v).transpose();
+    const Eigen::Vector3d gravity = mass[v] * options.gravity;
+    if (!isClamped(v)) {
+      EXPECT_EQ(reaction, Eigen::Vector3d::Zero()) << v;
+    }
+    force += reaction + gravity;
+    moment += x.cross(reaction + gravity);
+    clampMoment += x.cross(reaction);
+  }
+  std::printf(
+      "settled cantilever: reactions %.6f N up (weight %.6f), clamp moment %.6f N m "
+      "(W L / 2 = %.6f)\n",
+      force.y() + weight, weight, clampMoment.z(), weight * L / 2);
+  EXPECT_LT(force.norm(), 1e-6 * weight);
+  EXPECT_LT(moment.norm(), 1e-6 * weight * L);
+  // The beam has shortened a little along x as it bent: the moment is that
+  // of the weight at its deformed centre, within 0.5% of W L / 2.
+  EXPECT_NEAR(clampMoment.z(), weight * L / 2, 5e-3 * weight * L / 2);
+}
+
+// The inertia and damping in the reactions, which a settled body has none
+// of: every node of a body driven (kinematic targets) along a uniformly
+// accelerated translation, x(t) = X + a t^2 / 2 (no strain, no strain
+// rate), is held by its support alone, r = m (a + alpha v - g) per node.
+// The step's acceleration is the second difference of the targets, exactly
+// a, from the second step on; the first starts from rest with v = a h / 2.
+// A new start (setVelocities) has no acceleration of a step behind it.
+TEST(Simulation, ReactionsOfADrivenBodyAreItsMassTimesAcceleration) {
+  const TetMesh body = test::tetGrid(3, 2, 2, {3, 2, 2});
+  SimulationOptions options;
+  options.solver = SolverKind::ConjugateGradient;
+  options.tolerance = 1e-12;
+  const double h = options.timeStep, alpha = options.material.massDamping;
+  Simulation sim(oneLevel(body), 0, options);
+  std::vector<int> all(static_cast<std::size_t>(body.nodeCount()));
+  for (int v = 0; v < body.nodeCount(); ++v) all[static_cast<std::size_t>(v)] = v;
+  sim.setFixedNodes(all);
+  const Eigen::Vector3d a(2.0, -1.0, 0.5);
+  const Eigen::VectorXd mass = sim.nodeMasses();
+  for (int step = 1; step <= 5; ++step) {
+    const double t = step * h;
+    sim.setKinematicTargets(all, body.nodes.rowwise() + 0.5 * t * t * a.transpose());
+    sim.step();
+    const SimulationState state = sim.state();
+    const Eigen::Vector3d velocity = (step - 0.5) * h * a;  // (x(t) - x(t - h)) / h
+    const Eigen::Vector3d acceleration = step == 1 ? Eigen::Vector3d(0.5 * a) : a;
+    const Points3 reactions = sim.reactionForces(state);
+    for (Index v = 0; v < body.nodeCount(); ++v) {
+      const Eigen::Vector3d expected =
+          mass[v] * (acceleration + alpha * velocity - options.gravity);
+      EXPECT_LT((reactions.row(v).transpose() - expected).norm(), 1e-9 * expected.norm())
+          << "step " << step << ", node " << v;
+    }
+  }
+  sim.setVelocities(sim.state().velocities);
+  const SimulationState restarted = sim.state();
+  EXPECT_EQ(restarted.accelerations, Points3::Zero(body.nodeCount(), 3));
+  EXPECT_LT((sim.reactionForces(restarted).row(0).transpose() -
+             mass[0] * (alpha * restarted.velocities.row(0).transpose() - options.gravity))
+                .norm(),
+            1e-9 * mass[0] * options.gravity.norm());
+}
+
 // A free 6 x 1 x 1 bar (E = 1e6 Pa, density 1) pulled at both ends by an
 // axial stress of 1e-3 E: opposite end forces, equal on each of the 16 end
 // nodes.

@@ -3,6 +3,7 @@
 // back exactly, a frame of another body is refused by name, and a run
 // started from a frame goes on as the run that wrote it.
 #include <gtest/gtest.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
@@ -13,6 +14,7 @@
 #include <limits>
 
 #include "ExpectError.h"
+#include "Frames.h"
 #include "SampleData.h"
 #include "Shapes.h"
 #include "TestFiles.h"
@@ -41,8 +43,7 @@ struct Frame {
     }
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid() const {
-    return simulationFrame(rest, positions, velocities, Points3::Zero(rest.nodeCount(), 3),
-                           Eigen::VectorXd::Zero(rest.elementCount()), 0);
+    return simulationFrame(rest, test::unloadedFrame(rest, positions, velocities), 0);
   }
 };
 
@@ -90,6 +91,47 @@ TEST(SimulationFrame, AFrameOfAnotherBodyIsRefusedByName) {
   expectErrorAt(read(f.rest), file, 0, "Velocity of point 4 ");
 }
 
+// Each field of a frame goes into the array of its name (vectors per node,
+// stresses per element) as it is; fields of another size than the level's
+// are refused by name before anything is written.
+TEST(SimulationFrame, EachFieldGoesIntoTheArrayOfItsName) {
+  const Frame f;
+  FrameFields fields = test::unloadedFrame(f.rest, f.positions, f.velocities);
+  const Index nodes = f.rest.nodeCount(), elements = f.rest.elementCount();
+  for (Index v = 0; v < nodes; ++v) {
+    fields.externalForces.row(v) << 1.5 * static_cast<double>(v), 0, -2;
+    fields.reactionForces.row(v) << 0, 0.25 * static_cast<double>(v), 7;
+  }
+  for (Index e = 0; e < elements; ++e) fields.vonMisesStress[e] = 100.0 + static_cast<double>(e);
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = simulationFrame(f.rest, fields, 2);
+  const auto vectors = [&](const char* name) {
+    vtkDataArray* array = grid->GetPointData()->GetArray(name);
+    EXPECT_NE(array, nullptr) << name;
+    Points3 rows(array ? array->GetNumberOfTuples() : 0, 3);
+    for (Index v = 0; v < rows.rows(); ++v)
+      for (int c = 0; c < 3; ++c) rows(v, c) = array->GetComponent(v, c);
+    return rows;
+  };
+  EXPECT_EQ(vectors("Displacement"), f.positions - f.rest.nodes);
+  EXPECT_EQ(vectors("Velocity"), fields.velocities);
+  EXPECT_EQ(vectors("ExternalForce"), fields.externalForces);
+  EXPECT_EQ(vectors("ReactionForce"), fields.reactionForces);
+  vtkDataArray* stress = grid->GetCellData()->GetArray("VonMisesStress");
+  ASSERT_NE(stress, nullptr);
+  ASSERT_EQ(stress->GetNumberOfTuples(), elements);
+  for (Index e = 0; e < elements; ++e) EXPECT_EQ(stress->GetTuple1(e), fields.vonMisesStress[e]);
+
+  const std::string counts = std::to_string(nodes) + " nodes";
+  FrameFields shortReactions = fields;
+  shortReactions.reactionForces.conservativeResize(nodes - 1, 3);
+  EXPECT_EQ(test::errorText([&] { simulationFrame(f.rest, shortReactions, 2); }),
+            "the frame's reaction forces: " + std::to_string(nodes - 1) + " rows for " + counts);
+  FrameFields noStresses = fields;
+  noStresses.vonMisesStress.resize(0);
+  EXPECT_EQ(test::errorText([&] { simulationFrame(f.rest, noStresses, 2); }),
+            "the frame's stresses: 0 rows for " + std::to_string(elements) + " elements");
+}
+
 // A recorded run read back (render --run, deform --positions RUN.pvd, the
 // GUI's replay): its control frames in time order whatever the .pvd's
 // order, the surface's entries left out, the level its frames say; a
@@ -102,9 +144,11 @@ TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
   second(2, 1) += 0.25;
   for (const char* name : {"a.vtu", "b.vtu"})
     writeVtu(dir / name,
-             simulationFrame(f.rest, std::string(name) == "a.vtu" ? f.positions : second,
-                             f.velocities, Points3::Zero(f.rest.nodeCount(), 3),
-                             Eigen::VectorXd::Zero(f.rest.elementCount()), 3));
+             simulationFrame(
+                 f.rest,
+                 test::unloadedFrame(f.rest, std::string(name) == "a.vtu" ? f.positions : second,
+                                     f.velocities),
+                 3));
   PvdSeries series(dir / "run.pvd");
   series.add(0.5, 0, "b.vtu");
   series.add(0.5, 1, "surface.vtp");  // (not read)
@@ -141,12 +185,10 @@ TEST(RecordedRun, ReadsTheControlFramesInTimeOrder) {
 TEST(RecordedRun, KeepsTheRunsFloor) {
   const test::ScratchDir dir;
   const Frame f;
-  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
-  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
   const FloorPlane floor{UpAxis::Z, -0.375};
   {
     RunRecorder recorder(dir / "run.pvd", RunConditions{floor, {}});
-    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+    recorder.addFrame(0, f.rest, test::unloadedFrame(f.rest, f.positions), 0);
   }
   EXPECT_EQ(RecordedRun(dir / "run.pvd").floor(), floor);
   const SimulationFrameFacts facts = simulationFrameFacts(dir / "run_frames/control_00000.vtu");
@@ -159,7 +201,7 @@ TEST(RecordedRun, KeepsTheRunsFloor) {
 
   {
     RunRecorder recorder(dir / "plain.pvd");
-    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+    recorder.addFrame(0, f.rest, test::unloadedFrame(f.rest, f.positions), 0);
   }
   EXPECT_EQ(RecordedRun(dir / "plain.pvd").floor(), std::nullopt);
 
@@ -175,11 +217,9 @@ TEST(RecordedRun, KeepsTheRunsFloor) {
 TEST(RecordedRun, KeepsTheRunsPrescribedNodes) {
   const test::ScratchDir dir;
   const Frame f;
-  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
-  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
   {
     RunRecorder recorder(dir / "run.pvd", RunConditions{std::nullopt, {7, 2, 5}});
-    recorder.addFrame(0, f.rest, f.positions, zero, zero, stress, 0);
+    recorder.addFrame(0, f.rest, test::unloadedFrame(f.rest, f.positions), 0);
   }
   const RecordedRun run(dir / "run.pvd");
   EXPECT_EQ(run.prescribedNodes(), (std::vector<int>{2, 5, 7}));
@@ -197,7 +237,7 @@ TEST(RecordedRun, KeepsTheRunsPrescribedNodes) {
 
   const int missing = static_cast<int>(f.rest.nodeCount());
   EXPECT_EQ(test::errorText([&] {
-              simulationFrame(f.rest, f.positions, zero, zero, stress, 0,
+              simulationFrame(f.rest, test::unloadedFrame(f.rest, f.positions), 0,
                               RunConditions{std::nullopt, {missing}});
             }),
             "prescribed node " + std::to_string(missing) + " does not exist (the mesh has " +
@@ -210,16 +250,16 @@ TEST(RecordedRun, KeepsTheRunsPrescribedNodes) {
 TEST(RunRecorder, ARunWrittenAgainReplacesTheEarlierFrames) {
   const test::ScratchDir dir;
   const Frame f;
-  const Points3 zero = Points3::Zero(f.rest.nodeCount(), 3);
-  const Eigen::VectorXd stress = Eigen::VectorXd::Zero(f.rest.elementCount());
   {
     RunRecorder first(dir / "run.pvd");
-    for (int i = 0; i < 4; ++i) first.addFrame(i, f.rest, f.positions, zero, zero, stress, 0);
+    for (int i = 0; i < 4; ++i)
+      first.addFrame(i, f.rest, test::unloadedFrame(f.rest, f.positions), 0);
   }
   dir.write("run_frames/notes.txt", "mine");
   RunRecorder second(dir / "run.pvd");
   EXPECT_FALSE(std::filesystem::exists(dir / "run.pvd"));  // until its first frame
-  for (int i = 0; i < 2; ++i) second.addFrame(i, f.rest, f.positions, zero, zero, stress, 0);
+  for (int i = 0; i < 2; ++i)
+    second.addFrame(i, f.rest, test::unloadedFrame(f.rest, f.positions), 0);
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "run_frames"))
     files.push_back(entry.path().filename().string());
@@ -250,8 +290,7 @@ TEST(SimulationFrame, ARunStartedFromAFrameGoesOnAsTheRunThatWroteIt) {
   const SimulationState whole = run(40, nullptr), half = run(20, nullptr);
   const test::ScratchDir dir;
   Simulation writer(d.mesh, 0, options);
-  writeVtu(dir / "half.vtu", simulationFrame(writer.restMesh(), half.positions, half.velocities,
-                                             half.externalForces, writer.vonMisesStress(), 0));
+  writeVtu(dir / "half.vtu", simulationFrame(writer.restMesh(), writer.frameFields(half), 0));
   const FrameState start = readSimulationFrame(dir / "half.vtu", writer.restMesh(), "level 0");
   const SimulationState resumed = run(20, &start);
   const double sag = (whole.positions - writer.restMesh().nodes).cwiseAbs().maxCoeff();

@@ -347,4 +347,34 @@ Eigen::VectorXd CorotatedFem::vonMisesStress(const Eigen::VectorXd& x) const {
   return stress;
 }
 
+Eigen::VectorXd CorotatedFem::dampedElasticForce(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                                 double beta) const {
+  // Per node k of an element, with F = sum_k x_k g_k^T and its rate
+  // Fdot = sum_k v_k g_k^T: -V R (sigma(sym(R^T F) - I) + beta sigma(sym(R^T Fdot))) g_k,
+  // the gradient of the energy V/2 sigma : strain with R held fixed, and
+  // K_e R^T v rotated back. Elements in parallel, scattered in order: the
+  // same state gives the same forces, bit for bit.
+  std::vector<Eigen::Matrix<double, 3, 4>> perElement(scatter_.size());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, scatter_.size(), 512), [&](const auto& range) {
+        for (std::size_t e = range.begin(); e < range.end(); ++e) {
+          const Eigen::Matrix3d F = deformationGradient(e, x);
+          const Eigen::Matrix3d R = rotation(F);
+          Eigen::Matrix3d rate = Eigen::Matrix3d::Zero();
+          for (int k = 0; k < 4; ++k)
+            rate.noalias() += v.segment<3>(3 * node(e, k)) * gradient(e, k).transpose();
+          const Eigen::Matrix3d rotatedRate = R.transpose() * rate;
+          const Eigen::Matrix3d stress =
+              linearStress(rotatedFrameStrain(R, F)) +
+              beta * linearStress(0.5 * (rotatedRate + rotatedRate.transpose()));
+          const Eigen::Matrix3d P = -volume(e) * R * stress;
+          for (int k = 0; k < 4; ++k) perElement[e].col(k) = P * gradient(e, k);
+        }
+      });
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(dofCount());
+  for (std::size_t e = 0; e < scatter_.size(); ++e)
+    for (int k = 0; k < 4; ++k) force.segment<3>(3 * node(e, k)) += perElement[e].col(k);
+  return force;
+}
+
 }  // namespace tetskin

@@ -201,6 +201,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   validateOptions(options);
   x_ = fem_.restPositions();
   v_.setZero(fem_.dofCount());
+  acceleration_.setZero(fem_.dofCount());
   external_.setZero(fem_.dofCount());
   appliedExternal_.setZero(fem_.dofCount());
   dv_.setZero(fem_.dofCount());
@@ -321,12 +322,14 @@ void Simulation::setPositions(const Points3& positions) {
   requireRows("positions", positions.rows(), rest_.nodeCount(), "nodes");
   std::lock_guard lock(mutex_);
   x_ = toInternal(positions);
+  acceleration_.setZero();  // (a new start, not the outcome of a step)
 }
 
 void Simulation::setVelocities(const Points3& velocities) {
   requireRows("velocities", velocities.rows(), rest_.nodeCount(), "nodes");
   std::lock_guard lock(mutex_);
   v_ = toInternal(velocities);
+  acceleration_.setZero();
 }
 
 void Simulation::buildSystem(double h, StepStats& stats) {
@@ -488,6 +491,7 @@ StepStats Simulation::step() {
       shortfall_.largestAtStep = steps_ + 1;
     }
   }
+  acceleration_ = (v - v_) / h;
   x_ = std::move(x);
   v_ = std::move(v);
   appliedExternal_.swap(stepExternal_);
@@ -498,7 +502,8 @@ StepStats Simulation::step() {
 
 SimulationState Simulation::state() const {
   std::lock_guard lock(mutex_);
-  return {toOutside(x_), toOutside(v_), toOutside(appliedExternal_), time_, steps_};
+  return {toOutside(x_), toOutside(v_), toOutside(appliedExternal_), toOutside(acceleration_),
+          time_,         steps_};
 }
 
 double Simulation::time() const {
@@ -545,13 +550,27 @@ Energies Simulation::energies() const {
   return e;
 }
 
-Eigen::VectorXd Simulation::vonMisesStress() const {
-  Eigen::VectorXd x;
-  {
-    std::lock_guard lock(mutex_);
-    x = x_;
+Points3 Simulation::reactionForces(const SimulationState& state) const {
+  Points3 reactions = Points3::Zero(rest_.nodeCount(), 3);
+  if (fixedNodes_.empty()) return reactions;
+  const ElasticMaterial& m = options_.material;
+  const Eigen::VectorXd internalForce = fem_.dampedElasticForce(
+      toInternal(state.positions), toInternal(state.velocities), m.stiffnessDamping);
+  const Eigen::VectorXd& mass = fem_.lumpedMass();
+  for (int node : fixedNodes_) {
+    const Index i = 3 * rank_[static_cast<std::size_t>(node)];
+    const Eigen::Vector3d inertia = mass.segment<3>(i).cwiseProduct(
+        state.accelerations.row(node).transpose() +
+        m.massDamping * state.velocities.row(node).transpose() - options_.gravity);
+    reactions.row(node) = inertia.transpose() - internalForce.segment<3>(i).transpose() -
+                          state.externalForces.row(node);
   }
-  return fem_.vonMisesStress(x);
+  return reactions;
+}
+
+FrameFields Simulation::frameFields(const SimulationState& state) const {
+  return {state.positions, state.velocities, state.externalForces, reactionForces(state),
+          fem_.vonMisesStress(toInternal(state.positions))};
 }
 
 }  // namespace tetskin

@@ -43,16 +43,13 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions)
   std::filesystem::remove(series_.path());
 }
 
-void RunRecorder::addFrame(double time, const TetMesh& rest, const Points3& positions,
-                           const Points3& velocities, const Points3& externalForces,
-                           const Eigen::VectorXd& vonMisesStress, int level,
+void RunRecorder::addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
                            const BoundSurface* deformedSurface) {
   char name[64];
   std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
   // The series names its files relative to the .pvd, which lies beside the folder.
   const std::string folder = framesDirectory_.filename().string() + "/";
-  writeVtu(framesDirectory_ / name, simulationFrame(rest, positions, velocities, externalForces,
-                                                    vonMisesStress, level, conditions_));
+  writeVtu(framesDirectory_ / name, simulationFrame(rest, fields, level, conditions_));
   series_.add(time, 0, folder + name);
   if (deformedSurface) addSurface(time, *deformedSurface);
   series_.write();

@@ -36,16 +36,21 @@ Points3 pointVectors(vtkUnstructuredGrid* grid, const char* name, const std::str
 
 }  // namespace
 
-vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
-                                                     const Points3& velocities,
-                                                     const Points3& externalForces,
-                                                     const Eigen::VectorXd& vonMisesStress,
+vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const FrameFields& fields,
                                                      int level, const RunConditions& conditions) {
-  TetMesh deformed{positions, rest.elements};
+  const Index nodes = rest.nodeCount();
+  requireRows("the frame's positions", fields.positions.rows(), nodes, "nodes");
+  requireRows("the frame's velocities", fields.velocities.rows(), nodes, "nodes");
+  requireRows("the frame's external forces", fields.externalForces.rows(), nodes, "nodes");
+  requireRows("the frame's reaction forces", fields.reactionForces.rows(), nodes, "nodes");
+  requireRows("the frame's stresses", fields.vonMisesStress.size(), rest.elementCount(),
+              "elements");
+  TetMesh deformed{fields.positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
-  grid->GetPointData()->AddArray(toVtkVectors("Displacement", positions - rest.nodes));
-  grid->GetPointData()->AddArray(toVtkVectors("Velocity", velocities));
-  grid->GetPointData()->AddArray(toVtkVectors("ExternalForce", externalForces));
+  grid->GetPointData()->AddArray(toVtkVectors("Displacement", fields.positions - rest.nodes));
+  grid->GetPointData()->AddArray(toVtkVectors("Velocity", fields.velocities));
+  grid->GetPointData()->AddArray(toVtkVectors("ExternalForce", fields.externalForces));
+  grid->GetPointData()->AddArray(toVtkVectors("ReactionForce", fields.reactionForces));
   // 0/1 per node rather than a list: ParaView thresholds or colours by it.
   auto prescribed = vtkSmartPointer<vtkUnsignedCharArray>::New();
   prescribed->SetName("Prescribed");
@@ -68,7 +73,7 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   ratio->SetNumberOfValues(rest.elementCount());
   levels->SetNumberOfValues(rest.elementCount());
   for (Index e = 0; e < rest.elementCount(); ++e) {
-    stress->SetValue(e, vonMisesStress[e]);
+    stress->SetValue(e, fields.vonMisesStress[e]);
     ratio->SetValue(e, elementVolume(deformed, e) / elementVolume(rest, e));
     levels->SetValue(e, level);
   }

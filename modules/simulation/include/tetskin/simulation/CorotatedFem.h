@@ -115,6 +115,14 @@ class CorotatedFem {
   // Per element von Mises stress at positions x.
   Eigen::VectorXd vonMisesStress(const Eigen::VectorXd& x) const;
 
+  // The elastic force with its stiffness damping at positions x and
+  // velocities v (3n each): f_el(x) - beta K v, K = R K_e R^T at x (the
+  // force update() assembles with velocityWeight beta, without the matrix,
+  // and without touching the warm starts of the rotations: a query between
+  // steps, such as the supports' reactions, leaves the next step as it was).
+  Eigen::VectorXd dampedElasticForce(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                     double beta) const;
+
   // The rotation of the polar decomposition F = R S, a proper rotation also
   // for inverted elements (SVD with the sign fix of Irving, Teran & Fedkiw):
   // the rotation that maximizes trace(R^T F).

@@ -10,8 +10,9 @@
 // of the two is faster on the running simulation (SolverChoice.h).
 //
 // Threads: step() may run on one thread while others call state(),
-// setExternalForces() or energies(); those are guarded by a mutex. Two threads
-// must not call step() at the same time.
+// setExternalForces() or energies(), which are guarded by a mutex, or
+// frameFields() and reactionForces() of a state taken before, which read
+// nothing a step changes. Two threads must not call step() at the same time.
 
 #include <memory>
 #include <mutex>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "tetskin/core/FloorPlane.h"
+#include "tetskin/core/FrameFields.h"
 #include "tetskin/core/RunConditions.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
@@ -99,6 +101,9 @@ struct SimulationState {
   // The external forces (loads, scenario forces, pulls; not gravity) that
   // acted in the step that led to this state; zero before the first step.
   Points3 externalForces;
+  // The last step's change of velocity over its length; zero before the
+  // first step and after setPositions/setVelocities (a new start).
+  Points3 accelerations;
   double time = 0;
   Index steps = 0;
 };
@@ -175,8 +180,18 @@ class Simulation {
   Energies energies() const;
   // Since construction (steps that failed not counted).
   SolveShortfall solveShortfall() const;
-  // Per element von Mises stress at the current state.
-  Eigen::VectorXd vonMisesStress() const;
+  // The forces the supports exert on the body at the fixed nodes (level
+  // numbering; zero rows elsewhere) in `state` (one of this simulation's),
+  // to hold them still or on their targets: M a + alpha M v - (f_el - beta K
+  // v) - f_ext - M g there. A body settled under gravity and loads rests on
+  // them: they sum to its weight and loads, opposed, and balance their
+  // moment. The floor's contact forces on fixed nodes are left out.
+  Points3 reactionForces(const SimulationState& state) const;
+  // `state` with its reactions and per element von Mises stress: what a
+  // frame exports (FrameFields.h). (From a state taken once, so that a
+  // frame's fields and the surface deformed with it are of one instant,
+  // whatever step the GUI's runner takes in between.)
+  FrameFields frameFields(const SimulationState& state) const;
 
  private:
   void buildSystem(double h, StepStats& stats);
@@ -197,9 +212,10 @@ class Simulation {
   std::optional<SolverChoice> choice_;                  // auto
   Index lastMultigridStep_ = -1;                        // steps_ of multigrid's last step
 
-  mutable std::mutex mutex_;  // guards x_, v_, time_, steps_, external_, appliedExternal_,
-                              // shortfall_
+  mutable std::mutex mutex_;  // guards x_, v_, acceleration_, time_, steps_, external_,
+                              // appliedExternal_, shortfall_
   Eigen::VectorXd x_, v_, external_;
+  Eigen::VectorXd acceleration_;     // (v_ - v before the last step) / h
   Eigen::VectorXd stepExternal_;     // external_ as the step being taken reads it
   Eigen::VectorXd appliedExternal_;  // stepExternal_ of the last step taken
   double time_ = 0;

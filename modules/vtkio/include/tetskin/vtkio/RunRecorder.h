@@ -31,9 +31,7 @@ class RunRecorder {
   Index frames() const { return frames_; }
   // The control level's state (level-local nodes; SimulationFrame.h) and,
   // if given, the bound surface already deformed to this frame.
-  void addFrame(double time, const TetMesh& rest, const Points3& positions,
-                const Points3& velocities, const Points3& externalForces,
-                const Eigen::VectorXd& vonMisesStress, int level,
+  void addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
                 const BoundSurface* deformedSurface = nullptr);
   // A frame of the bound surface alone (part 1, as beside a control frame):
   // `tetskin deform` of a recorded run.

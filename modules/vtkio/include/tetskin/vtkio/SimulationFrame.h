@@ -3,8 +3,10 @@
 // One simulated frame of the control mesh as a vtkUnstructuredGrid for
 // ParaView: tetrahedra at the deformed positions, point arrays
 // Displacement, Velocity, ExternalForce (N per node: loads, scenario
-// forces, pulls; not gravity) and Prescribed (1 where the run prescribes
-// the node's motion: held still, or driven as the twist's top; else 0),
+// forces, pulls; not gravity), ReactionForce (N per node: the supports'
+// forces at the prescribed nodes, zero elsewhere) and Prescribed (1 where
+// the run prescribes the node's motion: held still, or driven as the
+// twist's top; else 0),
 // cell arrays VonMisesStress, VolumeRatio (current / rest volume, < 0 for
 // inverted elements) and Level, and for a run with a floor the field data
 // FloorNormal (the up axis' unit vector) and FloorHeight; and the state
@@ -17,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "tetskin/core/FrameFields.h"
 #include "tetskin/core/RunConditions.h"
 #include "tetskin/core/TetMesh.h"
 
@@ -24,10 +27,7 @@ class vtkUnstructuredGrid;
 
 namespace tetskin {
 
-vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const Points3& positions,
-                                                     const Points3& velocities,
-                                                     const Points3& externalForces,
-                                                     const Eigen::VectorXd& vonMisesStress,
+vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const FrameFields& fields,
                                                      int level,
                                                      const RunConditions& conditions = {});
 

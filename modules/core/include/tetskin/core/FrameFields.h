@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// One simulated frame of a control level as it is exported: per node (the
+// level's numbering) the positions, velocities, the external forces of the
+// step that led to it (loads, scenario forces, pulls; not gravity) and the
+// supports' reactions (at the prescribed nodes, zero elsewhere), both in
+// newtons; per element the von Mises stress (Pa). Simulation::frameFields()
+// takes them at one instant; the .vtu frames carry them.
+
+#include <Eigen/Core>
+
+#include "tetskin/core/Types.h"
+
+namespace tetskin {
+
+struct FrameFields {
+  Points3 positions, velocities, externalForces, reactionForces;
+  Eigen::VectorXd vonMisesStress;
+};
+
+}  // namespace tetskin
