@@ -238,6 +238,17 @@ void printTetMesh(const std::filesystem::path& path) {
   };
   printArrays("point data", grid->GetPointData());
   printArrays("cell data", grid->GetCellData());
+  // A simulated frame's forces in all (the array ranges above give their
+  // largest per node): what pushes the body, what holds it.
+  std::string forces;
+  for (const auto& [name, label] :
+       {std::pair{"ExternalForce", "external"}, std::pair{"ReactionForce", "reaction"}}) {
+    const std::optional<Points3> perNode = fromVtkVectors(grid->GetPointData()->GetArray(name));
+    if (!perNode) continue;
+    forces += std::string(forces.empty() ? "" : ", ") + label + " " +
+              commaSeparated(perNode->colwise().sum().transpose()) + " N";
+  }
+  if (!forces.empty()) std::printf("  forces     %s in all\n", forces.c_str());
 }
 
 // A Gmsh volume mesh (.msh): its tetrahedra as `convert` takes them, and

@@ -41,6 +41,12 @@ struct SimulateArgs {
   bool quiet = false;
 };
 
+// What the supports carry in all now: a settled body's weight and loads,
+// opposed (zero without fixed nodes).
+Eigen::Vector3d supportReaction(const Simulation& sim) {
+  return sim.reactionForces(sim.state()).colwise().sum().transpose();
+}
+
 void run(SimulateArgs& a, const CLI::App& cmd) {
   // (Checked before any work, as a typo would be.)
   if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)
@@ -137,6 +143,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     row.kinetic = e.kinetic;
     row.elastic = e.elastic;
     row.gravitational = e.gravitational;
+    row.reaction = supportReaction(sim);
     log.push_back(row);
   };
 
@@ -227,12 +234,9 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf(
       "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",
       e.kinetic, e.elastic, e.gravitational);
-  if (!sim.fixedNodes().empty()) {
-    // What the supports carry: a settled body's weight and loads, opposed.
-    const Eigen::RowVector3d reaction = sim.reactionForces(sim.state()).colwise().sum();
+  if (!sim.fixedNodes().empty())
     std::printf("  supports: reaction %s N in all at the end, on the %zu fixed nodes\n",
-                commaSeparated(reaction.transpose()).c_str(), sim.fixedNodes().size());
-  }
+                commaSeparated(supportReaction(sim)).c_str(), sim.fixedNodes().size());
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (!a.log.empty()) {

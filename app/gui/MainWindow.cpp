@@ -46,6 +46,7 @@
 #include "RecordedRunPanel.h"
 #include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
@@ -319,6 +320,12 @@ QWidget* MainWindow::buildSimulationDock() {
   energyPlot_ = new EnergyPlot;
   energyPlot_->setObjectName("energyPlot");
   layout->addWidget(energyPlot_);
+  supports_ = new QLabel;
+  supports_->setObjectName("supports");
+  supports_->setToolTip(
+      "What the held and driven nodes' supports exert on the body in all (a settled body's "
+      "weight and loads, opposed); per node in exported and recorded frames (ReactionForce)");
+  layout->addWidget(supports_);
   connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
   connect(runPanel_, &RecordedRunPanel::continueRequested, this,
           [this](const QString& frame) { startFromFrame(frame); });
@@ -608,6 +615,7 @@ void MainWindow::resetSimulation() {
   runner_.reset();
   scene_->setRunConditions({});  // (the new simulation's, if it starts)
   energyPlot_->clear();
+  supports_->clear();
   plottedSteps_ = -1;
   shownSteps_ = -1;
   shownShortfallSteps_ = 0;
@@ -812,8 +820,16 @@ void MainWindow::plotEnergy(const SimulationState& state) {
   const auto now = std::chrono::steady_clock::now();
   if (state.steps == plottedSteps_) return;
   if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(100)) return;
-  const Energies e = runner_->simulation().energies();
+  const Simulation& sim = runner_->simulation();
+  const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
+  const std::size_t prescribed = sim.fixedNodes().size();
+  const Eigen::Vector3d reaction = sim.reactionForces(state).colwise().sum().transpose();
+  supports_->setText(prescribed == 0 ? "Supports: none (no node held or driven)"
+                                     : QString("Supports: reaction %1 N on %2 prescribed node%3")
+                                           .arg(QString::fromStdString(commaSeparated(reaction)))
+                                           .arg(prescribed)
+                                           .arg(prescribed == 1 ? "" : "s"));
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
 }

@@ -127,7 +127,8 @@ class MainWindow : public QMainWindow {
   void tick();
   // The Play button as playing or not, without telling the runner.
   void showPlaying(bool playing);
-  // Adds the simulation's energies at `state` to the energy plot.
+  // Adds the simulation's energies at `state` to the energy plot, and shows
+  // what its supports carry there.
   void plotEnergy(const SimulationState& state);
   // A step of the runner failed (it paused): the button follows, and the
   // message is shown (lastError()). Or more of its solves stopped at the
@@ -165,6 +166,7 @@ class MainWindow : public QMainWindow {
   Index plottedSteps_ = -1;  // the step of the energy plot's last sample
   std::chrono::steady_clock::time_point lastEnergySample_;
   QLabel *vertexInfo_, *comparison_;
+  QLabel* supports_;  // the supports' reaction in all, sampled with the energy
   QSpinBox* rebindLevel_;
   // Simulation.
   QPushButton *play_, *step_, *reset_, *fromFrame_, *record_;

@@ -2,16 +2,20 @@
 # a run continued with --initial from the frame after step K of another run
 # starts (its step 0) with the energies that run logged for step K:
 # kinetic, elastic, gravitational (from the rest shape, whatever the
-# run's start) and total, the last four fields, the same to the digit.
+# run's start) and total, fields 11 to 14, the same to the digit.
+cmake_policy(SET CMP0007 NEW)  # (empty list items count: the start row's empty fields)
 function(energies_of file index out)
   file(STRINGS "${file}" lines)
   math(EXPR line "${index} + 1")
   list(GET lines ${line} row)
-  string(REGEX MATCH "[^,]+,[^,]+,[^,]+,[^,]+$" fields "${row}")
-  if(fields STREQUAL "")
-    message(FATAL_ERROR "${file}: step ${index}: no energies in '${row}'")
+  string(REPLACE "," ";" fields "${row}")
+  list(LENGTH fields count)
+  if(NOT count EQUAL 17)
+    message(FATAL_ERROR "${file}: step ${index}: not 17 fields in '${row}'")
   endif()
-  set(${out} "${fields}" PARENT_SCOPE)
+  list(SUBLIST fields 10 4 energies)
+  string(REPLACE ";" "," energies "${energies}")
+  set(${out} "${energies}" PARENT_SCOPE)
 endfunction()
 energies_of("${FIRST}" ${STEP} first)
 energies_of("${CONTINUED}" 0 continued)

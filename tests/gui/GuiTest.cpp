@@ -1124,6 +1124,40 @@ TEST_F(Gui, PlotsTheEnergyOfEachStep) {
               1e-9 * beforeFrame.gravitational);
 }
 
+// The Simulation dock says what the supports carry, sampled with the
+// energy: a sag's held base at the start (each held node's own weight, up),
+// then at each step taken; a drop holds no node.
+TEST_F(Gui, ShowsWhatTheSupportsCarry) {
+  openSample();
+  auto* supports = child<QLabel>("supports");
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  const Simulation& sim = window_->runner()->simulation();
+  const std::size_t held = sim.fixedNodes().size();
+  ASSERT_GT(held, 0u);
+  const auto expected = [&] {
+    const Eigen::Vector3d reaction =
+        sim.reactionForces(window_->runner()->state()).colwise().sum().transpose();
+    return "Supports: reaction " + commaSeparated(reaction) + " N on " + std::to_string(held) +
+           " prescribed nodes";
+  };
+  EXPECT_EQ(supports->text().toStdString(), expected());
+  const Eigen::VectorXd masses = sim.nodeMasses();
+  double heldWeight = 0;
+  for (int node : sim.fixedNodes()) heldWeight += masses[node] * 9.81;
+  const Eigen::Vector3d atRest =
+      sim.reactionForces(window_->runner()->state()).colwise().sum().transpose();
+  EXPECT_NEAR(atRest.y(), heldWeight, 1e-9 * heldWeight);
+  for (int i = 0; i < 2; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_EQ(supports->text().toStdString(), expected());
+  EXPECT_NE(supports->text().toStdString(), "Supports: reaction " + commaSeparated(atRest) +
+                                                " N on " + std::to_string(held) +
+                                                " prescribed nodes");
+  child<QComboBox>("scenario")->setCurrentText("drop");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  EXPECT_EQ(supports->text().toStdString(), "Supports: none (no node held or driven)");
+}
+
 // A Gmsh mesh opens as a dataset of one level, and simulates.
 TEST_F(Gui, OpensAGmshMesh) {
   ASSERT_TRUE(

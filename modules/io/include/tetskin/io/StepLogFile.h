@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A simulation run's steps as a CSV table (`tetskin simulate --log`), for
-// plotting energy, iterations and step times: one row for the start
-// (step 0) and one per step.
+// plotting energy, support forces, iterations and step times: one row for
+// the start (step 0) and one per step.
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct StepLogRow {
   // Joules after the step (gravitational: from whatever zero the caller
   // measures it; simulate's log from the rest shape, as Simulation does).
   double kinetic = 0, elastic = 0, gravitational = 0;
+  // Newtons after the step: the supports' reactions summed over the
+  // prescribed nodes (zero where none is).
+  Eigen::Vector3d reaction = Eigen::Vector3d::Zero();
 };
 
 // The header line of the table (without its newline).
