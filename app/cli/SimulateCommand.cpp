@@ -41,12 +41,6 @@ struct SimulateArgs {
   bool quiet = false;
 };
 
-// What the supports carry in all now: a settled body's weight and loads,
-// opposed (zero without fixed nodes).
-Eigen::Vector3d supportReaction(const Simulation& sim) {
-  return sim.reactionForces(sim.state()).colwise().sum().transpose();
-}
-
 void run(SimulateArgs& a, const CLI::App& cmd) {
   // (Checked before any work, as a typo would be.)
   if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)
@@ -143,7 +137,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     row.kinetic = e.kinetic;
     row.elastic = e.elastic;
     row.gravitational = e.gravitational;
-    row.reaction = supportReaction(sim);
+    row.reaction = sim.supportReaction(sim.state());
     log.push_back(row);
   };
 
@@ -236,7 +230,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       e.kinetic, e.elastic, e.gravitational);
   if (!sim.fixedNodes().empty())
     std::printf("  supports: reaction %s N in all at the end, on the %zu fixed nodes\n",
-                commaSeparated(supportReaction(sim)).c_str(), sim.fixedNodes().size());
+                commaSeparated(sim.supportReaction(sim.state())).c_str(), sim.fixedNodes().size());
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
   if (!a.log.empty()) {

@@ -824,12 +824,12 @@ void MainWindow::plotEnergy(const SimulationState& state) {
   const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
   const std::size_t prescribed = sim.fixedNodes().size();
-  const Eigen::Vector3d reaction = sim.reactionForces(state).colwise().sum().transpose();
-  supports_->setText(prescribed == 0 ? "Supports: none (no node held or driven)"
-                                     : QString("Supports: reaction %1 N on %2 prescribed node%3")
-                                           .arg(QString::fromStdString(commaSeparated(reaction)))
-                                           .arg(prescribed)
-                                           .arg(prescribed == 1 ? "" : "s"));
+  supports_->setText(
+      prescribed == 0 ? "Supports: none (no node held or driven)"
+                      : QString("Supports: reaction %1 N on %2 prescribed node%3")
+                            .arg(QString::fromStdString(commaSeparated(sim.supportReaction(state))))
+                            .arg(prescribed)
+                            .arg(prescribed == 1 ? "" : "s"));
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
 }

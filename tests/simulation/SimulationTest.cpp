@@ -205,6 +205,8 @@ TEST(Simulation, ReactionsOfASettledCantileverCarryItsWeightAndMoment) {
   settledTipDeflection(sim, nullptr);
   const FrameFields settled = sim.frameFields(sim.state());
   EXPECT_EQ(settled.reactionForces, sim.reactionForces(sim.state()));
+  EXPECT_EQ(sim.supportReaction(sim.state()),
+            settled.reactionForces.colwise().sum().transpose().eval());
   EXPECT_EQ(settled.positions, sim.state().positions);
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero(),
                   clampMoment = Eigen::Vector3d::Zero();

@@ -568,6 +568,10 @@ Points3 Simulation::reactionForces(const SimulationState& state) const {
   return reactions;
 }
 
+Eigen::Vector3d Simulation::supportReaction(const SimulationState& state) const {
+  return reactionForces(state).colwise().sum().transpose();
+}
+
 FrameFields Simulation::frameFields(const SimulationState& state) const {
   return {state.positions, state.velocities, state.externalForces, reactionForces(state),
           fem_.vonMisesStress(toInternal(state.positions))};

@@ -187,6 +187,9 @@ class Simulation {
   // them: they sum to its weight and loads, opposed, and balance their
   // moment. The floor's contact forces on fixed nodes are left out.
   Points3 reactionForces(const SimulationState& state) const;
+  // Their sum: what the supports carry in all (a settled body's weight and
+  // loads, opposed; zero without fixed nodes).
+  Eigen::Vector3d supportReaction(const SimulationState& state) const;
   // `state` with its reactions and per element von Mises stress: what a
   // frame exports (FrameFields.h). (From a state taken once, so that a
   // frame's fields and the surface deformed with it are of one instant,
