@@ -14,8 +14,8 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
-#include "tetskin/io/GmshFormat.h"
-#include "tetskin/io/TetGenFormat.h"
+#include "tetskin/io/MeditFormat.h"
+#include "tetskin/io/TetrahedraFile.h"
 #include "tetskin/meshing/MeshQuality.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -44,14 +44,26 @@ void writeBoundary(const std::filesystem::path& output, const TetMesh& mesh,
 
 void convertDataset(const ConvertOptions& o) {
   const bool toSurface = isSurfaceFile(o.output);
-  if (!toSurface && lowerExtension(o.output) != ".vtu")
+  const std::string extension = lowerExtension(o.output);
+  if (!toSurface && extension != ".vtu" && extension != ".mesh")
     throw Error(o.output.string(), 0,
-                "a dataset converts to .vtu (one level) or to a surface (.obj .ply .stl .vtp: "
-                "the level's boundary)");
+                "a dataset converts to .vtu (one level, for ParaView), to MEDIT .mesh (one "
+                "level: its nodes, boundary triangles and tetrahedra) or to a surface (.obj .ply "
+                ".stl .vtp: the level's boundary)");
   const Dataset dataset = loadDataset(o.input);
   const int level = resolveLevel(dataset.mesh, o.level);
   if (toSurface) {
     writeBoundary(o.output, extractLevel(dataset.mesh, level), "level " + std::to_string(level));
+    return;
+  }
+  if (extension == ".mesh") {
+    const TetMesh tets = extractLevel(dataset.mesh, level);
+    MeditMesh medit{tets.nodes, boundaryFaces(tets).faces, tets.elements, 0};
+    writeMedit(o.output, medit);
+    std::printf("wrote %s (level %d: %lld nodes, %lld boundary triangles, %lld tetrahedra)\n",
+                o.output.c_str(), level, static_cast<long long>(medit.vertices.rows()),
+                static_cast<long long>(medit.triangles.rows()),
+                static_cast<long long>(medit.tetrahedra.rows()));
     return;
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid =
@@ -106,22 +118,15 @@ void importDataset(const std::vector<std::filesystem::path>& inputs,
       elementName = [cells = std::move(imported.cells)](Index e) {
         return "cell " + std::to_string(cells[static_cast<std::size_t>(e)]);
       };
-    } else if (extension == ".msh") {
-      GmshTetrahedra imported = readGmshTetrahedra(input);
+    } else if (isTetrahedraFile(input)) {
+      TetrahedraFile imported = readTetrahedraFile(input);
       level.mesh = std::move(imported.mesh);
       level.skipped = imported.skippedElements;
-      elementName = [tags = std::move(imported.elementTags)](Index e) {
-        return "element " + std::to_string(tags[static_cast<std::size_t>(e)]);
-      };
-    } else if (extension == ".ele" || extension == ".node") {
-      const NodeElePaths pair = nodeElePair(input);
-      int first = 0;
-      level.mesh = readTetMesh(pair.node, pair.ele, &first);
-      elementName = [first](Index e) { return "element " + std::to_string(e + first); };
+      elementName = [file = std::move(imported)](Index e) { return file.elementName(e); };
     } else {
       throw Error(input.string(), 0,
-                  "is not tetrahedra (.vtu, Gmsh .msh, or a TetGen .node/.ele pair): a dataset "
-                  "is made of one tetrahedral mesh per level");
+                  "is not tetrahedra (.vtu, Gmsh .msh, MEDIT .mesh, or a TetGen .node/.ele "
+                  "pair): a dataset is made of one tetrahedral mesh per level");
     }
     level.unreferenced = removeUnreferencedNodes(level.mesh);
     level.flipped = orientElementsPositively(level.mesh);
@@ -189,16 +194,15 @@ void addConvertCommand(CLI::App& app) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand(
       "convert",
-      "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level (a Gmsh .msh too) to .vtu "
-      "for ParaView or to its boundary surface, tetrahedra (.vtu: a run's frame) to their "
-      "boundary surface, or tetrahedral meshes made elsewhere (.vtu, Gmsh .msh, TetGen "
-      ".node/.ele; one per level) to a dataset (.json)");
+      "Convert a surface between .obj/.ply/.stl/.vtp, a dataset level (a Gmsh .msh or MEDIT "
+      ".mesh too) to .vtu for ParaView, to MEDIT .mesh or to its boundary surface, tetrahedra "
+      "(.vtu: a run's frame) to their boundary surface, or tetrahedral meshes made elsewhere "
+      "(.vtu, Gmsh .msh, MEDIT .mesh, TetGen .node/.ele; one per level) to a dataset (.json)");
   cmd->add_option(
          "FILES", o->files,
-         "IN OUT: the input (a surface, a dataset .json/.node/.ele/.msh, or tetrahedra .vtu) "
-         "and the output file; or IN IN ... OUT.json: tetrahedra (.vtu, Gmsh .msh, TetGen "
-         ".node/.ele), one per level, "
-         "to a dataset")
+         "IN OUT: the input (a surface, a dataset .json/.node/.ele/.msh/.mesh, or tetrahedra "
+         ".vtu) and the output file; or IN IN ... OUT.json: tetrahedra (.vtu, Gmsh .msh, MEDIT "
+         ".mesh, TetGen .node/.ele), one per level, to a dataset")
       ->required()
       ->expected(-2);
   cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
@@ -239,7 +243,8 @@ void addConvertCommand(CLI::App& app) {
     } else {
       throw Error(o->input.string(), 0,
                   "is neither a surface (.obj .ply .stl .vtp), a dataset (.json, or a "
-                  ".node/.ele pair, a Gmsh .msh) nor tetrahedra (.vtu): convert takes those");
+                  ".node/.ele pair, a Gmsh .msh, a MEDIT .mesh) nor tetrahedra (.vtu): convert "
+                  "takes those");
     }
   });
 }

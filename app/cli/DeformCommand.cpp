@@ -110,9 +110,7 @@ void addDeformCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "deform",
       "Apply a control-mesh state to a bound surface; writes the deformed surface (.vtp)");
-  cmd->add_option("DATASET", a->dataset, "dataset (.json, a .node/.ele pair or a Gmsh .msh)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("BINDING", a->binding, "binding (.vtp from tetskin bind)")
       ->required()
       ->check(CLI::ExistingFile);

@@ -22,7 +22,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
-#include "tetskin/io/GmshFormat.h"
+#include "tetskin/io/TetrahedraFile.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/meshing/SurfaceNesting.h"
 #include "tetskin/meshing/SurfaceRepair.h"
@@ -185,7 +185,7 @@ void printDataset(const std::filesystem::path& path) {
   std::printf("  elasticity %s\n", describe(dataset.config.elasticity).c_str());
   std::printf("  %-5s %8s %9s %12s %12s %8s  %s\n", "level", "nodes", "elements", "volume",
               "min volume", "min dih", "source");
-  std::string warnings;
+  std::string warnings, wraps;
   for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
     const TetMesh level = extractLevel(dataset.mesh, k);
     const Volumes v = volumes(level);
@@ -204,11 +204,14 @@ void printDataset(const std::filesystem::path& path) {
     std::string how = src.mesher;
     if (const std::optional<MesherKind> mesher = parseMesherKind(src.mesher))
       how += " " + meshingLabel(*mesher, src.quality, src.sizeBound);
+    if (src.wrap) how += " (wrapped)";
     std::printf("  %-5d %8lld %9lld %12g %12g %8.2f  %s %s\n", k,
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,
                 quality.minDihedralDeg, src.input.c_str(), how.c_str());
+    if (src.wrap) wraps += "  level " + std::to_string(k) + " wrap: " + describe(*src.wrap) + "\n";
   }
+  std::fputs(wraps.c_str(), stdout);
   std::fputs(warnings.c_str(), stdout);
 }
 
@@ -251,11 +254,11 @@ void printTetMesh(const std::filesystem::path& path) {
   if (!forces.empty()) std::printf("  forces     %s in all\n", forces.c_str());
 }
 
-// A Gmsh volume mesh (.msh): its tetrahedra as `convert` takes them, and
-// what it leaves out.
-void printGmshMesh(const std::filesystem::path& path) {
-  const GmshTetrahedra read = readGmshTetrahedra(path);
-  std::printf("%s: Gmsh mesh\n", path.c_str());
+// A Gmsh (.msh) or MEDIT (.mesh) volume mesh: its tetrahedra as `convert`
+// takes them, and what it leaves out.
+void printMeshFile(const std::filesystem::path& path) {
+  const TetrahedraFile read = readTetrahedraFile(path);
+  std::printf("%s: %s mesh\n", path.c_str(), read.format.c_str());
   std::printf("  nodes      %lld\n  elements   %lld tetrahedr%s",
               static_cast<long long>(read.mesh.nodeCount()),
               static_cast<long long>(read.mesh.elementCount()),
@@ -322,7 +325,8 @@ void addInfoCommand(CLI::App& app) {
       "info",
       "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
       "bound to and their quality), tetrahedral meshes (.vtu from convert or simulate: arrays "
-      "and their ranges; Gmsh .msh), time series (.pvd: steps, files, any missing) and datasets "
+      "and their ranges; Gmsh .msh, MEDIT .mesh), time series (.pvd: steps, files, any missing) "
+      "and datasets "
       "(.json/.node/.ele)");
   cmd->add_option("FILE", *files, "files to describe")->required()->check(CLI::ExistingFile);
   cmd->callback([files] {
@@ -340,14 +344,15 @@ void addInfoCommand(CLI::App& app) {
         printTetMesh(path);
       } else if (extension == ".pvd") {
         printSeries(path);
-      } else if (extension == ".msh") {
-        printGmshMesh(path);
+      } else if (extension == ".msh" || extension == ".mesh") {
+        printMeshFile(path);
       } else if (isDatasetFile(path)) {
         printDataset(path);
       } else {
         throw Error(
             path.string(), 0,
-            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu, Gmsh .msh), time "
+            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu, Gmsh .msh, MEDIT "
+            ".mesh), time "
             "series "
             "(.pvd) and datasets (.json .node .ele), not " +
                 (extension.empty() ? "files without an extension" : "'" + extension + "' files"));

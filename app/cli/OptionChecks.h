@@ -25,6 +25,10 @@ CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<in
 inline constexpr const char* kLevelHelp =
     "dataset level: 0 = coarsest, -1 = finest (the default), -2 the one below it, ...";
 
+// --help of the DATASET arguments (loadDataset, io Dataset.h).
+inline constexpr const char* kDatasetHelp =
+    "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)";
+
 // A whole number of any sign, e.g. --level (negative counts from the
 // finest) or an option whose range a module checks with its own message.
 CLI::Validator anyWholeNumber();

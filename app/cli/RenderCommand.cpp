@@ -183,9 +183,7 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render",
       "Headless rendering of a dataset's bound surface to PNG (needs X: use xvfb-run -a)");
-  cmd->add_option("DATASET", a->dataset, "dataset (.json, a .node/.ele pair or a Gmsh .msh)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("--surface", a->surface,
                   "surface (default: a recorded run's own, else the dataset's surface)")
       ->check(CLI::ExistingFile);

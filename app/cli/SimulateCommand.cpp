@@ -249,9 +249,7 @@ void addSimulateCommand(CLI::App& app) {
   auto a = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the corotated FEM on a dataset level; writes a ParaView time series (.pvd)");
-  cmd->add_option("DATASET", a->dataset, "dataset (.json, a .node/.ele pair or a Gmsh .msh)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
       ->required();
   cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));

@@ -419,11 +419,11 @@ void MainWindow::buildMenus() {
   file->addAction(
       "&Open...", this,
       [this] {
-        const QStringList files =
-            QFileDialog::getOpenFileNames(this, "Open", {},
-                                          "TetSkin files (*.json *.node *.ele *.msh *.obj *.ply "
-                                          "*.stl *.vtp *.vtu *.pvd);;All files "
-                                          "(*)");
+        const QStringList files = QFileDialog::getOpenFileNames(
+            this, "Open", {},
+            "TetSkin files (*.json *.node *.ele *.msh *.mesh *.obj *.ply "
+            "*.stl *.vtp *.vtu *.pvd);;All files "
+            "(*)");
         openFiles(files);
       },
       QKeySequence::Open);

@@ -56,8 +56,8 @@ struct GuiArguments {
         "TetSkin: inspect how a surface is bound to a simulated tetrahedral control mesh");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("DATASET", "dataset (.json, a .node/.ele pair or a Gmsh .msh)",
-                                 "[DATASET]");
+    parser.addPositionalArgument(
+        "DATASET", "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)", "[DATASET]");
     parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
     parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight,
                        prescribed, pick, scenario, steps, noOverlay});

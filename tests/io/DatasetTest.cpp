@@ -80,7 +80,8 @@ TEST(Dataset, OtherExtensionsAreNotDatasets) {
   const auto obj = dir.write("bunny.obj", "v 0 0 0\n");
   test::expectErrorAt(
       [&] { loadDataset(obj); }, obj.string(), 0,
-      "is not a dataset (expected its .json config, a .node/.ele pair or a Gmsh .msh)");
+      "is not a dataset (expected its .json config, a .node/.ele pair, a Gmsh .msh or a MEDIT "
+      ".mesh)");
 }
 
 // A Gmsh mesh is a one-level dataset, as a .node/.ele pair is: its
@@ -100,6 +101,22 @@ TEST(Dataset, AGmshMeshIsAOneLevelDataset) {
   EXPECT_NEAR(meshVolume(extractLevel(d.mesh, 0)), 1.0 / 6.0, 1e-15);
   EXPECT_EQ(d.config.levels.front().source.mesher, "gmsh");
   EXPECT_EQ(d.config.levels.front().source.input, "t.msh");
+}
+
+// A MEDIT mesh likewise (its boundary triangles left out).
+TEST(Dataset, AMeditMeshIsAOneLevelDataset) {
+  test::ScratchDir dir;
+  const auto mesh = dir.write("t.mesh",
+                              "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n"
+                              "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n7 7 7 0\n"
+                              "Triangles\n1\n1 2 3 4\nTetrahedra\n1\n2 1 3 4 1\nEnd\n");
+  const Dataset d = loadDataset(mesh);
+  ASSERT_EQ(d.mesh.levels.size(), 1u);
+  EXPECT_EQ(d.mesh.nodes.rows(), 4);
+  ASSERT_EQ(d.mesh.elements.rows(), 1);
+  EXPECT_NEAR(meshVolume(extractLevel(d.mesh, 0)), 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(d.config.levels.front().source.mesher, "medit");
+  EXPECT_TRUE(isDatasetFile("x.MESH"));
 }
 
 // What `tetskin build -o OUT` (and the GUI's build dialog) writes: OUT.json,

@@ -4,12 +4,20 @@
 // hand-written ones with known answers, and broken ones named by line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "ExpectError.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/GmshFormat.h"
+#include "tetskin/io/TetGenFormat.h"
 
 namespace tetskin {
 namespace {
@@ -110,7 +118,7 @@ std::string withElements(const std::string& elements) {
 TEST(GmshFormat, BrokenFilesAreNamedByLine) {
   expectBad("", 0, "does not start with $MeshFormat");
   expectBad("solid x\nfacet normal 0 0 1\n", 1, "is not a Gmsh mesh (.msh)");
-  expectBad("$MeshFormat\n4.1 1 8\n", 2, "is a binary .msh; save it as ASCII (gmsh -bin 0");
+  expectBad("$MeshFormat\n4.1 2 8\n", 2, "file type 2 is neither 0 (ASCII) nor 1 (binary)");
   expectBad("$MeshFormat\n4 0 8\n$EndMeshFormat\n", 2,
             "MSH format version 4 is not read here; save as version 4.1 or 2.2");
   expectBad("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n", 5,
@@ -141,6 +149,176 @@ TEST(GmshFormat, BrokenFilesAreNamedByLine) {
             "node count 1000000 is more than the rest of the file can hold");
   expectBad("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Comments\nnever ends\n", 4,
             "$Comments has no $EndComments");
+}
+
+// Binary files Gmsh 4.8 wrote of the same sphere as the ASCII 4.1 file
+// (gmsh sphere.geo -3 -bin -format msh41 / msh22): the same mesh.
+TEST(GmshFormat, ReadsBinaryFilesGmshWroteInFormats41And22) {
+  const std::string dir = std::string(TETSKIN_SOURCE_DIR) + "/tests/data/gmsh/";
+  const GmshTetrahedra ascii = readGmshTetrahedra(dir + "sphere_coarse_v41.msh");
+  for (const char* name : {"sphere_coarse_v41_binary.msh", "sphere_coarse_v22_binary.msh"}) {
+    SCOPED_TRACE(name);
+    const GmshTetrahedra binary = readGmshTetrahedra(dir + name);
+    expectSphere(binary, 205, 679, 320);
+    // (The ASCII file holds 16 significant digits, the binary one all 17.)
+    ASSERT_EQ(binary.mesh.nodes.rows(), ascii.mesh.nodes.rows());
+    EXPECT_LT((binary.mesh.nodes - ascii.mesh.nodes).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_EQ(binary.mesh.elements, ascii.mesh.elements);
+    EXPECT_EQ(binary.elementTags, ascii.elementTags);
+  }
+}
+
+// A binary .msh as Gmsh lays it out, written here in either byte order
+// and size_t width (Gmsh writes its machine's; a big-endian machine's file
+// cannot be made on this one): two tetrahedra sharing a face, a boundary
+// triangle, node tags out of order, in 4.1 parametric nodes too.
+class BinaryMsh {
+ public:
+  BinaryMsh(bool bigEndian, int sizeBytes)
+      : swap_(bigEndian != (std::endian::native == std::endian::big)), size_(sizeBytes) {}
+  void text(const std::string& s) { out_ += s; }
+  void i32(std::int32_t v) { put(v); }
+  void f64(double v) { put(v); }
+  void size(std::uint64_t v) {
+    if (size_ == 8)
+      put(v);
+    else
+      put(static_cast<std::uint32_t>(v));
+  }
+  const std::string& bytes() const { return out_; }
+
+ private:
+  template <typename T>
+  void put(T v) {
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &v, sizeof(T));
+    if (swap_) std::reverse(bytes, bytes + sizeof(T));
+    out_.append(bytes, sizeof(T));
+  }
+  bool swap_;
+  int size_;
+  std::string out_;
+};
+
+// Nodes tagged 10..50 (listed 30 first), tets (10 20 30 40) and (20 30 40 50).
+const double kPoints[5][3] = {{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 1, 1}};
+const int kTags[5] = {30, 10, 20, 40, 50};
+
+std::string binary22(bool bigEndian) {
+  BinaryMsh m(bigEndian, 8);
+  m.text("$MeshFormat\n2.2 1 8\n");
+  m.i32(1);
+  m.text("\n$EndMeshFormat\n$Nodes\n5\n");
+  for (int i = 0; i < 5; ++i) {
+    m.i32(kTags[i]);
+    for (double x : kPoints[i]) m.f64(x);
+  }
+  m.text("\n$EndNodes\n$Elements\n3\n");
+  m.i32(2), m.i32(1), m.i32(2);  // one triangle, two tags
+  m.i32(1), m.i32(0), m.i32(1), m.i32(10), m.i32(20), m.i32(30);
+  m.i32(4), m.i32(2), m.i32(2);  // two tetrahedra
+  m.i32(7), m.i32(0), m.i32(1), m.i32(10), m.i32(20), m.i32(30), m.i32(40);
+  m.i32(8), m.i32(0), m.i32(1), m.i32(20), m.i32(40), m.i32(30), m.i32(50);
+  m.text("\n$EndElements\n");
+  return m.bytes();
+}
+
+std::string binary41(bool bigEndian, int sizeBytes) {
+  BinaryMsh m(bigEndian, sizeBytes);
+  m.text("$MeshFormat\n4.1 1 " + std::to_string(sizeBytes) + "\n");
+  m.i32(1);
+  m.text("\n$EndMeshFormat\n$Entities\n");
+  m.size(0), m.size(0), m.size(0), m.size(0);
+  m.text("\n$EndEntities\n$Nodes\n");
+  m.size(2), m.size(5), m.size(10), m.size(50);
+  // Block 1: a surface entity's 2 nodes with parametric (u, v).
+  m.i32(2), m.i32(1), m.i32(1), m.size(2);
+  m.size(kTags[0]), m.size(kTags[1]);
+  for (int i = 0; i < 2; ++i) {
+    for (double x : kPoints[i]) m.f64(x);
+    m.f64(0.5), m.f64(0.25);
+  }
+  // Block 2: the volume's other 3, not parametric.
+  m.i32(3), m.i32(1), m.i32(0), m.size(3);
+  for (int i = 2; i < 5; ++i) m.size(kTags[i]);
+  for (int i = 2; i < 5; ++i)
+    for (double x : kPoints[i]) m.f64(x);
+  m.text("\n$EndNodes\n$Elements\n");
+  m.size(2), m.size(3), m.size(1), m.size(8);
+  m.i32(2), m.i32(1), m.i32(2), m.size(1);
+  m.size(1), m.size(10), m.size(20), m.size(30);
+  m.i32(3), m.i32(1), m.i32(4), m.size(2);
+  m.size(7), m.size(10), m.size(20), m.size(30), m.size(40);
+  m.size(8), m.size(20), m.size(40), m.size(30), m.size(50);
+  m.text("\n$EndElements\n");
+  return m.bytes();
+}
+
+void expectTwoTetrahedra(const GmshTetrahedra& read) {
+  ASSERT_EQ(read.mesh.nodeCount(), 5);
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(read.mesh.nodes.row(i),
+              Eigen::RowVector3d(kPoints[i][0], kPoints[i][1], kPoints[i][2]));
+  ASSERT_EQ(read.mesh.elementCount(), 2);
+  EXPECT_EQ(read.mesh.elements.row(0), Eigen::RowVector4i(1, 2, 0, 3));
+  EXPECT_EQ(read.mesh.elements.row(1), Eigen::RowVector4i(2, 3, 0, 4));
+  EXPECT_EQ(read.elementTags, (std::vector<long long>{7, 8}));
+  EXPECT_EQ(read.skippedElements, 1);
+}
+
+TEST(GmshFormat, BinaryFilesInBothByteOrders) {
+  for (bool big : {false, true}) {
+    SCOPED_TRACE(big ? "big-endian" : "little-endian");
+    expectTwoTetrahedra(parseGmshTetrahedra(binary22(big), "b22.msh"));
+    expectTwoTetrahedra(parseGmshTetrahedra(binary41(big, 8), "b41.msh"));
+    expectTwoTetrahedra(parseGmshTetrahedra(binary41(big, 4), "b41_4.msh"));
+  }
+}
+
+// Cut short anywhere, a binary file is an error naming the file, never a
+// crash or a mesh made of what was there; bytes flipped are an error or a
+// mesh (the coordinates' bytes may flip to other numbers), never a crash.
+TEST(GmshFormat, TruncatedOrDamagedBinaryFilesAreErrors) {
+  const std::string dir = std::string(TETSKIN_SOURCE_DIR) + "/tests/data/gmsh/";
+  std::ifstream file(dir + "sphere_coarse_v22_binary.msh", std::ios::binary);
+  std::stringstream gmshWrote;
+  gmshWrote << file.rdbuf();
+  for (const std::string& whole : {binary22(false), binary41(true, 8), gmshWrote.str()}) {
+    const std::size_t step = std::max<std::size_t>(1, whole.size() / 600);
+    // (The last line end may go: a file ending in $EndElements is whole.)
+    for (std::size_t cut = 0; cut + 1 < whole.size(); cut += step) {
+      SCOPED_TRACE("cut at " + std::to_string(cut));
+      try {
+        parseGmshTetrahedra(whole.substr(0, cut), "cut.msh");
+        ADD_FAILURE() << "no error";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.file(), "cut.msh");
+      }
+    }
+    for (std::size_t at = 0; at < whole.size(); at += step) {
+      std::string damaged = whole;
+      damaged[at] = static_cast<char>(damaged[at] ^ 0x5a);
+      try {
+        parseGmshTetrahedra(damaged, "damaged.msh");
+      } catch (const Error& e) {
+        EXPECT_EQ(e.file(), "damaged.msh");
+      }
+    }
+  }
+}
+
+TEST(GmshFormat, BrokenBinaryFilesAreNamedByByte) {
+  std::string b = binary22(false);
+  std::string wrongOrder = b;
+  wrongOrder[20] = 7;  // the byte-order check
+  test::expectErrorAt([&] { parseGmshTetrahedra(wrongOrder, "b.msh"); }, "b.msh", 0,
+                      "byte 20: the byte order check after the format line is not the integer 1");
+  const std::size_t count = b.find("$Nodes\n5\n") + 7;
+  const std::string hugeCount = b.substr(0, count) + "5000" + b.substr(count + 1);
+  test::expectErrorAt([&] { parseGmshTetrahedra(hugeCount, "b.msh"); }, "b.msh", 0,
+                      "node count 5000 is more than the rest of the file can hold");
+  test::expectErrorAt([&] { parseGmshTetrahedra("$MeshFormat\n4.1 1 6\n", "b.msh"); }, "b.msh", 2,
+                      "data size 6 is neither 4 nor 8 bytes");
 }
 
 }  // namespace

@@ -3,8 +3,8 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
-#include "tetskin/io/GmshFormat.h"
 #include "tetskin/io/TetGenFormat.h"
+#include "tetskin/io/TetrahedraFile.h"
 
 namespace tetskin {
 namespace {
@@ -29,12 +29,14 @@ Dataset loadNodeElePair(const std::filesystem::path& path) {
   return dataset;
 }
 
-Dataset loadGmshMesh(const std::filesystem::path& path) {
-  GmshTetrahedra read = readGmshTetrahedra(path);
+// A Gmsh .msh or MEDIT .mesh: the nodes no tetrahedron uses dropped, the
+// elements of the other orientation turned.
+Dataset loadMeshFile(const std::filesystem::path& path) {
+  TetrahedraFile read = readTetrahedraFile(path);
   removeUnreferencedNodes(read.mesh);
   orientElementsPositively(read.mesh);
   Dataset dataset = oneLevelDataset(path, read.mesh);
-  dataset.config.levels.front().source.mesher = "gmsh";
+  dataset.config.levels.front().source.mesher = lowerExtension(path) == ".msh" ? "gmsh" : "medit";
   return dataset;
 }
 
@@ -42,7 +44,7 @@ Dataset loadGmshMesh(const std::filesystem::path& path) {
 
 bool isDatasetFile(const std::filesystem::path& path) {
   const std::string e = lowerExtension(path);
-  return e == ".json" || e == ".node" || e == ".ele" || e == ".msh";
+  return e == ".json" || isTetrahedraFile(path);
 }
 
 std::filesystem::path datasetConfigPath(std::filesystem::path output) {
@@ -55,10 +57,11 @@ Dataset loadDataset(const std::filesystem::path& path) {
   // swapped) would otherwise be parsed as JSON and fail on its first line.
   if (!isDatasetFile(path))
     throw Error(path.string(), 0,
-                "is not a dataset (expected its .json config, a .node/.ele pair or a Gmsh .msh)");
+                "is not a dataset (expected its .json config, a .node/.ele pair, a Gmsh .msh or a "
+                "MEDIT .mesh)");
   if (lowerExtension(path) == ".node" || lowerExtension(path) == ".ele")
     return loadNodeElePair(path);
-  if (lowerExtension(path) == ".msh") return loadGmshMesh(path);
+  if (lowerExtension(path) != ".json") return loadMeshFile(path);
   Dataset dataset;
   dataset.config = readDatasetConfig(path);
   const std::filesystem::path nodePath = dataset.config.resolve(dataset.config.nodeFile);

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
+#include <tuple>
 
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
@@ -101,6 +103,31 @@ LevelRange readRange(const Fields& level, const char* key, const std::string& fi
   return r;
 }
 
+// {"max": x, "mean": y}: a one-sided distance.
+std::pair<double, double> readDistance(const Fields& wrap, const char* key,
+                                       const std::string& file) {
+  Fields d(wrap.get(key), wrap.where(key), file);
+  const double max = d.number("max", 0, 1e300);
+  const double mean = d.number("mean", 0, 1e300);
+  d.rejectUnknown();
+  if (mean > max) d.fail(wrap.where(key) + "/mean", "must not exceed max");
+  return {max, mean};
+}
+
+LevelWrap readWrap(const json& value, const std::string& pointer, const std::string& file) {
+  Fields wrap(value, pointer, file);
+  LevelWrap out;
+  out.alpha = wrap.number("alpha", 0, 1e300, true);
+  out.offset = wrap.number("offset", 0, 1e300, true);
+  out.diagonal = wrap.number("diagonal", 0, 1e300, true);
+  std::tie(out.inputToWrapMax, out.inputToWrapMean) = readDistance(wrap, "input_to_wrap", file);
+  std::tie(out.wrapToInputMax, out.wrapToInputMean) = readDistance(wrap, "wrap_to_input", file);
+  if (wrap.has("shell_thickness")) out.shellThickness = wrap.number("shell_thickness", 0, 1e300);
+  wrap.optional("shell_thickness");
+  wrap.rejectUnknown();
+  return out;
+}
+
 LevelConfig readLevel(const json& value, const std::string& pointer, const std::string& file) {
   Fields level(value, pointer, file);
   LevelConfig out;
@@ -114,6 +141,9 @@ LevelConfig readLevel(const json& value, const std::string& pointer, const std::
     source.optional("quality");
     if (source.has("size_bound")) out.source.sizeBound = source.number("size_bound", 0, 1e300);
     source.optional("size_bound");
+    if (source.has("wrap"))
+      out.source.wrap = readWrap(source.get("wrap"), pointer + "/source/wrap", file);
+    source.optional("wrap");
     source.rejectUnknown();
   }
   level.optional("source");
@@ -167,6 +197,20 @@ std::optional<FurParameterProblem> furParameterProblem(const FurParameters& p) {
   check("base_darkening", p.baseDarkening, 0, 1);
   check("min_shells", p.minShells, 1, p.shells);
   return problem;
+}
+
+std::string describe(const LevelWrap& wrap) {
+  const double d = wrap.diagonal > 0 ? wrap.diagonal : 1.0;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "alpha %.3g%% and offset %.3g%% of the diagonal %.4g; input -> wrap: max %.3g "
+                "(%.2g%%), mean %.3g (%.2g%%); wrap -> input: max %.3g (%.2g%%), mean %.3g "
+                "(%.2g%%)",
+                100 * wrap.alpha / d, 100 * wrap.offset / d, wrap.diagonal, wrap.inputToWrapMax,
+                100 * wrap.inputToWrapMax / d, wrap.inputToWrapMean, 100 * wrap.inputToWrapMean / d,
+                wrap.wrapToInputMax, 100 * wrap.wrapToInputMax / d, wrap.wrapToInputMean,
+                100 * wrap.wrapToInputMean / d);
+  return text;
 }
 
 DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
@@ -312,6 +356,15 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
     if (level.source.input.empty()) l["source"].erase("input");
     if (level.source.mesher.empty()) l["source"].erase("mesher");
     if (level.source.sizeBound > 0) l["source"]["size_bound"] = level.source.sizeBound;
+    if (const std::optional<LevelWrap>& w = level.source.wrap) {
+      l["source"]["wrap"] = {
+          {"alpha", w->alpha},
+          {"offset", w->offset},
+          {"diagonal", w->diagonal},
+          {"input_to_wrap", {{"max", w->inputToWrapMax}, {"mean", w->inputToWrapMean}}},
+          {"wrap_to_input", {{"max", w->wrapToInputMax}, {"mean", w->wrapToInputMean}}}};
+      if (w->shellThickness > 0) l["source"]["wrap"]["shell_thickness"] = w->shellThickness;
+    }
     if (!level.statistics.empty()) l["statistics"] = level.statistics;
     root["levels"].push_back(l);
   }

@@ -16,14 +16,14 @@ struct Dataset {
 };
 
 // Loads a dataset from its `.json` config; a `.node` or `.ele` path loads the
-// pair, and a Gmsh `.msh` its tetrahedra (GmshFormat.h; the nodes no
-// tetrahedron uses dropped, elements of the other orientation turned), as
-// a one-level dataset with default settings. Validates the level ranges
+// pair, and a Gmsh `.msh` or MEDIT `.mesh` its tetrahedra (TetrahedraFile.h;
+// the nodes no tetrahedron uses dropped, elements of the other orientation
+// turned), as a one-level dataset with default settings. Validates the level ranges
 // against the files, every node index, and (for the config) that the
 // config's ranges match the files exactly. Any other extension is an error.
 Dataset loadDataset(const std::filesystem::path& path);
 // Whether loadDataset takes the file by its extension (.json, .node, .ele,
-// .msh).
+// .msh, .mesh).
 bool isDatasetFile(const std::filesystem::path& path);
 // The config a build writes for the output name OUT or OUT.json (any letter
 // case): OUT.json, with OUT.node and OUT.ele beside it.

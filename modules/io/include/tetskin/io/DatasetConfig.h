@@ -70,6 +70,26 @@ struct FurParameterProblem {
 };
 std::optional<FurParameterProblem> furParameterProblem(const FurParameters& fur);
 
+// How a level's input surface was made closed by alpha wrapping (build
+// --wrap), and how far it lies from the input, both ways, in the input's
+// units (the `wrap` object of a level's `source`). For an input decimated
+// from a wrap, the distances are the decimated surface's.
+struct LevelWrap {
+  double alpha = 0;     // the wrap's alpha (absolute)
+  double offset = 0;    // the wrap's offset (absolute)
+  double diagonal = 0;  // the input's bounding-box diagonal: divide by it for fractions
+  double inputToWrapMax = 0, inputToWrapMean = 0;  // over the input's vertices
+  double wrapToInputMax = 0, wrapToInputMean = 0;  // over the wrap's vertices
+  // The mean thickness of a shell made around an open sheet (0 when the
+  // input enclosed a volume of its own).
+  double shellThickness = 0;
+};
+
+// "alpha A, offset O; input -> wrap: max X (x% of the diagonal), mean Y
+// (y%); wrap -> input: max ..., mean ...": what build, info and the GUI say
+// of a wrap.
+std::string describe(const LevelWrap& wrap);
+
 struct LevelSource {
   std::string input;   // surface file the level was meshed from
   std::string mesher;  // "tetgen", "netgen", or what else produced it
@@ -77,6 +97,7 @@ struct LevelSource {
   // The element size bound it was meshed under (build --size-to-targets):
   // TetGen's volume bound (-a) or Netgen's edge bound (maxh); 0: none.
   double sizeBound = 0;
+  std::optional<LevelWrap> wrap{};  // when the input was alpha-wrapped first
 };
 
 struct LevelConfig {
