@@ -49,6 +49,14 @@ void run(const BindArgs& a, const CLI::App& cmd) {
                            bound.binding)
                  .c_str(),
              stdout);
+  // A level meshed from a wrap lies off the input by the wrap's distances;
+  // the surface's own distances above are to that level.
+  if (const std::optional<LevelWrap>& wrap =
+          dataset.config.levels[static_cast<std::size_t>(level)].source.wrap)
+    std::printf("  wrapped level:      %s was alpha-wrapped for it: %s; vertices in the input's "
+                "holes and gaps bind to their closest boundary triangle\n",
+                dataset.config.levels[static_cast<std::size_t>(level)].source.input.c_str(),
+                describe(*wrap).c_str());
   std::printf("  time:               %.3f s\nwrote %s\n", seconds, a.output.c_str());
 }
 
@@ -58,9 +66,7 @@ void addBindCommand(CLI::App& app) {
   auto a = std::make_shared<BindArgs>();
   CLI::App* cmd = app.add_subcommand(
       "bind", "Bind a surface (OBJ/PLY/STL/VTP) to a dataset level's boundary; writes a .vtp");
-  cmd->add_option("DATASET", a->dataset, "dataset (.json, a .node/.ele pair or a Gmsh .msh)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("SURFACE", a->surface, "surface to bind")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output, "binding file (.vtp)")
       ->required()

@@ -23,6 +23,7 @@ struct BuildArgs {
   std::string mesher = "tetgen";
   std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
   std::string up = "y";
+  std::string wrap = "auto";
   BuildOptions options;
   bool quiet = false;
 };
@@ -45,7 +46,8 @@ void run(BuildArgs& a) {
 
   a.options.mesher = *parseMesherKind(a.mesher);  // CLI checked the name
   a.options.qualities = a.qualities;
-  a.options.up = *parseUpAxis(a.up);  // CLI checked the name
+  a.options.up = *parseUpAxis(a.up);             // CLI checked the name
+  a.options.wrap.mode = *parseWrapMode(a.wrap);  // CLI checked the name
   Progress progress(a.quiet);
   std::vector<SurfaceInput> inputs;
   for (const auto& path : inputPaths(a)) {
@@ -78,10 +80,18 @@ void run(BuildArgs& a) {
                 c.mesher.c_str(), c.label.c_str(), c.statistics.minDihedralDeg,
                 c.statistics.maxRadiusEdge, c.input.c_str());
   }
+  for (std::size_t k = 0; k < result.chosen.size(); ++k) {
+    const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
+    if (c.wrap) std::printf("level %zu was meshed from a wrap: %s\n", k, describe(*c.wrap).c_str());
+  }
   std::size_t failed = 0;
   for (const CandidateReport& c : result.candidates) failed += c.ok ? 0 : 1;
-  std::printf("%zu candidates meshed in %.2f s with %d job(s), %zu failed\n",
+  std::printf("%zu candidates meshed in %.2f s with %d job(s), %zu failed",
               result.candidates.size(), result.meshingSeconds, a.options.jobs, failed);
+  if (result.skippedCandidates > 0)
+    std::printf(", %zu skipped (finer than one above the largest target)",
+                result.skippedCandidates);
+  std::printf("\n");
   std::printf("wrote %s (+ .node, .ele)\n", json.c_str());
 }
 
@@ -123,6 +133,21 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_flag("--size-to-targets", a->options.sizeToTargets,
                 "also mesh under element size bounds aimed at the level targets that no\n"
                 "quality meets (TetGen -a, Netgen maxh): for shapes such as boxes");
+  cmd->add_option("--wrap", a->wrap,
+                  "alpha-wrap inputs in a closed surface first: auto (those that repair cannot\n"
+                  "close or that no mesher accepts: holes, open sheets, overlapping parts),\n"
+                  "always, or never")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  cmd->add_option("--wrap-alpha", a->options.wrap.alpha,
+                  "the wrap's alpha, a fraction of the input's bounding-box diagonal: gaps and\n"
+                  "cavities narrower than it are closed, and its triangles are about this size")
+      ->capture_default_str()
+      ->check(positiveNumber());
+  cmd->add_option("--wrap-offset", a->options.wrap.offset,
+                  "how far the wrap lies outside the input, a fraction of the diagonal")
+      ->capture_default_str()
+      ->check(positiveNumber());
   cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")
       ->check(wholeNumber(1));
   cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")

@@ -4,9 +4,11 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
@@ -78,11 +80,49 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "For each level target that no quality meets, mesh again under an element size bound "
       "(TetGen -a, Netgen maxh): for shapes such as boxes, whose surface needs few elements");
   form->addRow("", sizeToTargets_);
+  const WrapOptions wrapDefaults;
+  wrap_ = new QComboBox;
+  wrap_->setObjectName("wrap");
+  for (WrapMode mode : {WrapMode::Auto, WrapMode::Always, WrapMode::Never})
+    wrap_->addItem(toString(mode));
+  wrap_->setToolTip(
+      "auto: wrap the inputs that repair cannot close (holes, open sheets, overlapping parts) or "
+      "that no mesher accepts in a closed surface (CGAL's alpha wrap) and mesh that; always: "
+      "wrap every input; never: refuse them");
+  auto fraction = [](const char* name, double value, const char* tip) {
+    auto* box = new QDoubleSpinBox;
+    box->setObjectName(name);
+    box->setDecimals(5);
+    box->setRange(0.00001, 1.0);
+    box->setSingleStep(0.001);
+    box->setValue(value);
+    box->setToolTip(tip);
+    return box;
+  };
+  wrapAlpha_ =
+      fraction("wrapAlpha", wrapDefaults.alpha,
+               "a fraction of the input's bounding-box diagonal: gaps and cavities "
+               "narrower than it are closed, and the wrap's triangles are about this size");
+  wrapOffset_ = fraction("wrapOffset", wrapDefaults.offset,
+                         "how far the wrap lies outside the input, a fraction of the diagonal");
+  auto* wrapRow = new QHBoxLayout;
+  wrapRow->addWidget(wrap_);
+  wrapRow->addWidget(new QLabel("alpha"));
+  wrapRow->addWidget(wrapAlpha_);
+  wrapRow->addWidget(new QLabel("offset"));
+  wrapRow->addWidget(wrapOffset_);
+  form->addRow("Wrap", wrapRow);
   jobs_ = new QSpinBox;
   jobs_->setRange(1, 256);
   jobs_->setValue(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   form->addRow("Mesher processes", jobs_);
   layout->addLayout(form);
+  wrapFidelity_ = new QLabel;
+  wrapFidelity_->setObjectName("wrapFidelity");
+  wrapFidelity_->setWordWrap(true);
+  wrapFidelity_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  wrapFidelity_->hide();
+  layout->addWidget(wrapFidelity_);
   progress_ = new QProgressBar;
   progress_->setObjectName("buildProgress");
   layout->addWidget(progress_);
@@ -131,8 +171,16 @@ void BuildDialog::setQualities(const QString& commaSeparated) {
 void BuildDialog::setSizeToTargets(bool on) {
   sizeToTargets_->setChecked(on);
 }
+void BuildDialog::setWrap(const QString& mode, double alpha, double offset) {
+  wrap_->setCurrentText(mode);
+  wrapAlpha_->setValue(alpha);
+  wrapOffset_->setValue(offset);
+}
 QString BuildDialog::log() const {
   return log_->toPlainText();
+}
+QString BuildDialog::wrapFidelity() const {
+  return wrapFidelity_->text();
 }
 
 void BuildDialog::appendLog(const QString& line) {
@@ -151,6 +199,9 @@ bool BuildDialog::start() {
   options.sizeToTargets = sizeToTargets_->isChecked();
   options.jobs = jobs_->value();
   options.up = *parseUpAxis(up_->currentText().toStdString());
+  options.wrap.mode = *parseWrapMode(wrap_->currentText().toStdString());
+  options.wrap.alpha = wrapAlpha_->value();
+  options.wrap.offset = wrapOffset_->value();
   options.qualities.clear();
   for (const QString& q : qualities_->text().split(',', Qt::SkipEmptyParts)) {
     bool ok = false;
@@ -175,6 +226,8 @@ bool BuildDialog::start() {
   run_->setEnabled(false);
   cancel_->setEnabled(true);
   progress_->setValue(0);
+  wrapFidelity_->clear();
+  wrapFidelity_->hide();
   appendLog("building " + QString::fromStdString(json.string()));
   worker_ = std::thread([this, options, paths, json] {
     // Runs off the GUI thread; everything it shows goes back through the event loop.
@@ -207,6 +260,17 @@ bool BuildDialog::start() {
       // (The writers make the folder only now: bad input, a failure or a
       // cancel leaves no empty folder.)
       saveDataset(json, result.dataset);
+      // What the wrap cost, per wrapped level (as build prints it).
+      QString fidelity;
+      for (std::size_t k = 0; k < result.dataset.config.levels.size(); ++k)
+        if (const auto& wrap = result.dataset.config.levels[k].source.wrap)
+          fidelity += QString("Level %1 was meshed from a wrap: %2\n")
+                          .arg(k)
+                          .arg(QString::fromStdString(describe(*wrap)));
+      post([this, fidelity = fidelity.trimmed()] {
+        wrapFidelity_->setText(fidelity);
+        wrapFidelity_->setVisible(!fidelity.isEmpty());
+      });
       post([this, j = QString::fromStdString(json.string())] { finish(true, "done", j); });
     } catch (const Cancelled&) {
       post([this] { finish(false, "cancelled", {}); });

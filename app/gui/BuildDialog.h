@@ -11,6 +11,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
 class QLineEdit;
 class QListWidget;
 class QPlainTextEdit;
@@ -31,11 +33,17 @@ class BuildDialog : public QDialog {
   void setLevels(int levels, int minElements, int maxElements);
   void setQualities(const QString& commaSeparated);
   void setSizeToTargets(bool on);
+  // --wrap, --wrap-alpha, --wrap-offset: "auto", "always" or "never", and
+  // fractions of the diagonal.
+  void setWrap(const QString& mode, double alpha, double offset);
   // Starts the build; false (with a message in the log) on bad options.
   bool start();
   void cancel();
   bool running() const { return running_; }
   QString log() const;
+  // What the last build's wrapped levels cost: their distances to the
+  // input, one line a level (empty when none was wrapped).
+  QString wrapFidelity() const;
 
  Q_SIGNALS:
   void built(const QString& jsonPath);
@@ -52,6 +60,9 @@ class BuildDialog : public QDialog {
   QComboBox* up_;
   QLineEdit* qualities_;
   QCheckBox *decimate_, *sizeToTargets_;
+  QComboBox* wrap_;
+  QDoubleSpinBox *wrapAlpha_, *wrapOffset_;
+  QLabel* wrapFidelity_;
   QProgressBar* progress_;
   QPlainTextEdit* log_;
   QPushButton *run_, *cancel_;

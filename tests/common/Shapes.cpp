@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "Shapes.h"
 
+#include <array>
+#include <cmath>
+#include <vector>
+
 namespace tetskin::test {
 
 TetMesh unitTetrahedron() {
@@ -56,6 +60,37 @@ SurfaceMesh box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
       2, 6, 3, 3, 6, 7,             // y = hi
       0, 4, 2, 2, 4, 6,             // x = lo
       1, 3, 5, 3, 7, 5;             // x = hi
+  return m;
+}
+
+SurfaceMesh sphere(const Eigen::Vector3d& center, double radius, int rings, int segments) {
+  SurfaceMesh m;
+  m.positions.resize(2 + (rings - 1) * segments, 3);
+  m.positions.row(0) = (center + Eigen::Vector3d(0, radius, 0)).transpose();
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments;
+      m.positions.row(1 + (i - 1) * segments + j) =
+          (center + radius * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                             std::sin(theta) * std::sin(phi)))
+              .transpose();
+    }
+  const int bottom = static_cast<int>(m.positions.rows()) - 1;
+  m.positions.row(bottom) = (center - Eigen::Vector3d(0, radius, 0)).transpose();
+  auto ring = [&](int i, int j) { return 1 + (i - 1) * segments + j % segments; };
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j < segments; ++j) {
+    triangles.push_back({0, ring(1, j + 1), ring(1, j)});
+    triangles.push_back({bottom, ring(rings - 1, j), ring(rings - 1, j + 1)});
+  }
+  for (int i = 1; i < rings - 1; ++i)
+    for (int j = 0; j < segments; ++j) {
+      triangles.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
+      triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    }
+  m.triangles.resize(static_cast<Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) m.triangles(static_cast<Index>(t), k) = triangles[t][k];
   return m;
 }
 

@@ -14,6 +14,9 @@ TetMesh tetGrid(int nx, int ny, int nz, const Eigen::Vector3d& size);
 
 // Closed axis-aligned box, 8 vertices, 12 outward triangles.
 SurfaceMesh box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
+// Closed UV sphere wound outward: `rings` bands from pole to pole,
+// `segments` around.
+SurfaceMesh sphere(const Eigen::Vector3d& center, double radius, int rings = 16, int segments = 24);
 // Concatenates two surfaces (vertex ids of b shifted).
 SurfaceMesh merge(const SurfaceMesh& a, const SurfaceMesh& b);
 // Every triangle with vertices of its own (a "triangle soup" as STL gives).

@@ -1414,6 +1414,35 @@ TEST_F(Gui, BuildDialogSizesABoxToItsTargets) {
   EXPECT_EQ(window_->scene().dataset().config.up, UpAxis::Z);
 }
 
+// A scan with holes: the dialog wraps it (its default), shows what the wrap
+// cost per level, and opens the dataset; with the wrap off it is refused.
+TEST_F(Gui, BuildDialogWrapsAHoledScanAndShowsTheWrapsFidelity) {
+  BuildDialog* dialog = window_->buildDialog();
+  dialog->setInputs({QString(TETSKIN_SOURCE_DIR) + "/tests/data/bunny_holed.obj"});
+  dialog->setOutput(QString::fromStdString(scratch("refused_holed").string()));
+  dialog->setLevels(1, 3000, 3000);
+  dialog->setQualities("2.0");
+  dialog->setWrap("never", 0.02, 0.002);
+  ASSERT_TRUE(dialog->start());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 120000));
+  EXPECT_TRUE(dialog->log().contains("cannot be repaired")) << dialog->log().toStdString();
+  EXPECT_TRUE(dialog->wrapFidelity().isEmpty());
+
+  dialog->setOutput(QString::fromStdString(scratch("wrapped_holed").string()));
+  dialog->setWrap("auto", 0.02, 0.002);
+  ASSERT_TRUE(dialog->start());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !dialog->running(); }, 120000));
+  ASSERT_TRUE(window_->scene().hasDataset()) << dialog->log().toStdString();
+  EXPECT_EQ(window_->scene().datasetPath(), scratch("wrapped_holed.json"));
+  EXPECT_TRUE(dialog->log().contains("wrapped ")) << dialog->log().toStdString();
+  EXPECT_TRUE(
+      dialog->wrapFidelity().startsWith("Level 0 was meshed from a wrap: alpha 2% and "
+                                        "offset 0.2% of the diagonal"))
+      << dialog->wrapFidelity().toStdString();
+  EXPECT_FALSE(dialog->findChild<QLabel*>("wrapFidelity")->isHidden());
+  ASSERT_TRUE(window_->scene().dataset().config.levels[0].source.wrap.has_value());
+}
+
 TEST_F(Gui, ScreenshotMatchesItsBaseline) {
   openSample();
   const std::filesystem::path png = scratch("screenshot.png");

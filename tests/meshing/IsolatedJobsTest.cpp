@@ -54,6 +54,30 @@ TEST(IsolatedJobs, FailuresOfOneJobDoNotStopTheOthers) {
   EXPECT_EQ(results[6].mesh.elementCount(), 50000);
 }
 
+// A mesher that would take more memory than its share fails alone, with
+// a word of what to change, before the machine runs out: asking for 90% of
+// the machine's memory at once (untouched, so without the limit the kernel
+// would grant it) is refused in the child.
+TEST(IsolatedJobs, AJobPastItsShareOfMemoryFails) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "no address-space limit under AddressSanitizer";
+#endif
+  const double memory = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) *
+                        static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+  const std::vector<MeshJob> jobs = {[memory]() -> TetMesh {
+    // (Through a volatile pointer: the compiler may drop a new/delete pair.)
+    char* volatile block = new char[static_cast<std::size_t>(0.9 * memory)];
+    block[0] = 1;
+    delete[] block;
+    return unitTetrahedron();
+  }};
+  const auto results = runIsolated(jobs, 2, 60.0);
+  ASSERT_FALSE(results[0].ok);
+  EXPECT_NE(results[0].error.find("the mesher ran out of memory ("), std::string::npos)
+      << results[0].error;
+  EXPECT_NE(results[0].error.find("fewer --jobs give each process more"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tetskin
 

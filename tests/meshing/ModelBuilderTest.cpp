@@ -52,7 +52,10 @@ TEST(ModelBuilder, BundledBunnyGivesTheRequestedLevels) {
   EXPECT_EQ(d.config.levels[0].source.mesher, "tetgen");
   EXPECT_GT(d.config.levels[2].statistics.at("min_dihedral_deg"), 0.0);
   EXPECT_EQ(d.config.provenance["candidates"].size(), r.candidates.size());
-  EXPECT_GE(r.candidates.size(), 25u);  // the input and its decimations, 5 qualities each
+  // The input and its decimations, 5 qualities each, meshed or skipped as
+  // finer than one above the largest target.
+  EXPECT_GE(r.candidates.size() + r.skippedCandidates, 25u);
+  EXPECT_GT(r.skippedCandidates, 0u);
 }
 
 // A decimated cylinder's surface gives TetGen slivers at every quality:
@@ -97,7 +100,7 @@ TEST(ModelBuilder, SearchOrderIsFinestInputAndBestQualityFirst) {
                                       {"b", test::box({0, 0, 0}, {1.1, 1.1, 1.1}), ""}};
   BuildOptions options;
   options.levels = 1;
-  options.minElements = options.maxElements = 1;
+  options.minElements = options.maxElements = 1000000;  // (above every candidate: none skipped)
   options.qualities = {2.0, 1.4};
   const BuildResult r = buildDataset(inputs, options);
   ASSERT_EQ(r.candidates.size(), 4u);
@@ -108,12 +111,63 @@ TEST(ModelBuilder, SearchOrderIsFinestInputAndBestQualityFirst) {
   EXPECT_EQ(r.candidates[2].input, "b");
 }
 
+// (--wrap never: what build did before the wrap; WrappedBuildTest.cpp has
+// the wrap.)
+// The targets drive the work: candidates run coarse to fine, and once one
+// is above the largest target, those of inputs with at least as many
+// triangles at a bound no looser are skipped; the rest keep the search
+// order. Two boxes of 12 triangles give 6 elements at q2 and more at q1.1:
+// a target of 1 leaves one candidate, q2 of the input given first.
+TEST(ModelBuilder, CandidatesFinerThanOneAboveTheLargestTargetAreSkipped) {
+  std::vector<SurfaceInput> inputs = {{"a", test::box({0, 0, 0}, {1, 1, 1}), ""},
+                                      {"b", test::box({0, 0, 0}, {1.1, 1.1, 1.1}), ""}};
+  BuildOptions options;
+  options.levels = 1;
+  options.minElements = options.maxElements = 1;
+  options.qualities = {2.0, 1.1};
+  std::vector<std::string> log;
+  const BuildResult r =
+      buildDataset(inputs, options, {[&](const std::string& l) { log.push_back(l); }, {}, {}});
+  ASSERT_EQ(r.candidates.size(), 1u);
+  EXPECT_EQ(r.skippedCandidates, 3u);
+  EXPECT_EQ(r.candidates[0].label, "q2");
+  EXPECT_NE(std::find(log.begin(), log.end(),
+                      "skipped 3 of 4 candidates: finer than one already above the largest "
+                      "target (1 elements)"),
+            log.end());
+}
+
+// Which candidates a build skips does not depend on which of its parallel
+// jobs ended first: the bunny's build with 1 job and with 3 gives the same
+// candidates and levels.
+TEST(ModelBuilder, TheCandidatesDoNotDependOnTheJobs) {
+  std::vector<std::vector<std::pair<std::string, Index>>> candidates;
+  std::vector<std::vector<Index>> levels;
+  for (int jobs : {1, 3}) {
+    BuildOptions options;
+    options.decimate = true;
+    options.jobs = jobs;
+    const BuildResult r = buildDataset(
+        {{"bunny.obj", readObj(std::string(TETSKIN_SOURCE_DIR) + "/data/bunny.obj"), ""}},
+        options);
+    candidates.emplace_back();
+    for (const CandidateReport& c : r.candidates)
+      candidates.back().emplace_back(c.input + " " + c.label, c.elements);
+    levels.emplace_back();
+    for (const LevelRange& level : r.dataset.mesh.levels) levels.back().push_back(level.elementCount);
+  }
+  EXPECT_EQ(candidates[0], candidates[1]);
+  EXPECT_EQ(levels[0], levels[1]);
+}
+
 TEST(ModelBuilder, UnrepairableInputsAreSkippedOrReported) {
   SurfaceMesh holey = test::box({0, 0, 0}, {1, 1, 1});
   holey.triangles.conservativeResize(10, 3);
-  EXPECT_THROW(buildDataset({{"holey", holey, ""}}, BuildOptions{}), Error);
+  BuildOptions never;
+  never.wrap.mode = WrapMode::Never;
+  EXPECT_THROW(buildDataset({{"holey", holey, ""}}, never), Error);
   std::vector<std::string> log;
-  BuildOptions options;
+  BuildOptions options = never;
   options.levels = 1;
   const BuildResult r =
       buildDataset({{"holey", holey, ""}, {"box", test::box({0, 0, 0}, {1, 1, 1}), ""}}, options,
@@ -208,8 +262,13 @@ TEST(ModelBuilder, NetgenBuildsLevels) {
   options.jobs = 2;
   try {
     const BuildResult r = buildDataset({{"box", test::box({0, 0, 0}, {2, 1, 1}), ""}}, options);
-    EXPECT_EQ(r.candidates.size(), 5u);
-    EXPECT_EQ(r.candidates[0].label, "very fine");
+    // The five presets, finest first, but for those finer than one above
+    // the largest target (here "very fine": "fine" has more than 2000).
+    EXPECT_EQ(r.candidates.size() + r.skippedCandidates, 5u);
+    EXPECT_GE(r.skippedCandidates, 1u);
+    EXPECT_EQ(r.candidates.back().label, "very coarse");
+    for (std::size_t c = 1; c < r.candidates.size(); ++c)
+      EXPECT_GT(r.candidates[c - 1].quality, r.candidates[c].quality);
     expectValidDataset(r.dataset);
   } catch (const Error& e) {
     if (std::string(e.what()).find("without Netgen") == std::string::npos) throw;

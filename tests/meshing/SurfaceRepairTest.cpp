@@ -353,5 +353,22 @@ TEST(SurfaceRepair, EmptyAndNonFiniteInputsAreErrors) {
   EXPECT_THROW(repairSurface(m, "nan"), Error);
 }
 
+// A box missing one face (two triangles): the hole's patch is a fan from
+// the rim's centre, wound as its neighbours, which closes the box again;
+// a patch larger than allowed leaves the hole open.
+TEST(SurfaceRepair, FillHolesClosesHolesUpToAnArea) {
+  SurfaceMesh open = test::box({0, 0, 0}, {1, 1, 1});
+  open.triangles.conservativeResize(10, 3);  // (the x = hi face gone)
+  SurfaceMesh kept = open;
+  EXPECT_EQ(fillHoles(kept, 0.99), 0);
+  EXPECT_EQ(boundaryLoops(kept).size(), 1u);
+  EXPECT_EQ(fillHoles(open, 1.01), 1);
+  EXPECT_TRUE(boundaryLoops(open).empty());
+  EXPECT_EQ(open.triangleCount(), 14);  // 4 rim edges, one fan triangle each
+  EXPECT_EQ(open.vertexCount(), 9);
+  EXPECT_NEAR(enclosedVolume(open), 1.0, 1e-12);  // wound outward, as the box
+  EXPECT_EQ(orientConsistently(open).flippedTriangles, 0);
+}
+
 }  // namespace
 }  // namespace tetskin

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/IsolatedJobs.h"
@@ -17,6 +18,12 @@ TetMesh runMesher(const SurfaceMesh& surface, const CandidateSpec& spec, MesherK
     return tetrahedralizeWithTetGen(surface, spec.quality, spec.sizeBound);
   return tetrahedralizeWithNetgen(surface, static_cast<NetgenFineness>(spec.quality),
                                   spec.sizeBound);
+}
+
+// How loose a spec's quality bound is: TetGen's radius-edge ratio (larger is
+// looser), Netgen's preset (lower is coarser).
+double looseness(const CandidateSpec& spec, MesherKind mesher) {
+  return mesher == MesherKind::TetGen ? spec.quality : -spec.quality;
 }
 
 }  // namespace
@@ -34,42 +41,99 @@ void say(const BuildEvents& events, const std::string& line) {
 
 double meshCandidates(const std::vector<CandidateSpec>& specs,
                       const std::vector<RepairedInput>& prepared, const BuildOptions& options,
-                      const BuildEvents& events, const std::string& stage, Candidates& found) {
+                      const BuildEvents& events, const std::string& stage, Candidates& found,
+                      double pruneAbove) {
+  auto triangles = [&](std::size_t spec) {
+    return prepared[specs[spec].input].mesh.triangleCount();
+  };
+  // The order the specs run in (and the jobs' order): coarse to fine when
+  // pruning, as given otherwise.
+  std::vector<std::size_t> order(specs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (pruneAbove > 0)
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (triangles(a) != triangles(b)) return triangles(a) < triangles(b);
+      return looseness(specs[a], options.mesher) > looseness(specs[b], options.mesher);
+    });
   std::vector<MeshJob> jobs;
-  for (const CandidateSpec& spec : specs) {
-    const SurfaceMesh* surface = &prepared[spec.input].mesh;
-    jobs.push_back(
-        [surface, spec, mesher = options.mesher] { return runMesher(*surface, spec, mesher); });
+  for (std::size_t i : order) {
+    const SurfaceMesh* surface = &prepared[specs[i].input].mesh;
+    jobs.push_back([surface, spec = specs[i], mesher = options.mesher] {
+      return runMesher(*surface, spec, mesher);
+    });
   }
+  std::vector<std::size_t> position(specs.size());  // of each spec in `order`
+  for (std::size_t job = 0; job < order.size(); ++job) position[order[job]] = job;
+  // Whether spec j's count bounds spec i's from below: j runs first, both
+  // without a size bound, at a bound no finer, on an input with no more
+  // triangles (Netgen remeshes the surface, so for it only the same input).
+  auto bounds = [&](std::size_t j, std::size_t i) {
+    return position[j] < position[i] && specs[j].sizeBound == 0 && specs[i].sizeBound == 0 &&
+           (options.mesher == MesherKind::TetGen ? triangles(j) <= triangles(i)
+                                                 : specs[j].input == specs[i].input) &&
+           looseness(specs[j], options.mesher) >= looseness(specs[i], options.mesher);
+  };
+  // The element counts of the specs meshed so far (by spec; -1: not yet).
+  std::vector<Index> meshedCount(specs.size(), -1);
+  // The spec above the largest target that bounds spec i, if any.
+  auto overTarget = [&](std::size_t i) -> std::optional<std::size_t> {
+    if (!(pruneAbove > 0)) return std::nullopt;
+    for (std::size_t j = 0; j < specs.size(); ++j)
+      if (static_cast<double>(meshedCount[j]) > pruneAbove && bounds(j, i)) return j;
+    return std::nullopt;
+  };
+  SkipJob skip;
+  if (pruneAbove > 0)
+    skip = [&](std::size_t job) -> std::string {
+      const std::optional<std::size_t> j = overTarget(order[job]);
+      return j ? "above the largest target, as " + prepared[specs[*j].input].name + " " +
+                     specs[*j].label + " (" + std::to_string(meshedCount[*j]) + " elements)"
+               : std::string();
+    };
   std::size_t done = 0;
   if (events.progress) events.progress(stage, 0, specs.size());
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<IsolatedResult> meshed = runIsolated(
+  std::vector<IsolatedResult> meshed = runIsolated(
       jobs, options.jobs, options.timeoutSeconds,
-      [&](std::size_t i, const IsolatedResult& r) {
+      [&](std::size_t job, const IsolatedResult& r) {
+        const std::size_t i = order[job];
         ++done;
         if (events.progress) events.progress(stage, done, specs.size());
+        if (r.ok) meshedCount[i] = r.mesh.elementCount();
         if (!r.ok)
           say(events, "candidate " + prepared[specs[i].input].name + " " + specs[i].label +
                           " failed: " + r.error);
       },
-      events.cancelled);
+      events.cancelled, skip);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Back in spec order: the selection's search order.
+  std::vector<IsolatedResult> bySpec(specs.size());
+  for (std::size_t job = 0; job < order.size(); ++job) bySpec[order[job]] = std::move(meshed[job]);
 
+  // Which jobs were skipped depends on which others had ended when each
+  // started; the same rule over every count leaves out the same candidates
+  // whatever the timing (those meshed before a bounding one ended too), so
+  // a build's candidates and levels do not depend on --jobs or the load.
+  std::size_t skipped = 0;
   for (std::size_t i = 0; i < specs.size(); ++i) {
+    if (bySpec[i].skipped || overTarget(i)) {
+      ++skipped;
+      continue;
+    }
     CandidateReport c;
     c.input = prepared[specs[i].input].file;
     c.mesher = toString(options.mesher);
     c.quality = specs[i].quality;
     c.label = specs[i].label;
     c.sizeBound = specs[i].sizeBound;
-    c.seconds = meshed[i].seconds;
-    c.ok = meshed[i].ok;
-    c.error = meshed[i].error;
+    c.wrap = prepared[specs[i].input].wrap;
+    c.seconds = bySpec[i].seconds;
+    c.ok = bySpec[i].ok;
+    c.error = bySpec[i].error;
     TetMesh mesh;
     if (c.ok) {
-      mesh = meshed[i].mesh;
+      mesh = std::move(bySpec[i].mesh);
       // Nodes that belong to no tetrahedron crash the simulation (report 2.4).
       c.unreferencedNodesRemoved = removeUnreferencedNodes(mesh);
       try {
@@ -89,6 +153,11 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
     found.reports.push_back(std::move(c));
     found.meshes.push_back(std::move(mesh));
   }
+  if (skipped > 0)
+    say(events, "skipped " + std::to_string(skipped) + " of " + std::to_string(specs.size()) +
+                    " candidates: finer than one already above the largest target (" +
+                    std::to_string(static_cast<Index>(pruneAbove)) + " elements)");
+  found.skipped += skipped;
   return seconds;
 }
 

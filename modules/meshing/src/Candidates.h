@@ -4,6 +4,7 @@
 // what to mesh, and the meshes made, cleaned and measured, in search order.
 // Shared by the quality round and the sizing rounds (SizedCandidates.cpp).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ struct RepairedInput {
   SurfaceMesh mesh;
   RepairReport repair;
   bool derived = false;  // made by decimation
+  // Made by alpha wrapping the input `file` (or decimated from such a wrap):
+  // how, and how far from the input it lies.
+  std::optional<LevelWrap> wrap;
+  std::string wrapReason;  // why the input was wrapped
+  SurfaceMesh original;    // the input as read, when wrapped: what `wrap` measures against
 };
 
 struct CandidateSpec {
@@ -35,6 +41,7 @@ struct Candidates {
   std::vector<CandidateReport> reports;
   std::vector<TetMesh> meshes;
   std::vector<Index> counts;
+  std::size_t skipped = 0;  // left unmeshed: predictably above the largest target
 };
 
 // The TetGen qualities asked for, each once, best (closest to 1) first: the
@@ -46,10 +53,20 @@ void say(const BuildEvents& events, const std::string& line);
 
 // Meshes every spec in its own process, then cleans and measures each mesh
 // (unreferenced nodes removed, elements validated, quality) and appends it
-// to `found`. `stage` names the progress. Returns the wall time of the meshing.
+// to `found` in spec order. `stage` names the progress. Returns the wall
+// time of the meshing.
+//
+// With `pruneAbove` > 0, the specs without a size bound are meshed coarse
+// to fine (inputs with fewer triangles first, each from its loosest quality
+// bound to its finest), and a spec is skipped (counted in found.skipped, not
+// appended) once a candidate of an input with no more triangles, at a bound
+// no finer, came out above `pruneAbove` elements: finer bounds and finer
+// inputs give more elements, so it would lie farther still from every target
+// at or below `pruneAbove`.
 double meshCandidates(const std::vector<CandidateSpec>& specs,
                       const std::vector<RepairedInput>& prepared, const BuildOptions& options,
-                      const BuildEvents& events, const std::string& stage, Candidates& found);
+                      const BuildEvents& events, const std::string& stage, Candidates& found,
+                      double pruneAbove = 0);
 
 // `build --size-to-targets`: for each level target that no candidate meets
 // within kSizingTolerance (TargetSizing.h), rounds of candidates under an

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "Candidates.h"
+#include "Wrapping.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/meshing/Decimation.h"
@@ -26,7 +27,48 @@ constexpr double kLevelOfDetailOverlap = 0.5;
 void sayCollapseWarning(const BuildEvents& events, const RepairReport& report,
                         const std::string& name) {
   if (const std::string warning = collapseWarning(report, name); !warning.empty())
-    say(events, "warning: " + warning);
+    say(events, "warning: " + warning + ", or wrap them in one (--wrap always)");
+}
+
+// Finest first: the search order of the level selection starts there.
+void sortFinestFirst(std::vector<RepairedInput>& inputs) {
+  std::stable_sort(inputs.begin(), inputs.end(),
+                   [](const RepairedInput& a, const RepairedInput& b) {
+                     return a.mesh.triangleCount() > b.mesh.triangleCount();
+                   });
+}
+
+// What --wrap never says of an input repair cannot close.
+std::string wrapHint(const BuildOptions& options) {
+  return options.wrap.mode == WrapMode::Never
+             ? " (--wrap auto wraps such inputs in a closed surface)"
+             : "";
+}
+
+// Coarser inputs decimated from the finest one (--decimate); from a wrap,
+// each measured against the wrap's input as the wrap is.
+std::vector<RepairedInput> decimatedInputs(const RepairedInput& finest, const BuildOptions& options,
+                                           const BuildEvents& events) {
+  std::vector<RepairedInput> derived;
+  for (SurfaceMesh& coarse : decimatedSeries(finest.mesh)) {
+    const std::string suffix =
+        " (decimated to " + std::to_string(coarse.triangleCount()) + " triangles)";
+    const std::string name = finest.name + suffix;
+    RepairedInput r{name, finest.file + suffix, std::move(coarse), {}, true, {}, {}, {}};
+    try {
+      r.repair = repairSurface(r.mesh, r.name, options.repair);
+      if (finest.wrap) {
+        r.wrap = measureWrap(finest.original, r.mesh, finest.wrap->alpha, finest.wrap->offset);
+        r.wrap->shellThickness = finest.wrap->shellThickness;
+      }
+      say(events, "derived " + name);
+      sayCollapseWarning(events, r.repair, name);
+      derived.push_back(std::move(r));
+    } catch (const Error& e) {
+      say(events, std::string("skipping derived input: ") + e.what());
+    }
+  }
+  return derived;
 }
 
 std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
@@ -56,15 +98,37 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
         !mismatch.empty())
       throw Error(inputs[j].name, 0, mismatch);
   std::vector<RepairedInput> prepared;
+  std::vector<WrapRequest> toWrap;
   std::string firstFailure;
   for (SurfaceInput& input : inputs) {
-    RepairedInput r{
-        input.name, input.file.empty() ? input.name : input.file, std::move(input.mesh), {}, false};
+    const std::string file = input.file.empty() ? input.name : input.file;
+    if (options.wrap.mode == WrapMode::Always) {
+      validateSurface(input.mesh, input.name);
+      if (hasArea(input.mesh)) {
+        toWrap.push_back({input.name, file, std::move(input.mesh), "--wrap always"});
+      } else {
+        const std::string failure =
+            input.name + ": every triangle has zero area, so the surface encloses nothing to wrap";
+        say(events, "skipping input: " + failure);
+        if (firstFailure.empty()) firstFailure = failure;
+      }
+      continue;
+    }
+    // Auto keeps the input as read: a wrap takes it, not repair's remains,
+    // here or when no mesher accepts the repaired surface (wrapRefused).
+    SurfaceMesh asRead = options.wrap.mode == WrapMode::Auto ? input.mesh : SurfaceMesh{};
+    RepairedInput r{input.name, file, std::move(input.mesh), {}, false, {}, {}, {}};
     try {
       r.repair = repairSurface(r.mesh, r.name, options.repair);
+      r.original = std::move(asRead);
     } catch (const Error& e) {
-      say(events, std::string("skipping input: ") + e.what());
-      if (firstFailure.empty()) firstFailure = e.what();
+      // An input without area is refused: there is nothing to wrap.
+      if (options.wrap.mode == WrapMode::Auto && hasArea(asRead)) {
+        toWrap.push_back({input.name, file, std::move(asRead), e.what()});
+        continue;
+      }
+      say(events, std::string("skipping input: ") + e.what() + wrapHint(options));
+      if (firstFailure.empty()) firstFailure = e.what() + wrapHint(options);
       continue;
     }
     std::string line = "repaired " + r.name + ":";
@@ -74,41 +138,69 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
     sayCollapseWarning(events, r.repair, r.name);
     prepared.push_back(std::move(r));
   }
+  for (RepairedInput& r : wrapInputs(std::move(toWrap), options, events, firstFailure))
+    prepared.push_back(std::move(r));
   if (prepared.empty())
     throw Error(inputs.size() == 1
                     ? firstFailure
                     : "no input surface could be repaired; the first: " + firstFailure);
+  sortFinestFirst(prepared);
   if (options.decimate) {
-    const RepairedInput& finest = prepared.front();
-    std::vector<RepairedInput> derived;
-    for (SurfaceMesh& coarse : decimatedSeries(finest.mesh)) {
-      const std::string suffix =
-          " (decimated to " + std::to_string(coarse.triangleCount()) + " triangles)";
-      const std::string name = finest.name + suffix;
-      RepairedInput r{name, finest.file + suffix, std::move(coarse), {}, true};
-      try {
-        r.repair = repairSurface(r.mesh, r.name, options.repair);
-        say(events, "derived " + name);
-        sayCollapseWarning(events, r.repair, name);
-        derived.push_back(std::move(r));
-      } catch (const Error& e) {
-        say(events, std::string("skipping derived input: ") + e.what());
-      }
-    }
-    // Keep the finest-first order: originals are finer than their decimations.
-    for (RepairedInput& r : derived) prepared.push_back(std::move(r));
-    std::stable_sort(prepared.begin(), prepared.end(),
-                     [](const RepairedInput& a, const RepairedInput& b) {
-                       return a.mesh.triangleCount() > b.mesh.triangleCount();
-                     });
+    // Originals are finer than their decimations: the order stays.
+    for (RepairedInput& r : decimatedInputs(prepared.front(), options, events))
+      prepared.push_back(std::move(r));
+    sortFinestFirst(prepared);
   }
   return prepared;
 }
 
+// --wrap auto's second chance: each original input that repair closed but
+// whose every candidate the meshers refused (none skipped) is wrapped and
+// appended to `prepared`. Returns whether any was.
+bool wrapRefusedInputs(std::vector<RepairedInput>& prepared,
+                       const std::vector<CandidateSpec>& specs, const Candidates& found,
+                       const BuildOptions& options, const BuildEvents& events) {
+  std::vector<WrapRequest> requests;
+  for (std::size_t i = 0; i < prepared.size(); ++i) {
+    RepairedInput& input = prepared[i];
+    if (input.derived || input.wrap || input.original.triangleCount() == 0) continue;
+    std::size_t made = 0, accepted = 0, asked = 0;
+    std::string firstError;
+    for (const CandidateSpec& spec : specs) asked += spec.input == i ? 1 : 0;
+    for (const CandidateReport& c : found.reports) {
+      if (c.input != input.file) continue;
+      ++made;
+      accepted += c.ok ? 1 : 0;
+      if (!c.ok && firstError.empty()) firstError = c.label + ": " + c.error;
+    }
+    if (asked == 0 || made != asked || accepted > 0) continue;
+    requests.push_back({input.name, input.file, std::move(input.original),
+                        "no mesher run accepted the repaired surface (" + firstError + ")"});
+  }
+  if (requests.empty()) return false;
+  std::string firstFailure;
+  std::vector<RepairedInput> wrapped =
+      wrapInputs(std::move(requests), options, events, firstFailure);
+  // With --decimate and nothing meshed at all, the coarser inputs come from
+  // the finest wrap, as when repair refuses the finest input.
+  const bool nothingMeshed =
+      std::none_of(found.counts.begin(), found.counts.end(), [](Index c) { return c >= 0; });
+  if (options.decimate && nothingMeshed && !wrapped.empty()) {
+    sortFinestFirst(wrapped);
+    std::vector<RepairedInput> derived = decimatedInputs(wrapped.front(), options, events);
+    for (RepairedInput& r : derived) wrapped.push_back(std::move(r));
+  }
+  sortFinestFirst(wrapped);
+  for (RepairedInput& r : wrapped) prepared.push_back(std::move(r));
+  return !wrapped.empty();
+}
+
+// The quality candidates of inputs[first..]: every input at every quality,
+// in the selection's search order.
 std::vector<CandidateSpec> candidateSpecs(const std::vector<RepairedInput>& inputs,
-                                          const BuildOptions& options) {
+                                          const BuildOptions& options, std::size_t first = 0) {
   std::vector<CandidateSpec> specs;
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
+  for (std::size_t i = first; i < inputs.size(); ++i) {
     if (options.mesher == MesherKind::TetGen) {
       for (double quality : distinctQualities(options))
         specs.push_back({i, quality, meshingLabel(MesherKind::TetGen, quality)});
@@ -247,6 +339,11 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                          const BuildEvents& events) {
   for (double q : options.qualities)
     if (!(q > 1.0)) throw Error("quality " + formatNumber(q) + " must be greater than 1.0");
+  for (const auto& [name, value] :
+       {std::pair{"alpha", options.wrap.alpha}, std::pair{"offset", options.wrap.offset}})
+    if (!(value > 0 && value <= 1))
+      throw Error(std::string("the wrap's ") + name + " " + formatNumber(value) +
+                  " must lie in (0, 1]: it is a fraction of the bounding-box diagonal");
   const std::vector<double> targets =
       levelTargets(options.minElements, options.maxElements, options.levels);
   if (options.mesher == MesherKind::Netgen && !netgenAvailable())
@@ -261,18 +358,29 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
     stageStart = now;
   };
   if (events.progress) events.progress("repair", 0, inputs.size());
-  const std::vector<RepairedInput> prepared = prepareInputs(std::move(inputs), options, events);
+  std::vector<RepairedInput> prepared = prepareInputs(std::move(inputs), options, events);
   endStage(options.decimate ? "repair + decimation" : "repair");
   if (events.cancelled && events.cancelled()) throw Cancelled();
   const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
 
   Candidates found;
-  result.meshingSeconds = meshCandidates(specs, prepared, options, events, "meshing", found);
+  result.meshingSeconds =
+      meshCandidates(specs, prepared, options, events, "meshing", found, targets.back());
   endStage("meshing + cleanup");
+  if (options.wrap.mode == WrapMode::Auto) {
+    const std::size_t first = prepared.size();
+    if (wrapRefusedInputs(prepared, specs, found, options, events)) {
+      result.meshingSeconds +=
+          meshCandidates(candidateSpecs(prepared, options, first), prepared, options, events,
+                         "meshing the wraps", found, targets.back());
+      endStage("wrap + meshing");
+    }
+  }
   if (options.sizeToTargets) {
     result.meshingSeconds += addSizedCandidates(prepared, targets, options, events, found);
     endStage("sizing");
   }
+  result.skippedCandidates = found.skipped;
   result.candidates = std::move(found.reports);
   std::vector<TetMesh>& meshes = found.meshes;
   const std::vector<Index>& counts = found.counts;
@@ -298,6 +406,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                         {"ok", c.ok},
                         {"seconds", c.seconds}};
     if (c.sizeBound > 0) j["size_bound"] = c.sizeBound;
+    if (c.wrap) j["wrapped"] = true;
     if (c.ok) {
       j["nodes"] = c.nodes;
       j["elements"] = c.elements;
@@ -315,15 +424,21 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
     level.source.mesher = result.candidates[i].mesher;
     level.source.quality = result.candidates[i].quality;
     level.source.sizeBound = result.candidates[i].sizeBound;
+    level.source.wrap = result.candidates[i].wrap;
     level.statistics = result.candidates[i].statistics.asMap();
     level.statistics["target_elements"] =
         targets[std::min(dataset.config.levels.size(), targets.size() - 1)];
     dataset.config.levels.push_back(level);
   }
   nlohmann::json inputsJson = nlohmann::json::array();
-  for (const RepairedInput& r : prepared)
-    inputsJson.push_back(
-        {{"file", r.file}, {"derived", r.derived}, {"repair", repairJson(r.repair)}});
+  for (const RepairedInput& r : prepared) {
+    nlohmann::json j = {{"file", r.file}, {"derived", r.derived}, {"repair", repairJson(r.repair)}};
+    if (r.wrap) {
+      j["wrapped"] = true;
+      if (!r.wrapReason.empty()) j["wrap_reason"] = r.wrapReason;
+    }
+    inputsJson.push_back(j);
+  }
   // The finest original input is the surface a viewer shows by default.
   for (const RepairedInput& r : prepared)
     if (!r.derived) {
@@ -340,7 +455,10 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                                  {"mesher", toString(options.mesher)},
                                  {"qualities", options.qualities},
                                  {"decimate", options.decimate},
-                                 {"size_to_targets", options.sizeToTargets}}},
+                                 {"size_to_targets", options.sizeToTargets},
+                                 {"wrap", toString(options.wrap.mode)},
+                                 {"wrap_alpha", options.wrap.alpha},
+                                 {"wrap_offset", options.wrap.offset}}},
                                {"targets", targets},
                                {"candidates", candidatesJson}};
   endStage("selection + assembly");

@@ -209,6 +209,52 @@ std::vector<std::vector<int>> boundaryLoops(const SurfaceMesh& mesh) {
   return loops;
 }
 
+Index fillHoles(SurfaceMesh& mesh, double maxArea) {
+  const auto edges = edgeTriangles(mesh);
+  std::unordered_map<int, int> loopOf;  // rim vertex -> loop
+  const std::vector<std::vector<int>> loops = boundaryLoops(mesh);
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (int v : loops[l]) loopOf[v] = static_cast<int>(l);
+  // Each loop's open edges, directed as the fill must use them: the
+  // reverse of their one triangle's direction.
+  std::vector<std::vector<std::array<int, 2>>> rims(loops.size());
+  for (const auto& [key, users] : edges) {
+    if (users.size() != 1) continue;
+    const Index t = users.front();
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
+      if (edgeKey(a, b) == key) rims[static_cast<std::size_t>(loopOf.at(a))].push_back({b, a});
+    }
+  }
+  std::vector<Eigen::RowVector3d> centres;
+  std::vector<std::array<int, 3>> fans;
+  Index closed = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
+    for (int v : loops[l]) centre += mesh.positions.row(v);
+    centre /= static_cast<double>(loops[l].size());
+    double area = 0;
+    for (const auto& [a, b] : rims[l])
+      area += 0.5 * (mesh.positions.row(a) - centre).cross(mesh.positions.row(b) - centre).norm();
+    if (area > maxArea) continue;
+    const int c = static_cast<int>(mesh.vertexCount() + static_cast<Index>(centres.size()));
+    centres.push_back(centre);
+    for (const auto& [a, b] : rims[l]) fans.push_back({a, b, c});
+    ++closed;
+  }
+  if (closed == 0) return 0;
+  const Index n = mesh.vertexCount(), m = mesh.triangleCount();
+  mesh.positions.conservativeResize(n + static_cast<Index>(centres.size()), 3);
+  for (std::size_t i = 0; i < centres.size(); ++i)
+    mesh.positions.row(n + static_cast<Index>(i)) = centres[i];
+  mesh.triangles.conservativeResize(m + static_cast<Index>(fans.size()), 3);
+  for (std::size_t i = 0; i < fans.size(); ++i)
+    for (int k = 0; k < 3; ++k) mesh.triangles(m + static_cast<Index>(i), k) = fans[i][k];
+  mesh.normals.resize(0, 3);
+  mesh.texcoords.resize(0, 2);
+  return closed;
+}
+
 Index nonManifoldEdgeCount(const SurfaceMesh& mesh) {
   Index count = 0;
   for (const auto& [key, users] : edgeTriangles(mesh))
@@ -303,6 +349,31 @@ Index splitTJunctions(SurfaceMesh& mesh, double tolerance) {
       mesh.triangles.row(kept + static_cast<Index>(i)) = added[i].transpose();
   }
   return splits;
+}
+
+Index removeFlaps(SurfaceMesh& mesh) {
+  Index removed = 0;
+  for (;;) {
+    const auto edges = edgeTriangles(mesh);
+    std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
+    Index round = 0;
+    for (Index t = 0; t < mesh.triangleCount(); ++t) {
+      bool open = false, nonManifold = false;
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t users =
+            edges.at(edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))).size();
+        open = open || users == 1;
+        nonManifold = nonManifold || users > 2;
+      }
+      if (open && nonManifold) {
+        keep[static_cast<std::size_t>(t)] = 0;
+        ++round;
+      }
+    }
+    if (round == 0) return removed;
+    keepTriangles(mesh, keep);
+    removed += round;
+  }
 }
 
 Index removeOpenTriangles(SurfaceMesh& mesh) {
@@ -488,6 +559,10 @@ RepairReport repairSurface(SurfaceMesh& mesh, const std::string& name,
   const RepairTolerances tolerance = repairTolerances(options, diagonal);
 
   weldAndClean(mesh, tolerance, report);
+  if (mesh.triangleCount() == 0)
+    throw Error(name, 0,
+                "cannot be repaired: every triangle has zero area (its corners on one line or "
+                "welded together), so the surface encloses nothing");
   report.tJunctionsSplit = splitTJunctions(mesh, tolerance.tJunction);
   report.holes = static_cast<Index>(boundaryLoops(mesh).size());
   report.openTrianglesRemoved = removeOpenTriangles(mesh);

@@ -13,6 +13,7 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/meshing/AlphaWrap.h"
 #include "tetskin/meshing/MeshQuality.h"
 #include "tetskin/meshing/SurfaceRepair.h"
 
@@ -60,6 +61,10 @@ struct BuildOptions {
   int jobs = 1;  // mesher processes at once
   double timeoutSeconds = 600;
   RepairOptions repair;
+  // Alpha wrapping (AlphaWrap.h) of the inputs repair cannot close, that no
+  // mesher run accepts (auto), or all (always). A wrapped input is meshed in
+  // place of the input; the input stays the dataset's default surface.
+  WrapOptions wrap;
   UpAxis up = UpAxis::Y;  // recorded in the config (`up`) for simulation and viewing
 };
 
@@ -69,6 +74,9 @@ struct CandidateReport {
   double quality = 0;    // TetGen ratio, or Netgen preset index
   std::string label;     // e.g. "q1.4", "moderate", or with a size bound "q1.2 a0.0017"
   double sizeBound = 0;  // TetGen volume bound (-a) or Netgen edge bound (maxh); 0: none
+  // When `input` was alpha-wrapped first: the wrap's parameters and its
+  // distances to the input (those of the decimated wrap, for a derived one).
+  std::optional<LevelWrap> wrap;
   bool ok = false;
   std::string error;
   Index nodes = 0, elements = 0;
@@ -89,6 +97,9 @@ struct BuildResult {
   Dataset dataset;                          // config paths not yet set (see saveDataset)
   std::vector<CandidateReport> candidates;  // in search order
   std::vector<int> chosen;                  // candidate index per level, coarsest first
+  // Candidates left unmeshed: finer than one already above the largest
+  // target (see meshCandidates in Candidates.h).
+  std::size_t skippedCandidates = 0;
   double meshingSeconds = 0;
   // Wall time of each stage, in order: repair, meshing, cleanup (unreferenced
   // nodes, validation, quality), selection (and assembly).

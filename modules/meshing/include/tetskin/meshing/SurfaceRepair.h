@@ -49,6 +49,21 @@ Index nonManifoldEdgeCount(const SurfaceMesh& mesh);
 // Repeats until no such vertex is left. Returns the number of splits.
 Index splitTJunctions(SurfaceMesh& mesh, double tolerance);
 
+// Removes flaps, repeatedly: triangles with an open edge that hang off an
+// edge of more than two triangles (a scan's stray sheets on a seam). A
+// hole's rim inside them then shows as the hole it is (for fillHoles).
+// Returns the number removed.
+Index removeFlaps(SurfaceMesh& mesh);
+
+// Closes each hole (a chain of open edges, boundaryLoops) whose patch would
+// have at most `maxArea`: a fan from the rim's centroid (a new vertex) over
+// each open edge, wound as the triangle beside it. The patch may cut
+// through the surface near a twisted rim; it is meant for the alpha wrap,
+// which takes any soup, so that the wrap encloses the object rather than
+// entering a hole wider than its alpha and coating the inside. Returns the
+// number of holes closed.
+Index fillHoles(SurfaceMesh& mesh, double maxArea);
+
 // Removes triangles with an open edge, repeatedly, until none is left (the
 // report's removal of dangling triangles). Returns the number removed.
 Index removeOpenTriangles(SurfaceMesh& mesh);

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "Wrapping.h"
+
+#include <cstdio>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/meshing/IsolatedJobs.h"
+
+namespace tetskin {
+namespace {
+
+// A wrap whose mean thickness is under this many offsets encloses no
+// volume of its input's own: it is a shell around a sheet, about 2 offsets
+// thick (a closed input's wrap is as thick as the object).
+constexpr double kShellThicknessOffsets = 4.0;
+
+}  // namespace
+
+LevelWrap measureWrap(const SurfaceMesh& input, const SurfaceMesh& surface, double alpha,
+                      double offset) {
+  const WrapFidelity f = wrapFidelity(input, surface);
+  LevelWrap w;
+  w.alpha = alpha;
+  w.offset = offset;
+  w.diagonal = f.diagonal;
+  w.inputToWrapMax = f.inputToWrap.max;
+  w.inputToWrapMean = f.inputToWrap.mean;
+  w.wrapToInputMax = f.wrapToInput.max;
+  w.wrapToInputMean = f.wrapToInput.mean;
+  return w;
+}
+
+std::vector<RepairedInput> wrapInputs(std::vector<WrapRequest> requests,
+                                      const BuildOptions& options, const BuildEvents& events,
+                                      std::string& firstFailure) {
+  std::vector<RepairedInput> wrapped;
+  if (requests.empty()) return wrapped;
+  std::vector<double> alphas, offsets;
+  std::vector<SurfaceMesh> prepared;
+  std::vector<SurfaceJob> jobs;
+  prepared.reserve(requests.size());
+  for (const WrapRequest& r : requests) {
+    const double diagonal = boundingBox(r.surface).diagonal();
+    alphas.push_back(options.wrap.alpha * diagonal);
+    offsets.push_back(options.wrap.offset * diagonal);
+    Index holesClosed = 0;
+    prepared.push_back(wrapReady(r.surface, options.repair, &holesClosed));
+    jobs.push_back([surface = &prepared.back(), name = r.name, alpha = alphas.back(),
+                    offset = offsets.back()] { return alphaWrap(*surface, alpha, offset, name); });
+    std::string closed;
+    if (holesClosed > 0) closed = "; " + std::to_string(holesClosed) + " hole(s) closed first";
+    say(events, "wrapping " + r.name + " (alpha " + formatNumber(alphas.back()) + ", offset " +
+                    formatNumber(offsets.back()) + closed + "): " + r.reason);
+  }
+  std::size_t done = 0;
+  if (events.progress) events.progress("wrap", 0, jobs.size());
+  const std::vector<IsolatedSurface> wraps = runIsolated(
+      jobs, options.jobs, options.timeoutSeconds,
+      [&](std::size_t, const IsolatedSurface&) {
+        if (events.progress) events.progress("wrap", ++done, jobs.size());
+      },
+      events.cancelled);
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    WrapRequest& request = requests[i];
+    if (!wraps[i].ok) {
+      // (alphaWrap's own errors name the input already.)
+      const std::string failure = wraps[i].error.rfind(request.name + ":", 0) == 0
+                                      ? wraps[i].error
+                                      : request.name + ": the wrap failed: " + wraps[i].error;
+      say(events, "skipping input: " + failure);
+      if (firstFailure.empty()) firstFailure = failure;
+      continue;
+    }
+    RepairedInput r;
+    r.name = request.name + " (wrapped)";
+    r.file = request.file;
+    r.mesh = wraps[i].mesh;
+    try {
+      r.repair = repairSurface(r.mesh, r.name, options.repair);
+    } catch (const Error& e) {
+      say(events, std::string("skipping input: ") + e.what());
+      if (firstFailure.empty()) firstFailure = e.what();
+      continue;
+    }
+    r.wrap = measureWrap(request.surface, r.mesh, alphas[i], offsets[i]);
+    if (!boundaryLoops(request.surface).empty() &&
+        meanThickness(r.mesh) < kShellThicknessOffsets * offsets[i])
+      r.wrap->shellThickness = meanThickness(r.mesh);
+    r.wrapReason = std::move(request.reason);
+    r.original = std::move(request.surface);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f", wraps[i].seconds);
+    say(events, "wrapped " + request.name + ": " + std::to_string(r.mesh.triangleCount()) +
+                    " triangles in " + seconds + " s; " + describe(*r.wrap));
+    if (r.wrap->shellThickness > 0)
+      say(events, "warning: " + request.name +
+                      " is an open sheet, not a closed surface: it became a shell body about " +
+                      formatNumber(r.wrap->shellThickness) +
+                      " thick (twice the wrap's offset; --wrap-offset sets it)");
+    wrapped.push_back(std::move(r));
+  }
+  return wrapped;
+}
+
+}  // namespace tetskin
