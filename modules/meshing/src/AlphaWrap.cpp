@@ -21,7 +21,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
-
 // A hole whose patch would cover at most this share of the surface's area
 // is closed before the wrap: a scan's missing base or an occlusion. A wider
 // one is the rim of an open sheet (a face, a mask: its patch would be about
@@ -63,12 +62,11 @@ std::optional<WrapMode> parseWrapMode(std::string_view name) {
 }
 
 bool hasArea(const SurfaceMesh& mesh) {
-  for (Index t = 0; t < mesh.triangleCount(); ++t) {
-    const Eigen::Vector3d a = mesh.positions.row(mesh.triangles(t, 0)).transpose();
-    const Eigen::Vector3d b = mesh.positions.row(mesh.triangles(t, 1)).transpose();
-    const Eigen::Vector3d c = mesh.positions.row(mesh.triangles(t, 2)).transpose();
-    if ((b - a).cross(c - a).squaredNorm() > 0) return true;
-  }
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    if (triangleArea(mesh.positions.row(mesh.triangles(t, 0)).transpose(),
+                     mesh.positions.row(mesh.triangles(t, 1)).transpose(),
+                     mesh.positions.row(mesh.triangles(t, 2)).transpose()) > 0)
+      return true;
   return false;
 }
 

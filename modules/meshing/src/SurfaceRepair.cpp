@@ -351,21 +351,24 @@ Index splitTJunctions(SurfaceMesh& mesh, double tolerance) {
   return splits;
 }
 
-Index removeFlaps(SurfaceMesh& mesh) {
+namespace {
+
+// Removes, round after round until none is left, the triangles for which
+// `remove(users)` holds, `users` the number of triangles on each of its
+// three edges. Returns the number removed.
+template <typename Remove>
+Index removeRepeatedly(SurfaceMesh& mesh, Remove remove) {
   Index removed = 0;
   for (;;) {
     const auto edges = edgeTriangles(mesh);
     std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
     Index round = 0;
     for (Index t = 0; t < mesh.triangleCount(); ++t) {
-      bool open = false, nonManifold = false;
-      for (int k = 0; k < 3; ++k) {
-        const std::size_t users =
+      std::array<std::size_t, 3> users{};
+      for (int k = 0; k < 3; ++k)
+        users[static_cast<std::size_t>(k)] =
             edges.at(edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))).size();
-        open = open || users == 1;
-        nonManifold = nonManifold || users > 2;
-      }
-      if (open && nonManifold) {
+      if (remove(users)) {
         keep[static_cast<std::size_t>(t)] = 0;
         ++round;
       }
@@ -376,23 +379,21 @@ Index removeFlaps(SurfaceMesh& mesh) {
   }
 }
 
+}  // namespace
+
+Index removeFlaps(SurfaceMesh& mesh) {
+  return removeRepeatedly(mesh, [](const std::array<std::size_t, 3>& users) {
+    const bool open = std::find(users.begin(), users.end(), 1u) != users.end();
+    const bool nonManifold =
+        std::any_of(users.begin(), users.end(), [](std::size_t n) { return n > 2; });
+    return open && nonManifold;
+  });
+}
+
 Index removeOpenTriangles(SurfaceMesh& mesh) {
-  Index removed = 0;
-  for (;;) {
-    const auto edges = edgeTriangles(mesh);
-    std::vector<char> keep(static_cast<std::size_t>(mesh.triangleCount()), 1);
-    Index round = 0;
-    for (Index t = 0; t < mesh.triangleCount(); ++t)
-      for (int k = 0; k < 3; ++k)
-        if (edges.at(edgeKey(mesh.triangles(t, k), mesh.triangles(t, (k + 1) % 3))).size() == 1) {
-          keep[static_cast<std::size_t>(t)] = 0;
-          ++round;
-          break;
-        }
-    if (round == 0) return removed;
-    keepTriangles(mesh, keep);
-    removed += round;
-  }
+  return removeRepeatedly(mesh, [](const std::array<std::size_t, 3>& users) {
+    return std::find(users.begin(), users.end(), 1u) != users.end();
+  });
 }
 
 std::vector<std::pair<int, int>> findSelfIntersections(const SurfaceMesh& mesh, std::size_t limit) {

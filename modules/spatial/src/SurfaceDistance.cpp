@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 #include "tetskin/spatial/AabbTree.h"
 #include "tetskin/spatial/TriangleDistance.h"
 
@@ -43,10 +44,10 @@ std::vector<double> distancesToSurface(const Points3& points, const SurfaceMesh&
 std::vector<double> vertexAreaWeights(const SurfaceMesh& mesh) {
   std::vector<double> weights(static_cast<std::size_t>(mesh.vertexCount()), 0.0);
   for (Index t = 0; t < mesh.triangleCount(); ++t) {
-    const Eigen::Vector3d a = mesh.positions.row(mesh.triangles(t, 0)).transpose();
-    const Eigen::Vector3d b = mesh.positions.row(mesh.triangles(t, 1)).transpose();
-    const Eigen::Vector3d c = mesh.positions.row(mesh.triangles(t, 2)).transpose();
-    const double third = (b - a).cross(c - a).norm() / 6.0;
+    const double third = triangleArea(mesh.positions.row(mesh.triangles(t, 0)).transpose(),
+                                      mesh.positions.row(mesh.triangles(t, 1)).transpose(),
+                                      mesh.positions.row(mesh.triangles(t, 2)).transpose()) /
+                         3.0;
     for (int k = 0; k < 3; ++k) weights[static_cast<std::size_t>(mesh.triangles(t, k))] += third;
   }
   return weights;
