@@ -8,6 +8,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/packaging/tetskin.svg
   DESTINATION share/icons/hicolor/scalable/apps)
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/README.md
   DESTINATION share/doc/tetskin)
+# The user's pages and the README's picture, where the README's links find them.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/doc/user ${PROJECT_SOURCE_DIR}/doc/images
+  DESTINATION share/doc/tetskin/doc)
 
 set(CPACK_PACKAGE_NAME tetskin)
 set(CPACK_PACKAGE_VENDOR "TetSkin developers")

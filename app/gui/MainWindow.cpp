@@ -381,7 +381,7 @@ QWidget* MainWindow::buildSimulationDock() {
       "full: R K R^T and the rotation term (steady under large steps on stretched bodies); "
       "warped: R K R^T alone (stiffness warping, a cheaper element pass)");
   // The relative residual each solve reaches: a looser one is much cheaper
-  // for interactive use (README, Benchmarks: the tolerance table).
+  // for interactive use (doc/benchmarks.md: the tolerance table).
   tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
   tolerance_->setCurrentText("1e-6");
   tolerance_->setToolTip("relative residual of each linear solve (simulate --tolerance)");

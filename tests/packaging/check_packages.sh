@@ -29,6 +29,7 @@ has "$main" usr/bin/tetskin
 has "$main" usr/share/tetskin/data/bunny.json
 has "$main" usr/share/applications/tetskin.desktop
 has "$main" usr/share/doc/tetskin/LICENSE
+has "$main" usr/share/doc/tetskin/doc/user/model-generation.md
 depends=$(dpkg-deb -f "$main" Depends)
 [[ $depends == *libvtk9.1* ]] || fail "tetskin does not depend on libvtk9.1: $depends"
 [[ $depends != *paraview* ]] || fail "tetskin depends on ParaView: $depends"

@@ -287,7 +287,7 @@ Eigen::Matrix3d diagonalBlock(const BasicNodeBlockMatrix<Scalar>& A, Index node)
 // 1e-4 kg: the bunny scaled to 5 cm with the density of water has a block
 // of norm 1.7e-5 (determinant 6e-16) among others, and the identity in
 // their place made CG take 960 iterations per step where the blocks'
-// inverses take 42 (README, Simulation: Solvers).
+// inverses take 42 (doc/user/simulation.md: Solvers).
 template <typename Matrix, typename Scalar>
 void invertDiagonalBlocks(const Matrix& A, std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverse) {
   const Index nodes = A.rows() / 3;

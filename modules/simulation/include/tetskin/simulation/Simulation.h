@@ -68,7 +68,7 @@ struct SimulationOptions {
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
   // step); the solve stays exact to `tolerance` either way. Rebuilt every
   // fourth step they cost 0-0.8 more iterations per step than rebuilt
-  // every step, and the steps were 1.3-1.9x as fast (README, Simulation).
+  // every step, and the steps were 1.3-1.9x as fast (doc/user/simulation.md).
   int coarseReuse = 4;
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
