@@ -11,6 +11,7 @@
 #include "Commands.h"
 #include "OptionChecks.h"
 #include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
@@ -69,7 +70,7 @@ void convertDataset(const ConvertOptions& o) {
   vtkSmartPointer<vtkUnstructuredGrid> grid =
       toVtkUnstructuredGrid(extractLevel(dataset.mesh, level));
   auto levelArray = vtkSmartPointer<vtkIntArray>::New();
-  levelArray->SetName("Level");
+  levelArray->SetName(arrays::kLevel);
   levelArray->SetNumberOfValues(grid->GetNumberOfCells());
   levelArray->FillValue(level);
   grid->GetCellData()->AddArray(levelArray);

@@ -16,6 +16,7 @@
 
 #include "Commands.h"
 #include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -244,8 +245,8 @@ void printTetMesh(const std::filesystem::path& path) {
   // A simulated frame's forces in all (the array ranges above give their
   // largest per node): what pushes the body, what holds it.
   std::string forces;
-  for (const auto& [name, label] :
-       {std::pair{"ExternalForce", "external"}, std::pair{"ReactionForce", "reaction"}}) {
+  for (const auto& [name, label] : {std::pair{arrays::kExternalForce, "external"},
+                                    std::pair{arrays::kReactionForce, "reaction"}}) {
     const std::optional<Points3> perNode = fromVtkVectors(grid->GetPointData()->GetArray(name));
     if (!perNode) continue;
     forces += std::string(forces.empty() ? "" : ", ") + label + " " +

@@ -20,6 +20,7 @@
 #include <cstdio>
 
 #include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/simulation/Prolongation.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -33,11 +34,11 @@ namespace {
 const char* arrayName(ColorBy c) {
   switch (c) {
     case ColorBy::MinBarycentric:
-      return "MinBarycentric";
+      return arrays::kMinBarycentric;
     case ColorBy::Distance:
-      return "Distance";
+      return arrays::kDistance;
     case ColorBy::FaceId:
-      return "FaceId";
+      return arrays::kFaceId;
     case ColorBy::Material:
       break;
   }

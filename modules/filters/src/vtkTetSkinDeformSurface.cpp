@@ -18,6 +18,7 @@
 #include <exception>
 #include <optional>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -44,7 +45,7 @@ tetskin::Points3 restPositions(vtkPointSet* control, vtkPointSet* rest,
                       std::to_string(deformed.rows()));
     return points;
   }
-  vtkDataArray* d = control->GetPointData()->GetArray("Displacement");
+  vtkDataArray* d = control->GetPointData()->GetArray(tetskin::arrays::kDisplacement);
   if (!d)
     throw Error(kControl, 0,
                 "the displacement offset needs the control mesh at rest: connect it to input 2, "
@@ -194,7 +195,7 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
     makeWritable(kept.positions, n);
     makeWritable(kept.normals, n);
     kept.deformer->deform(deformed, vectorRows(kept.positions), vectorRows(kept.normals));
-    kept.normals->SetName("Normals");
+    kept.normals->SetName(tetskin::arrays::kNormals);
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetData(kept.positions);
     out->SetPoints(points);

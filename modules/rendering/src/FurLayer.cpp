@@ -12,6 +12,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/fur/FurGeometry.h"
 #include "tetskin/fur/FurTexture.h"
@@ -34,7 +35,7 @@ vtkSmartPointer<vtkPolyData> furPolyData(const FurMesh& mesh, const SurfaceMesh&
     points->SetPoint(i, rest.positions.row(mesh.source[static_cast<std::size_t>(i)]).data());
   poly->SetPoints(points);
   auto normals = vtkSmartPointer<vtkDoubleArray>::New();
-  normals->SetName("Normals");
+  normals->SetName(arrays::kNormals);
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(n);
   normals->Fill(0);

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/shaders/Shaders.h"
 
 vtkStandardNewMacro(vtkTetSkinGpuDeformMapper)
@@ -19,9 +20,9 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
     : vtkTetSkinBufferMapper(tetskin::shaders::kGpuDeformDeclarationsVs,
                              tetskin::shaders::kGpuDeformImplVs, "tetskinControlPositions",
                              kControlNormalsSampler) {
-  this->MapDataArrayToVertexAttribute("tetskinControlIds", "ControlIds",
+  this->MapDataArrayToVertexAttribute("tetskinControlIds", tetskin::arrays::kControlIds,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinWeights", "Weights",
+  this->MapDataArrayToVertexAttribute("tetskinWeights", tetskin::arrays::kWeights,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   this->MapDataArrayToVertexAttribute("tetskinShift", kShiftArray,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
@@ -32,7 +33,7 @@ void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
   if (embed) {
     this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
                         tetskin::shaders::kGpuDeformEmbedImplVs, kNormalTransformsSampler);
-    this->MapDataArrayToVertexAttribute("tetskinRestNormal", "Normals",
+    this->MapDataArrayToVertexAttribute("tetskinRestNormal", tetskin::arrays::kNormals,
                                         vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   } else {
     this->SetShaderCode(tetskin::shaders::kGpuDeformDeclarationsVs,

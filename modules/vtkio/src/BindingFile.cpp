@@ -10,6 +10,7 @@
 
 #include <utility>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -59,7 +60,7 @@ vtkDataArray* pointArray(vtkPolyData* data, const char* name, int components,
 // `points`, the points of `data` (marked deformed), less its Displacement array.
 Points3 lessDisplacement(vtkPolyData* data, Points3 points, const std::string& source) {
   const std::optional<Points3> displacement =
-      fromVtkVectors(data->GetPointData()->GetArray("Displacement"));
+      fromVtkVectors(data->GetPointData()->GetArray(arrays::kDisplacement));
   if (!displacement || displacement->rows() != points.rows())
     throw Error(source, 0,
                 "is a deformed surface (field data Pose 'deformed') without its rest shape: "
@@ -73,23 +74,23 @@ Points3 lessDisplacement(vtkPolyData* data, Points3 points, const std::string& s
 void addBindingArrays(vtkPolyData* data, const SurfaceBinding& b) {
   const int k = b.controlsPerVertex();
   vtkPointData* pd = data->GetPointData();
-  pd->AddArray(columns<vtkIntArray>("ControlIds", b.controlIds, k));
-  pd->AddArray(columns<vtkDoubleArray>("Weights", b.weights, k));
-  pd->AddArray(columns<vtkDoubleArray>("Distance", b.distance, 1));
-  pd->AddArray(columns<vtkDoubleArray>("MinBarycentric", b.minBarycentric, 1));
-  pd->AddArray(columns<vtkIntArray>("FaceId", b.faceId, 1));
+  pd->AddArray(columns<vtkIntArray>(arrays::kControlIds, b.controlIds, k));
+  pd->AddArray(columns<vtkDoubleArray>(arrays::kWeights, b.weights, k));
+  pd->AddArray(columns<vtkDoubleArray>(arrays::kDistance, b.distance, 1));
+  pd->AddArray(columns<vtkDoubleArray>(arrays::kMinBarycentric, b.minBarycentric, 1));
+  pd->AddArray(columns<vtkIntArray>(arrays::kFaceId, b.faceId, 1));
   vtkFieldData* fd = data->GetFieldData();
   addString(fd, "Method", toString(b.method));
   addString(fd, "Offset", toString(b.offset));
   auto level = vtkSmartPointer<vtkIntArray>::New();
-  level->SetName("Level");
+  level->SetName(arrays::kLevel);
   level->InsertNextValue(b.level);
   fd->AddArray(level);
   addString(fd, "Pose", "rest");
 }
 
 void markDeformed(vtkPolyData* data, vtkDoubleArray* displacement) {
-  displacement->SetName("Displacement");
+  displacement->SetName(arrays::kDisplacement);
   data->GetPointData()->AddArray(displacement);
   addString(data->GetFieldData(), "Pose", "deformed");
 }
@@ -124,8 +125,8 @@ vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
   vtkSmartPointer<vtkPolyData> data = toVtkPolyData(shownSurface(bound));
   addBindingArrays(data, bound.binding);
   if (bound.deformed)
-    markDeformed(data,
-                 toVtkVectors("Displacement", bound.deformed->positions - bound.surface.positions));
+    markDeformed(data, toVtkVectors(arrays::kDisplacement,
+                                    bound.deformed->positions - bound.surface.positions));
   addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;
 }
@@ -133,7 +134,7 @@ vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
 bool isBinding(vtkPolyData* data) {
   vtkFieldData* fd = data ? data->GetFieldData() : nullptr;
   return fd && fd->GetAbstractArray("Dataset") && fd->GetAbstractArray("Method") &&
-         fd->GetAbstractArray("Level");
+         fd->GetAbstractArray(arrays::kLevel);
 }
 
 SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& source) {
@@ -145,18 +146,18 @@ SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& s
   if (!method || !offset) throw Error(source, 0, "unknown binding method or offset mode");
   b.method = *method;
   b.offset = *offset;
-  auto* level = vtkIntArray::SafeDownCast(fd->GetArray("Level"));
+  auto* level = vtkIntArray::SafeDownCast(fd->GetArray(arrays::kLevel));
   if (!level || level->GetNumberOfValues() < 1)
     throw Error(source, 0, "field data 'Level' is missing");
   b.level = level->GetValue(0);
   const Index n = data->GetNumberOfPoints();
   b.resize(n);
   const int k = b.controlsPerVertex();
-  vtkDataArray* ids = pointArray(data, "ControlIds", k, source);
-  vtkDataArray* weights = pointArray(data, "Weights", k, source);
-  vtkDataArray* distance = pointArray(data, "Distance", 1, source);
-  vtkDataArray* minBary = pointArray(data, "MinBarycentric", 1, source);
-  vtkDataArray* face = pointArray(data, "FaceId", 1, source);
+  vtkDataArray* ids = pointArray(data, arrays::kControlIds, k, source);
+  vtkDataArray* weights = pointArray(data, arrays::kWeights, k, source);
+  vtkDataArray* distance = pointArray(data, arrays::kDistance, 1, source);
+  vtkDataArray* minBary = pointArray(data, arrays::kMinBarycentric, 1, source);
+  vtkDataArray* face = pointArray(data, arrays::kFaceId, 1, source);
   for (Index v = 0; v < n; ++v) {
     for (int c = 0; c < k; ++c) {
       b.controlIds(v, c) = static_cast<int>(ids->GetComponent(v, c));

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <utility>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/vtkio/VtkConversion.h"
@@ -47,13 +48,14 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
               "elements");
   TetMesh deformed{fields.positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
-  grid->GetPointData()->AddArray(toVtkVectors("Displacement", fields.positions - rest.nodes));
-  grid->GetPointData()->AddArray(toVtkVectors("Velocity", fields.velocities));
-  grid->GetPointData()->AddArray(toVtkVectors("ExternalForce", fields.externalForces));
-  grid->GetPointData()->AddArray(toVtkVectors("ReactionForce", fields.reactionForces));
+  grid->GetPointData()->AddArray(
+      toVtkVectors(arrays::kDisplacement, fields.positions - rest.nodes));
+  grid->GetPointData()->AddArray(toVtkVectors(arrays::kVelocity, fields.velocities));
+  grid->GetPointData()->AddArray(toVtkVectors(arrays::kExternalForce, fields.externalForces));
+  grid->GetPointData()->AddArray(toVtkVectors(arrays::kReactionForce, fields.reactionForces));
   // 0/1 per node rather than a list: ParaView thresholds or colours by it.
   auto prescribed = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  prescribed->SetName("Prescribed");
+  prescribed->SetName(arrays::kPrescribed);
   prescribed->SetNumberOfValues(rest.nodeCount());
   prescribed->FillValue(0);
   for (int node : conditions.prescribedNodes) {
@@ -64,11 +66,11 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   }
   grid->GetPointData()->AddArray(prescribed);
   auto stress = vtkSmartPointer<vtkDoubleArray>::New();
-  stress->SetName("VonMisesStress");
+  stress->SetName(arrays::kVonMisesStress);
   auto ratio = vtkSmartPointer<vtkDoubleArray>::New();
   ratio->SetName("VolumeRatio");
   auto levels = vtkSmartPointer<vtkIntArray>::New();
-  levels->SetName("Level");
+  levels->SetName(arrays::kLevel);
   stress->SetNumberOfValues(rest.elementCount());
   ratio->SetNumberOfValues(rest.elementCount());
   levels->SetNumberOfValues(rest.elementCount());
@@ -107,8 +109,8 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
     if (frame.elements.row(e) != rest.elements.row(e))
       throw Error(source, 0,
                   "tetrahedron " + std::to_string(e) + " has other nodes than in " + restName);
-  const Points3 displacement = pointVectors(grid, "Displacement", source);
-  FrameState state{frame.nodes, pointVectors(grid, "Velocity", source)};
+  const Points3 displacement = pointVectors(grid, arrays::kDisplacement, source);
+  FrameState state{frame.nodes, pointVectors(grid, arrays::kVelocity, source)};
   // The frame's rest shape must be this one: the displacement was taken
   // from it, so within rounding of the largest coordinate.
   const Points3 frameRest = frame.nodes - displacement;
@@ -126,7 +128,7 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
 SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {
   vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
   SimulationFrameFacts facts;
-  vtkDataArray* levels = grid->GetCellData()->GetArray("Level");
+  vtkDataArray* levels = grid->GetCellData()->GetArray(arrays::kLevel);
   if (levels && levels->GetNumberOfTuples() > 0 && levels->GetNumberOfComponents() == 1)
     facts.level = static_cast<int>(levels->GetTuple1(0));
   vtkDataArray* normal = grid->GetFieldData()->GetArray("FloorNormal");
@@ -140,7 +142,7 @@ SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {
       if (Eigen::Vector3d(n[0], n[1], n[2]) == upVector(up))
         facts.conditions.floor = FloorPlane{up, height->GetTuple1(0)};
   }
-  vtkDataArray* prescribed = grid->GetPointData()->GetArray("Prescribed");
+  vtkDataArray* prescribed = grid->GetPointData()->GetArray(arrays::kPrescribed);
   if (prescribed && prescribed->GetNumberOfComponents() == 1 &&
       prescribed->GetNumberOfTuples() == grid->GetNumberOfPoints())
     for (vtkIdType v = 0; v < prescribed->GetNumberOfTuples(); ++v)

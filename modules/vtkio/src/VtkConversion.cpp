@@ -14,6 +14,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 
@@ -88,7 +89,8 @@ vtkSmartPointer<vtkPolyData> toVtkPolyData(const SurfaceMesh& mesh) {
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(toVtkPoints(mesh.positions));
   out->SetPolys(toCells<3>(mesh.triangles));
-  if (mesh.hasNormals()) out->GetPointData()->SetNormals(toVtkVectors("Normals", mesh.normals));
+  if (mesh.hasNormals())
+    out->GetPointData()->SetNormals(toVtkVectors(arrays::kNormals, mesh.normals));
   if (mesh.hasTexcoords()) {
     auto tcoords = vtkSmartPointer<vtkDoubleArray>::New();
     tcoords->SetName("TCoords");

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The names of the arrays TetSkin's files carry (PRODUCT.md, Files), in one
+// place: the writers, the readers, the VTK filters, the mappers and the
+// front ends all name them through these, so none can drift from another.
+// ParaView users, scripts and tests read them as they are here.
+
+namespace tetskin::arrays {
+
+// Control-mesh frames (.vtu of simulate, the GUI's Record and Export).
+inline constexpr const char* kDisplacement = "Displacement";      // point vectors: position - rest
+inline constexpr const char* kVelocity = "Velocity";              // point vectors
+inline constexpr const char* kExternalForce = "ExternalForce";    // point vectors, N
+inline constexpr const char* kReactionForce = "ReactionForce";    // point vectors, N
+inline constexpr const char* kPrescribed = "Prescribed";          // point 0/1: held or driven
+inline constexpr const char* kVonMisesStress = "VonMisesStress";  // cell scalars, Pa
+inline constexpr const char* kLevel = "Level";  // cell data of a level, field data of a binding
+
+// Bindings (.vtp of bind): per surface vertex.
+inline constexpr const char* kControlIds = "ControlIds";  // 3 (or 4: embed) node ids
+inline constexpr const char* kWeights = "Weights";        // barycentric weights, sum 1
+inline constexpr const char* kDistance = "Distance";
+inline constexpr const char* kMinBarycentric = "MinBarycentric";
+inline constexpr const char* kFaceId = "FaceId";
+
+// Surfaces: the active point normals.
+inline constexpr const char* kNormals = "Normals";
+
+}  // namespace tetskin::arrays
