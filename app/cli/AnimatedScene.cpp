@@ -67,20 +67,20 @@ void AnimatedScene::frame(const BoundingBox& box) {
 }
 
 void AnimatedScene::startSimulation() {
-  const TetMesh rest = extractLevel(dataset_.mesh, level_);
-  SimulationOptions options = uprightAlong(up_, {});
-  options.material = material_;
-  options.timeStep = timeStep_;
-  simulation_ = std::make_unique<Simulation>(
-      dataset_.mesh, level_,
-      scenarioOptions(scenarioArgs_.name, withGravityAndFloor(options, scenarioArgs_), rest),
-      datasetName_);
-  scenario_ = makeScenario(scenarioArgs_.name, scenarioArgs_.parameters);
-  scenario_->setUp(*simulation_);
-  surface_->setFrameSeconds(simulation_->options().timeStep);
-  if (const auto floor = simulation_->options().floor()) showFloor(*floor);
+  RunSpec spec;
+  spec.level = level_;
+  spec.options = uprightAlong(up_, {});
+  spec.options.material = material_;
+  spec.options.timeStep = timeStep_;
+  spec.options = withGravityAndFloor(spec.options, scenarioArgs_);
+  spec.scenario = scenarioArgs_.name;
+  spec.parameters = scenarioArgs_.parameters;
+  spec.datasetName = datasetName_;
+  session_ = std::make_unique<SimulationSession>(dataset_.mesh, spec);
+  surface_->setFrameSeconds(session_->options().timeStep);
+  if (const auto floor = session_->options().floor()) showFloor(*floor);
   // The scenario's start may leave the rest shape's box (drop lifts it).
-  frame(boundingBox(simulation_->state().positions));
+  frame(boundingBox(session_->state().positions));
 }
 
 void AnimatedScene::showFloor(const FloorPlane& floor) {
@@ -116,15 +116,14 @@ void AnimatedScene::draw(const Points3& positions, double seconds) {
 FrameStats AnimatedScene::run(int frames, const std::function<void()>& afterDraw) {
   FrameStats s;
   s.frames = frames;
-  if (frames > 0 && !simulation_) startSimulation();
+  if (frames > 0 && !session_) startSimulation();
   double outside = 0;  // seconds in afterDraw
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
-    scenario_->beforeStep(*simulation_, simulation_->time());
-    simulation_->step();
+    session_->step();
     s.simulation += since(t);
-    const FrameTimes times = follow(simulation_->state().positions);
+    const FrameTimes times = follow(session_->state().positions);
     s.deformation += times.deformSeconds;
     s.upload += times.uploadSeconds;
     t = std::chrono::steady_clock::now();

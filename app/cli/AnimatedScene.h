@@ -20,6 +20,7 @@
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/FloorActor.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 
 namespace tetskin::cli {
@@ -94,9 +95,8 @@ class AnimatedScene {
   std::string datasetName_;
   UpAxis up_ = UpAxis::Y;
   CameraPreset camera_ = CameraPreset::Iso;
-  BoundingBox restBox_;                     // of the control level at rest
-  std::unique_ptr<Simulation> simulation_;  // from the first frames run on
-  std::unique_ptr<Scenario> scenario_;
+  BoundingBox restBox_;                         // of the control level at rest
+  std::unique_ptr<SimulationSession> session_;  // from the first frames run on
   Points3 nodes_;
 
   void startSimulation();

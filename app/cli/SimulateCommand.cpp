@@ -18,10 +18,10 @@
 #include "ScenarioOptions.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
-#include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/StepLogFile.h"
+#include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RunRecorder.h"
@@ -41,8 +41,8 @@ struct SimulateArgs {
   bool quiet = false;
 };
 
-void run(SimulateArgs& a, const CLI::App& cmd) {
-  // (Checked before any work, as a typo would be.)
+// (Checked before any work, as a typo would be.)
+void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)
     for (const char* option : {"--coarse-reuse", "--coarse-operators"})
       if (cmd.count(option) > 0)
@@ -52,132 +52,55 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});
     requireWritableLocation(a.log);  // before the run, not after it
   }
-  const Dataset dataset = loadDataset(a.dataset);
-  // A binding from `tetskin bind` follows as it is, on its level.
-  std::optional<SurfaceInput> input;
-  if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
-  const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
-                          : resolveLevel(dataset.mesh, a.level);
-  a.options.solver = solverKindFromString(a.solver);
-  a.options.tangent = tangentFromString(a.tangent);
-  a.options.coarseOperators =
-      a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
-  a.options.material = materialOf(a.material, dataset.config.elasticity);
-  a.options = uprightAlong(upAxisOf(a.scenario, dataset.config), a.options);
-  const TetMesh rest = extractLevel(dataset.mesh, level);
-  const SimulationOptions options =
-      scenarioOptions(a.scenario.name, withGravityAndFloor(a.options, a.scenario), rest);
-  const ScenarioParameters parameters = scenarioParameters(cmd, a.scenario, rest.nodes);
-  std::unique_ptr<Scenario> scenario = makeScenario(a.scenario.name, parameters);
-  Simulation sim(dataset.mesh, level, options, a.dataset.string());
-  scenario->setUp(sim);
   if (!a.initial.empty()) {
-    // The frame replaces the scenario's start (drop's lift too); its folder
-    // is not the one this run writes, where frame 0 would overwrite it.
+    // The frame replaces the scenario's start; its folder is not the one
+    // this run writes, where frame 0 would overwrite it.
     std::error_code error;
     if (std::filesystem::equivalent(a.initial.parent_path().empty() ? "." : a.initial.parent_path(),
                                     RunRecorder::framesDirectory(a.output), error))
       throw Error(a.initial.string(), 0,
                   "is among the frames this run writes (-o " + a.output.string() +
                       "): write the new run to another name");
-    const FrameState start = readSimulationFrame(
-        a.initial, rest, "level " + std::to_string(level) + " of " + a.dataset.string());
-    sim.setPositions(start.positions);
-    sim.setVelocities(start.velocities);
   }
-  if (const std::string warning = nodesBelowFloor(sim); !warning.empty())
-    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+}
 
-  // The bound surface, if any, follows every frame.
-  std::unique_ptr<BoundSurface> bound;
-  std::unique_ptr<SurfaceDeformer> deformer;
-  if (input) {
-    bound = std::make_unique<BoundSurface>();
-    bound->binding = bindingAt(*input, dataset.mesh, level);
-    bound->surface = std::move(input->surface);
-    bound->dataset = a.dataset.generic_string();
-    bound->deformed.emplace();  // (frame 0 too: the scenario's start, not always the rest)
-    deformer =
-        std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset.mesh.nodes);
-  }
+// The run the options describe, on `level` of `dataset`.
+RunSpec runSpec(SimulateArgs& a, const CLI::App& cmd, const Dataset& dataset, int level) {
+  SimulationOptions options = a.options;
+  options.solver = solverKindFromString(a.solver);
+  options.tangent = tangentFromString(a.tangent);
+  options.coarseOperators =
+      a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
+  options.material = materialOf(a.material, dataset.config.elasticity);
+  options =
+      withGravityAndFloor(uprightAlong(upAxisOf(a.scenario, dataset.config), options), a.scenario);
+  RunSpec spec;
+  spec.level = level;
+  spec.options = options;
+  spec.scenario = a.scenario.name;
+  spec.parameters = scenarioParameters(cmd, a.scenario, extractLevel(dataset.mesh, level).nodes);
+  spec.datasetName = a.dataset.string();
+  return spec;
+}
 
-  RunRecorder recorder(a.output, sim.conditions());
-  const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
-  Points3 controlAll = dataset.mesh.nodes;
-
-  auto writeFrame = [&] {
-    const SimulationState s = sim.state();
-    if (deformer) {
-      controlAll.middleRows(range.firstNode, range.nodeCount) = s.positions;
-      deformer->deform(controlAll, bound->deformed->positions, bound->deformed->normals);
-    }
-    recorder.addFrame(s.time, sim.restMesh(), sim.frameFields(s), level,
-                      deformer ? bound.get() : nullptr);
-  };
-
-  // --log: the start and every step, written at the end (and by a run cut
-  // short, with the steps before it).
-  std::vector<StepLogRow> log;
-  auto logRow = [&](Index step, const StepStats* stats, double seconds) {
-    if (a.log.empty()) return;
-    StepLogRow row;
-    row.step = step;
-    row.time = sim.time();
-    if (stats) {
-      row.solver = toString(stats->solver);
-      row.iterations = stats->iterations;
-      row.residual = stats->residual;
-      row.contacts = stats->contacts;
-      row.assemblySeconds = stats->assemblySeconds;
-      row.setupSeconds = stats->setupSeconds;
-      row.solveSeconds = stats->solveSeconds;
-      row.stepSeconds = seconds;
-    }
-    const Energies e = sim.energies();
-    row.kinetic = e.kinetic;
-    row.elastic = e.elastic;
-    row.gravitational = e.gravitational;
-    row.reaction = sim.supportReaction(sim.state());
-    log.push_back(row);
-  };
-
-  Progress progress(a.quiet);
-  writeFrame();
-  logRow(0, nullptr, 0);
+struct RunTotals {
   double stepSeconds = 0;
   long iterations = 0, multigridSteps = 0;
-  for (int i = 0; i < a.steps; ++i) {
-    scenario->beforeStep(sim, sim.time());
-    const auto start = std::chrono::steady_clock::now();
-    StepStats stats;
-    try {
-      stats = sim.step();
-    } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
-      std::string kept = std::string(e.what()) + "; " + recorder.path().string() + " keeps the " +
-                         std::to_string(recorder.frames()) + " frame(s) written before it";
-      if (!a.log.empty()) {
-        writeStepLog(a.log, log);
-        kept += ", " + a.log.string() + " the " + std::to_string(i) + " step(s)";
-      }
-      throw Error(kept);
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stepSeconds += seconds;
-    logRow(i + 1, &stats, seconds);
-    iterations += stats.iterations;
-    multigridSteps += stats.solver == SolverKind::Multigrid;
-    // Every k-th step, and the last one: a run ends with its end state written.
-    if ((i + 1) % a.every == 0 || i + 1 == a.steps) writeFrame();
-    progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
-  }
+};
+
+// What the run was and how it ended, on stdout.
+void report(const SimulateArgs& a, const SimulationSession& session, const RunSpec& spec,
+            const RunTotals& totals) {
+  const Simulation& sim = session.simulation();
+  const SimulationOptions& options = session.options();
+  const ScenarioParameters& parameters = spec.parameters;
   const Energies e = sim.energies();
   std::printf(
       "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s, "
       "%s tangent\n",
-      a.steps, options.timeStep, level, static_cast<long long>(sim.restMesh().elementCount()),
-      scenario->name(), toString(options.solver),
-      options.solver != SolverKind::ConjugateGradient ? ", " : "",
+      a.steps, options.timeStep, session.level(),
+      static_cast<long long>(sim.restMesh().elementCount()), session.scenario().name(),
+      toString(options.solver), options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "",
       toString(options.tangent));
   if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
@@ -212,7 +135,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   std::printf("\n");
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
-                a.steps / std::max(stepSeconds, 1e-12), static_cast<double>(iterations) / a.steps);
+                a.steps / std::max(totals.stepSeconds, 1e-12),
+                static_cast<double>(totals.iterations) / a.steps);
   if (options.solver == SolverKind::Automatic && a.steps > 0) {
     // Before the first round of trials ends, neither solver has been found faster.
     const SolverChoice& choice = *sim.solverChoice();
@@ -222,8 +146,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
                                 ? "fewer solves short of the tolerance in the last round: "
                                 : "faster in the last round: ") +
                 toString(choice.preferred());
-    std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n", multigridSteps,
-                a.steps, verdict.c_str());
+    std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n",
+                totals.multigridSteps, a.steps, verdict.c_str());
   }
   std::printf(
       "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",
@@ -231,16 +155,67 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   if (!sim.fixedNodes().empty())
     std::printf("  supports: reaction %s N in all at the end, on the %zu fixed nodes\n",
                 commaSeparated(sim.supportReaction(sim.state())).c_str(), sim.fixedNodes().size());
+  const RunRecorder& recorder = *session.recorder();
   std::printf("wrote %s (%lld frame%s)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), recorder.frames() == 1 ? "" : "s");
-  if (!a.log.empty()) {
-    writeStepLog(a.log, log);
+  if (!a.log.empty())
     std::printf("wrote %s (%d step%s and the start)\n", a.log.c_str(), a.steps,
                 a.steps == 1 ? "" : "s");
-  }
   if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
     std::fprintf(stderr, "warning: %s\n",
                  describe(shortfall, options, "--solver multigrid").c_str());
+}
+
+void run(SimulateArgs& a, const CLI::App& cmd) {
+  checkOptions(a, cmd);
+  const Dataset dataset = loadDataset(a.dataset);
+  // A binding from `tetskin bind` follows as it is, on its level.
+  std::optional<SurfaceInput> input;
+  if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
+  const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
+                          : resolveLevel(dataset.mesh, a.level);
+  const RunSpec spec = runSpec(a, cmd, dataset, level);
+  SimulationSession session(dataset.mesh, spec);
+  if (!a.initial.empty()) session.startFromFrame(a.initial);  // (drop's lift too)
+  if (const std::string warning = nodesBelowFloor(session.simulation()); !warning.empty())
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  // The bound surface, if any, follows every frame (frame 0 too: the
+  // scenario's start, not always the rest).
+  if (input) {
+    SurfaceBinding binding = bindingAt(*input, dataset.mesh, level);
+    session.bindSurface(std::move(input->surface), std::move(binding), a.dataset.generic_string());
+  }
+  session.record(a.output);
+  // --log: the start and every step, written at the end (and by a run cut
+  // short, with the steps before it).
+  if (!a.log.empty()) session.keepStepLog();
+
+  Progress progress(a.quiet);
+  session.recordFrame();
+  RunTotals totals;
+  for (int i = 0; i < a.steps; ++i) {
+    StepStats stats;
+    try {
+      stats = session.step();
+    } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
+      std::string kept = std::string(e.what()) + "; " + session.recorder()->path().string() +
+                         " keeps the " + std::to_string(session.recorder()->frames()) +
+                         " frame(s) written before it";
+      if (!a.log.empty()) {
+        writeStepLog(a.log, session.stepLog());
+        kept += ", " + a.log.string() + " the " + std::to_string(i) + " step(s)";
+      }
+      throw Error(kept);
+    }
+    totals.stepSeconds += session.lastStepSeconds();
+    totals.iterations += stats.iterations;
+    totals.multigridSteps += stats.solver == SolverKind::Multigrid;
+    // Every k-th step, and the last one: a run ends with its end state written.
+    if ((i + 1) % a.every == 0 || i + 1 == a.steps) session.recordFrame();
+    progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
+  }
+  if (!a.log.empty()) writeStepLog(a.log, session.stepLog());
+  report(a, session, spec, totals);
 }
 
 }  // namespace

@@ -640,10 +640,13 @@ void MainWindow::resetSimulation() {
   options.tolerance = tolerance_->currentText().toDouble();
   options.tangent = tangentFromString(tangent_->currentText().toStdString());
   try {
-    const ScenarioParameters parameters = scenarioRows_->parameters(restNodes);
-    runner_ = std::make_unique<SimulationRunner>(mesh, scene_->level(), options,
-                                                 scenarioRows_->scenario(),
-                                                 scene_->datasetPath().string(), parameters);
+    RunSpec spec;
+    spec.level = scene_->level();
+    spec.options = options;
+    spec.scenario = scenarioRows_->scenario();
+    spec.parameters = scenarioRows_->parameters(restNodes);
+    spec.datasetName = scene_->datasetPath().string();
+    runner_ = std::make_unique<SimulationRunner>(mesh, spec);
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return;
@@ -677,8 +680,7 @@ bool MainWindow::startFromFrame(const QString& qpath) {
   }
   resetSimulation();
   if (!runner_) return false;  // the dock's settings were refused (reported)
-  runner_->simulation().setPositions(start.positions);
-  runner_->simulation().setVelocities(start.velocities);
+  runner_->session().startFrom(start);
   lastError_.clear();
   rememberRecent(QFileInfo(qpath).absoluteFilePath());
   energyPlot_->clear();  // (its start was the scenario's, before the frame's state)
@@ -800,12 +802,11 @@ void MainWindow::showLatestState() {
   lastTimes_ = scene_->showControlState(state.positions);
   shownSteps_ = state.steps;
   plotEnergy(state);
-  if (recorder_) {
+  if (runner_->session().recording()) {
     try {
-      Simulation& sim = runner_->simulation();
+      // The surface as the render path drew it.
       const BoundSurface surface = scene_->deformedBoundSurface();
-      recorder_->addFrame(state.time, sim.restMesh(), sim.frameFields(state), scene_->level(),
-                          &surface);
+      runner_->session().recordFrame(state, &surface);
     } catch (const std::exception& e) {
       stopRecording();
       fail(QString::fromStdString(e.what()));
@@ -1104,8 +1105,7 @@ bool MainWindow::startRecording(const QString& pvd) {
     return false;
   }
   try {
-    recorder_ =
-        std::make_unique<RunRecorder>(pvd.toStdString(), runner_->simulation().conditions());
+    runner_->session().record(pvd.toStdString());
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;
@@ -1116,12 +1116,18 @@ bool MainWindow::startRecording(const QString& pvd) {
   return true;
 }
 
+Index MainWindow::recordedFrames() const {
+  if (!runner_ || !runner_->session().recorder()) return 0;
+  return runner_->session().recorder()->frames();
+}
+
 void MainWindow::stopRecording() {
-  if (!recorder_) return;
+  if (!runner_ || !runner_->session().recording()) return;
+  const RunRecorder& recorder = *runner_->session().recorder();
   statusBar()->showMessage(QString("recorded %1 frames to %2")
-                               .arg(recorder_->frames())
-                               .arg(QString::fromStdString(recorder_->path().string())));
-  recorder_.reset();
+                               .arg(recorder.frames())
+                               .arg(QString::fromStdString(recorder.path().string())));
+  runner_->session().stopRecording();
   const QSignalBlocker block(record_);
   record_->setChecked(false);
 }

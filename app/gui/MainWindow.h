@@ -72,7 +72,7 @@ class MainWindow : public QMainWindow {
   bool exportFrame(const QString& path);
   bool startRecording(const QString& pvd);
   void stopRecording();
-  Index recordedFrames() const { return recorder_ ? recorder_->frames() : 0; }
+  Index recordedFrames() const;
   // Click (pick) and pull, in VTK display coordinates.
   std::optional<Index> clickAt(int x, int y);
   QString vertexInfoText() const;
@@ -145,7 +145,6 @@ class MainWindow : public QMainWindow {
   vtkSmartPointer<vtkRenderer> renderer_;
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<SimulationRunner> runner_;
-  std::unique_ptr<RunRecorder> recorder_;
   BuildDialog* buildDialog_ = nullptr;
   QString lastError_;
   QTimer* timer_;

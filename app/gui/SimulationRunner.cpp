@@ -6,16 +6,9 @@
 
 namespace tetskin::gui {
 
-SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, int level,
-                                   const SimulationOptions& options, const std::string& scenario,
-                                   const std::string& datasetName,
-                                   const ScenarioParameters& parameters) {
-  const TetMesh rest = extractLevel(dataset, level);
-  simulation_ = std::make_unique<Simulation>(dataset, level,
-                                             scenarioOptions(scenario, options, rest), datasetName);
-  scenario_ = makeScenario(scenario, parameters);
-  scenario_->setUp(*simulation_);
-  pull_ = Points3::Zero(rest.nodes.rows(), 3);
+SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec)
+    : session_(dataset, spec) {
+  pull_ = Points3::Zero(session_.simulation().restMesh().nodeCount(), 3);
   thread_ = std::thread([this] { loop(); });
 }
 
@@ -39,7 +32,7 @@ void SimulationRunner::step() {
 }
 
 Index SimulationRunner::steps() const {
-  return simulation_->steps();
+  return session_.simulation().steps();
 }
 
 void SimulationRunner::pull(const std::vector<int>& nodes, const Points3& forces) {
@@ -56,23 +49,21 @@ void SimulationRunner::release() {
 
 void SimulationRunner::stepOnce() {
   std::lock_guard<std::mutex> lock(stepMutex_);
-  const auto start = std::chrono::steady_clock::now();
   try {
     // The scenario's forces (set anew each step) plus the user's pull.
-    scenario_->beforeStep(*simulation_, simulation_->time());
+    Points3 pull;
     {
       std::lock_guard<std::mutex> pullLock(pullMutex_);
-      simulation_->setExternalForces(simulation_->externalForces() + pull_);
+      pull = pull_;
     }
-    simulation_->step();
+    session_.step(&pull);
   } catch (const std::exception& e) {
     playing_ = false;
     std::lock_guard<std::mutex> failureLock(failureMutex_);
     failure_ = e.what();
     return;
   }
-  lastStepSeconds_ =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  lastStepSeconds_ = session_.lastStepSeconds();
 }
 
 std::optional<std::string> SimulationRunner::takeFailure() {
@@ -82,7 +73,7 @@ std::optional<std::string> SimulationRunner::takeFailure() {
 
 void SimulationRunner::loop() {
   using Clock = std::chrono::steady_clock;
-  const auto dt = std::chrono::duration<double>(simulation_->options().timeStep);
+  const auto dt = std::chrono::duration<double>(session_.options().timeStep);
   auto next = Clock::now();
   while (!quit_) {
     if (!playing_) {

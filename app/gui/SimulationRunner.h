@@ -17,18 +17,15 @@
 #include <string>
 #include <thread>
 
-#include "tetskin/simulation/Scenario.h"
-#include "tetskin/simulation/Simulation.h"
+#include "tetskin/session/SimulationSession.h"
 
 namespace tetskin::gui {
 
 class SimulationRunner {
  public:
-  // Throws Error for an unknown scenario, bad options or a level the
-  // simulation refuses (named after `datasetName`).
-  SimulationRunner(const MultiLevelTetMesh& dataset, int level, const SimulationOptions& options,
-                   const std::string& scenario, const std::string& datasetName = "dataset",
-                   const ScenarioParameters& parameters = {});
+  // The run `spec` of `dataset` (SimulationSession). Throws Error for an
+  // unknown scenario, bad options or a level the simulation refuses.
+  SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec);
   ~SimulationRunner();
 
   void play();
@@ -37,8 +34,10 @@ class SimulationRunner {
   // One step now (waits for it); only while paused.
   void step();
   Index steps() const;
-  SimulationState state() const { return simulation_->state(); }
-  Simulation& simulation() { return *simulation_; }
+  SimulationState state() const { return session_.state(); }
+  Simulation& simulation() { return session_.simulation(); }
+  // The run (its recorder is the GUI thread's to use; steps are this one's).
+  SimulationSession& session() { return session_; }
   double lastStepSeconds() const { return lastStepSeconds_; }
   // Why the last failed step failed (once; nullopt when none failed since
   // the last call).
@@ -51,8 +50,7 @@ class SimulationRunner {
   void loop();
   void stepOnce();
 
-  std::unique_ptr<Simulation> simulation_;
-  std::unique_ptr<Scenario> scenario_;
+  SimulationSession session_;
   Points3 pull_;  // what the user pulls with now (guarded by pullMutex_)
   std::mutex pullMutex_;
   std::atomic<bool> playing_{false}, quit_{false};

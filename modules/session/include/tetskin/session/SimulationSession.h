@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// One simulation run, wired once for every front end: the simulation of a
+// dataset level, its scenario, the start (the scenario's or a recorded
+// frame's), a surface bound to the level that follows it, the recorder of a
+// ParaView time series and the step log. `tetskin simulate`, the animated
+// scenes of `render` and `bench`, and tetskin-gui's runner all run through
+// it, so what a step does cannot drift between them (issue #52).
+//
+// Not thread-safe by itself beyond what Simulation guards: the GUI steps it
+// on one thread and reads state() and records on another, as Simulation
+// allows (its state is taken under its mutex; the recorder and the step log
+// are touched by one thread each).
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/TetMesh.h"
+#include "tetskin/io/StepLogFile.h"
+#include "tetskin/simulation/Scenario.h"
+#include "tetskin/simulation/Simulation.h"
+#include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/RunRecorder.h"
+#include "tetskin/vtkio/SimulationFrame.h"
+
+namespace tetskin {
+
+class SurfaceDeformer;
+
+// What a run is, as a front end has parsed it.
+struct RunSpec {
+  int level = 0;  // a resolved level of the dataset
+  // The front end's options (up axis, gravity, floor, material, solver);
+  // the scenario adds its own (scenarioOptions()).
+  SimulationOptions options;
+  std::string scenario = "wobble";
+  ScenarioParameters parameters;
+  std::string datasetName = "dataset";  // names the dataset in errors
+};
+
+class SimulationSession {
+ public:
+  // The simulation of `spec.level` of `dataset` (kept by reference: it
+  // must outlive the session), set up by its scenario. Throws Error for an
+  // unknown scenario, options the simulation refuses, or a level it refuses.
+  SimulationSession(const MultiLevelTetMesh& dataset, const RunSpec& spec);
+  ~SimulationSession();
+  SimulationSession(const SimulationSession&) = delete;
+  SimulationSession& operator=(const SimulationSession&) = delete;
+
+  // Replaces the scenario's start (a drop's lift too) with `start`'s
+  // positions and velocities; time stays at 0.
+  void startFrom(const FrameState& start);
+  // The same from a frame file a run of this level wrote; throws Error
+  // naming the file when it is no frame of this level (readSimulationFrame).
+  void startFromFrame(const std::filesystem::path& frame);
+
+  // A surface bound to this run's level that follows every state it is
+  // asked for (deformedSurface(), recorded frames). `dataset` is the path
+  // the binding names (BoundSurface::dataset).
+  void bindSurface(SurfaceMesh surface, SurfaceBinding binding, std::string dataset);
+  bool hasSurface() const { return bound_ != nullptr; }
+  // The bound surface deformed to `positions` of the level's nodes.
+  const BoundSurface& deformedSurface(const Points3& positions);
+
+  // One step: the scenario's forces and targets for the step that starts
+  // now, `extraForces` (per level node, e.g. the GUI's pull) added, the
+  // implicit step; then a log row when the log is kept. Throws Error when
+  // the step fails (the simulation keeps its last good state).
+  StepStats step(const Points3* extraForces = nullptr);
+  // Wall-clock seconds of the last step (0 before the first).
+  double lastStepSeconds() const { return lastStepSeconds_; }
+
+  // The step log: a row for the start (when keeping begins) and one per
+  // step from then on.
+  void keepStepLog();
+  const std::vector<StepLogRow>& stepLog() const { return log_; }
+
+  // Records the run as a time series at `pvd` (RunRecorder) from the next
+  // recordFrame() on; replaces a recording in progress.
+  void record(const std::filesystem::path& pvd);
+  bool recording() const { return recorder_ != nullptr; }
+  // Ends the recording; the series stays as written.
+  void stopRecording() { recorder_.reset(); }
+  const RunRecorder* recorder() const { return recorder_.get(); }
+  // Adds `state` (by default the current one) to the recording, with the
+  // bound surface: `drawnSurface` if the front end has deformed it already
+  // (a render path), else the session's own deformation of it.
+  void recordFrame(const std::optional<SimulationState>& state = std::nullopt,
+                   const BoundSurface* drawnSurface = nullptr);
+
+  Simulation& simulation() { return *simulation_; }
+  const Simulation& simulation() const { return *simulation_; }
+  const Scenario& scenario() const { return *scenario_; }
+  // The options the run uses (the front end's, with the scenario's own).
+  const SimulationOptions& options() const { return simulation_->options(); }
+  int level() const { return level_; }
+  const std::string& datasetName() const { return datasetName_; }
+  // The state now (taken under the simulation's mutex).
+  SimulationState state() const { return simulation_->state(); }
+
+ private:
+  const MultiLevelTetMesh& dataset_;
+  int level_;
+  std::string datasetName_;
+  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<Scenario> scenario_;
+  std::unique_ptr<BoundSurface> bound_;
+  std::unique_ptr<SurfaceDeformer> deformer_;
+  Points3 allNodes_;  // the dataset's nodes with the level's moved (the deformer's input)
+  std::unique_ptr<RunRecorder> recorder_;
+  bool keepLog_ = false;
+  std::vector<StepLogRow> log_;
+  double lastStepSeconds_ = 0;
+
+  void logRow(Index step, const StepStats* stats, double seconds);
+};
+
+}  // namespace tetskin

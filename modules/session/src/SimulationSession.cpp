@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/session/SimulationSession.h"
+
+#include <chrono>
+#include <utility>
+
+#include "tetskin/core/Error.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+
+namespace tetskin {
+
+SimulationSession::SimulationSession(const MultiLevelTetMesh& dataset, const RunSpec& spec)
+    : dataset_(dataset), level_(spec.level), datasetName_(spec.datasetName) {
+  const TetMesh rest = extractLevel(dataset, spec.level);
+  // An unknown scenario fails before the simulation's work.
+  scenario_ = makeScenario(spec.scenario, spec.parameters);
+  simulation_ = std::make_unique<Simulation>(
+      dataset, spec.level, scenarioOptions(spec.scenario, spec.options, rest), spec.datasetName);
+  scenario_->setUp(*simulation_);
+}
+
+SimulationSession::~SimulationSession() = default;
+
+void SimulationSession::startFrom(const FrameState& start) {
+  simulation_->setPositions(start.positions);
+  simulation_->setVelocities(start.velocities);
+  // A log kept from the scenario's start begins again at this one.
+  if (keepLog_) {
+    log_.clear();
+    logRow(0, nullptr, 0);
+  }
+}
+
+void SimulationSession::startFromFrame(const std::filesystem::path& frame) {
+  startFrom(readSimulationFrame(frame, simulation_->restMesh(),
+                                "level " + std::to_string(level_) + " of " + datasetName_));
+}
+
+void SimulationSession::bindSurface(SurfaceMesh surface, SurfaceBinding binding,
+                                    std::string dataset) {
+  auto bound = std::make_unique<BoundSurface>();
+  bound->surface = std::move(surface);
+  bound->binding = std::move(binding);
+  bound->dataset = std::move(dataset);
+  bound->deformed.emplace();
+  deformer_ = std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset_.nodes);
+  bound_ = std::move(bound);
+  allNodes_ = dataset_.nodes;
+}
+
+const BoundSurface& SimulationSession::deformedSurface(const Points3& positions) {
+  if (!bound_) throw Error("no surface is bound to the simulation");
+  const LevelRange& range = dataset_.levels[static_cast<std::size_t>(level_)];
+  allNodes_.middleRows(range.firstNode, range.nodeCount) = positions;
+  deformer_->deform(allNodes_, bound_->deformed->positions, bound_->deformed->normals);
+  return *bound_;
+}
+
+StepStats SimulationSession::step(const Points3* extraForces) {
+  const auto start = std::chrono::steady_clock::now();
+  scenario_->beforeStep(*simulation_, simulation_->time());
+  if (extraForces) simulation_->setExternalForces(simulation_->externalForces() + *extraForces);
+  const StepStats stats = simulation_->step();
+  lastStepSeconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (keepLog_) logRow(simulation_->steps(), &stats, lastStepSeconds_);
+  return stats;
+}
+
+void SimulationSession::keepStepLog() {
+  if (keepLog_) return;
+  keepLog_ = true;
+  logRow(simulation_->steps(), nullptr, 0);
+}
+
+void SimulationSession::logRow(Index step, const StepStats* stats, double seconds) {
+  StepLogRow row;
+  row.step = step;
+  row.time = simulation_->time();
+  if (stats) {
+    row.solver = toString(stats->solver);
+    row.iterations = stats->iterations;
+    row.residual = stats->residual;
+    row.contacts = stats->contacts;
+    row.assemblySeconds = stats->assemblySeconds;
+    row.setupSeconds = stats->setupSeconds;
+    row.solveSeconds = stats->solveSeconds;
+    row.stepSeconds = seconds;
+  }
+  const Energies e = simulation_->energies();
+  row.kinetic = e.kinetic;
+  row.elastic = e.elastic;
+  row.gravitational = e.gravitational;
+  row.reaction = simulation_->supportReaction(simulation_->state());
+  log_.push_back(row);
+}
+
+void SimulationSession::record(const std::filesystem::path& pvd) {
+  recorder_.reset();  // (its series stays as written)
+  recorder_ = std::make_unique<RunRecorder>(pvd, simulation_->conditions());
+}
+
+void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
+                                    const BoundSurface* drawnSurface) {
+  if (!recorder_) throw Error("the run is not being recorded");
+  const SimulationState s = state ? *state : simulation_->state();
+  const BoundSurface* surface = drawnSurface;
+  if (!surface && bound_) surface = &deformedSurface(s.positions);
+  recorder_->addFrame(s.time, simulation_->restMesh(), simulation_->frameFields(s), level_,
+                      surface);
+}
+
+}  // namespace tetskin

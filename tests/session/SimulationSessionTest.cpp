@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// The run layer: a session steps as the simulation and scenario wired by
+// hand do, starts from a frame, keeps the step log, pulls, and records a
+// series with its bound surface.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "ExpectError.h"
+#include "Shapes.h"
+#include "TestFiles.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/session/SimulationSession.h"
+#include "tetskin/vtkio/RecordedRun.h"
+
+namespace tetskin {
+namespace {
+
+// A small upright block (y up), one level.
+MultiLevelTetMesh block() {
+  MultiLevelTetMesh mesh;
+  appendLevel(mesh, test::tetGrid(2, 4, 2, {0.2, 0.4, 0.2}));
+  return mesh;
+}
+
+RunSpec wobble(int steps_per_second = 100) {
+  RunSpec spec;
+  spec.level = 0;
+  spec.options.timeStep = 1.0 / steps_per_second;
+  spec.options.material.youngsModulus = 2e4;
+  spec.scenario = "wobble";
+  spec.datasetName = "block";
+  return spec;
+}
+
+TEST(SimulationSession, StepsAsTheSimulationAndScenarioWiredByHand) {
+  const MultiLevelTetMesh mesh = block();
+  const RunSpec spec = wobble();
+  SimulationSession session(mesh, spec);
+
+  const TetMesh rest = extractLevel(mesh, 0);
+  Simulation byHand(mesh, 0, scenarioOptions(spec.scenario, spec.options, rest), "block");
+  auto scenario = makeScenario(spec.scenario, spec.parameters);
+  scenario->setUp(byHand);
+
+  EXPECT_EQ(session.state().positions, byHand.state().positions);
+  for (int i = 0; i < 5; ++i) {
+    session.step();
+    scenario->beforeStep(byHand, byHand.time());
+    byHand.step();
+  }
+  EXPECT_EQ(session.simulation().steps(), 5);
+  EXPECT_DOUBLE_EQ(session.state().time, byHand.state().time);
+  EXPECT_EQ(session.state().positions, byHand.state().positions);
+  EXPECT_GT((session.state().positions - rest.nodes).norm(), 0);  // the push moved it
+  EXPECT_STREQ(session.scenario().name(), "wobble");
+  EXPECT_GT(session.lastStepSeconds(), 0);
+}
+
+TEST(SimulationSession, RefusesAnUnknownScenarioAndALevelTheDatasetLacks) {
+  const MultiLevelTetMesh mesh = block();
+  RunSpec spec = wobble();
+  spec.scenario = "spin";
+  EXPECT_THROW(SimulationSession(mesh, spec), Error);
+  spec = wobble();
+  spec.level = 3;
+  EXPECT_THROW(SimulationSession(mesh, spec), Error);
+}
+
+TEST(SimulationSession, PulledNodesMoveTheWayTheyArePulled) {
+  const MultiLevelTetMesh mesh = block();
+  RunSpec spec = wobble();
+  spec.scenario = "sag";
+  spec.options.gravity.setZero();
+  SimulationSession still(mesh, spec), pulled(mesh, spec);
+  const Index top = mesh.nodes.rows() - 1;  // a corner of the top
+  Points3 pull = Points3::Zero(mesh.nodes.rows(), 3);
+  pull(top, 0) = 5;
+  for (int i = 0; i < 3; ++i) {
+    still.step();
+    pulled.step(&pull);
+  }
+  EXPECT_NEAR((still.state().positions - mesh.nodes).norm(), 0, 1e-12);
+  EXPECT_GT(pulled.state().positions(top, 0) - mesh.nodes(top, 0), 1e-6);
+}
+
+TEST(SimulationSession, StartsFromAFrameAndLogsFromThere) {
+  const MultiLevelTetMesh mesh = block();
+  SimulationSession session(mesh, wobble());
+  session.keepStepLog();
+  ASSERT_EQ(session.stepLog().size(), 1u);
+  session.step();
+  EXPECT_EQ(session.stepLog().size(), 2u);
+
+  FrameState start;
+  start.positions = mesh.nodes;
+  start.positions.col(0).array() += 0.01;  // shifted: no strain
+  start.velocities = Points3::Zero(mesh.nodes.rows(), 3);
+  start.velocities.col(2).setConstant(0.5);
+  session.startFrom(start);
+  EXPECT_EQ(session.state().positions, start.positions);
+  EXPECT_EQ(session.state().velocities, start.velocities);
+  ASSERT_EQ(session.stepLog().size(), 1u);  // the log begins again at the new start
+  EXPECT_NEAR(session.stepLog()[0].kinetic, 0.5 * session.simulation().nodeMasses().sum() * 0.25,
+              1e-12);
+  session.step();
+  session.step();
+  ASSERT_EQ(session.stepLog().size(), 3u);
+  EXPECT_EQ(session.stepLog()[2].step, session.simulation().steps());
+  EXPECT_FALSE(session.stepLog()[2].solver.empty());
+  EXPECT_GT(session.stepLog()[2].iterations, 0);
+}
+
+TEST(SimulationSession, RecordsTheRunWithItsBoundSurface) {
+  const test::ScratchDir dir;
+  const MultiLevelTetMesh mesh = block();
+  SimulationSession session(mesh, wobble());
+  EXPECT_THROW(session.recordFrame(), Error);  // nothing to record to
+  EXPECT_THROW(session.deformedSurface(mesh.nodes), Error);
+
+  const SurfaceMesh skin = test::box({-0.01, -0.01, -0.01}, {0.21, 0.41, 0.21});
+  session.bindSurface(skin, bindSurface(skin, mesh, 0), "block.json");
+  ASSERT_TRUE(session.hasSurface());
+  // At rest the bound surface is where it was bound.
+  EXPECT_LT((session.deformedSurface(mesh.nodes).deformed->positions - skin.positions)
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-12);
+
+  session.record(dir / "run.pvd");
+  ASSERT_TRUE(session.recording());
+  session.recordFrame();
+  for (int i = 0; i < 4; ++i) session.step();
+  session.recordFrame();
+  EXPECT_EQ(session.recorder()->frames(), 2);
+  session.stopRecording();
+  EXPECT_FALSE(session.recording());
+
+  const RecordedRun run(dir / "run.pvd");
+  ASSERT_EQ(run.frameCount(), 2u);
+  EXPECT_EQ(run.level(), 0);
+  ASSERT_TRUE(run.surfaceFile().has_value());
+  // Its surface frames moved with the control mesh.
+  const BoundSurface last = readBinding(dir / "run_frames" / "surface_00001.vtp");
+  ASSERT_TRUE(last.deformed.has_value());
+  EXPECT_GT((last.deformed->positions - skin.positions).norm(), 1e-6);
+}
+
+}  // namespace
+}  // namespace tetskin
