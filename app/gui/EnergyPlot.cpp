@@ -5,6 +5,9 @@
 #include <QPainterPath>
 #include <algorithm>
 #include <array>
+#include <cmath>
+
+#include "tetskin/core/NumberText.h"
 
 namespace tetskin::gui {
 namespace {
@@ -24,8 +27,9 @@ const std::array<Curve, 4> kCurves{{
     {"total", [](const EnergyPlot::Sample& s) { return s.total(); }, QColor(90, 90, 90), 2.0},
 }};
 
-QString number(double value) {
-  return QString::number(value, 'g', 3);
+// Three digits of the plot's scale (its largest magnitude or the noise floor).
+QString number(double value, double scale) {
+  return QString::fromStdString(formatToScale(value, scale, 3));
 }
 
 }  // namespace
@@ -49,6 +53,35 @@ void EnergyPlot::clear() {
   update();
 }
 
+void EnergyPlot::setNoiseFloor(double joules) {
+  noiseFloor_ = std::isfinite(joules) ? std::max(joules, 0.0) : 0.0;
+  update();
+}
+
+std::pair<double, double> EnergyPlot::range() const {
+  // One scale for all curves, with 0 in it: their sizes compare at a
+  // glance, and the gravitational energy falls below 0 as a body sinks.
+  double lowest = 0, highest = 0;
+  for (const Sample& s : samples_)
+    for (const Curve& c : kCurves) {
+      lowest = std::min(lowest, c.value(s));
+      highest = std::max(highest, c.value(s));
+    }
+  // Noise is drawn flat, not magnified to the plot's height.
+  if (!(highest - lowest > noiseFloor_)) highest = lowest + (noiseFloor_ > 0 ? noiseFloor_ : 1);
+  return {lowest, highest};
+}
+
+QStringList EnergyPlot::legend() const {
+  QStringList labels;
+  if (samples_.empty()) return labels;
+  const auto [lowest, highest] = range();
+  const double scale = std::max({std::abs(lowest), std::abs(highest), noiseFloor_});
+  for (const Curve& c : kCurves)
+    labels << QString("%1 %2").arg(c.name, number(c.value(samples_.back()), scale));
+  return labels;
+}
+
 void EnergyPlot::paintEvent(QPaintEvent*) {
   QPainter p(this);
   p.fillRect(rect(), palette().base());
@@ -62,20 +95,16 @@ void EnergyPlot::paintEvent(QPaintEvent*) {
     return;
   }
   const Sample& last = samples_.back();
-  // One scale for all curves, with 0 in it: their sizes compare at a
-  // glance, and the gravitational energy falls below 0 as a body sinks.
-  double lowest = 0, highest = 0;
-  for (const Sample& s : samples_)
-    for (const Curve& c : kCurves) {
-      lowest = std::min(lowest, c.value(s));
-      highest = std::max(highest, c.value(s));
-    }
-  if (!(highest > lowest)) highest = lowest + 1;
-  p.drawText(left, line, QString("energy (J), %1 to %2").arg(number(lowest), number(highest)));
+  const auto [lowest, highest] = range();
+  const double scale = std::max({std::abs(lowest), std::abs(highest), noiseFloor_});
+  p.drawText(left, line,
+             QString("energy (J), %1 to %2").arg(number(lowest, scale), number(highest, scale)));
   // The legend, with each curve's latest value, wrapped in a narrow dock.
+  const QStringList labels = legend();
   int x = left, baseline = 2 * line;
-  for (const Curve& c : kCurves) {
-    const QString label = QString("%1 %2").arg(c.name, number(c.value(last)));
+  for (std::size_t i = 0; i < kCurves.size(); ++i) {
+    const Curve& c = kCurves[i];
+    const QString& label = labels[static_cast<int>(i)];
     const int advance = metrics.horizontalAdvance(label + "  ");
     if (x > left && x + metrics.horizontalAdvance(label) > right) {
       x = left;

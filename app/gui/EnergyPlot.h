@@ -6,8 +6,10 @@
 // height for speed and the landing's losses, the body settle under
 // damping, or a step size grow unstable, as it happens.
 
+#include <QStringList>
 #include <QWidget>
 #include <deque>
+#include <utility>
 
 namespace tetskin::gui {
 
@@ -25,6 +27,13 @@ class EnergyPlot : public QWidget {
   void add(const Sample& sample);
   void clear();
   const std::deque<Sample>& samples() const { return samples_; }
+  // Energies below `joules` are noise (round-off of a body at rest): the
+  // legend reads them 0 and the curves are drawn on a scale of at least
+  // this. The window sets it from the body (MainWindow::resetSimulation).
+  void setNoiseFloor(double joules);
+  // The legend as drawn: each curve's name and latest value, to the digits
+  // that mean something beside the largest value shown ("elastic 0" at rest).
+  QStringList legend() const;
   double window() const { return window_; }
   QSize sizeHint() const override { return {260, 130}; }
 
@@ -34,6 +43,9 @@ class EnergyPlot : public QWidget {
  private:
   std::deque<Sample> samples_;
   double window_ = 10;  // seconds of simulated time shown
+  double noiseFloor_ = 0;
+  // The values' range over the window, with 0 in it.
+  std::pair<double, double> range() const;
 };
 
 }  // namespace tetskin::gui

@@ -47,6 +47,7 @@
 #include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/core/NumberText.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
@@ -652,6 +653,10 @@ void MainWindow::resetSimulation() {
     return;
   }
   if (scene_->deformable()) scene_->deformable()->setFrameSeconds(options.timeStep);
+  // Energies below that of a uniform strain of 1e-6 in the body (E V e^2 / 2)
+  // are round-off: the plot reads them 0.
+  energyPlot_->setNoiseFloor(0.5 * options.material.youngsModulus *
+                             std::abs(meshVolume(runner_->simulation().restMesh())) * 1e-12);
   // A drop starts above the rest shape: its ears would start out of view.
   // (A start within the rest shape's box leaves the camera as it is: a
   // surface far from its control mesh is framed alone, as opened.)
@@ -825,12 +830,12 @@ void MainWindow::plotEnergy(const SimulationState& state) {
   const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
   const std::size_t prescribed = sim.fixedNodes().size();
-  supports_->setText(
-      prescribed == 0 ? "Supports: none (no node held or driven)"
-                      : QString("Supports: reaction %1 N on %2 prescribed node%3")
-                            .arg(QString::fromStdString(commaSeparated(sim.supportReaction(state))))
-                            .arg(prescribed)
-                            .arg(prescribed == 1 ? "" : "s"));
+  supports_->setText(prescribed == 0 ? "Supports: none (no node held or driven)"
+                                     : QString("Supports: reaction %1 N on %2 prescribed node%3")
+                                           .arg(QString::fromStdString(
+                                               commaSeparatedToScale(sim.supportReaction(state))))
+                                           .arg(prescribed)
+                                           .arg(prescribed == 1 ? "" : "s"));
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
 }

@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <regex>
 #include <sstream>
 
 #include "BuildDialog.h"
@@ -44,6 +45,7 @@
 #include "MovieDecoding.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/core/NumberText.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -1138,8 +1140,8 @@ TEST_F(Gui, ShowsWhatTheSupportsCarry) {
   const auto expected = [&] {
     const Eigen::Vector3d reaction =
         sim.reactionForces(window_->runner()->state()).colwise().sum().transpose();
-    return "Supports: reaction " + commaSeparated(reaction) + " N on " + std::to_string(held) +
-           " prescribed nodes";
+    return "Supports: reaction " + commaSeparatedToScale(reaction) + " N on " +
+           std::to_string(held) + " prescribed nodes";
   };
   EXPECT_EQ(supports->text().toStdString(), expected());
   const Eigen::VectorXd masses = sim.nodeMasses();
@@ -1150,12 +1152,37 @@ TEST_F(Gui, ShowsWhatTheSupportsCarry) {
   EXPECT_NEAR(atRest.y(), heldWeight, 1e-9 * heldWeight);
   for (int i = 0; i < 2; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
   EXPECT_EQ(supports->text().toStdString(), expected());
-  EXPECT_NE(supports->text().toStdString(), "Supports: reaction " + commaSeparated(atRest) +
+  EXPECT_NE(supports->text().toStdString(), "Supports: reaction " + commaSeparatedToScale(atRest) +
                                                 " N on " + std::to_string(held) +
                                                 " prescribed nodes");
   child<QComboBox>("scenario")->setCurrentText("drop");
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   EXPECT_EQ(supports->text().toStdString(), "Supports: none (no node held or driven)");
+}
+
+// Values read to their meaningful digits (#52 item 7): at rest the energies
+// are round-off and read 0, and the sag's supports carry the held weight up
+// and nothing sideways, with the digits of the weight and no more.
+TEST_F(Gui, ReadsRoundOffAsZero) {
+  openSample();
+  child<QComboBox>("scenario")->setCurrentText("sag");
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  auto* plot = child<EnergyPlot>("energyPlot");
+  ASSERT_FALSE(plot->samples().empty());
+  const QStringList legend = plot->legend();
+  ASSERT_EQ(legend.size(), 4);
+  EXPECT_EQ(legend[0].toStdString(), "kinetic 0");
+  EXPECT_EQ(legend[1].toStdString(), "elastic 0");
+  EXPECT_EQ(legend[2].toStdString(), "gravitational 0");
+  const std::string supports = child<QLabel>("supports")->text().toStdString();
+  EXPECT_TRUE(std::regex_match(
+      supports,
+      std::regex(
+          R"(Supports: reaction 0,[0-9]+(\.[0-9]+)?(e[-+][0-9]+)?,0 N on [0-9]+ prescribed nodes)")))
+      << supports;
+  // A step later the body moves: the energies read as numbers again.
+  QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  EXPECT_NE(plot->legend()[1].toStdString(), "elastic 0");
 }
 
 // A Gmsh mesh opens as a dataset of one level, and simulates.

@@ -10,18 +10,13 @@
 
 #include "TextLines.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/NumberText.h"
 #include "tetskin/io/AtomicFile.h"
 
 namespace tetskin {
 namespace {
 
 using nlohmann::json;
-
-// "must lie in [min, max], found x" ("(min" when min itself is excluded).
-std::string outOfRange(double min, double max, bool minExclusive, const std::string& found) {
-  return "must lie in " + std::string(minExclusive ? "(" : "[") + formatNumber(min) + ", " +
-         formatNumber(max) + "], found " + found;
-}
 
 // Validates one JSON object and reads typed fields out of it; errors name the
 // file and the JSON pointer of the field.
@@ -165,38 +160,6 @@ LevelConfig readLevel(const json& value, const std::string& pointer, const std::
 
 std::filesystem::path DatasetConfig::resolve(const std::filesystem::path& p) const {
   return p.is_absolute() ? p : directory / p;
-}
-
-const char* toString(FurLighting lighting) {
-  return lighting == FurLighting::KajiyaKay ? "kajiya-kay" : "velvet";
-}
-
-FurLighting parseFurLighting(std::string_view name) {
-  if (name == "velvet") return FurLighting::Velvet;
-  if (name == "kajiya-kay") return FurLighting::KajiyaKay;
-  throw Error("unknown fur lighting '" + std::string(name) + "' (known: velvet, kajiya-kay)");
-}
-
-std::optional<FurParameterProblem> furParameterProblem(const FurParameters& p) {
-  std::optional<FurParameterProblem> problem;
-  auto check = [&](const char* key, double value, double min, double max,
-                   bool minExclusive = false) {
-    if (problem) return;
-    if (!std::isfinite(value) || value < min || value > max || (minExclusive && value == min))
-      problem = FurParameterProblem{key, outOfRange(min, max, minExclusive, formatNumber(value))};
-  };
-  check("shells", p.shells, 1, 256);
-  check("length", p.length, 0, 1, true);
-  check("density", p.density, 0, 1);
-  check("texture_size", p.textureSize, 8, 4096);
-  check("texture_repeats", p.textureRepeats, 0, 1000, true);
-  check("root_shade", p.rootShade, 0, 1);
-  check("drag", p.drag, 0, 10);
-  check("max_bend", p.maxBend, 0, 1);
-  check("velvet", p.velvet, 0, 1);
-  check("base_darkening", p.baseDarkening, 0, 1);
-  check("min_shells", p.minShells, 1, p.shells);
-  return problem;
 }
 
 std::string describe(const LevelWrap& wrap) {

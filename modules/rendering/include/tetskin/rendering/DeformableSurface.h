@@ -10,10 +10,10 @@
 #include <memory>
 #include <string>
 
+#include "tetskin/core/Appearance.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
-#include "tetskin/io/DatasetConfig.h"
 #include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/RenderPath.h"
 

@@ -12,8 +12,8 @@
 #include <memory>
 #include <vector>
 
+#include "tetskin/core/Appearance.h"
 #include "tetskin/core/SurfaceMesh.h"
-#include "tetskin/io/DatasetConfig.h"
 
 class vtkActor;
 class vtkImageData;
