@@ -47,12 +47,12 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/NumberText.h"
 #include "tetskin/rendering/OffscreenView.h"
-#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
+#include "vtkTetSkinBufferMapper.h"
 
 namespace tetskin::gui {
 namespace {

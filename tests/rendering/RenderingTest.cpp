@@ -33,10 +33,10 @@
 #include "tetskin/rendering/FurLayer.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/XDisplay.h"
-#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
-#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
+#include "vtkTetSkinBufferMapper.h"
+#include "vtkTetSkinGpu2PassMapper.h"
 
 namespace tetskin {
 namespace {

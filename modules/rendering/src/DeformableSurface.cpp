@@ -21,12 +21,12 @@
 #include "tetskin/deformation/NormalTransforms.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/deformation/VertexNormals.h"
-#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
-#include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
 #include "tetskin/spatial/Aabb.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
+#include "vtkTetSkinGpu2PassMapper.h"
+#include "vtkTetSkinGpuDeformMapper.h"
 
 namespace tetskin {
 namespace {

@@ -16,9 +16,9 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/fur/FurGeometry.h"
 #include "tetskin/fur/FurTexture.h"
-#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
-#include "tetskin/rendering/vtkTetSkinGpuFurMapper.h"
 #include "tetskin/vtkio/VtkConversion.h"
+#include "vtkTetSkinGpu2PassMapper.h"
+#include "vtkTetSkinGpuFurMapper.h"
 
 namespace tetskin {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
+#include "vtkTetSkinBufferMapper.h"
 
 #include <vtkOpenGLBufferObject.h>
 #include <vtkOpenGLHelper.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/rendering/vtkTetSkinFurMapper.h"
+#include "vtkTetSkinFurMapper.h"
 
 #include <vtkCamera.h>
 #include <vtkImageData.h>
@@ -19,6 +19,7 @@
 #include <cmath>
 #include <string>
 
+#include "GpuContract.h"
 #include "ShaderInjection.h"
 #include "tetskin/shaders/Shaders.h"
 
@@ -58,11 +59,11 @@ void lightDirectionVC(vtkRenderer* ren, float out[3]) {
 }  // namespace
 
 vtkTetSkinFurMapper::vtkTetSkinFurMapper() {
-  this->MapDataArrayToVertexAttribute("tetskinFurTCoords", "FurTCoords",
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kFurTCoords, "FurTCoords",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinFurHeight", "FurHeight",
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kFurHeight, "FurHeight",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinColorTCoords", "ColorTCoords",
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kColorTCoords, "ColorTCoords",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   this->ScalarVisibilityOff();
   this->SetColorTexture(nullptr);

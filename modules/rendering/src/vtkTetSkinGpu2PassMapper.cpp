@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
+#include "vtkTetSkinGpu2PassMapper.h"
 
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLBufferObject.h>
@@ -14,6 +14,7 @@
 
 #include <string>
 
+#include "GpuContract.h"
 #include "tetskin/shaders/Shaders.h"
 
 vtkStandardNewMacro(vtkTetSkinGpu2PassMapper)
@@ -33,8 +34,9 @@ struct StorageBuffer {
   }
 };
 
-GLuint compileCompute(const char* source, std::string& log) {
+GLuint compileCompute(const std::string& code, std::string& log) {
   const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* source = code.c_str();
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
@@ -128,10 +130,14 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   if (!this->GetGpuProblem().empty() || this->Vertices == 0) return;
   if (!g.positions) {
     std::string log;
-    g.positions = compileCompute(tetskin::shaders::kGpu2passPositionsCs, log);
-    if (g.positions) g.faceNormals = compileCompute(tetskin::shaders::kGpu2passFaceNormalsCs, log);
+    g.positions =
+        compileCompute(tetskin::gpu::withSlots(tetskin::shaders::kGpu2passPositionsCs), log);
+    if (g.positions)
+      g.faceNormals =
+          compileCompute(tetskin::gpu::withSlots(tetskin::shaders::kGpu2passFaceNormalsCs), log);
     if (g.faceNormals)
-      g.vertexNormals = compileCompute(tetskin::shaders::kGpu2passVertexNormalsCs, log);
+      g.vertexNormals =
+          compileCompute(tetskin::gpu::withSlots(tetskin::shaders::kGpu2passVertexNormalsCs), log);
     if (!g.vertexNormals) {
       this->ReportGpuProblem("gpu-2pass: the compute shaders failed (OpenGL 4.3 needed): " + log);
       return;
@@ -163,16 +169,28 @@ void vtkTetSkinGpu2PassMapper::PrepareBuffers(vtkOpenGLRenderWindow* window) {
   if (this->KeepPrevious && newFrame) this->ComputePreviousPositions(window);
   const GLuint groups = static_cast<GLuint>((this->Vertices + 63) / 64);
   const GLuint faceGroups = static_cast<GLuint>((this->TriangleCount + 63) / 64);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.control.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, static_cast<GLuint>(this->Buffer(0)->GetHandle()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, g.triangles.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, g.faces.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, g.offsets.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, g.ring.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, static_cast<GLuint>(this->Buffer(1)->GetHandle()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, g.shifts.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::ControlPositions), g.control.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::BindingIds),
+                   g.ids.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::BindingWeights), g.weights.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::DeformedPositions),
+                   static_cast<GLuint>(this->Buffer(0)->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::Triangles),
+                   g.triangles.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::FaceNormals),
+                   g.faces.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::RingOffsets),
+                   g.offsets.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::RingFaces),
+                   g.ring.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::DeformedNormals),
+                   static_cast<GLuint>(this->Buffer(1)->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::BindingShifts),
+                   g.shifts.id);
   glUseProgram(g.positions);
   glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
   glDispatchCompute(groups, 1, 1);
@@ -207,11 +225,17 @@ void vtkTetSkinGpu2PassMapper::ComputePreviousPositions(vtkOpenGLRenderWindow* w
   // The positions pass again, over the previous control state.
   g.previousControl.upload(this->PreviousControl.data(),
                            this->PreviousControl.size() * sizeof(float));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.previousControl.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, g.ids.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, g.weights.id);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, static_cast<GLuint>(g.previous->GetHandle()));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, g.shifts.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::ControlPositions), g.previousControl.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::BindingIds),
+                   g.ids.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::BindingWeights), g.weights.id);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER,
+                   tetskin::gpu::index(tetskin::gpu::Slot::DeformedPositions),
+                   static_cast<GLuint>(g.previous->GetHandle()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, tetskin::gpu::index(tetskin::gpu::Slot::BindingShifts),
+                   g.shifts.id);
   glUseProgram(g.positions);
   glUniform1i(glGetUniformLocation(g.positions, "vertexCount"), static_cast<GLint>(this->Vertices));
   glDispatchCompute(static_cast<GLuint>((this->Vertices + 63) / 64), 1, 1);

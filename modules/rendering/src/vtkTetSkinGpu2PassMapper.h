@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
+#include "vtkTetSkinBufferMapper.h"
 
 class vtkRenderWindow;
 class vtkTextureObject;

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/rendering/vtkTetSkinGpuDeformMapper.h"
+#include "vtkTetSkinGpuDeformMapper.h"
 
 #include <vtkDataObject.h>
 #include <vtkObjectFactory.h>
 
 #include <string>
 
+#include "GpuContract.h"
 #include "tetskin/core/ArrayNames.h"
 #include "tetskin/shaders/Shaders.h"
 
@@ -20,11 +21,12 @@ vtkTetSkinGpuDeformMapper::vtkTetSkinGpuDeformMapper()
     : vtkTetSkinBufferMapper(tetskin::shaders::kGpuDeformDeclarationsVs,
                              tetskin::shaders::kGpuDeformImplVs, "tetskinControlPositions",
                              kControlNormalsSampler) {
-  this->MapDataArrayToVertexAttribute("tetskinControlIds", tetskin::arrays::kControlIds,
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kControlIds,
+                                      tetskin::arrays::kControlIds,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinWeights", tetskin::arrays::kWeights,
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kWeights, tetskin::arrays::kWeights,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  this->MapDataArrayToVertexAttribute("tetskinShift", kShiftArray,
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kShift, kShiftArray,
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
@@ -33,7 +35,8 @@ void vtkTetSkinGpuDeformMapper::SetEmbedBinding(bool embed) {
   if (embed) {
     this->SetShaderCode(tetskin::shaders::kGpuDeformEmbedDeclarationsVs,
                         tetskin::shaders::kGpuDeformEmbedImplVs, kNormalTransformsSampler);
-    this->MapDataArrayToVertexAttribute("tetskinRestNormal", tetskin::arrays::kNormals,
+    this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kRestNormal,
+                                        tetskin::arrays::kNormals,
                                         vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   } else {
     this->SetShaderCode(tetskin::shaders::kGpuDeformDeclarationsVs,

@@ -22,7 +22,7 @@
 
 #include <vector>
 
-#include "tetskin/rendering/vtkTetSkinBufferMapper.h"
+#include "vtkTetSkinBufferMapper.h"
 
 class vtkTetSkinGpuDeformMapper : public vtkTetSkinBufferMapper {
  public:

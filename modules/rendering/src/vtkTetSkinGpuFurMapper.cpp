@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/rendering/vtkTetSkinGpuFurMapper.h"
+#include "vtkTetSkinGpuFurMapper.h"
 
 #include <vtkDataObject.h>
 #include <vtkObjectFactory.h>
@@ -10,14 +10,15 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "GpuContract.h"
 #include "tetskin/fur/FurGeometry.h"
-#include "tetskin/rendering/vtkTetSkinGpu2PassMapper.h"
 #include "tetskin/shaders/Shaders.h"
+#include "vtkTetSkinGpu2PassMapper.h"
 
 vtkStandardNewMacro(vtkTetSkinGpuFurMapper)
 
 vtkTetSkinGpuFurMapper::vtkTetSkinGpuFurMapper() {
-  this->MapDataArrayToVertexAttribute("tetskinFurSource", "FurSource",
+  this->MapDataArrayToVertexAttribute(tetskin::gpu::attribute::kFurSource, "FurSource",
                                       vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 

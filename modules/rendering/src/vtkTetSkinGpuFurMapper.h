@@ -11,7 +11,7 @@
 
 #include <vtkWeakPointer.h>
 
-#include "tetskin/rendering/vtkTetSkinFurMapper.h"
+#include "vtkTetSkinFurMapper.h"
 
 class vtkTetSkinGpu2PassMapper;
 

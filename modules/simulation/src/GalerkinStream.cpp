@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/simulation/GalerkinStream.h"
+#include "GalerkinStream.h"
 
 #include <tbb/parallel_for.h>
 

@@ -10,8 +10,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "GalerkinStream.h"
 #include "tetskin/core/Error.h"
-#include "tetskin/simulation/GalerkinStream.h"
 
 namespace tetskin {
 
