@@ -323,6 +323,7 @@ QWidget* MainWindow::buildSimulationDock() {
   layout->addWidget(energyPlot_);
   supports_ = new QLabel;
   supports_->setObjectName("supports");
+  supports_->setWordWrap(true);
   supports_->setToolTip(
       "What the held and driven nodes' supports exert on the body in all (a settled body's "
       "weight and loads, opposed); per node in exported and recorded frames (ReactionForce)");
@@ -374,6 +375,9 @@ QWidget* MainWindow::buildSimulationDock() {
     if (file.isEmpty() || !startRecording(file)) record_->setChecked(false);
   });
   auto* form = new QFormLayout;
+  // A row too wide for the dock puts its field under its label: the dock
+  // fits beside the 3D view of a 1280x800 window without scrolling sideways.
+  form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
   scenarioRows_ = new ScenarioRows(form, interactive_);
   solver_ = combo("solver", {"auto", "cg", "multigrid"});

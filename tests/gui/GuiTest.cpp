@@ -16,6 +16,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDropEvent>
 #include <QGroupBox>
 #include <QLabel>
@@ -23,6 +24,8 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -1183,6 +1186,33 @@ TEST_F(Gui, ReadsRoundOffAsZero) {
   // A step later the body moves: the energies read as numbers again.
   QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
   EXPECT_NE(plot->legend()[1].toStdString(), "elastic 0");
+}
+
+// At 1280x800, as a new user first sees it (#52 item 7): no dock scrolls
+// sideways, whichever tab is raised, and the 3D view is the largest thing
+// on screen.
+TEST_F(Gui, DocksFitA1280x800WindowWithoutScrollingSideways) {
+  window_.reset();
+  MainWindow window(false);
+  window.setOverlayVisible(false);
+  window.resize(1280, 800);
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  ASSERT_TRUE(window.openFiles({kData + "bunny.json", kData + "bunny.obj"}))
+      << window.lastError().toStdString();
+  for (const char* name : {"ViewDock", "SimulationDock", "BindingDock"}) {
+    auto* dock = window.findChild<QDockWidget*>(name);
+    ASSERT_NE(dock, nullptr) << name;
+    dock->raise();
+    QApplication::processEvents();
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    ASSERT_NE(scroll, nullptr) << name;
+    EXPECT_FALSE(scroll->horizontalScrollBar()->isVisible()) << name << " scrolls sideways";
+    EXPECT_LE(scroll->widget()->minimumSizeHint().width(), scroll->viewport()->width())
+        << name << "'s fields are cut off";
+    EXPECT_GT(window.view()->width(), dock->width()) << name;
+  }
+  window.saveScreenshot(QString(TETSKIN_ACTUAL_DIR) + "/window_1280x800.png", true);
 }
 
 // A Gmsh mesh opens as a dataset of one level, and simulates.
