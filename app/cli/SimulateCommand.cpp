@@ -22,6 +22,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/StepLogFile.h"
 #include "tetskin/session/SimulationSession.h"
+#include "tetskin/simulation/ProjectedInitialGuess.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RunRecorder.h"

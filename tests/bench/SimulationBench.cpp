@@ -14,6 +14,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/NodeBlockMatrix.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"

@@ -9,6 +9,14 @@
 // with a multigrid V-cycle over the dataset's coarser levels, or by whichever
 // of the two is faster on the running simulation (SolverChoice.h).
 //
+// A step composes units of the module's src, one concern each: the
+// integrator (ImplicitEuler: the system of a step and its outcome), the
+// fixed and driven nodes (NodeConstraints: Dirichlet rows), the floor
+// (FloorContact: penalty springs, then projection with friction) and the
+// linear solve (SolverStack: the solvers, the multigrid hierarchy, the
+// initial guess). A new integrator, contact model or solver replaces or
+// extends one of them (doc/dev/extending.md).
+//
 // Threads: step() may run on one thread while others call state(),
 // setExternalForces() or energies(), which are guarded by a mutex, or
 // frameFields() and reactionForces() of a state taken before, which read
@@ -26,13 +34,15 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
-#include "tetskin/simulation/LinearSolvers.h"
-#include "tetskin/simulation/ProjectedInitialGuess.h"
 #include "tetskin/simulation/SolverChoice.h"
 
 namespace tetskin {
 
-class DirichletRows;
+class FloorContact;
+class ImplicitEuler;
+class NodeConstraints;
+class NodeNumbering;
+class SolverStack;
 
 // Multigrid coarse operators: Galerkin products P^T A P of the system, or the
 // coarse meshes' own corotated FEM (rediscretized) at positions interpolated
@@ -150,7 +160,7 @@ class Simulation {
   const SimulationOptions& options() const { return options_; }
   // SolverKind::Automatic: the trials so far and the faster solver of the
   // last round (nullptr for a fixed solver).
-  const SolverChoice* solverChoice() const { return choice_ ? &*choice_ : nullptr; }
+  const SolverChoice* solverChoice() const;
   // Lumped mass per node.
   Eigen::VectorXd nodeMasses() const;
 
@@ -197,23 +207,19 @@ class Simulation {
   FrameFields frameFields(const SimulationState& state) const;
 
  private:
-  void buildSystem(double h, StepStats& stats);
-  // Rediscretized multigrid: the coarse systems at the current positions.
-  void buildCoarseSystems(double h);
-  // Between the level's node numbering (outside) and the internal one.
-  Eigen::VectorXd toInternal(const Points3& perNode) const;
-  Points3 toOutside(const Eigen::VectorXd& internal) const;
   int level_;
-  TetMesh rest_;            // the level's own numbering
-  std::vector<int> order_;  // internal node -> level node
-  std::vector<int> rank_;   // level node -> internal node
-  TetMesh internal_;        // rest_ renumbered
+  TetMesh rest_;  // the level's own numbering
   SimulationOptions options_;
-  CorotatedFem fem_;                                    // on internal_
-  std::unique_ptr<BlockJacobi> blockJacobi_;            // cg, auto
-  std::unique_ptr<MultigridPreconditioner> multigrid_;  // multigrid, auto
-  std::optional<SolverChoice> choice_;                  // auto
-  Index lastMultigridStep_ = -1;                        // steps_ of multigrid's last step
+  // The units a step composes (modules/simulation/src): the numbering, the
+  // body, the integrator, the fixed and driven nodes, the floor, the solver.
+  std::unique_ptr<NodeNumbering> numbering_;
+  TetMesh internal_;  // rest_ renumbered
+  CorotatedFem fem_;  // on internal_
+  std::unique_ptr<ImplicitEuler> integrator_;
+  std::unique_ptr<NodeConstraints> constraints_;
+  std::unique_ptr<FloorContact> floor_;  // null without a floor
+  std::unique_ptr<SolverStack> solvers_;
+  std::vector<int> fixedNodes_;  // level numbering
 
   mutable std::mutex mutex_;  // guards x_, v_, acceleration_, time_, steps_, external_,
                               // appliedExternal_, shortfall_
@@ -225,28 +231,9 @@ class Simulation {
   Index steps_ = 0;
   SolveShortfall shortfall_;  // guarded by mutex_
 
-  std::vector<int> fixedNodes_;  // level numbering
-  std::vector<char> fixedDofs_;
-  Eigen::VectorXd prescribedDv_;     // for fixed dofs
-  std::vector<int> kinematicNodes_;  // internal numbering
-  Points3 kinematicTargets_;
-
-  std::unique_ptr<DirichletRows> dirichlet_;
-  struct CoarseLevel;                // rediscretized multigrid: one per coarser level
-  std::vector<CoarseLevel> coarse_;  // the next coarser first
-  std::vector<SparseMatrix> coarseSystems_;
-  std::vector<SparseMatrix> prolongations_;  // nodal, level l+1 to level l (l = 0: this one)
-  // Floor penalty per dof this step: stiffness (h^2 k) and force.
-  Eigen::VectorXd contactDiagonal_, contactForce_;
-  Eigen::VectorXd systemDiagonal_;  // dampedMass_ + contactDiagonal_
-
   // Per-step work arrays, allocated once.
-  Eigen::VectorXd dampedMass_;  // (1 + h alpha) M
   SparseMatrix system_;
-  NodeBlockMatrix blockSystem_;  // system_'s copy for CG's products
-  Eigen::VectorXd force_, rhs_, dv_;
-  ProjectedInitialGuess guess_;
-  double floorStiffness_ = 0;
+  Eigen::VectorXd rhs_, dv_;
 };
 
 }  // namespace tetskin

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Fixed and driven nodes as Dirichlet conditions on the step's velocity
+// change: a fixed node's dv stops it, a driven (kinematic) node's dv takes
+// it to its target at the end of the step; the system gets identity rows
+// and columns there (DirichletRows.h) and the prescribed dv moves to the
+// right-hand side. Node numbers are the internal ones (NodeNumbering.h).
+
+#include <vector>
+
+#include "DirichletRows.h"
+
+namespace tetskin {
+
+class NodeConstraints {
+ public:
+  // For systems of `pattern`'s shape (3 dofs per node).
+  explicit NodeConstraints(const SparseMatrix& pattern);
+
+  // One flag per node, 1 = fixed; drops the targets.
+  void setFixed(const std::vector<char>& fixedNodes);
+  bool isFixed(Index node) const { return fixedDofs_[3 * static_cast<std::size_t>(node)] != 0; }
+  // Fixed nodes that must reach `targets` (a row each) at the end of the
+  // next step; the caller checked that each is fixed.
+  void setTargets(std::vector<int> nodes, Points3 targets);
+
+  // Imposes the conditions of a step of length h from (x, v) on A dv = b.
+  void impose(SparseMatrix& A, Eigen::VectorXd& b, const Eigen::VectorXd& x,
+              const Eigen::VectorXd& v, double h);
+  // The driven nodes of a step's outcome exactly on their targets (free of
+  // the solve's round-off).
+  void placeOnTargets(Eigen::VectorXd& x) const;
+
+ private:
+  const SparseMatrix& pattern_;
+  std::vector<char> fixedDofs_;
+  DirichletRows rows_;
+  std::vector<int> targetNodes_;
+  Points3 targets_;
+  Eigen::VectorXd prescribed_;  // dv of the fixed dofs
+};
+
+// Per node of `fixedNodes` (a flag each), per dof.
+std::vector<char> dofsOf(const std::vector<char>& fixedNodes);
+
+}  // namespace tetskin
