@@ -33,8 +33,8 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
   view_ = std::make_unique<OffscreenView>(o.width, o.height);
   surface_->addTo(view_->renderer());
   const TetMesh rest = extractLevel(dataset.mesh, level_);
-  if (const auto style = parseControlMeshStyle(o.control)) {
-    control_ = std::make_unique<ControlMeshActor>(rest, *style);
+  if (const auto style = fromName<ControlMeshStyle>(o.control); style != ControlMeshStyle::None) {
+    control_ = std::make_unique<ControlMeshActor>(rest, style);
     view_->renderer()->AddActor(control_->actor());
   }
   // Framed on the control level at rest: the same view for every path.

@@ -21,11 +21,11 @@ namespace {
 struct BindArgs {
   std::filesystem::path dataset, surface, output;
   int level = -1;
-  std::string method = "closest", offset = "normal";
+  std::string method = toString(BindingMethod::Closest), offset = toString(OffsetMode::Normal);
 };
 
 void run(const BindArgs& a, const CLI::App& cmd) {
-  if (a.method == "embed" && cmd.count("--offset") > 0)
+  if (fromName<BindingMethod>(a.method) == BindingMethod::Embed && cmd.count("--offset") > 0)
     throw Error(
         "--offset: applies to the closest and seed methods, not to embed (an embedded vertex is "
         "its tetrahedron's barycentric combination, with no offset)");
@@ -36,8 +36,8 @@ void run(const BindArgs& a, const CLI::App& cmd) {
   bound.surface = readSurface(a.surface);
   warnOfNormalGaps(a.surface, bound.surface);
   BindingOptions options;
-  options.method = *parseBindingMethod(a.method);
-  options.offset = *parseOffsetMode(a.offset);
+  options.method = fromName<BindingMethod>(a.method);
+  options.offset = fromName<OffsetMode>(a.offset);
   const auto start = std::chrono::steady_clock::now();
   bound.binding = bindSurface(bound.surface, dataset.mesh, level, options);
   const double seconds =
@@ -53,10 +53,11 @@ void run(const BindArgs& a, const CLI::App& cmd) {
   // the surface's own distances above are to that level.
   if (const std::optional<LevelWrap>& wrap =
           dataset.config.levels[static_cast<std::size_t>(level)].source.wrap)
-    std::printf("  wrapped level:      %s was alpha-wrapped for it: %s; vertices in the input's "
-                "holes and gaps bind to their closest boundary triangle\n",
-                dataset.config.levels[static_cast<std::size_t>(level)].source.input.c_str(),
-                describe(*wrap).c_str());
+    std::printf(
+        "  wrapped level:      %s was alpha-wrapped for it: %s; vertices in the input's "
+        "holes and gaps bind to their closest boundary triangle\n",
+        dataset.config.levels[static_cast<std::size_t>(level)].source.input.c_str(),
+        describe(*wrap).c_str());
   std::printf("  time:               %.3f s\nwrote %s\n", seconds, a.output.c_str());
 }
 
@@ -72,14 +73,8 @@ void addBindCommand(CLI::App& app) {
       ->required()
       ->check(fileEnding(".vtp"));
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
-  cmd->add_option("--method", a->method, "closest (exact), seed (the report's), embed (tetrahedra)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"closest", "seed", "embed"}));
-  cmd->add_option("--offset", a->offset,
-                  "normal (offset along the deformed triangle's normal) or displacement "
-                  "(the report's formula 4.1)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"normal", "displacement"}));
+  addEnumOption<BindingMethod>(*cmd, "--method", "", a->method);
+  addEnumOption<OffsetMode>(*cmd, "--offset", "", a->offset);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 

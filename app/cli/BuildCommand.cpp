@@ -20,10 +20,10 @@ struct BuildArgs {
   std::filesystem::path output;
   std::string lodSeries;
   int lodInputs = 0;
-  std::string mesher = "tetgen";
+  std::string mesher = toString(MesherKind::TetGen);
   std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
-  std::string up = "y";
-  std::string wrap = "auto";
+  std::string up = toString(UpAxis::Y);
+  std::string wrap = toString(WrapMode::Auto);
   BuildOptions options;
   bool quiet = false;
 };
@@ -44,10 +44,10 @@ void run(BuildArgs& a) {
   const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
   requireWritableLocation(json);  // before the meshing, not after it
 
-  a.options.mesher = *parseMesherKind(a.mesher);  // CLI checked the name
+  a.options.mesher = fromName<MesherKind>(a.mesher);
   a.options.qualities = a.qualities;
-  a.options.up = *parseUpAxis(a.up);             // CLI checked the name
-  a.options.wrap.mode = *parseWrapMode(a.wrap);  // CLI checked the name
+  a.options.up = fromName<UpAxis>(a.up);
+  a.options.wrap.mode = fromName<WrapMode>(a.wrap);
   Progress progress(a.quiet);
   std::vector<SurfaceInput> inputs;
   for (const auto& path : inputPaths(a)) {
@@ -117,9 +117,7 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_option("--max-elements", a->options.maxElements, "elements of the finest level")
       ->capture_default_str()
       ->check(wholeNumber(1));
-  cmd->add_option("--mesher", a->mesher, "tetgen or netgen")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"tetgen", "netgen"}));
+  addEnumOption<MesherKind>(*cmd, "--mesher", "", a->mesher);
   cmd->add_option("--qualities", a->qualities,
                   "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer")
       ->delimiter(',')
@@ -133,12 +131,7 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_flag("--size-to-targets", a->options.sizeToTargets,
                 "also mesh under element size bounds aimed at the level targets that no\n"
                 "quality meets (TetGen -a, Netgen maxh): for shapes such as boxes");
-  cmd->add_option("--wrap", a->wrap,
-                  "alpha-wrap inputs in a closed surface first: auto (those that repair cannot\n"
-                  "close or that no mesher accepts: holes, open sheets, overlapping parts),\n"
-                  "always, or never")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "always", "never"}));
+  addEnumOption<WrapMode>(*cmd, "--wrap", "alpha-wrap inputs in a closed surface first: ", a->wrap);
   cmd->add_option("--wrap-alpha", a->options.wrap.alpha,
                   "the wrap's alpha, a fraction of the input's bounding-box diagonal: gaps and\n"
                   "cavities narrower than it are closed, and its triangles are about this size")
@@ -156,8 +149,8 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_option("--up", a->up,
                   "the axis that points up in the inputs: x, y or z (written to the config; "
                   "simulation and cameras follow it)")
-      ->check(CLI::IsMember(upAxisNames()))
-      ->capture_default_str();
+      ->check(CLI::IsMember(namesOf<UpAxis>()))
+      ->capture_default_str();  // (its help says more than the names: not addEnumOption)
   cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
   cmd->callback([a] { run(*a); });
 }

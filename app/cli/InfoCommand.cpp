@@ -203,7 +203,7 @@ void printDataset(const std::filesystem::path& path) {
       warnings += "  warning: level " + std::to_string(k) + " " + problem + "\n";
     const LevelSource& src = dataset.config.levels[static_cast<std::size_t>(k)].source;
     std::string how = src.mesher;
-    if (const std::optional<MesherKind> mesher = parseMesherKind(src.mesher))
+    if (const std::optional<MesherKind> mesher = parseName<MesherKind>(src.mesher))
       how += " " + meshingLabel(*mesher, src.quality, src.sizeBound);
     if (src.wrap) how += " (wrapped)";
     std::printf("  %-5d %8lld %9lld %12g %12g %8.2f  %s %s\n", k,

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "MaterialOptions.h"
 
-#include <map>
 #include <string>
 
 #include "OptionChecks.h"
@@ -10,25 +9,25 @@
 namespace tetskin::cli {
 
 void addMaterialOptions(CLI::App& cmd, MaterialArgs& a) {
-  const ElasticMaterial defaults;
-  auto option = [&](const char* name, std::optional<double>& value, const char* what,
-                    double fallback) {
-    cmd.add_option(name, value,
-                   std::string(what) + " (without a config value: " + formatNumber(fallback) + ")")
+  // (The range is the material's to check, after the config's values are
+  // taken: materialOf names the option.)
+  auto option = [&](const NumberOption& schema, std::optional<double>& value) {
+    cmd.add_option(schema.flag, value,
+                   std::string(schema.help) +
+                       " (without a config value: " + formatNumber(schema.defaultValue) + ")")
         ->check(finiteNumber())
         ->group(kMaterialGroup);
   };
-  option("--young", a.young, "Young's modulus, Pa", defaults.youngsModulus);
-  option("--poisson", a.poisson, "Poisson's ratio, in (-1, 0.5)", defaults.poissonRatio);
-  option("--density", a.density, "density, kg/m^3", defaults.density);
-  option("--alpha", a.alpha, "Rayleigh mass damping, 1/s", defaults.massDamping);
-  option("--beta", a.beta, "Rayleigh stiffness damping, s", defaults.stiffnessDamping);
+  using namespace material_option;
+  option(kYoungsModulus, a.young);
+  option(kPoissonRatio, a.poisson);
+  option(kDensity, a.density);
+  option(kMassDamping, a.alpha);
+  option(kStiffnessDamping, a.beta);
 }
 
 CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep) {
-  return cmd.add_option("--dt", timeStep, "time step in seconds")
-      ->capture_default_str()
-      ->check(positiveNumber());
+  return addNumberOption(cmd, simulation_option::kTimeStep, timeStep);
 }
 
 ElasticMaterial materialOf(const MaterialArgs& a, const ElasticMaterial& config) {
@@ -40,15 +39,10 @@ ElasticMaterial materialOf(const MaterialArgs& a, const ElasticMaterial& config)
   m.stiffnessDamping = a.beta.value_or(m.stiffnessDamping);
   // A config's values were checked as it was read: a problem now is an
   // option's, named as the user typed it.
-  if (const auto problem = materialProblem(m)) {
-    const std::map<std::string, std::string> options = {{"youngs_modulus", "--young"},
-                                                        {"poisson_ratio", "--poisson"},
-                                                        {"density", "--density"},
-                                                        {"mass_damping", "--alpha"},
-                                                        {"stiffness_damping", "--beta"}};
-    const auto option = options.find(problem->key);
-    throw Error((option == options.end() ? problem->key : option->second) + ": " + problem->what);
-  }
+  if (const auto problem = materialProblem(m))
+    for (const MaterialField& field : materialFields())
+      if (problem->key == field.option->key)
+        throw Error(std::string(field.option->flag) + ": " + problem->what);
   return m;
 }
 

@@ -113,6 +113,46 @@ CLI::Validator numberFrom(double min, double below) {
       std::isinf(below) ? (min == 0 ? "NONNEGATIVE" : range) : range.substr(3));
 }
 
+CLI::Validator numberIn(const NumberRange& range) {
+  if (std::isinf(range.min) && std::isinf(range.max)) return finiteNumber();
+  if (std::isinf(range.max))
+    return range.minIncluded ? numberFrom(range.min) : numberAbove(range.min);
+  if (range.minIncluded && !range.maxIncluded) return numberFrom(range.min, range.max);
+  std::string interval = range.words();  // "must lie in (0, 1)"
+  interval = interval.substr(interval.find("in "));
+  return CLI::Validator(
+      [range, interval](std::string& text) -> std::string {
+        double value = 0;
+        if (!parsesAll(text, value) || !std::isfinite(value))
+          return "'" + text + "' is not a finite number";
+        if (!range.contains(value)) return text + " is not " + interval;
+        return {};
+      },
+      interval.substr(3));
+}
+
+CLI::Validator wholeNumberIn(const NumberRange& range) {
+  const long long least =
+      std::isinf(range.min) ? std::numeric_limits<int>::min()
+                            : static_cast<long long>(range.minIncluded ? std::ceil(range.min)
+                                                                       : std::floor(range.min) + 1);
+  if (std::isinf(range.max)) return wholeNumber(least);
+  return wholeNumber(least, static_cast<long long>(range.maxIncluded ? std::floor(range.max)
+                                                                     : std::ceil(range.max) - 1));
+}
+
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
+  return cmd.add_option(option.flag, value, option.help)
+      ->capture_default_str()
+      ->check(numberIn(option.range));
+}
+
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
+  return cmd.add_option(option.flag, value, option.help)
+      ->capture_default_str()
+      ->check(wholeNumberIn(option.range));
+}
+
 CLI::Validator fileEnding(const std::string& extension) {
   return fileEnding(std::vector<std::string>{extension});
 }

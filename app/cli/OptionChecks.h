@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/rendering/ImageSize.h"
 
 namespace tetskin::cli {
@@ -44,6 +45,26 @@ CLI::Validator numberAbove(double bound);
 
 // A finite number in [min, below) (below infinite: >= min).
 CLI::Validator numberFrom(double min, double below = std::numeric_limits<double>::infinity());
+
+// A finite number in `range` (OptionSchema.h), by the checks above where
+// one fits; a whole number in it for wholeNumberIn.
+CLI::Validator numberIn(const NumberRange& range);
+CLI::Validator wholeNumberIn(const NumberRange& range);
+
+// A schema option (OptionSchema.h) on `cmd`: its flag, its help, its
+// default shown, its range checked.
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value);
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value);
+
+// An enum option (OptionSchema.h) on `cmd`: `flag`, `what` and then the
+// names with their help, the default shown, one of the names checked.
+template <SchemaEnum E>
+CLI::Option* addEnumOption(CLI::App& cmd, const std::string& flag, const std::string& what,
+                           std::string& name) {
+  return cmd.add_option(flag, name, what + helpOf<E>())
+      ->capture_default_str()
+      ->check(CLI::IsMember(namesOf<E>()));
+}
 
 // true or false (also on/off, yes/no, 1/0, any letter case) for a bool
 // option. CLI11 alone reads any whole number as true ("--fur-fins 2") and

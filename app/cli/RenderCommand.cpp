@@ -31,7 +31,8 @@ constexpr const char* kFurGroup = "Fur (fur paths; default: the dataset config's
 
 struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture, run;
-  std::string path = "cpu", camera = "iso", control = "none", size = "800x600";
+  std::string path = toString(RenderPath::Cpu), camera = toString(CameraPreset::Iso),
+              control = toString(ControlMeshStyle::None), size = "800x600";
   ScenarioArgs scenario;
   MaterialArgs material;
   double timeStep = SimulationOptions{}.timeStep;
@@ -55,7 +56,7 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   if (a.furVelvet) f.velvet = *a.furVelvet;
   if (a.furRepeats) f.textureRepeats = *a.furRepeats;
   if (a.furSeed) f.seed = *a.furSeed;
-  if (a.furLighting) f.lighting = parseFurLighting(*a.furLighting);
+  if (a.furLighting) f.lighting = fromName<FurLighting>(*a.furLighting);
   if (a.furFins) f.fins = *a.furFins;
   if (a.furAdaptive) f.adaptiveShells = *a.furAdaptive;
   // The config's ranges, named by the option that sets each parameter.
@@ -72,15 +73,15 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   const ImageSize size = checkedImageSize(a.size);
   o.width = size.width;
   o.height = size.height;
-  o.path = parseRenderPath(a.path);
-  o.camera = parseCameraPreset(a.camera);
+  o.path = fromName<RenderPath>(a.path);
+  o.camera = fromName<CameraPreset>(a.camera);
   o.level = a.level;
   o.scenario = a.scenario;
   o.timeStep = a.timeStep;
   o.control = a.control;
   o.texture = a.texture;
   o.datasetName = a.dataset.string();
-  parseControlMeshStyle(o.control);  // reject typos before any work
+  fromName<ControlMeshStyle>(o.control);  // reject typos before any work
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
   if (!a.run.empty() && a.frames > 0)
@@ -187,8 +188,9 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--surface", a->surface,
                   "surface (default: a recorded run's own, else the dataset's surface)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--path", a->path, "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu")
-      ->capture_default_str();
+  // (Names checked in run(), whose error lists them: --path, --camera,
+  // --control, --fur-lighting.)
+  cmd->add_option("--path", a->path, oneOf(namesOf<RenderPath>()))->capture_default_str();
   cmd->add_option("-o,--output", a->output,
                   "image (.png); with --run, the images OUT_00000.png, ... or one movie (.ogv)")
       ->required()
@@ -227,7 +229,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--fur-drag", a->furDrag, "seconds of velocity the tips trail by (0: static)")
       ->check(finiteNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-lighting", a->furLighting, "velvet or kajiya-kay")->group(kFurGroup);
+  cmd->add_option("--fur-lighting", a->furLighting, oneOf(namesOf<FurLighting>()))
+      ->group(kFurGroup);
   cmd->add_option("--fur-velvet", a->furVelvet, "highlight offset off the mirror direction")
       ->check(finiteNumber())
       ->group(kFurGroup);
@@ -236,8 +239,8 @@ void addRenderCommand(CLI::App& app) {
       ->group(kFurGroup);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
-  cmd->add_option("--camera", a->camera, "front, side, top or iso")->capture_default_str();
-  cmd->add_option("--control", a->control, "control mesh: none, surface, wireframe or shrink")
+  cmd->add_option("--camera", a->camera, oneOf(namesOf<CameraPreset>()))->capture_default_str();
+  cmd->add_option("--control", a->control, "control mesh: " + oneOf(namesOf<ControlMeshStyle>()))
       ->capture_default_str();
   cmd->add_option("--frames", a->frames,
                   "simulate and draw N frames, report frames/s and a breakdown")

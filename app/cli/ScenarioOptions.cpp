@@ -98,11 +98,11 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   cmd.add_option("--up", a.up,
                  "the axis that points up: x, y or z (default: the dataset config's up, else y); "
                  "the scenarios, the floor, the default gravity and the camera follow it")
-      ->check(CLI::IsMember(upAxisNames()));
+      ->check(CLI::IsMember(namesOf<UpAxis>()));
 }
 
 UpAxis upAxisOf(const ScenarioArgs& a, const DatasetConfig& config) {
-  return a.up.empty() ? config.up : *parseUpAxis(a.up);  // (CLI checked the name)
+  return a.up.empty() ? config.up : fromName<UpAxis>(a.up);
 }
 
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {

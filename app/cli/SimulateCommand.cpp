@@ -22,7 +22,6 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/StepLogFile.h"
 #include "tetskin/session/SimulationSession.h"
-#include "tetskin/simulation/ProjectedInitialGuess.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RunRecorder.h"
@@ -35,7 +34,9 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
   int steps = 120, level = -1, every = 1;
-  std::string solver = "auto", coarseOperators = "galerkin", tangent = "full";
+  std::string solver = toString(SolverKind::Automatic),
+              coarseOperators = toString(SimulationOptions{}.coarseOperators),
+              tangent = toString(SimulationOptions{}.tangent);
   ScenarioArgs scenario;
   SimulationOptions options;
   MaterialArgs material;  // over the config's elasticity
@@ -44,7 +45,7 @@ struct SimulateArgs {
 
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
-  if (solverKindFromString(a.solver) == SolverKind::ConjugateGradient)
+  if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
     for (const char* option : {"--coarse-reuse", "--coarse-operators"})
       if (cmd.count(option) > 0)
         throw Error(std::string(option) +
@@ -68,10 +69,9 @@ void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
 // The run the options describe, on `level` of `dataset`.
 RunSpec runSpec(SimulateArgs& a, const CLI::App& cmd, const Dataset& dataset, int level) {
   SimulationOptions options = a.options;
-  options.solver = solverKindFromString(a.solver);
-  options.tangent = tangentFromString(a.tangent);
-  options.coarseOperators =
-      a.coarseOperators == "galerkin" ? CoarseOperators::Galerkin : CoarseOperators::Rediscretized;
+  options.solver = fromName<SolverKind>(a.solver);
+  options.tangent = fromName<Tangent>(a.tangent);
+  options.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
   options.material = materialOf(a.material, dataset.config.elasticity);
   options =
       withGravityAndFloor(uprightAlong(upAxisOf(a.scenario, dataset.config), options), a.scenario);
@@ -239,33 +239,12 @@ void addSimulateCommand(CLI::App& app) {
                   "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
                   "positions and velocities replace the scenario's start; time starts at 0")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--solver", a->solver,
-                  "cg (block-Jacobi CG), multigrid (CG with a V-cycle) or auto (whichever of "
-                  "the two is faster here, timed every 120 steps)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "cg", "multigrid"}));
-  cmd->add_option("--tangent", a->tangent,
-                  "the implicit step's stiffness: full (R K R^T and the rotation term: steady "
-                  "under large steps on stretched bodies) or warped (R K R^T alone, stiffness "
-                  "warping: a cheaper element pass)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"full", "warped"}));
-  cmd->add_option("--tolerance", a->options.tolerance, "relative residual of each solve")
-      ->capture_default_str()
-      ->check(positiveNumber());
-  cmd->add_option("--guess-solutions", a->options.guessSolutions,
-                  "start each solve from the best combination of the last N solutions "
-                  "(0: from the last one as it is)")
-      ->capture_default_str()
-      ->check(wholeNumber(0, kMaxProductColumns));
-  cmd->add_option("--coarse-reuse", a->options.coarseReuse,
-                  "multigrid: rebuild the coarse operators every N steps (solves stay exact)")
-      ->capture_default_str()
-      ->check(wholeNumber(1));
-  cmd->add_option("--coarse-operators", a->coarseOperators,
-                  "multigrid: galerkin (P^T A P) or rediscretized (each coarse mesh's own FEM)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"galerkin", "rediscretized"}));
+  addEnumOption<SolverKind>(*cmd, "--solver", "", a->solver);
+  addEnumOption<Tangent>(*cmd, "--tangent", "the implicit step's stiffness: ", a->tangent);
+  addNumberOption(*cmd, simulation_option::kTolerance, a->options.tolerance);
+  addNumberOption(*cmd, simulation_option::kGuessSolutions, a->options.guessSolutions);
+  addNumberOption(*cmd, simulation_option::kCoarseReuse, a->options.coarseReuse);
+  addEnumOption<CoarseOperators>(*cmd, "--coarse-operators", "multigrid: ", a->coarseOperators);
   addMaterialOptions(*cmd, a->material);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame; a binding "

@@ -60,11 +60,12 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   form->addRow("Min elements", minElements_);
   form->addRow("Max elements", maxElements_);
   mesher_ = new QComboBox;
-  mesher_->addItems({"tetgen", "netgen"});
+  for (const std::string& name : namesOf<MesherKind>())
+    mesher_->addItem(QString::fromStdString(name));
   form->addRow("Mesher", mesher_);
   up_ = new QComboBox;
   up_->setObjectName("up");
-  for (const std::string& name : upAxisNames()) up_->addItem(QString::fromStdString(name));
+  for (const std::string& name : namesOf<UpAxis>()) up_->addItem(QString::fromStdString(name));
   up_->setCurrentText(toString(UpAxis::Y));
   up_->setToolTip(
       "the axis that points up in the inputs (z for most CAD and STL files): "
@@ -83,8 +84,7 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   const WrapOptions wrapDefaults;
   wrap_ = new QComboBox;
   wrap_->setObjectName("wrap");
-  for (WrapMode mode : {WrapMode::Auto, WrapMode::Always, WrapMode::Never})
-    wrap_->addItem(toString(mode));
+  for (const std::string& name : namesOf<WrapMode>()) wrap_->addItem(QString::fromStdString(name));
   wrap_->setToolTip(
       "auto: wrap the inputs that repair cannot close (holes, open sheets, overlapping parts) or "
       "that no mesher accepts in a closed surface (CGAL's alpha wrap) and mesh that; always: "
@@ -194,12 +194,12 @@ bool BuildDialog::start() {
   options.levels = levels_->value();
   options.minElements = minElements_->value();
   options.maxElements = maxElements_->value();
-  options.mesher = mesher_->currentIndex() == 1 ? MesherKind::Netgen : MesherKind::TetGen;
+  options.mesher = fromName<MesherKind>(mesher_->currentText().toStdString());
   options.decimate = decimate_->isChecked();
   options.sizeToTargets = sizeToTargets_->isChecked();
   options.jobs = jobs_->value();
-  options.up = *parseUpAxis(up_->currentText().toStdString());
-  options.wrap.mode = *parseWrapMode(wrap_->currentText().toStdString());
+  options.up = fromName<UpAxis>(up_->currentText().toStdString());
+  options.wrap.mode = fromName<WrapMode>(wrap_->currentText().toStdString());
   options.wrap.alpha = wrapAlpha_->value();
   options.wrap.offset = wrapOffset_->value();
   options.qualities.clear();

@@ -70,6 +70,24 @@ QComboBox* combo(const char* name, const QStringList& items) {
   return c;
 }
 
+// A combo box offering the names of E's schema (OptionSchema.h), `current`
+// chosen, the names' help as its tip.
+template <SchemaEnum E>
+QComboBox* enumCombo(const char* name, E current) {
+  QStringList items;
+  for (const std::string& item : namesOf<E>()) items << QString::fromStdString(item);
+  QComboBox* c = combo(name, items);
+  c->setCurrentText(toString(current));
+  c->setToolTip(QString::fromStdString(helpOf<E>()));
+  return c;
+}
+
+// The value the box names.
+template <SchemaEnum E>
+E chosen(const QComboBox* box) {
+  return fromName<E>(box->currentText().toStdString());
+}
+
 // A simulation frame to start from (startFromFrame), not a scene to open.
 bool isFrameFile(const std::filesystem::path& path) {
   return lowerExtension(path) == ".vtu";
@@ -137,7 +155,7 @@ MainWindow::~MainWindow() {
 QWidget* MainWindow::buildViewDock() {
   auto* w = new QWidget;
   auto* form = new QFormLayout(w);
-  renderPath_ = combo("renderPath", {"cpu", "gpu-1pass", "gpu-2pass", "fur-cpu", "fur-gpu"});
+  renderPath_ = enumCombo("renderPath", RenderPath::Cpu);
   form->addRow("Render path", renderPath_);
   connect(renderPath_, &QComboBox::currentTextChanged, this,
           [this](const QString& name) { setRenderPath(name); });
@@ -167,13 +185,10 @@ QWidget* MainWindow::buildViewDock() {
     scene_->setPrescribedNodesShown(on);
     renderNow();
   });
-  QStringList controlStyles;
-  for (const char* style : kControlMeshStyleNames) controlStyles << style;
-  controlStyle_ = combo("controlStyle", controlStyles);
-  controlStyle_->setCurrentText("wireframe");
+  controlStyle_ = enumCombo("controlStyle", ControlMeshStyle::Wireframe);
   form->addRow("Control mesh", controlStyle_);
   connect(controlStyle_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    scene_->setControlStyle(parseControlMeshStyle(name.toStdString()));
+    scene_->setControlStyle(fromName<ControlMeshStyle>(name.toStdString()));
     renderNow();
   });
   controlLevel_ = new QSpinBox;
@@ -183,24 +198,21 @@ QWidget* MainWindow::buildViewDock() {
     scene_->setControlLevel(level);
     renderNow();
   });
-  camera_ = combo("camera", {"iso", "front", "side", "top"});
+  camera_ = enumCombo("camera", CameraPreset::Iso);
   form->addRow("Camera", camera_);
   connect(camera_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    scene_->setCamera(parseCameraPreset(name.toStdString()));
+    scene_->setCamera(fromName<CameraPreset>(name.toStdString()));
     renderNow();
   });
   // The dataset's up axis (its config's, or y): for a z-up model opened
   // as bare .node/.ele, or a config that does not say. The camera and the
   // next run follow it.
-  QStringList axes;
-  for (const std::string& name : upAxisNames()) axes << QString::fromStdString(name);
-  upAxis_ = combo("up", axes);
-  upAxis_->setCurrentText("y");
+  upAxis_ = enumCombo("up", UpAxis::Y);
   upAxis_->setToolTip("the axis that points up: camera presets, scenarios, floor and gravity");
   form->addRow("Up axis", upAxis_);
   connect(upAxis_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
     if (!scene_->hasDataset()) return;
-    scene_->setUpAxis(*parseUpAxis(name.toStdString()));
+    scene_->setUpAxis(*parseName<UpAxis>(name.toStdString()));
     resetSimulation();
     renderNow();
   });
@@ -210,7 +222,7 @@ QWidget* MainWindow::buildViewDock() {
   furShells_->setValue(16);
   furLength_ = numberBox("furLength", kLeastPositive, 1, FurParameters{}.length,
                          "fur length / the surface's bounding-box diagonal, in (0, 1]");
-  furLighting_ = combo("furLighting", {"velvet", "kajiya-kay"});
+  furLighting_ = enumCombo("furLighting", FurParameters{}.lighting);
   furFins_ = new QCheckBox("fins at silhouettes");
   furFins_->setObjectName("furFins");
   form->addRow("Fur shells", furShells_);
@@ -237,7 +249,8 @@ QWidget* MainWindow::buildBindingDock() {
   auto* w = new QWidget;
   auto* layout = new QVBoxLayout(w);
   auto* form = new QFormLayout;
-  colorBy_ = combo("colorBy", {"material", "MinBarycentric", "Distance", "FaceId"});
+  colorBy_ = enumCombo("colorBy", ColorBy::Material);
+  colorBy_->setToolTip("the surface's material, or an array of its binding");
   form->addRow("Colour by", colorBy_);
   connect(colorBy_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
     scene_->setColorBy(static_cast<ColorBy>(index));
@@ -262,7 +275,7 @@ QWidget* MainWindow::buildBindingDock() {
   vertexInfo_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   layout->addWidget(vertexInfo_);
   auto* rebindRow = new QHBoxLayout;
-  rebindMethod_ = combo("rebindMethod", {"closest", "seed", "embed"});
+  rebindMethod_ = enumCombo("rebindMethod", BindingMethod::Closest);
   rebindLevel_ = new QSpinBox;
   rebindLevel_->setObjectName("rebindLevel");
   auto* rebind = new QPushButton("Rebind");
@@ -274,8 +287,7 @@ QWidget* MainWindow::buildBindingDock() {
   layout->addLayout(rebindRow);
   connect(rebind, &QPushButton::clicked, this, [this] {
     try {
-      const auto method = parseBindingMethod(rebindMethod_->currentText().toStdString());
-      scene_->rebind(*method, rebindLevel_->value());
+      scene_->rebind(chosen<BindingMethod>(rebindMethod_), rebindLevel_->value());
       closeRunIfItNoLongerFits();
       controlLevel_->setValue(scene_->level());
       resetSimulation();
@@ -380,31 +392,24 @@ QWidget* MainWindow::buildSimulationDock() {
   form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
   scenarioRows_ = new ScenarioRows(form, interactive_);
-  solver_ = combo("solver", {"auto", "cg", "multigrid"});
-  tangent_ = combo("tangent", {"full", "warped"});
-  tangent_->setToolTip(
-      "full: R K R^T and the rotation term (steady under large steps on stretched bodies); "
-      "warped: R K R^T alone (stiffness warping, a cheaper element pass)");
+  const SimulationOptions defaults;
+  solver_ = enumCombo("solver", SolverKind::Automatic);
+  tangent_ = enumCombo("tangent", defaults.tangent);
   // The relative residual each solve reaches: a looser one is much cheaper
   // for interactive use (doc/benchmarks.md: the tolerance table).
   tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
   tolerance_->setCurrentText("1e-6");
-  tolerance_->setToolTip("relative residual of each linear solve (simulate --tolerance)");
+  tolerance_->setToolTip(QString(simulation_option::kTolerance.help) + " (simulate " +
+                         simulation_option::kTolerance.flag + ")");
   // The ranges are those the simulation accepts (CorotatedFem, Simulation).
-  const ElasticMaterial material;
-  timeStep_ = numberBox("timeStep", kLeastPositive, kLargest, SimulationOptions{}.timeStep,
-                        "seconds per implicit step (simulate --dt)");
-  young_ =
-      numberBox("young", kLeastPositive, kLargest, material.youngsModulus, "Young's modulus, Pa");
-  poisson_ = numberBox("poisson", std::nextafter(-1.0, 0.0), std::nextafter(0.5, 0.0),
-                       material.poissonRatio, "Poisson's ratio, in (-1, 0.5)");
+  timeStep_ = numberBox("timeStep", simulation_option::kTimeStep);
+  young_ = numberBox("young", material_option::kYoungsModulus);
+  poisson_ = numberBox("poisson", material_option::kPoissonRatio);
   poisson_->setSingleStep(0.01);
   poisson_->setStepType(QAbstractSpinBox::DefaultStepType);
-  density_ = numberBox("density", kLeastPositive, kLargest, material.density, "density, kg/m^3");
-  massDamping_ = numberBox("massDamping", 0, kLargest, material.massDamping,
-                           "Rayleigh alpha: damping proportional to the mass, 1/s");
-  stiffnessDamping_ = numberBox("stiffnessDamping", 0, kLargest, material.stiffnessDamping,
-                                "Rayleigh beta: damping proportional to the stiffness, s");
+  density_ = numberBox("density", material_option::kDensity);
+  massDamping_ = numberBox("massDamping", material_option::kMassDamping);
+  stiffnessDamping_ = numberBox("stiffnessDamping", material_option::kStiffnessDamping);
   form->addRow("Solver", solver_);
   form->addRow("Tangent", tangent_);
   form->addRow("Tolerance", tolerance_);
@@ -596,7 +601,7 @@ void MainWindow::setRenderPath(const QString& name) {
     return;
   }
   try {
-    scene_->setRenderPath(parseRenderPath(name.toStdString()));
+    scene_->setRenderPath(fromName<RenderPath>(name.toStdString()));
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     const QSignalBlocker block(renderPath_);
@@ -610,7 +615,7 @@ FurParameters MainWindow::furFromControls() const {
   fur.shells = furShells_->value();
   fur.minShells = std::min(fur.minShells, fur.shells);
   fur.length = furLength_->value();
-  fur.lighting = parseFurLighting(furLighting_->currentText().toStdString());
+  fur.lighting = chosen<FurLighting>(furLighting_);
   fur.fins = furFins_->isChecked();
   return fur;
 }
@@ -641,9 +646,9 @@ void MainWindow::resetSimulation() {
   options.material.density = density_->value();
   options.material.massDamping = massDamping_->value();
   options.material.stiffnessDamping = stiffnessDamping_->value();
-  options.solver = solverKindFromString(solver_->currentText().toStdString());
+  options.solver = chosen<SolverKind>(solver_);
   options.tolerance = tolerance_->currentText().toDouble();
-  options.tangent = tangentFromString(tangent_->currentText().toStdString());
+  options.tangent = chosen<Tangent>(tangent_);
   try {
     RunSpec spec;
     spec.level = scene_->level();

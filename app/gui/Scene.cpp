@@ -63,10 +63,6 @@ vtkSmartPointer<vtkActor> overlayActor(double r, double g, double b, float point
 
 }  // namespace
 
-const char* toString(ColorBy c) {
-  return c == ColorBy::Material ? "material" : arrayName(c);
-}
-
 Scene::Scene(vtkRenderer* renderer) : renderer_(renderer) {
   styleBackground(renderer_);
   problems_ = overlayActor(1.0, 0.15, 0.1, 7);
@@ -189,8 +185,8 @@ void Scene::rebuildControl() {
   const TetMesh rest = extractLevel(dataset_->mesh, controlLevel_);
   if (controlLevel_ != level_)
     controlTransfer_ = nodalProlongation(extractLevel(dataset_->mesh, level_), rest.nodes);
-  if (!controlStyle_) return;
-  control_ = std::make_unique<ControlMeshActor>(rest, *controlStyle_);
+  if (controlStyle_ == ControlMeshStyle::None) return;
+  control_ = std::make_unique<ControlMeshActor>(rest, controlStyle_);
   control_->actor()->PickableOff();
   renderer_->AddActor(control_->actor());
   updateControlActor();
@@ -236,7 +232,7 @@ void Scene::setFurParameters(const FurParameters& fur) {
   showDrawing(std::move(drawing));
 }
 
-void Scene::setControlStyle(std::optional<ControlMeshStyle> style) {
+void Scene::setControlStyle(ControlMeshStyle style) {
   controlStyle_ = style;
   rebuildControl();
 }

@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "tetskin/binding/BindingSummary.h"
+#include "tetskin/core/ArrayNames.h"
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/RunConditions.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -33,9 +35,21 @@ class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace tetskin::gui {
-
+// What colours the surface: its material, or a binding array.
 enum class ColorBy { Material, MinBarycentric, Distance, FaceId };
-const char* toString(ColorBy colorBy);
+}  // namespace tetskin::gui
+
+template <>
+struct tetskin::EnumSchema<tetskin::gui::ColorBy> {
+  static constexpr const char* what = "colouring";
+  static constexpr EnumValue<gui::ColorBy> values[] = {
+      {gui::ColorBy::Material, "material", ""},
+      {gui::ColorBy::MinBarycentric, arrays::kMinBarycentric, ""},
+      {gui::ColorBy::Distance, arrays::kDistance, ""},
+      {gui::ColorBy::FaceId, arrays::kFaceId, ""}};
+};
+
+namespace tetskin::gui {
 
 struct VertexInfo {
   Index vertex = -1;
@@ -72,8 +86,8 @@ class Scene {
   void setRenderPath(RenderPath path);
   RenderPath renderPath() const { return path_; }
   void setFurParameters(const FurParameters& fur);
-  void setControlStyle(std::optional<ControlMeshStyle> style);  // nullopt: hidden
-  std::optional<ControlMeshStyle> controlStyle() const { return controlStyle_; }
+  void setControlStyle(ControlMeshStyle style);
+  ControlMeshStyle controlStyle() const { return controlStyle_; }
   // The shown control level. Another level than level() follows the
   // simulated one: each of its nodes moves with the simulated level's
   // displacement interpolated at its rest position (barycentric in the
@@ -181,7 +195,7 @@ class Scene {
   RenderPath path_ = RenderPath::Cpu;
   CameraPreset camera_ = CameraPreset::Iso;
   FurParameters fur_;
-  std::optional<ControlMeshStyle> controlStyle_ = ControlMeshStyle::Wireframe;
+  ControlMeshStyle controlStyle_ = ControlMeshStyle::Wireframe;
   bool surfaceVisible_ = true, furVisible_ = true, highlight_ = false;
   ColorBy colorBy_ = ColorBy::Material;
   Index highlighted_ = 0;

@@ -71,4 +71,17 @@ ScientificSpinBox* numberBox(const char* name, double min, double max, double va
   return box;
 }
 
+ScientificSpinBox* numberBox(const char* name, const NumberOption& option) {
+  const NumberRange& r = option.range;
+  // (0 excluded: kLeastPositive, the least normal number, as everywhere.)
+  const double min = std::isinf(r.min) ? -kLargest
+                     : r.minIncluded   ? r.min
+                     : r.min == 0      ? kLeastPositive
+                                       : std::nextafter(r.min, kLargest);
+  const double max = std::isinf(r.max) ? kLargest
+                     : r.maxIncluded   ? r.max
+                                       : std::nextafter(r.max, -kLargest);
+  return numberBox(name, min, max, option.defaultValue, option.help);
+}
+
 }  // namespace tetskin::gui

@@ -11,6 +11,8 @@
 #include <QDoubleSpinBox>
 #include <limits>
 
+#include "tetskin/core/OptionSchema.h"
+
 namespace tetskin::gui {
 
 class ScientificSpinBox : public QDoubleSpinBox {
@@ -33,5 +35,8 @@ inline constexpr double kLargest = std::numeric_limits<double>::max();
 // A box named `name` (for tests and settings) over [min, max], set to value.
 ScientificSpinBox* numberBox(const char* name, double min, double max, double value,
                              const char* tip);
+// A box over the option's range (an excluded bound: the nearest number
+// inside it), set to its default, its help as tip.
+ScientificSpinBox* numberBox(const char* name, const NumberOption& option);
 
 }  // namespace tetskin::gui

@@ -20,10 +20,21 @@
 #include <string_view>
 
 #include "MainWindow.h"
+#include "Scene.h"
+#include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/ImageSize.h"
+#include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/rendering/RenderPath.h"
 #include "tetskin/rendering/XDisplay.h"
+#include "tetskin/simulation/Scenario.h"
 
 namespace {
+
+// "a, b or c": the names a choice offers (OptionSchema.h).
+template <tetskin::SchemaEnum E>
+QString choices() {
+  return QString::fromStdString(tetskin::oneOf(tetskin::namesOf<E>()));
+}
 
 // The command line: declared once, read before a display is needed (help,
 // version and usage errors work over ssh), and again once the QApplication
@@ -31,21 +42,24 @@ namespace {
 struct GuiArguments {
   QCommandLineParser parser;
   QCommandLineOption screenshot{"screenshot", "render one frame to FILE (PNG) and exit", "FILE"};
-  QCommandLineOption path{"path", "cpu, gpu-1pass, gpu-2pass, fur-cpu or fur-gpu", "PATH", "cpu"};
+  QCommandLineOption path{"path", choices<tetskin::RenderPath>(), "PATH", "cpu"};
   QCommandLineOption size{"size",
                           "with --screenshot the image's size (the view's, or with --window "
                           "the window's), else the window's: WIDTHxHEIGHT",
                           "WxH", "1280x800"};
-  QCommandLineOption camera{"camera", "iso, front, side or top", "PRESET", "iso"};
+  QCommandLineOption camera{"camera", choices<tetskin::CameraPreset>(), "PRESET", "iso"};
   QCommandLineOption whole{"window", "with --screenshot: the whole window, docks included"};
-  QCommandLineOption control{"control", "control mesh: none, surface, wireframe, shrink", "STYLE"};
-  QCommandLineOption colorBy{"color-by", "material, MinBarycentric, Distance or FaceId", "ARRAY"};
+  QCommandLineOption control{"control", "control mesh: " + choices<tetskin::ControlMeshStyle>(),
+                             "STYLE"};
+  QCommandLineOption colorBy{"color-by", choices<tetskin::gui::ColorBy>(), "ARRAY"};
   QCommandLineOption highlight{"highlight", "mark vertices with negative weights or far"};
   QCommandLineOption prescribed{"prescribed",
                                 "mark the nodes the simulation holds still or drives"};
   QCommandLineOption pick{"pick", "inspect the vertex at the centre of the view"};
-  QCommandLineOption scenario{"scenario", "wobble, drop, twist or sag (the Simulation dock's)",
-                              "NAME"};
+  QCommandLineOption scenario{
+      "scenario",
+      QString::fromStdString(tetskin::oneOf(tetskin::scenarioNames())) + " (the Simulation dock's)",
+      "NAME"};
   QCommandLineOption steps{"steps", "simulate N steps first", "N", "0"};
   QCommandLineOption noOverlay{"no-overlay", "hide the frame statistics (View > Frame statistics)"};
   // Checked values.

@@ -327,3 +327,9 @@ tetskin_cli_test(simulate_run_at_rest SETUP run_at_rest
 tetskin_cli_test(simulate_drop_to_draw SETUP drop_run
   ARGS simulate ${data}/bunny.json --scenario drop --level 0 --steps 60 --every 20
        -o ${cli_out}/drop/run.pvd)
+# The schema's range (simulation_option::kTolerance), checked on the
+# command line before any work.
+tetskin_cli_test(simulate_tolerance_out_of_range FAIL STATUS 1
+  STDERR "^error: --tolerance: 1 is not in \\(0, 1\\) \\(see tetskin simulate --help\\)\n$"
+  NOT_EXIST ${cli_out}/tolerance1.pvd
+  ARGS simulate ${data}/bunny.json --tolerance 1 -o ${cli_out}/tolerance1.pvd)

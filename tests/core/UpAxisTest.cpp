@@ -10,12 +10,12 @@ namespace {
 
 TEST(UpAxis, NamesReadBackAndOthersAreRefused) {
   for (UpAxis up : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
-    EXPECT_EQ(parseUpAxis(toString(up)), up);
+    EXPECT_EQ(parseName<UpAxis>(toString(up)), up);
     EXPECT_EQ(upVector(up)[axisIndex(up)], 1.0);
     EXPECT_EQ(upVector(up).norm(), 1.0);
   }
-  EXPECT_EQ(parseUpAxis("Z"), UpAxis::Z);
-  for (const char* bad : {"", "w", "-z", "zz", "up"}) EXPECT_FALSE(parseUpAxis(bad)) << bad;
+  EXPECT_EQ(parseName<UpAxis>("Z"), UpAxis::Z);
+  for (const char* bad : {"", "w", "-z", "zz", "up"}) EXPECT_FALSE(parseName<UpAxis>(bad)) << bad;
 }
 
 // fromYUp is a proper rotation taking y to the up axis, so directions given

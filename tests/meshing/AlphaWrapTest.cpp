@@ -29,8 +29,8 @@ void expectClosedManifold(const SurfaceMesh& wrap) {
 
 TEST(AlphaWrap, ModeNamesRoundTrip) {
   for (WrapMode mode : {WrapMode::Never, WrapMode::Auto, WrapMode::Always})
-    EXPECT_EQ(parseWrapMode(toString(mode)), mode);
-  EXPECT_FALSE(parseWrapMode("sometimes"));
+    EXPECT_EQ(parseName<WrapMode>(toString(mode)), mode);
+  EXPECT_FALSE(parseName<WrapMode>("sometimes"));
 }
 
 // A closed sphere's wrap lies outside it at about the offset: every wrap

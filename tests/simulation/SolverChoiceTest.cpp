@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/simulation/Simulation.h"
 #include "tetskin/simulation/SolverChoice.h"
 
 namespace tetskin {
@@ -138,9 +139,31 @@ TEST(SolverChoice, RefusesEmptyTrials) {
 
 TEST(SolverChoice, SolverNamesRoundTrip) {
   for (Kind kind : {Kind::ConjugateGradient, Kind::Multigrid, Kind::Automatic})
-    EXPECT_EQ(solverKindFromString(toString(kind)), kind);
+    EXPECT_EQ(fromName<SolverKind>(toString(kind)), kind);
   EXPECT_STREQ(toString(Kind::Automatic), "auto");
-  EXPECT_THROW(solverKindFromString("gmres"), Error);
+  EXPECT_THROW(fromName<SolverKind>("gmres"), Error);
+  for (CoarseOperators kind : {CoarseOperators::Galerkin, CoarseOperators::Rediscretized})
+    EXPECT_EQ(fromName<CoarseOperators>(toString(kind)), kind);
+  for (Tangent tangent : {Tangent::Full, Tangent::Warped})
+    EXPECT_EQ(fromName<Tangent>(toString(tangent)), tangent);
+}
+
+// SimulationOptions' defaults are the schema's, and each is in its range.
+TEST(SolverChoice, SimulationOptionDefaultsAreTheSchemas) {
+  using namespace simulation_option;
+  const SimulationOptions o;
+  EXPECT_EQ(o.timeStep, kTimeStep.defaultValue);
+  EXPECT_EQ(o.tolerance, kTolerance.defaultValue);
+  EXPECT_EQ(o.guessSolutions, kGuessSolutions.defaultValue);
+  EXPECT_EQ(o.coarseReuse, kCoarseReuse.defaultValue);
+  EXPECT_EQ(o.maxIterations, kMaxIterations.defaultValue);
+  EXPECT_EQ(o.friction, kFriction.defaultValue);
+  EXPECT_EQ(o.floorStiffness, kFloorStiffness.defaultValue);
+  for (const NumberOption* option : {&kTimeStep, &kTolerance, &kGuessSolutions, &kCoarseReuse,
+                                     &kMaxIterations, &kFriction, &kFloorStiffness})
+    EXPECT_FALSE(option->problem(option->defaultValue)) << option->key;
+  EXPECT_EQ(*kTolerance.problem(1),
+            "the solver tolerance (a relative residual) must lie in (0, 1), got 1");
 }
 
 }  // namespace

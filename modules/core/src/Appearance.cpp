@@ -8,16 +8,6 @@
 
 namespace tetskin {
 
-const char* toString(FurLighting lighting) {
-  return lighting == FurLighting::KajiyaKay ? "kajiya-kay" : "velvet";
-}
-
-FurLighting parseFurLighting(std::string_view name) {
-  if (name == "velvet") return FurLighting::Velvet;
-  if (name == "kajiya-kay") return FurLighting::KajiyaKay;
-  throw Error("unknown fur lighting '" + std::string(name) + "' (known: velvet, kajiya-kay)");
-}
-
 std::optional<FurParameterProblem> furParameterProblem(const FurParameters& p) {
   std::optional<FurParameterProblem> problem;
   auto check = [&](const char* key, double value, double min, double max,

@@ -1,32 +1,24 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/ElasticMaterial.h"
 
-#include <cmath>
 #include <string>
 
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
 
+std::array<MaterialField, 5> materialFields() {
+  using namespace material_option;
+  return {{{&kYoungsModulus, &ElasticMaterial::youngsModulus},
+           {&kPoissonRatio, &ElasticMaterial::poissonRatio},
+           {&kDensity, &ElasticMaterial::density},
+           {&kMassDamping, &ElasticMaterial::massDamping},
+           {&kStiffnessDamping, &ElasticMaterial::stiffnessDamping}}};
+}
+
 std::optional<MaterialProblem> materialProblem(const ElasticMaterial& m) {
-  auto problem = [](const char* key, const std::string& what, double value) {
-    return MaterialProblem{key, what + ", got " + formatNumber(value)};
-  };
-  if (!(m.youngsModulus > 0) || !std::isfinite(m.youngsModulus))
-    return problem("youngs_modulus", "Young's modulus must be finite and positive",
-                   m.youngsModulus);
-  // (-1, 0.5): where isotropic linear elasticity is positive definite;
-  // negative ratios are auxetic materials.
-  if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
-    return problem("poisson_ratio", "Poisson's ratio must lie in (-1, 0.5)", m.poissonRatio);
-  if (!(m.density > 0) || !std::isfinite(m.density))
-    return problem("density", "density must be finite and positive", m.density);
-  if (!(m.massDamping >= 0) || !std::isfinite(m.massDamping))
-    return problem("mass_damping", "Rayleigh mass damping (alpha) must be finite and >= 0",
-                   m.massDamping);
-  if (!(m.stiffnessDamping >= 0) || !std::isfinite(m.stiffnessDamping))
-    return problem("stiffness_damping", "Rayleigh stiffness damping (beta) must be finite and >= 0",
-                   m.stiffnessDamping);
+  for (const MaterialField& f : materialFields())
+    if (auto what = f.option->problem(m.*f.field)) return MaterialProblem{f.option->key, *what};
   return std::nullopt;
 }
 

@@ -15,34 +15,6 @@ void SurfaceBinding::resize(Index vertices) {
   minBarycentric.setZero(vertices);
 }
 
-const char* toString(BindingMethod method) {
-  switch (method) {
-    case BindingMethod::Closest:
-      return "closest";
-    case BindingMethod::Seed:
-      return "seed";
-    case BindingMethod::Embed:
-      return "embed";
-  }
-  return "?";
-}
-
-const char* toString(OffsetMode offset) {
-  return offset == OffsetMode::Normal ? "normal" : "displacement";
-}
-
-std::optional<BindingMethod> parseBindingMethod(std::string_view text) {
-  for (BindingMethod m : {BindingMethod::Closest, BindingMethod::Seed, BindingMethod::Embed})
-    if (text == toString(m)) return m;
-  return std::nullopt;
-}
-
-std::optional<OffsetMode> parseOffsetMode(std::string_view text) {
-  for (OffsetMode m : {OffsetMode::Normal, OffsetMode::Displacement})
-    if (text == toString(m)) return m;
-  return std::nullopt;
-}
-
 void validateBinding(const SurfaceBinding& b, Index surfaceVertices, Index nodeCount,
                      const std::string& name) {
   if (b.controlIds.rows() != surfaceVertices || b.weights.rows() != surfaceVertices ||

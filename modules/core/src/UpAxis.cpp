@@ -1,40 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/core/UpAxis.h"
 
-#include <cctype>
-#include <string>
-
 namespace tetskin {
-
-const char* toString(UpAxis up) {
-  switch (up) {
-    case UpAxis::X:
-      return "x";
-    case UpAxis::Y:
-      return "y";
-    case UpAxis::Z:
-      return "z";
-  }
-  return "y";
-}
-
-std::optional<UpAxis> parseUpAxis(std::string_view name) {
-  if (name.size() != 1) return std::nullopt;
-  switch (std::tolower(static_cast<unsigned char>(name[0]))) {
-    case 'x':
-      return UpAxis::X;
-    case 'y':
-      return UpAxis::Y;
-    case 'z':
-      return UpAxis::Z;
-    default:
-      return std::nullopt;
-  }
-}
-
-std::vector<std::string> upAxisNames() {
-  return {toString(UpAxis::X), toString(UpAxis::Y), toString(UpAxis::Z)};
-}
 
 Eigen::Vector3d upVector(UpAxis up) {
   return Eigen::Vector3d::Unit(axisIndex(up));

@@ -209,7 +209,7 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
   if (top.has("scale")) config.scale = top.number("scale", 0.0, 1e12, true);
   top.optional("scale");
   if (auto up = top.optionalString("up")) {
-    const std::optional<UpAxis> axis = parseUpAxis(*up);
+    const std::optional<UpAxis> axis = parseName<UpAxis>(*up);
     if (!axis) top.fail("/up", "must be \"x\", \"y\" or \"z\", found \"" + *up + "\"");
     config.up = *axis;
   }
@@ -249,7 +249,7 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     if (f.has("max_bend")) p.maxBend = f.anyNumber("max_bend");
     if (f.has("lighting")) {
       try {
-        p.lighting = parseFurLighting(f.string("lighting"));
+        p.lighting = fromName<FurLighting>(f.string("lighting"));
       } catch (const Error& e) {
         f.fail("/fur/lighting", e.what());
       }

@@ -43,24 +43,6 @@ SurfaceMesh wrapReady(const SurfaceMesh& input, const RepairOptions& repair, Ind
   return mesh;
 }
 
-const char* toString(WrapMode mode) {
-  switch (mode) {
-    case WrapMode::Never:
-      return "never";
-    case WrapMode::Auto:
-      return "auto";
-    case WrapMode::Always:
-      return "always";
-  }
-  return "?";
-}
-
-std::optional<WrapMode> parseWrapMode(std::string_view name) {
-  for (WrapMode mode : {WrapMode::Never, WrapMode::Auto, WrapMode::Always})
-    if (name == toString(mode)) return mode;
-  return std::nullopt;
-}
-
 bool hasArea(const SurfaceMesh& mesh) {
   for (Index t = 0; t < mesh.triangleCount(); ++t)
     if (triangleArea(mesh.positions.row(mesh.triangles(t, 0)).transpose(),

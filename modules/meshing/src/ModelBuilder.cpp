@@ -307,16 +307,6 @@ std::string levelOfDetailMismatch(const BoundingBox& finest, const BoundingBox& 
          "it); each is the same object, in the same place and units, at another resolution";
 }
 
-const char* toString(MesherKind mesher) {
-  return mesher == MesherKind::TetGen ? "tetgen" : "netgen";
-}
-
-std::optional<MesherKind> parseMesherKind(std::string_view name) {
-  if (name == "tetgen") return MesherKind::TetGen;
-  if (name == "netgen") return MesherKind::Netgen;
-  return std::nullopt;
-}
-
 std::string meshingLabel(MesherKind mesher, double quality, double sizeBound) {
   char text[64];
   if (mesher == MesherKind::TetGen)

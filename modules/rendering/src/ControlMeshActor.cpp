@@ -13,17 +13,6 @@
 
 namespace tetskin {
 
-std::optional<ControlMeshStyle> parseControlMeshStyle(std::string_view name) {
-  if (name == "none") return std::nullopt;
-  if (name == "surface") return ControlMeshStyle::Surface;
-  if (name == "wireframe") return ControlMeshStyle::Wireframe;
-  if (name == "shrink") return ControlMeshStyle::ShrunkenTets;
-  std::string known;
-  for (const char* style : kControlMeshStyleNames)
-    known += std::string(known.empty() ? "" : ", ") + style;
-  throw Error("unknown control mesh style '" + std::string(name) + "' (known: " + known + ")");
-}
-
 struct ControlMeshActor::Impl {
   vtkSmartPointer<vtkUnstructuredGrid> grid;
   vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
@@ -31,6 +20,7 @@ struct ControlMeshActor::Impl {
 
 ControlMeshActor::ControlMeshActor(const TetMesh& rest, ControlMeshStyle style)
     : impl_(std::make_unique<Impl>()) {
+  if (style == ControlMeshStyle::None) throw Error("a control mesh actor needs a style to draw");
   impl_->grid = toVtkUnstructuredGrid(rest);
   auto mapper = vtkSmartPointer<vtkDataSetMapper>::New();
   if (style == ControlMeshStyle::ShrunkenTets) {

@@ -17,14 +17,6 @@
 
 namespace tetskin {
 
-CameraPreset parseCameraPreset(std::string_view name) {
-  if (name == "front") return CameraPreset::Front;
-  if (name == "side") return CameraPreset::Side;
-  if (name == "top") return CameraPreset::Top;
-  if (name == "iso") return CameraPreset::Iso;
-  throw Error("unknown camera preset '" + std::string(name) + "' (front, side, top, iso)");
-}
-
 struct OffscreenView::Impl {
   vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "FloorContact.h"
 #include "ImplicitEuler.h"
@@ -17,25 +18,11 @@
 
 namespace tetskin {
 
-const char* toString(CoarseOperators kind) {
-  return kind == CoarseOperators::Galerkin ? "galerkin" : "rediscretized";
-}
-
 SimulationOptions uprightAlong(UpAxis up, SimulationOptions options) {
   options.up = up;
   options.gravity.setZero();  // (not -9.81 times the unit vector: no -0 printed)
   options.gravity[axisIndex(up)] = -kStandardGravity;
   return options;
-}
-
-const char* toString(Tangent tangent) {
-  return tangent == Tangent::Full ? "full" : "warped";
-}
-
-Tangent tangentFromString(const std::string& name) {
-  for (Tangent tangent : {Tangent::Full, Tangent::Warped})
-    if (name == toString(tangent)) return tangent;
-  throw Error("unknown tangent '" + name + "' (full or warped)");
 }
 
 namespace {
@@ -72,25 +59,17 @@ std::string firstBlownUpNode(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
 // Throws Error naming the first option out of its range (NaN included);
 // the material is CorotatedFem's to check.
 void validateOptions(const SimulationOptions& o) {
-  if (!(o.timeStep > 0) || !std::isfinite(o.timeStep))
-    throw Error("the time step must be a positive number of seconds, got " +
-                formatNumber(o.timeStep));
+  using namespace simulation_option;
+  for (const auto& [option, value] :
+       {std::pair{&kTimeStep, o.timeStep}, std::pair{&kTolerance, o.tolerance},
+        std::pair{&kGuessSolutions, static_cast<double>(o.guessSolutions)},
+        std::pair{&kCoarseReuse, static_cast<double>(o.coarseReuse)},
+        std::pair{&kMaxIterations, static_cast<double>(o.maxIterations)},
+        std::pair{&kFriction, o.friction}, std::pair{&kFloorStiffness, o.floorStiffness}})
+    if (const auto problem = option->problem(value)) throw Error(*problem);
   if (!o.gravity.allFinite()) throw Error("gravity must be finite");
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
-  if (!(o.floorStiffness >= 0) || !std::isfinite(o.floorStiffness))
-    throw Error("the floor stiffness must be >= 0 (0: automatic), got " +
-                formatNumber(o.floorStiffness));
-  if (!(o.friction >= 0 && o.friction <= 1))
-    throw Error("friction must lie in [0, 1], got " + formatNumber(o.friction));
-  if (!(o.tolerance > 0 && o.tolerance < 1))
-    throw Error("the solver tolerance (a relative residual) must lie in (0, 1), got " +
-                formatNumber(o.tolerance));
-  if (o.maxIterations < 1)
-    throw Error("the solver needs at least 1 iteration, got " + std::to_string(o.maxIterations));
-  if (o.coarseReuse < 1)
-    throw Error("the coarse-operator reuse must be at least 1 step, got " +
-                std::to_string(o.coarseReuse));
 }
 
 }  // namespace

@@ -7,25 +7,6 @@
 
 namespace tetskin {
 
-const char* toString(SolverKind kind) {
-  switch (kind) {
-    case SolverKind::ConjugateGradient:
-      return "cg";
-    case SolverKind::Multigrid:
-      return "multigrid";
-    case SolverKind::Automatic:
-      break;
-  }
-  return "auto";
-}
-
-SolverKind solverKindFromString(const std::string& name) {
-  for (SolverKind kind :
-       {SolverKind::ConjugateGradient, SolverKind::Multigrid, SolverKind::Automatic})
-    if (name == toString(kind)) return kind;
-  throw Error("unknown solver '" + name + "' (auto, cg or multigrid)");
-}
-
 SolverChoice::SolverChoice(int trialSteps, int period) : trialSteps_(trialSteps), period_(period) {
   if (trialSteps < 1 || period < 0)
     throw Error("solver choice: at least one trial step and a period of zero steps or more");

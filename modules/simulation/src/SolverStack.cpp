@@ -27,6 +27,9 @@ struct SolverStack::CoarseLevel {
   DirichletRows dirichlet;
 };
 
+static_assert(simulation_option::kGuessSolutions.range.max == kMaxProductColumns,
+              "the guess's solutions are those one pass over A multiplies");
+
 namespace {
 
 // The automatic solver's rounds: trial steps of each solver (at least a

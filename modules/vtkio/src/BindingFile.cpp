@@ -141,8 +141,8 @@ SurfaceBinding bindingArraysFromPolyData(vtkPolyData* data, const std::string& s
   if (!data) throw Error(source, 0, "no surface");
   vtkFieldData* fd = data->GetFieldData();
   SurfaceBinding b;
-  const auto method = parseBindingMethod(getString(fd, "Method", source));
-  const auto offset = parseOffsetMode(getString(fd, "Offset", source));
+  const auto method = parseName<BindingMethod>(getString(fd, "Method", source));
+  const auto offset = parseName<OffsetMode>(getString(fd, "Offset", source));
   if (!method || !offset) throw Error(source, 0, "unknown binding method or offset mode");
   b.method = *method;
   b.offset = *offset;

@@ -11,6 +11,8 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
+
 namespace tetskin {
 
 struct Material {
@@ -20,6 +22,13 @@ struct Material {
 };
 
 enum class FurLighting { Velvet, KajiyaKay };
+template <>
+struct EnumSchema<FurLighting> {
+  static constexpr const char* what = "fur lighting";
+  static constexpr EnumValue<FurLighting> values[] = {
+      {FurLighting::Velvet, "velvet", "a soft sheen"},
+      {FurLighting::KajiyaKay, "kajiya-kay", "strand highlights"}};
+};
 
 // The `fur` section; JSON keys in snake_case. Only `enabled`, `shells`,
 // `length`, `density`, `texture_size` and `seed` are required.
@@ -43,8 +52,6 @@ struct FurParameters {
   std::optional<std::filesystem::path> colorTexture;  // RGBA PNG over the surface's texcoords;
                                                       // alpha 0 = no fur (default: `texture`)
 };
-const char* toString(FurLighting lighting);
-FurLighting parseFurLighting(std::string_view name);  // throws Error
 
 // The first numeric fur parameter outside its range (the ranges noted in
 // FurParameters), as its config key and what is wrong, e.g. {"shells",

@@ -4,17 +4,48 @@
 // what the simulation needs of a body, and what a dataset config records
 // for it (section `elasticity`, keys as in materialProblem()).
 
+#include <array>
 #include <optional>
 #include <string>
 
+#include "tetskin/core/OptionSchema.h"
+
 namespace tetskin {
 
+// The material's options (OptionSchema.h): config keys, command-line flags,
+// ranges and defaults.
+namespace material_option {
+// The default: the bunny (10 m, 100 kg/m^3) sags about 5% under gravity.
+inline constexpr NumberOption kYoungsModulus{"youngs_modulus",      "--young", "Young's modulus",
+                                             "Young's modulus, Pa", above(0),  2.0e5};
+// (-1, 0.5): where isotropic linear elasticity is positive definite;
+// negative ratios are auxetic materials.
+inline constexpr NumberOption kPoissonRatio{"poisson_ratio",
+                                            "--poisson",
+                                            "Poisson's ratio",
+                                            "Poisson's ratio, in (-1, 0.5)",
+                                            between(-1, 0.5, false, false),
+                                            0.3};
+inline constexpr NumberOption kDensity{"density",         "--density", "density",
+                                       "density, kg/m^3", above(0),    100.0};
+inline constexpr NumberOption kMassDamping{
+    "mass_damping", "--alpha", "Rayleigh mass damping (alpha)", "Rayleigh mass damping, 1/s",
+    atLeast(0),     0.1};
+inline constexpr NumberOption kStiffnessDamping{"stiffness_damping",
+                                                "--beta",
+                                                "Rayleigh stiffness damping (beta)",
+                                                "Rayleigh stiffness damping, s",
+                                                atLeast(0),
+                                                0.01};
+}  // namespace material_option
+
 struct ElasticMaterial {
-  double youngsModulus = 2.0e5;    // Pa: the bunny (10 m, 100 kg/m^3) sags about 5% under gravity
-  double poissonRatio = 0.3;       // (-1, 0.5)
-  double density = 100.0;          // kg / m^3
-  double massDamping = 0.1;        // Rayleigh alpha: C = alpha M + beta K
-  double stiffnessDamping = 0.01;  // Rayleigh beta, seconds
+  double youngsModulus = material_option::kYoungsModulus.defaultValue;  // Pa
+  double poissonRatio = material_option::kPoissonRatio.defaultValue;
+  double density = material_option::kDensity.defaultValue;  // kg / m^3
+  double massDamping =
+      material_option::kMassDamping.defaultValue;  // Rayleigh alpha: C = alpha M + beta K
+  double stiffnessDamping = material_option::kStiffnessDamping.defaultValue;  // Rayleigh beta, s
 
   double lameLambda() const {
     return youngsModulus * poissonRatio / ((1 + poissonRatio) * (1 - 2 * poissonRatio));
@@ -32,6 +63,13 @@ struct MaterialProblem {
   std::string what;
 };
 std::optional<MaterialProblem> materialProblem(const ElasticMaterial& material);
+
+// Each option of the material with its field, in the order above.
+struct MaterialField {
+  const NumberOption* option;
+  double ElasticMaterial::*field;
+};
+std::array<MaterialField, 5> materialFields();
 
 // One line for people: "E 200000 Pa, nu 0.3, density 100 kg/m^3, alpha
 // 0.1, beta 0.01".

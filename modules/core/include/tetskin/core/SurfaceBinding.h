@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/Types.h"
 
 namespace tetskin {
@@ -47,10 +48,21 @@ struct SurfaceBinding {
   void resize(Index vertices);
 };
 
-const char* toString(BindingMethod method);
-const char* toString(OffsetMode offset);
-std::optional<BindingMethod> parseBindingMethod(std::string_view text);
-std::optional<OffsetMode> parseOffsetMode(std::string_view text);
+template <>
+struct EnumSchema<BindingMethod> {
+  static constexpr const char* what = "binding method";
+  static constexpr EnumValue<BindingMethod> values[] = {
+      {BindingMethod::Closest, "closest", "exact"},
+      {BindingMethod::Seed, "seed", "the report's"},
+      {BindingMethod::Embed, "embed", "tetrahedra"}};
+};
+template <>
+struct EnumSchema<OffsetMode> {
+  static constexpr const char* what = "offset mode";
+  static constexpr EnumValue<OffsetMode> values[] = {
+      {OffsetMode::Normal, "normal", "offset along the deformed triangle's normal"},
+      {OffsetMode::Displacement, "displacement", "the report's formula 4.1"}};
+};
 
 // Throws Error naming `name` and the vertex when sizes disagree, an id is
 // outside [0, nodeCount), or weights are not finite or do not sum to 1.

@@ -6,25 +6,27 @@
 // the camera presets follow it, so a z-up model stands on its feet.
 
 #include <Eigen/Core>
-#include <optional>
-#include <string>
-#include <string_view>
-#include <vector>
+
+#include "tetskin/core/OptionSchema.h"
 
 namespace tetskin {
 
 enum class UpAxis { X = 0, Y = 1, Z = 2 };
 
-// The coordinate index (0, 1, 2) and name ("x", "y", "z").
+// "x", "y", "z" (any letter case), in coordinate order: the choices the
+// command line and the GUI offer.
+template <>
+struct EnumSchema<UpAxis> {
+  static constexpr const char* what = "up axis";
+  static constexpr EnumValue<UpAxis> values[] = {
+      {UpAxis::X, "x", ""}, {UpAxis::Y, "y", ""}, {UpAxis::Z, "z", ""}};
+  static constexpr bool anyCase = true;
+};
+
+// The coordinate index (0, 1, 2).
 inline int axisIndex(UpAxis up) {
   return static_cast<int>(up);
 }
-const char* toString(UpAxis up);
-// "x", "y" or "z" (any letter case); nullopt for anything else.
-std::optional<UpAxis> parseUpAxis(std::string_view name);
-// The names of the axes in coordinate order ("x", "y", "z"): the choices
-// the command line and the GUI offer.
-std::vector<std::string> upAxisNames();
 
 // The unit vector along the axis.
 Eigen::Vector3d upVector(UpAxis up);

@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/meshing/SurfaceRepair.h"
 #include "tetskin/spatial/SurfaceDistance.h"
@@ -24,9 +25,16 @@ namespace tetskin {
 // (wrap only the inputs repair cannot close, or that no mesher run
 // accepts), always (wrap every input).
 enum class WrapMode { Never, Auto, Always };
-const char* toString(WrapMode mode);
-// "never", "auto" or "always"; nullopt otherwise.
-std::optional<WrapMode> parseWrapMode(std::string_view name);
+template <>
+struct EnumSchema<WrapMode> {
+  static constexpr const char* what = "wrap mode";
+  static constexpr EnumValue<WrapMode> values[] = {
+      {WrapMode::Auto, "auto",
+       "those that repair cannot close or that no mesher accepts: holes, open sheets, "
+       "overlapping parts"},
+      {WrapMode::Always, "always", ""},
+      {WrapMode::Never, "never", ""}};
+};
 
 // Alpha and offset as fractions of the input's bounding-box diagonal. The
 // defaults were measured on the bundled bunny cut open and on scans (see

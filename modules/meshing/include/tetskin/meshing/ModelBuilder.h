@@ -21,7 +21,12 @@ namespace tetskin {
 
 enum class MesherKind { TetGen, Netgen };
 // "tetgen" or "netgen": in the config, the build options and messages.
-const char* toString(MesherKind mesher);
+template <>
+struct EnumSchema<MesherKind> {
+  static constexpr const char* what = "mesher";
+  static constexpr EnumValue<MesherKind> values[] = {{MesherKind::TetGen, "tetgen", ""},
+                                                     {MesherKind::Netgen, "netgen", ""}};
+};
 
 // Why `box` is not the bounding box of a level of detail of the object whose
 // finest level (`finestName`) spans `finest`: levels of one object share
@@ -31,7 +36,6 @@ const char* toString(MesherKind mesher);
 // relate. (build's inputs, and convert's imported meshes.)
 std::string levelOfDetailMismatch(const BoundingBox& finest, const BoundingBox& box,
                                   const std::string& finestName);
-std::optional<MesherKind> parseMesherKind(std::string_view name);
 
 // How a candidate (and the level made from it) is named in reports: the
 // TetGen quality "q1.4" or the Netgen preset "moderate", and a size bound

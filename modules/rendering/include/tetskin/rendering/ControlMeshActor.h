@@ -10,22 +10,28 @@
 #include <optional>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/TetMesh.h"
 
 class vtkActor;
 
 namespace tetskin {
 
-enum class ControlMeshStyle { Surface, Wireframe, ShrunkenTets };
-// The names the command line and the GUI offer: "none" (no control mesh
-// drawn), "surface", "wireframe", "shrink".
-inline constexpr std::array<const char*, 4> kControlMeshStyleNames = {"none", "surface",
-                                                                      "wireframe", "shrink"};
-// One of kControlMeshStyleNames ("none": nullopt); throws Error otherwise.
-std::optional<ControlMeshStyle> parseControlMeshStyle(std::string_view name);
+// How the control mesh is drawn; None: not at all.
+enum class ControlMeshStyle { None, Surface, Wireframe, ShrunkenTets };
+template <>
+struct EnumSchema<ControlMeshStyle> {
+  static constexpr const char* what = "control mesh style";
+  static constexpr EnumValue<ControlMeshStyle> values[] = {
+      {ControlMeshStyle::None, "none", ""},
+      {ControlMeshStyle::Surface, "surface", ""},
+      {ControlMeshStyle::Wireframe, "wireframe", ""},
+      {ControlMeshStyle::ShrunkenTets, "shrink", "shrunken tetrahedra"}};
+};
 
 class ControlMeshActor {
  public:
+  // `style` is not None (throws Error).
   ControlMeshActor(const TetMesh& rest, ControlMeshStyle style);
   ~ControlMeshActor();
   vtkActor* actor() const;

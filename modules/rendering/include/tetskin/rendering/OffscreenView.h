@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/UpAxis.h"
 
 class vtkRenderer;
@@ -19,7 +20,14 @@ class vtkImageData;
 namespace tetskin {
 
 enum class CameraPreset { Front, Side, Top, Iso };
-CameraPreset parseCameraPreset(std::string_view name);  // front, side, top, iso
+template <>
+struct EnumSchema<CameraPreset> {
+  static constexpr const char* what = "camera preset";
+  static constexpr EnumValue<CameraPreset> values[] = {{CameraPreset::Iso, "iso", ""},
+                                                       {CameraPreset::Front, "front", ""},
+                                                       {CameraPreset::Side, "side", ""},
+                                                       {CameraPreset::Top, "top", ""}};
+};
 // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
 void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6],
                  UpAxis up = UpAxis::Y);

@@ -3,6 +3,8 @@
 #include <string>
 #include <string_view>
 
+#include "tetskin/core/OptionSchema.h"
+
 namespace tetskin {
 
 // How the bound surface is deformed and drawn (the report's Table 6.1 columns).
@@ -14,9 +16,16 @@ enum class RenderPath {
   FurGpu,    // the gpu-2pass skin plus shells drawn instanced from its GPU buffers
 };
 
-// Throws Error for an unknown path.
-RenderPath parseRenderPath(std::string_view name);
-const char* toString(RenderPath path);
+template <>
+struct EnumSchema<RenderPath> {
+  static constexpr const char* what = "render path";
+  static constexpr EnumValue<RenderPath> values[] = {
+      {RenderPath::Cpu, "cpu", "threaded CPU deformer"},
+      {RenderPath::Gpu1Pass, "gpu-1pass", "vertex shader deformation"},
+      {RenderPath::Gpu2Pass, "gpu-2pass", "compute pass into GPU buffers, then the draw"},
+      {RenderPath::FurCpu, "fur-cpu", "the cpu skin with shells placed on the CPU"},
+      {RenderPath::FurGpu, "fur-gpu", "the gpu-2pass skin with instanced shells"}};
+};
 bool hasFur(RenderPath path);
 // How the skin under the fur is drawn (the path itself for the plain paths).
 RenderPath skinPath(RenderPath path);

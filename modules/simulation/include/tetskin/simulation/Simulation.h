@@ -48,41 +48,97 @@ class SolverStack;
 // coarse meshes' own corotated FEM (rediscretized) at positions interpolated
 // from the finer level, as sparse as the fine system.
 enum class CoarseOperators { Galerkin, Rediscretized };
-const char* toString(CoarseOperators kind);
+template <>
+struct EnumSchema<CoarseOperators> {
+  static constexpr const char* what = "coarse operators";
+  static constexpr EnumValue<CoarseOperators> values[] = {
+      {CoarseOperators::Galerkin, "galerkin", "P^T A P"},
+      {CoarseOperators::Rediscretized, "rediscretized", "each coarse mesh's own FEM"}};
+};
 
 // The implicit step's tangent stiffness: full (R K R^T and the rotation term
 // K_rot, CorotatedFem.h: steady under large steps on stretched bodies) or
 // warped (R K R^T alone, the stiffness warping of Müller et al. 2002: an
 // element pass about a quarter cheaper).
 enum class Tangent { Full, Warped };
-const char* toString(Tangent tangent);
-Tangent tangentFromString(const std::string& name);  // "full" or "warped"
+template <>
+struct EnumSchema<Tangent> {
+  static constexpr const char* what = "tangent";
+  static constexpr EnumValue<Tangent> values[] = {
+      {Tangent::Full, "full",
+       "R K R^T and the rotation term: steady under large steps on stretched bodies"},
+      {Tangent::Warped, "warped", "R K R^T alone, stiffness warping: a cheaper element pass"}};
+};
 
 inline constexpr double kStandardGravity = 9.81;  // m/s^2
 
+// The number options of a run (OptionSchema.h): their keys, flags, ranges
+// and defaults, read by SimulationOptions' defaults, its checks, the
+// command line and the GUI.
+namespace simulation_option {
+inline constexpr NumberOption kTimeStep{
+    "time_step", "--dt", "the time step", "seconds per implicit step", above(0), 1.0 / 60.0};
+inline constexpr NumberOption kTolerance{"tolerance",
+                                         "--tolerance",
+                                         "the solver tolerance (a relative residual)",
+                                         "relative residual of each solve",
+                                         between(0, 1, false, false),
+                                         1e-6};
+// At most kMaxProductColumns (NodeBlockMatrix.h): the guess's one pass over A.
+inline constexpr NumberOption kGuessSolutions{
+    "guess_solutions",
+    "--guess-solutions",
+    "the initial guess's solutions",
+    "start each solve from the best combination of the last N solutions (0: from the last one "
+    "as it is)",
+    between(0, 16),
+    6};
+inline constexpr NumberOption kCoarseReuse{
+    "coarse_reuse",
+    "--coarse-reuse",
+    "the coarse-operator reuse",
+    "multigrid: rebuild the coarse operators every N steps (solves stay exact)",
+    atLeast(1),
+    4};
+inline constexpr NumberOption kMaxIterations{
+    "max_iterations", "",  "the solver's iteration limit", "CG iterations per solve at most",
+    atLeast(1),       2000};
+inline constexpr NumberOption kFriction{
+    "friction",    "", "friction", "share of tangential velocity lost in floor contact",
+    between(0, 1), 0.3};
+inline constexpr NumberOption kFloorStiffness{
+    "floor_stiffness",
+    "",
+    "the floor stiffness (0: automatic)",
+    "floor penalty stiffness, N/m; 0: stiff enough for the mesh",
+    atLeast(0),
+    0};
+}  // namespace simulation_option
+
 struct SimulationOptions {
   ElasticMaterial material;
-  double timeStep = 1.0 / 60.0;
+  double timeStep = simulation_option::kTimeStep.defaultValue;
   Eigen::Vector3d gravity{0, -kStandardGravity, 0};
   UpAxis up = UpAxis::Y;              // the floor's normal (and the scenarios' vertical)
   std::optional<double> floorHeight;  // floor plane: the up coordinate = height
-  double floorStiffness = 0;          // penalty; 0 = automatic (stiff enough for this mesh)
-  double friction = 0.3;              // share of tangential velocity lost in contact
+  double floorStiffness = simulation_option::kFloorStiffness.defaultValue;  // 0 = automatic
+  double friction = simulation_option::kFriction.defaultValue;
   Tangent tangent = Tangent::Full;
   SolverKind solver = SolverKind::ConjugateGradient;
-  double tolerance = 1e-6;  // relative residual of the linear solve
+  double tolerance =
+      simulation_option::kTolerance.defaultValue;  // relative residual of the linear solve
   // The solve starts from the combination of the last this many solutions
   // that is closest to the new one in the system's energy norm
   // (ProjectedInitialGuess.h); 0: from the last solution as it is.
-  int guessSolutions = 6;
+  int guessSolutions = static_cast<int>(simulation_option::kGuessSolutions.defaultValue);
   // Multigrid: rebuild the coarse operators every this many steps (1 = every
   // step); the solve stays exact to `tolerance` either way. Rebuilt every
   // fourth step they cost 0-0.8 more iterations per step than rebuilt
   // every step, and the steps were 1.3-1.9x as fast (doc/user/simulation.md).
-  int coarseReuse = 4;
+  int coarseReuse = static_cast<int>(simulation_option::kCoarseReuse.defaultValue);
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
-  int maxIterations = 2000;
+  int maxIterations = static_cast<int>(simulation_option::kMaxIterations.defaultValue);
 
   // The floor plane, if there is one (floorHeight along up).
   std::optional<FloorPlane> floor() const {

@@ -27,12 +27,19 @@
 
 #include <string>
 
+#include "tetskin/core/OptionSchema.h"
+
 namespace tetskin {
 
 enum class SolverKind { ConjugateGradient, Multigrid, Automatic };
-const char* toString(SolverKind kind);
-// The kind named by toString(); throws Error for any other name.
-SolverKind solverKindFromString(const std::string& name);
+template <>
+struct EnumSchema<SolverKind> {
+  static constexpr const char* what = "solver";
+  static constexpr EnumValue<SolverKind> values[] = {
+      {SolverKind::Automatic, "auto", "whichever of the two is faster here, timed every 120 steps"},
+      {SolverKind::ConjugateGradient, "cg", "block-Jacobi CG"},
+      {SolverKind::Multigrid, "multigrid", "CG with a V-cycle"}};
+};
 
 class SolverChoice {
  public:
