@@ -952,9 +952,9 @@ QString MainWindow::vertexInfoText() const {
     ids += QString::number(i.controlIds[k]) + (k + 1 < n ? " " : "");
     weights += QString::number(i.weights[k], 'f', 4) + (k + 1 < n ? " " : "");
   }
-  return QString("vertex %1: %2 %3, control ids %4, weights %5, distance %6, min barycentric %7")
+  return QString(
+             "vertex %1: element %2, control ids %3, weights %4, distance %5, min barycentric %6")
       .arg(i.vertex)
-      .arg(n == 4 ? "element" : "face")
       .arg(i.face)
       .arg(ids, weights)
       .arg(i.distance, 0, 'g', 4)

@@ -53,7 +53,7 @@ namespace tetskin::gui {
 
 struct VertexInfo {
   Index vertex = -1;
-  int face = -1;               // boundary face (element for embed)
+  int face = -1;               // its FaceId: the element it is bound to
   Eigen::Vector4i controlIds;  // dataset numbering; 4th is -1 for triangle bindings
   Eigen::Vector4d weights;
   double distance = 0, minBarycentric = 0;

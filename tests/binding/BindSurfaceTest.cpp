@@ -38,6 +38,36 @@ TEST(BindSurface, ClosestEqualsBruteForceOnTheBunny) {
   }
 }
 
+// FaceId has one numbering for every method: the element the vertex is
+// bound to, in the dataset's numbering as the control ids are; its nodes
+// hold the vertex's control ids (three of them for a boundary face, all
+// four for embed).
+TEST(BindSurface, FaceIdIsTheElementInTheDatasetsNumberingForEveryMethod) {
+  const SurfaceMesh surface = readObj(kSampleData + "bunny_8k.obj");
+  const MultiLevelTetMesh& mesh = sampleDataset().mesh;
+  const int level = 1;
+  const LevelRange& range = mesh.levels[level];
+  ASSERT_GT(range.firstElement, 0);
+  for (BindingMethod method : {BindingMethod::Closest, BindingMethod::Seed, BindingMethod::Embed}) {
+    SCOPED_TRACE(toString(method));
+    BindingOptions options;
+    options.method = method;
+    const SurfaceBinding b = bindSurface(surface, mesh, level, options);
+    for (Index v = 0; v < b.vertexCount(); ++v) {
+      const int element = b.faceId[v];
+      ASSERT_GE(element, range.firstElement) << "vertex " << v;
+      ASSERT_LT(element, range.firstElement + range.elementCount) << "vertex " << v;
+      for (int k = 0; k < b.controlsPerVertex(); ++k) {
+        bool held = false;
+        for (int corner = 0; corner < 4; ++corner)
+          held = held || mesh.elements(element, corner) == b.controlIds(v, k);
+        ASSERT_TRUE(held) << "vertex " << v << ": control id " << b.controlIds(v, k)
+                          << " is not a node of element " << element;
+      }
+    }
+  }
+}
+
 TEST(BindSurface, ClosestEqualsBruteForceOnRandomPoints) {
   // Points scattered around, inside and far outside the control mesh.
   std::mt19937 rng(7);

@@ -59,11 +59,9 @@ TEST(BindSurfaceFilter, EqualsTheBindingOfTheCommandLineInTheGridsNumbering) {
               (reference.controlIds.leftCols(k).array() - first).matrix());
     EXPECT_EQ(fromFilter.weights, reference.weights);
     EXPECT_EQ(fromFilter.distance, reference.distance);
-    // Embed's FaceId is the element: a cell id of the grid.
+    // FaceId is the element, for every method: a cell id of the grid.
     const int firstElement =
-        method == vtkTetSkinBindSurface::EMBED
-            ? static_cast<int>(sampleDataset().mesh.levels[kBoundLevel].firstElement)
-            : 0;
+        static_cast<int>(sampleDataset().mesh.levels[kBoundLevel].firstElement);
     EXPECT_EQ(fromFilter.faceId, (reference.faceId.array() - firstElement).matrix());
     EXPECT_EQ(fromFilter.level, 0);
     EXPECT_EQ(fromFilter.method, reference.method);

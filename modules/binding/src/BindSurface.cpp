@@ -41,36 +41,48 @@ bool better(const Choice& a, const Choice& b) {
   return a.face < b.face;
 }
 
-// The boundary of the chosen level, with what every method needs.
-struct ControlSurface {
-  TetMesh level;       // level-local node numbering
+// The chosen level and where its nodes and elements are in the dataset:
+// what every method needs.
+struct BoundLevel {
+  TetMesh mesh;        // level-local numbering
   int nodeOffset = 0;  // level-local + offset = dataset numbering
   int elementOffset = 0;
-  Triangles faces;      // usable (non-degenerate) boundary faces, level-local ids
-  Points3 unitNormals;  // per usable face
+};
+
+BoundLevel boundLevel(const MultiLevelTetMesh& mesh, int level) {
+  BoundLevel bound;
+  bound.mesh = extractLevel(mesh, level);
+  const LevelRange& range = mesh.levels[static_cast<std::size_t>(level)];
+  bound.nodeOffset = static_cast<int>(range.firstNode);
+  bound.elementOffset = static_cast<int>(range.firstElement);
+  validateTetMesh(bound.mesh, "level " + std::to_string(level), /*requirePositiveVolume=*/false);
+  return bound;
+}
+
+// The level's boundary: what the triangle methods (closest, seed) need.
+struct ControlSurface {
+  BoundLevel level;
+  Triangles faces;            // usable (non-degenerate) boundary faces, level-local ids
+  std::vector<int> elements;  // per usable face: its element, level-local
+  Points3 unitNormals;        // per usable face
   double diagonal = 0;
   Index degenerateFaces = 0;
 
   Eigen::Vector3d corner(int face, int k) const {
-    return level.nodes.row(faces(face, k)).transpose();
+    return level.mesh.nodes.row(faces(face, k)).transpose();
   }
 };
 
-ControlSurface controlSurface(const MultiLevelTetMesh& mesh, int level) {
-  if (level < 0) level = mesh.finestLevel();
+ControlSurface controlSurface(BoundLevel bound, int level) {
   ControlSurface cs;
-  cs.level = extractLevel(mesh, level);
-  const LevelRange& range = mesh.levels[static_cast<std::size_t>(level)];
-  cs.nodeOffset = static_cast<int>(range.firstNode);
-  cs.elementOffset = static_cast<int>(range.firstElement);
-  validateTetMesh(cs.level, "level " + std::to_string(level), /*requirePositiveVolume=*/false);
-  const BoundaryFaces all = boundaryFaces(cs.level);
-  cs.diagonal = boundingBox(cs.level.nodes).diagonal();
+  cs.level = std::move(bound);
+  const BoundaryFaces all = boundaryFaces(cs.level.mesh);
+  cs.diagonal = boundingBox(cs.level.mesh.nodes).diagonal();
   std::vector<Index> usable;
   for (Index f = 0; f < all.faces.rows(); ++f) {
-    const Eigen::Vector3d a = cs.level.nodes.row(all.faces(f, 0)),
-                          b = cs.level.nodes.row(all.faces(f, 1)),
-                          c = cs.level.nodes.row(all.faces(f, 2));
+    const Eigen::Vector3d a = cs.level.mesh.nodes.row(all.faces(f, 0)),
+                          b = cs.level.mesh.nodes.row(all.faces(f, 1)),
+                          c = cs.level.mesh.nodes.row(all.faces(f, 2));
     // Zero-area faces have no plane: skip them (their neighbours cover the spot).
     if (triangleArea(a, b, c) > 1e-14 * cs.diagonal * cs.diagonal)
       usable.push_back(f);
@@ -83,6 +95,7 @@ ControlSurface controlSurface(const MultiLevelTetMesh& mesh, int level) {
   cs.unitNormals.resize(static_cast<Index>(usable.size()), 3);
   for (std::size_t i = 0; i < usable.size(); ++i) {
     cs.faces.row(static_cast<Index>(i)) = all.faces.row(usable[i]);
+    cs.elements.push_back(all.elements[static_cast<std::size_t>(usable[i])]);
     const Eigen::Vector3d a = cs.corner(static_cast<int>(i), 0),
                           b = cs.corner(static_cast<int>(i), 1),
                           c = cs.corner(static_cast<int>(i), 2);
@@ -107,11 +120,13 @@ Choice evaluate(const ControlSurface& cs, int face, const Eigen::Vector3d& p,
 
 void store(const ControlSurface& cs, const Choice& choice, Index v, SurfaceBinding& out) {
   for (int k = 0; k < 3; ++k) {
-    out.controlIds(v, k) = cs.faces(choice.face, k) + cs.nodeOffset;
+    out.controlIds(v, k) = cs.faces(choice.face, k) + cs.level.nodeOffset;
     out.weights(v, k) = choice.bary[k];
   }
   out.distance[v] = choice.signedDistance;
-  out.faceId[v] = choice.face;
+  // (The element of the face, in the dataset's numbering: FaceId's one
+  // numbering, SurfaceBinding.h.)
+  out.faceId[v] = cs.elements[static_cast<std::size_t>(choice.face)] + cs.level.elementOffset;
   out.minBarycentric[v] = choice.minBary;
 }
 
@@ -234,19 +249,19 @@ SurfaceBinding bindSeed(const SurfaceMesh& surface, const ControlSurface& cs,
 
 // SOFA/VegaFEM-style embedding: the containing element's 4 barycentric
 // weights; outside the volume the nearest element, extrapolated.
-SurfaceBinding bindEmbed(const SurfaceMesh& surface, const ControlSurface& cs,
+SurfaceBinding bindEmbed(const SurfaceMesh& surface, const BoundLevel& bound,
                          const BindingOptions& options, int level) {
   SurfaceBinding out = emptyBinding(surface, options, level);
-  const TetMesh& m = cs.level;
+  const TetMesh& m = bound.mesh;
   const TetLocator locator(m);
   forEachVertex(surface.vertexCount(), [&](Index v) {
     const TetLocation at = locator.locate(surface.positions.row(v).transpose());
     for (int k = 0; k < 4; ++k) {
-      out.controlIds(v, k) = m.elements(at.element, k) + cs.nodeOffset;
+      out.controlIds(v, k) = m.elements(at.element, k) + bound.nodeOffset;
       out.weights(v, k) = at.barycentric[k];
     }
     out.distance[v] = std::sqrt(at.squaredDistance);
-    out.faceId[v] = at.element + cs.elementOffset;
+    out.faceId[v] = at.element + bound.elementOffset;
     out.minBarycentric[v] = at.barycentric.minCoeff();
   });
   return out;
@@ -258,14 +273,17 @@ SurfaceBinding bindSurface(const SurfaceMesh& surface, const MultiLevelTetMesh& 
                            const BindingOptions& options) {
   checkSurface(surface);
   if (level < 0) level = mesh.finestLevel();
-  const ControlSurface cs = controlSurface(mesh, level);
+  BoundLevel bound = boundLevel(mesh, level);
+  // (Embed needs no boundary.)
+  if (options.method == BindingMethod::Embed) return bindEmbed(surface, bound, options, level);
+  const ControlSurface cs = controlSurface(std::move(bound), level);
   switch (options.method) {
     case BindingMethod::Closest:
       return bindClosest(surface, cs, options, level, false);
     case BindingMethod::Seed:
       return bindSeed(surface, cs, options, level);
     case BindingMethod::Embed:
-      return bindEmbed(surface, cs, options, level);
+      break;
   }
   throw Error("unknown binding method");
 }
@@ -276,7 +294,7 @@ SurfaceBinding bindClosestBruteForce(const SurfaceMesh& surface, const MultiLeve
   if (level < 0) level = mesh.finestLevel();
   BindingOptions closest = options;
   closest.method = BindingMethod::Closest;
-  return bindClosest(surface, controlSurface(mesh, level), closest, level, true);
+  return bindClosest(surface, controlSurface(boundLevel(mesh, level), level), closest, level, true);
 }
 
 }  // namespace tetskin

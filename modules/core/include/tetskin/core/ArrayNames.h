@@ -21,7 +21,7 @@ inline constexpr const char* kControlIds = "ControlIds";  // 3 (or 4: embed) nod
 inline constexpr const char* kWeights = "Weights";        // barycentric weights, sum 1
 inline constexpr const char* kDistance = "Distance";
 inline constexpr const char* kMinBarycentric = "MinBarycentric";
-inline constexpr const char* kFaceId = "FaceId";
+inline constexpr const char* kFaceId = "FaceId";  // the element bound to (SurfaceBinding.h)
 
 // Surfaces: the active point normals.
 inline constexpr const char* kNormals = "Normals";

@@ -39,7 +39,10 @@ struct SurfaceBinding {
   // Signed distance to the triangle's plane; for Embed the distance to the
   // nearest element (0 inside the volume).
   Eigen::VectorXd distance;
-  Eigen::VectorXi faceId;          // boundary face (element for Embed) the vertex is bound to
+  // The element the vertex is bound to, in the dataset's numbering (as the
+  // control ids), for every method: the element of its boundary face
+  // (closest, seed) or the element that holds it (embed).
+  Eigen::VectorXi faceId;
   Eigen::VectorXd minBarycentric;  // smallest weight: < 0 means outside the triangle
 
   Index vertexCount() const { return controlIds.rows(); }
