@@ -22,3 +22,12 @@ tetskin_cli_test(render_recorded_run_film_decodes REQUIRES "filmed_run;drawn_run
 tetskin_cli_test(render_live_film_decodes REQUIRES "live_film;live_first_frame" EXE tetskin_ogv_frames
   STDOUT "^3 frames, 160x120, first and last frames differ\nfirst frame matches the image"
   ARGS ${cli_out}/live_film/wobble.ogv ${cli_out}/live_first_frame.png)
+
+# doc/user/cli-reference.md is what --help prints (CliReference.cmake).
+if(TARGET tetskin-gui)
+  add_test(NAME cli.reference
+    COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin> -DTETSKIN_GUI=$<TARGET_FILE:tetskin-gui>
+            -DPAGE=${PROJECT_SOURCE_DIR}/doc/user/cli-reference.md
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/CliReference.cmake)
+  set_tests_properties(cli.reference PROPERTIES LABELS cli)
+endif()
