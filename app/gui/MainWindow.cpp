@@ -13,38 +13,26 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <QAction>
-#include <QCheckBox>
-#include <QComboBox>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
-#include <QGroupBox>
-#include <QHBoxLayout>
-#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
-#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
-#include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
-#include <QVBoxLayout>
 #include <cmath>
 
 #include "BuildDialog.h"
 #include "EnergyPlot.h"
-#include "HistogramWidget.h"
 #include "RecordedRunPanel.h"
-#include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/NumberText.h"
@@ -62,31 +50,6 @@ namespace tetskin::gui {
 namespace {
 
 constexpr int kMaxRecent = 8;
-
-QComboBox* combo(const char* name, const QStringList& items) {
-  auto* c = new QComboBox;
-  c->setObjectName(name);
-  c->addItems(items);
-  return c;
-}
-
-// A combo box offering the names of E's schema (OptionSchema.h), `current`
-// chosen, the names' help as its tip.
-template <SchemaEnum E>
-QComboBox* enumCombo(const char* name, E current) {
-  QStringList items;
-  for (const std::string& item : namesOf<E>()) items << QString::fromStdString(item);
-  QComboBox* c = combo(name, items);
-  c->setCurrentText(toString(current));
-  c->setToolTip(QString::fromStdString(helpOf<E>()));
-  return c;
-}
-
-// The value the box names.
-template <SchemaEnum E>
-E chosen(const QComboBox* box) {
-  return fromName<E>(box->currentText().toStdString());
-}
 
 // A simulation frame to start from (startFromFrame), not a scene to open.
 bool isFrameFile(const std::filesystem::path& path) {
@@ -126,11 +89,17 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
     addDockWidget(Qt::RightDockWidgetArea, d);
     return d;
   };
-  QDockWidget* viewDock = dock("View", buildViewDock());
-  QDockWidget* simulationDock = dock("Simulation", buildSimulationDock());
-  dock("Binding", buildBindingDock());
+  viewDock_ = new ViewDock(*scene_);
+  simulationDock_ = new SimulationDock(*scene_, interactive_);
+  bindingDock_ = new BindingDock(*scene_);
+  runPanel_ = simulationDock_->runPanel();
+  energyPlot_ = simulationDock_->energyPlot();
+  QDockWidget* viewDock = dock("View", viewDock_);
+  QDockWidget* simulationDock = dock("Simulation", simulationDock_);
+  dock("Binding", bindingDock_);
   tabifyDockWidget(viewDock, simulationDock);
   viewDock->raise();
+  connectDocks();
   buildMenus();
 
   vtkRenderWindowInteractor* interactor = window_->GetInteractor();
@@ -152,194 +121,31 @@ MainWindow::~MainWindow() {
   runner_.reset();  // stop the simulation thread before the scene goes
 }
 
-QWidget* MainWindow::buildViewDock() {
-  auto* w = new QWidget;
-  auto* form = new QFormLayout(w);
-  renderPath_ = enumCombo("renderPath", RenderPath::Cpu);
-  form->addRow("Render path", renderPath_);
-  connect(renderPath_, &QComboBox::currentTextChanged, this,
+void MainWindow::connectDocks() {
+  auto redraw = [this] { renderNow(); };
+  auto failed = [this](const QString& message) { fail(message); };
+  connect(viewDock_, &ViewDock::redraw, this, redraw);
+  connect(viewDock_, &ViewDock::failed, this, failed);
+  connect(viewDock_, &ViewDock::renderPathChosen, this,
           [this](const QString& name) { setRenderPath(name); });
-  showSurface_ = new QCheckBox("surface");
-  showSurface_->setObjectName("showSurface");
-  showSurface_->setChecked(true);
-  form->addRow("Show", showSurface_);
-  connect(showSurface_, &QCheckBox::toggled, this, [this](bool on) {
-    scene_->setSurfaceVisible(on);
-    renderNow();
-  });
-  auto* showFur = new QCheckBox("fur (fur paths)");
-  showFur->setObjectName("showFur");
-  showFur->setChecked(true);
-  form->addRow("", showFur);
-  connect(showFur, &QCheckBox::toggled, this, [this](bool on) {
-    scene_->setFurVisible(on);
-    renderNow();
-  });
-  auto* showPrescribed = new QCheckBox("prescribed nodes (held or driven)");
-  showPrescribed->setObjectName("showPrescribed");
-  showPrescribed->setToolTip(
-      "marks the simulated level's nodes that the scenario, the fixed nodes and the fixed box "
-      "hold still or drive (a recorded run's while it is shown)");
-  form->addRow("", showPrescribed);
-  connect(showPrescribed, &QCheckBox::toggled, this, [this](bool on) {
-    scene_->setPrescribedNodesShown(on);
-    renderNow();
-  });
-  controlStyle_ = enumCombo("controlStyle", ControlMeshStyle::Wireframe);
-  form->addRow("Control mesh", controlStyle_);
-  connect(controlStyle_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    scene_->setControlStyle(fromName<ControlMeshStyle>(name.toStdString()));
-    renderNow();
-  });
-  controlLevel_ = new QSpinBox;
-  controlLevel_->setObjectName("controlLevel");
-  form->addRow("Control level", controlLevel_);
-  connect(controlLevel_, qOverload<int>(&QSpinBox::valueChanged), this, [this](int level) {
-    scene_->setControlLevel(level);
-    renderNow();
-  });
-  camera_ = enumCombo("camera", CameraPreset::Iso);
-  form->addRow("Camera", camera_);
-  connect(camera_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    scene_->setCamera(fromName<CameraPreset>(name.toStdString()));
-    renderNow();
-  });
-  // The dataset's up axis (its config's, or y): for a z-up model opened
-  // as bare .node/.ele, or a config that does not say. The camera and the
-  // next run follow it.
-  upAxis_ = enumCombo("up", UpAxis::Y);
-  upAxis_->setToolTip("the axis that points up: camera presets, scenarios, floor and gravity");
-  form->addRow("Up axis", upAxis_);
-  connect(upAxis_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    if (!scene_->hasDataset()) return;
-    scene_->setUpAxis(*parseName<UpAxis>(name.toStdString()));
+  connect(viewDock_, &ViewDock::upAxisChanged, this, [this] {
     resetSimulation();
     renderNow();
   });
-  furShells_ = new QSpinBox;
-  furShells_->setObjectName("furShells");
-  furShells_->setRange(1, 256);
-  furShells_->setValue(16);
-  furLength_ = numberBox("furLength", kLeastPositive, 1, FurParameters{}.length,
-                         "fur length / the surface's bounding-box diagonal, in (0, 1]");
-  furLighting_ = enumCombo("furLighting", FurParameters{}.lighting);
-  furFins_ = new QCheckBox("fins at silhouettes");
-  furFins_->setObjectName("furFins");
-  form->addRow("Fur shells", furShells_);
-  form->addRow("Fur length", furLength_);
-  form->addRow("Fur lighting", furLighting_);
-  form->addRow("", furFins_);
-  auto furChanged = [this] {
-    if (!scene_->hasDataset()) return;
-    try {
-      scene_->setFurParameters(furFromControls());
-    } catch (const std::exception& e) {
-      fail(e.what());
-    }
-    renderNow();
-  };
-  connect(furShells_, qOverload<int>(&QSpinBox::valueChanged), this, furChanged);
-  connect(furLength_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, furChanged);
-  connect(furLighting_, &QComboBox::currentTextChanged, this, furChanged);
-  connect(furFins_, &QCheckBox::toggled, this, furChanged);
-  return w;
-}
-
-QWidget* MainWindow::buildBindingDock() {
-  auto* w = new QWidget;
-  auto* layout = new QVBoxLayout(w);
-  auto* form = new QFormLayout;
-  colorBy_ = enumCombo("colorBy", ColorBy::Material);
-  colorBy_->setToolTip("the surface's material, or an array of its binding");
-  form->addRow("Colour by", colorBy_);
-  connect(colorBy_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
-    scene_->setColorBy(static_cast<ColorBy>(index));
-    refreshBindingPanel();
-    renderNow();
-  });
-  highlight_ = new QCheckBox("negative weights, far vertices");
-  highlight_->setObjectName("highlight");
-  form->addRow("Highlight", highlight_);
-  connect(highlight_, &QCheckBox::toggled, this, [this](bool on) {
-    scene_->setHighlightProblems(on);
-    refreshBindingPanel();
-    renderNow();
-  });
-  layout->addLayout(form);
-  histogram_ = new HistogramWidget;
-  histogram_->setObjectName("histogram");
-  layout->addWidget(histogram_);
-  vertexInfo_ = new QLabel("Click the surface to inspect a vertex; Shift+drag pulls the body.");
-  vertexInfo_->setObjectName("vertexInfo");
-  vertexInfo_->setWordWrap(true);
-  vertexInfo_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  layout->addWidget(vertexInfo_);
-  auto* rebindRow = new QHBoxLayout;
-  rebindMethod_ = enumCombo("rebindMethod", BindingMethod::Closest);
-  rebindLevel_ = new QSpinBox;
-  rebindLevel_->setObjectName("rebindLevel");
-  auto* rebind = new QPushButton("Rebind");
-  rebind->setObjectName("rebind");
-  rebindRow->addWidget(rebindMethod_);
-  rebindRow->addWidget(new QLabel("level"));
-  rebindRow->addWidget(rebindLevel_);
-  rebindRow->addWidget(rebind);
-  layout->addLayout(rebindRow);
-  connect(rebind, &QPushButton::clicked, this, [this] {
-    try {
-      scene_->rebind(chosen<BindingMethod>(rebindMethod_), rebindLevel_->value());
-      closeRunIfItNoLongerFits();
-      controlLevel_->setValue(scene_->level());
-      resetSimulation();
-      refreshBindingPanel();
-      renderNow();
-    } catch (const std::exception& e) {
-      fail(e.what());
-    }
-  });
-  comparison_ = new QLabel;
-  comparison_->setObjectName("comparison");
-  comparison_->setWordWrap(true);
-  comparison_->setFont(QFont("monospace", 8));
-  layout->addWidget(comparison_);
-  layout->addStretch();
-  return w;
-}
-
-QWidget* MainWindow::buildSimulationDock() {
-  auto* w = new QWidget;
-  auto* layout = new QVBoxLayout(w);
-  auto* buttons = new QHBoxLayout;
-  play_ = new QPushButton("Play");
-  play_->setObjectName("play");
-  play_->setCheckable(true);
-  step_ = new QPushButton("Step");
-  step_->setObjectName("step");
-  reset_ = new QPushButton("Reset");
-  reset_->setObjectName("reset");
-  fromFrame_ = new QPushButton("From frame...");
-  fromFrame_->setObjectName("fromFrame");
-  fromFrame_->setToolTip(
-      "Reset, then start from the positions and velocities of a frame of this level "
-      "(.vtu from Export, Record or tetskin simulate)");
-  record_ = new QPushButton("Record");
-  record_->setObjectName("record");
-  record_->setCheckable(true);
-  for (QPushButton* b : {play_, step_, reset_, fromFrame_, record_}) buttons->addWidget(b);
-  layout->addLayout(buttons);
-  // A recorded run opened to step through (File > Open of its .pvd).
-  runPanel_ = new RecordedRunPanel;
-  layout->addWidget(runPanel_);
-  energyPlot_ = new EnergyPlot;
-  energyPlot_->setObjectName("energyPlot");
-  layout->addWidget(energyPlot_);
-  supports_ = new QLabel;
-  supports_->setObjectName("supports");
-  supports_->setWordWrap(true);
-  supports_->setToolTip(
-      "What the held and driven nodes' supports exert on the body in all (a settled body's "
-      "weight and loads, opposed); per node in exported and recorded frames (ReactionForce)");
-  layout->addWidget(supports_);
+  connect(bindingDock_, &BindingDock::redraw, this, redraw);
+  connect(bindingDock_, &BindingDock::rebindRequested, this,
+          [this](BindingMethod method, int level) {
+            try {
+              scene_->rebind(method, level);
+              closeRunIfItNoLongerFits();
+              viewDock_->setControlLevel(scene_->level());
+              resetSimulation();
+              bindingDock_->refresh();
+              renderNow();
+            } catch (const std::exception& e) {
+              fail(e.what());
+            }
+          });
   connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
   connect(runPanel_, &RecordedRunPanel::continueRequested, this,
           [this](const QString& frame) { startFromFrame(frame); });
@@ -352,7 +158,7 @@ QWidget* MainWindow::buildSimulationDock() {
     closeRun();
     showLatestState();
   });
-  connect(play_, &QPushButton::toggled, this, [this](bool on) {
+  connect(simulationDock_, &SimulationDock::playToggled, this, [this](bool on) {
     if (!runner_) return;
     if (on) {
       runPanel_->pause();
@@ -361,67 +167,32 @@ QWidget* MainWindow::buildSimulationDock() {
     } else {
       runner_->pause();
     }
-    play_->setText(on ? "Pause" : "Play");
+    simulationDock_->showPlaying(on);
   });
-  connect(step_, &QPushButton::clicked, this, [this] {
+  connect(simulationDock_, &SimulationDock::stepRequested, this, [this] {
     if (!runner_) return;
-    play_->setChecked(false);
+    showPlaying(false);
+    runner_->pause();
     runner_->step();
     showLatestState();
     reportSimulationProblems();
   });
-  connect(reset_, &QPushButton::clicked, this, [this] { resetSimulation(); });
-  connect(fromFrame_, &QPushButton::clicked, this, [this] {
+  connect(simulationDock_, &SimulationDock::resetRequested, this, [this] { resetSimulation(); });
+  connect(simulationDock_, &SimulationDock::fromFrameRequested, this, [this] {
     const QString file = interactive_ ? QFileDialog::getOpenFileName(this, "Start from frame", {},
                                                                      "Simulation frames (*.vtu)")
                                       : "";
     if (!file.isEmpty()) startFromFrame(file);
   });
-  connect(record_, &QPushButton::toggled, this, [this](bool on) {
+  connect(simulationDock_, &SimulationDock::recordToggled, this, [this](bool on) {
     if (!on) {
       stopRecording();
       return;
     }
     const QString file =
         interactive_ ? QFileDialog::getSaveFileName(this, "Record run", "run.pvd", "*.pvd") : "";
-    if (file.isEmpty() || !startRecording(file)) record_->setChecked(false);
+    if (file.isEmpty() || !startRecording(file)) simulationDock_->showRecording(false);
   });
-  auto* form = new QFormLayout;
-  // A row too wide for the dock puts its field under its label: the dock
-  // fits beside the 3D view of a 1280x800 window without scrolling sideways.
-  form->setRowWrapPolicy(QFormLayout::WrapLongRows);
-  layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
-  scenarioRows_ = new ScenarioRows(form, interactive_);
-  const SimulationOptions defaults;
-  solver_ = enumCombo("solver", SolverKind::Automatic);
-  tangent_ = enumCombo("tangent", defaults.tangent);
-  // The relative residual each solve reaches: a looser one is much cheaper
-  // for interactive use (doc/benchmarks.md: the tolerance table).
-  tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
-  tolerance_->setCurrentText("1e-6");
-  tolerance_->setToolTip(QString(simulation_option::kTolerance.help) + " (simulate " +
-                         simulation_option::kTolerance.flag + ")");
-  // The ranges are those the simulation accepts (CorotatedFem, Simulation).
-  timeStep_ = numberBox("timeStep", simulation_option::kTimeStep);
-  young_ = numberBox("young", material_option::kYoungsModulus);
-  poisson_ = numberBox("poisson", material_option::kPoissonRatio);
-  poisson_->setSingleStep(0.01);
-  poisson_->setStepType(QAbstractSpinBox::DefaultStepType);
-  density_ = numberBox("density", material_option::kDensity);
-  massDamping_ = numberBox("massDamping", material_option::kMassDamping);
-  stiffnessDamping_ = numberBox("stiffnessDamping", material_option::kStiffnessDamping);
-  form->addRow("Solver", solver_);
-  form->addRow("Tangent", tangent_);
-  form->addRow("Tolerance", tolerance_);
-  form->addRow("Time step (s)", timeStep_);
-  form->addRow("Young's modulus (Pa)", young_);
-  form->addRow("Poisson's ratio", poisson_);
-  form->addRow("Density (kg/m^3)", density_);
-  form->addRow("Mass damping (1/s)", massDamping_);
-  form->addRow("Stiffness damping (s)", stiffnessDamping_);
-  layout->addWidget(new QLabel("Changes apply on Reset."));
-  layout->addStretch();
-  return w;
 }
 
 void MainWindow::buildMenus() {
@@ -455,9 +226,11 @@ void MainWindow::buildMenus() {
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
   QMenu* viewMenu = menuBar()->addMenu("&View");
-  for (const char* preset : {"iso", "front", "side", "top"})
-    viewMenu->addAction(QString("Camera: ") + preset, this,
-                        [this, preset] { camera_->setCurrentText(preset); });
+  for (const std::string& name : namesOf<CameraPreset>()) {
+    const QString preset = QString::fromStdString(name);
+    viewMenu->addAction("Camera: " + preset, this,
+                        [this, preset] { viewDock_->chooseCamera(preset); });
+  }
   viewMenu->addSeparator();
   // Off for a clean picture (a figure for a paper, a film).
   QAction* overlay = viewMenu->addAction("Frame &statistics");
@@ -498,12 +271,7 @@ bool MainWindow::openFile(const QString& qpath) {
   // replaces what the dock held; a surface opened later keeps the dock's.
   const auto openDataset = [this](const std::filesystem::path& dataset) {
     scene_->openDataset(dataset);
-    const ElasticMaterial& material = scene_->dataset().config.elasticity;
-    young_->setValue(material.youngsModulus);
-    poisson_->setValue(material.poissonRatio);
-    density_->setValue(material.density);
-    massDamping_->setValue(material.massDamping);
-    stiffnessDamping_->setValue(material.stiffnessDamping);
+    simulationDock_->showMaterial(scene_->dataset().config.elasticity);
   };
   try {
     if (isDatasetFile(path)) {
@@ -542,27 +310,11 @@ void MainWindow::afterLoad(const QString& path) {
   lastError_.clear();
   closeRunIfItNoLongerFits();
   rememberRecent(QFileInfo(path).absoluteFilePath());
-  {
-    const QSignalBlocker block(upAxis_);
-    upAxis_->setCurrentText(toString(scene_->dataset().config.up));
-  }
-  const int levels = static_cast<int>(scene_->dataset().mesh.levels.size());
-  for (QSpinBox* s : {controlLevel_, rebindLevel_}) {
-    const QSignalBlocker block(s);
-    s->setRange(0, levels - 1);
-    s->setValue(scene_->level());
-  }
-  {
-    const FurParameters& fur = scene_->dataset().config.fur;
-    const QSignalBlocker a(furShells_), b(furLength_), c(furLighting_), d(furFins_);
-    furShells_->setValue(fur.shells);
-    furLength_->setValue(fur.length);
-    furLighting_->setCurrentText(toString(fur.lighting));
-    furFins_->setChecked(fur.fins);
-  }
+  viewDock_->showDataset();
+  bindingDock_->showDataset();
   setWindowTitle("TetSkin - " + QString::fromStdString(scene_->datasetPath().filename().string()));
   resetSimulation();
-  refreshBindingPanel();
+  bindingDock_->refresh();
   QString message = "opened " + path;
   if (scene_->hasSurface()) {                                                  // as bind warns
     if (const NormalGaps gaps = normalGaps(scene_->surface()); !gaps.empty())  // drawn unlit
@@ -596,28 +348,17 @@ void MainWindow::refreshRecentMenu() {
 }
 
 void MainWindow::setRenderPath(const QString& name) {
-  if (renderPath_->currentText() != name) {
-    renderPath_->setCurrentText(name);  // comes back here through the signal
+  if (viewDock_->renderPath() != name) {
+    viewDock_->chooseRenderPath(name);  // comes back here through the signal
     return;
   }
   try {
     scene_->setRenderPath(fromName<RenderPath>(name.toStdString()));
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
-    const QSignalBlocker block(renderPath_);
-    renderPath_->setCurrentText(toString(scene_->renderPath()));
+    viewDock_->showRenderPath(toString(scene_->renderPath()));
   }
   renderNow();
-}
-
-FurParameters MainWindow::furFromControls() const {
-  FurParameters fur = scene_->hasDataset() ? scene_->dataset().config.fur : FurParameters{};
-  fur.shells = furShells_->value();
-  fur.minShells = std::min(fur.minShells, fur.shells);
-  fur.length = furLength_->value();
-  fur.lighting = chosen<FurLighting>(furLighting_);
-  fur.fins = furFins_->isChecked();
-  return fur;
 }
 
 void MainWindow::resetSimulation() {
@@ -625,38 +366,17 @@ void MainWindow::resetSimulation() {
   runner_.reset();
   scene_->setRunConditions({});  // (the new simulation's, if it starts)
   energyPlot_->clear();
-  supports_->clear();
+  simulationDock_->clearSupports();
   plottedSteps_ = -1;
   shownSteps_ = -1;
   shownShortfallSteps_ = 0;
   showPlaying(false);
   if (!scene_->hasDataset()) return;
-  const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
-  const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_->level())];
-  const UpAxis up = scene_->dataset().config.up;
-  scenarioRows_->setUpAxis(up);
-  const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
-  const BoundingBox restBox = boundingBox(restNodes);
-  scenarioRows_->setBodyBottom(restBox.min[axisIndex(up)]);
-  scenarioRows_->setBodyBox(restBox);
-  SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
-  options.timeStep = timeStep_->value();
-  options.material.youngsModulus = young_->value();
-  options.material.poissonRatio = poisson_->value();
-  options.material.density = density_->value();
-  options.material.massDamping = massDamping_->value();
-  options.material.stiffnessDamping = stiffnessDamping_->value();
-  options.solver = chosen<SolverKind>(solver_);
-  options.tolerance = tolerance_->currentText().toDouble();
-  options.tangent = chosen<Tangent>(tangent_);
+  SimulationOptions options;
   try {
-    RunSpec spec;
-    spec.level = scene_->level();
-    spec.options = options;
-    spec.scenario = scenarioRows_->scenario();
-    spec.parameters = scenarioRows_->parameters(restNodes);
-    spec.datasetName = scene_->datasetPath().string();
-    runner_ = std::make_unique<SimulationRunner>(mesh, spec);
+    const RunSpec spec = simulationDock_->runSpec();
+    options = spec.options;
+    runner_ = std::make_unique<SimulationRunner>(scene_->dataset().mesh, spec);
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return;
@@ -838,22 +558,13 @@ void MainWindow::plotEnergy(const SimulationState& state) {
   const Simulation& sim = runner_->simulation();
   const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
-  const std::size_t prescribed = sim.fixedNodes().size();
-  supports_->setText(prescribed == 0 ? "Supports: none (no node held or driven)"
-                                     : QString("Supports: reaction %1 N on %2 prescribed node%3")
-                                           .arg(QString::fromStdString(
-                                               commaSeparatedToScale(sim.supportReaction(state))))
-                                           .arg(prescribed)
-                                           .arg(prescribed == 1 ? "" : "s"));
+  simulationDock_->showSupports(sim.supportReaction(state), sim.fixedNodes().size());
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
 }
 
 void MainWindow::showPlaying(bool playing) {
-  if (!play_) return;
-  const QSignalBlocker block(play_);  // the caller plays or pauses the runner
-  play_->setChecked(playing);
-  play_->setText(playing ? "Pause" : "Play");
+  simulationDock_->showPlaying(playing);  // (the caller plays or pauses the runner)
 }
 
 void MainWindow::reportSimulationProblems() {
@@ -923,48 +634,14 @@ void MainWindow::refreshOverlay() {
   drawSeconds_ = 0;
 }
 
-void MainWindow::refreshBindingPanel() {
-  if (!scene_->hasSurface()) {
-    histogram_->setValues({}, "no surface");
-    comparison_->clear();
-    return;
-  }
-  const SurfaceBinding& b = scene_->binding();
-  const bool distance = scene_->colorBy() == ColorBy::Distance;
-  const Eigen::VectorXd& values = distance ? b.distance : b.minBarycentric;
-  histogram_->setValues(std::vector<double>(values.data(), values.data() + values.size()),
-                        distance ? "Distance" : "MinBarycentric (red: outside)");
-  QString comparison = QString::fromStdString(scene_->comparisonText());
-  if (scene_->highlightedCount() > 0)
-    comparison += QString("\nhighlighted: %1 vertices").arg(scene_->highlightedCount());
-  comparison_->setText(QString("%1, level %2\n").arg(toString(b.method)).arg(scene_->level()) +
-                       comparison);
-  vertexInfo_->setText(vertexInfoText());
-}
-
 QString MainWindow::vertexInfoText() const {
-  if (!scene_->pickedVertex())
-    return "Click the surface to inspect a vertex; Shift+drag pulls the body.";
-  const VertexInfo i = scene_->vertexInfo(*scene_->pickedVertex());
-  const int n = scene_->binding().controlsPerVertex();
-  QString ids, weights;
-  for (int k = 0; k < n; ++k) {
-    ids += QString::number(i.controlIds[k]) + (k + 1 < n ? " " : "");
-    weights += QString::number(i.weights[k], 'f', 4) + (k + 1 < n ? " " : "");
-  }
-  return QString(
-             "vertex %1: element %2, control ids %3, weights %4, distance %5, min barycentric %6")
-      .arg(i.vertex)
-      .arg(i.face)
-      .arg(ids, weights)
-      .arg(i.distance, 0, 'g', 4)
-      .arg(i.minBarycentric, 0, 'g', 4);
+  return bindingDock_->pickedVertexText();
 }
 
 std::optional<Index> MainWindow::clickAt(int x, int y) {
   const std::optional<Index> v = scene_->pickVertex(x, y);
   if (!v) scene_->showPickedVertex(std::nullopt);
-  vertexInfo_->setText(vertexInfoText());
+  bindingDock_->showPickedVertex();
   statusBar()->showMessage(v ? vertexInfoText() : "no surface vertex there");
   renderNow();
   return v;
@@ -1125,8 +802,7 @@ bool MainWindow::startRecording(const QString& pvd) {
     return false;
   }
   showLatestState();  // the first frame
-  const QSignalBlocker block(record_);
-  record_->setChecked(true);
+  simulationDock_->showRecording(true);
   return true;
 }
 
@@ -1142,8 +818,7 @@ void MainWindow::stopRecording() {
                                .arg(recorder.frames())
                                .arg(QString::fromStdString(recorder.path().string())));
   runner_->session().stopRecording();
-  const QSignalBlocker block(record_);
-  record_->setChecked(false);
+  simulationDock_->showRecording(false);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

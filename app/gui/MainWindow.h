@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // tetskin-gui's window: the VTK view in the middle, docks for the view,
-// binding diagnostics and the simulation, menus for files and export. Every
-// action is also a public method, so tests drive the window as a user would
-// without dialogs (non-interactive windows report errors through lastError()).
+// binding diagnostics and the simulation (ViewDock, BindingDock,
+// SimulationDock, each its own controller over the scene), menus for files
+// and export. The window owns the run (SimulationRunner over the session),
+// opens files, and answers the docks' requests that reach beyond one dock.
+// Every action is also a public method, so tests drive the window as a user
+// would without dialogs (non-interactive windows report errors through
+// lastError()).
 
 #include <vtkSmartPointer.h>
 
@@ -14,9 +18,11 @@
 #include <memory>
 #include <optional>
 
-#include "ScenarioRows.h"
+#include "BindingDock.h"
 #include "Scene.h"
+#include "SimulationDock.h"
 #include "SimulationRunner.h"
+#include "ViewDock.h"
 #include "tetskin/vtkio/RunRecorder.h"
 
 class QCheckBox;
@@ -111,16 +117,13 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildMenus();
-  QWidget* buildViewDock();
-  QWidget* buildBindingDock();
-  QWidget* buildSimulationDock();
+  // The docks' requests, answered by the window.
+  void connectDocks();
   void fail(const QString& message);
   void afterLoad(const QString& path);
   void rememberRecent(const QString& path);
   void refreshRecentMenu();
-  void refreshBindingPanel();
   void refreshOverlay();
-  FurParameters furFromControls() const;
   bool onLeftPress(vtkObject*, unsigned long, void*);
   bool onMouseMove(vtkObject*, unsigned long, void*);
   bool onLeftRelease(vtkObject*, unsigned long, void*);
@@ -149,34 +152,15 @@ class MainWindow : public QMainWindow {
   QString lastError_;
   QTimer* timer_;
   QMenu* recentMenu_;
-  // View.
-  QComboBox *renderPath_, *controlStyle_, *camera_, *upAxis_;
-  QSpinBox* controlLevel_;
-  QCheckBox* showSurface_;
-  QSpinBox* furShells_;
-  QDoubleSpinBox* furLength_;
-  QComboBox* furLighting_;
-  QCheckBox* furFins_;
-  // Binding.
-  QComboBox *colorBy_, *rebindMethod_;
-  QCheckBox* highlight_;
-  HistogramWidget* histogram_;
-  EnergyPlot* energyPlot_;
+  ViewDock* viewDock_;
+  BindingDock* bindingDock_;
+  SimulationDock* simulationDock_;
+  EnergyPlot* energyPlot_;   // the simulation dock's
   Index plottedSteps_ = -1;  // the step of the energy plot's last sample
   std::chrono::steady_clock::time_point lastEnergySample_;
-  QLabel *vertexInfo_, *comparison_;
-  QLabel* supports_;  // the supports' reaction in all, sampled with the energy
-  QSpinBox* rebindLevel_;
-  // Simulation.
-  QPushButton *play_, *step_, *reset_, *fromFrame_, *record_;
-  ScenarioRows* scenarioRows_;
-  QDoubleSpinBox *timeStep_, *young_, *poisson_, *density_, *massDamping_, *stiffnessDamping_;
-  QComboBox* solver_;
-  QComboBox* tolerance_;
-  QComboBox* tangent_;
   // The recorded run being stepped through (openRun), and whether its
   // frame is shown rather than the simulation's state.
-  RecordedRunPanel* runPanel_;
+  RecordedRunPanel* runPanel_;  // the simulation dock's
   bool replaying_ = false;
   // Frame bookkeeping.
   Index shownSteps_ = -1;

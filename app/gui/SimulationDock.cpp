@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "SimulationDock.h"
+
+#include <QAbstractSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "EnergyPlot.h"
+#include "EnumBox.h"
+#include "RecordedRunPanel.h"
+#include "ScenarioRows.h"
+#include "ScientificSpinBox.h"
+#include "tetskin/core/Geometry.h"
+#include "tetskin/core/NumberText.h"
+
+namespace tetskin::gui {
+
+SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
+    : QWidget(parent), scene_(scene) {
+  auto* layout = new QVBoxLayout(this);
+  auto* buttons = new QHBoxLayout;
+  auto button = [&](const char* text, const char* name) {
+    auto* b = new QPushButton(text);
+    b->setObjectName(name);
+    buttons->addWidget(b);
+    return b;
+  };
+  play_ = button("Play", "play");
+  play_->setCheckable(true);
+  QPushButton* step = button("Step", "step");
+  QPushButton* reset = button("Reset", "reset");
+  QPushButton* fromFrame = button("From frame...", "fromFrame");
+  fromFrame->setToolTip(
+      "Reset, then start from the positions and velocities of a frame of this level "
+      "(.vtu from Export, Record or tetskin simulate)");
+  record_ = button("Record", "record");
+  record_->setCheckable(true);
+  layout->addLayout(buttons);
+  // A recorded run opened to step through (File > Open of its .pvd).
+  runPanel_ = new RecordedRunPanel;
+  layout->addWidget(runPanel_);
+  energyPlot_ = new EnergyPlot;
+  energyPlot_->setObjectName("energyPlot");
+  layout->addWidget(energyPlot_);
+  supports_ = new QLabel;
+  supports_->setObjectName("supports");
+  supports_->setWordWrap(true);
+  supports_->setToolTip(
+      "What the held and driven nodes' supports exert on the body in all (a settled body's "
+      "weight and loads, opposed); per node in exported and recorded frames (ReactionForce)");
+  layout->addWidget(supports_);
+  connect(play_, &QPushButton::toggled, this, [this](bool on) { Q_EMIT playToggled(on); });
+  connect(step, &QPushButton::clicked, this, [this] { Q_EMIT stepRequested(); });
+  connect(reset, &QPushButton::clicked, this, [this] { Q_EMIT resetRequested(); });
+  connect(fromFrame, &QPushButton::clicked, this, [this] { Q_EMIT fromFrameRequested(); });
+  connect(record_, &QPushButton::toggled, this, [this](bool on) { Q_EMIT recordToggled(on); });
+
+  auto* form = new QFormLayout;
+  // A row too wide for the dock puts its field under its label: the dock
+  // fits beside the 3D view of a 1280x800 window without scrolling sideways.
+  form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+  layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
+  scenarioRows_ = new ScenarioRows(form, interactive);
+  const SimulationOptions defaults;
+  solver_ = enumCombo("solver", SolverKind::Automatic);
+  tangent_ = enumCombo("tangent", defaults.tangent);
+  // The relative residual each solve reaches: a looser one is much cheaper
+  // for interactive use (doc/benchmarks.md: the tolerance table).
+  tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
+  tolerance_->setCurrentText("1e-6");
+  tolerance_->setToolTip(QString(simulation_option::kTolerance.help) + " (simulate " +
+                         simulation_option::kTolerance.flag + ")");
+  // The ranges and defaults are those of the options' schema (OptionSchema.h).
+  timeStep_ = numberBox("timeStep", simulation_option::kTimeStep);
+  young_ = numberBox("young", material_option::kYoungsModulus);
+  poisson_ = numberBox("poisson", material_option::kPoissonRatio);
+  poisson_->setSingleStep(0.01);
+  poisson_->setStepType(QAbstractSpinBox::DefaultStepType);
+  density_ = numberBox("density", material_option::kDensity);
+  massDamping_ = numberBox("massDamping", material_option::kMassDamping);
+  stiffnessDamping_ = numberBox("stiffnessDamping", material_option::kStiffnessDamping);
+  form->addRow("Solver", solver_);
+  form->addRow("Tangent", tangent_);
+  form->addRow("Tolerance", tolerance_);
+  form->addRow("Time step (s)", timeStep_);
+  form->addRow("Young's modulus (Pa)", young_);
+  form->addRow("Poisson's ratio", poisson_);
+  form->addRow("Density (kg/m^3)", density_);
+  form->addRow("Mass damping (1/s)", massDamping_);
+  form->addRow("Stiffness damping (s)", stiffnessDamping_);
+  layout->addWidget(new QLabel("Changes apply on Reset."));
+  layout->addStretch();
+}
+
+RunSpec SimulationDock::runSpec() {
+  const MultiLevelTetMesh& mesh = scene_.dataset().mesh;
+  const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_.level())];
+  const UpAxis up = scene_.dataset().config.up;
+  scenarioRows_->setUpAxis(up);
+  const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
+  const BoundingBox restBox = boundingBox(restNodes);
+  scenarioRows_->setBodyBottom(restBox.min[axisIndex(up)]);
+  scenarioRows_->setBodyBox(restBox);
+  SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
+  options.timeStep = timeStep_->value();
+  options.material.youngsModulus = young_->value();
+  options.material.poissonRatio = poisson_->value();
+  options.material.density = density_->value();
+  options.material.massDamping = massDamping_->value();
+  options.material.stiffnessDamping = stiffnessDamping_->value();
+  options.solver = chosen<SolverKind>(solver_);
+  options.tolerance = tolerance_->currentText().toDouble();
+  options.tangent = chosen<Tangent>(tangent_);
+  RunSpec spec;
+  spec.level = scene_.level();
+  spec.options = options;
+  spec.scenario = scenarioRows_->scenario();
+  spec.parameters = scenarioRows_->parameters(restNodes);
+  spec.datasetName = scene_.datasetPath().string();
+  return spec;
+}
+
+void SimulationDock::showMaterial(const ElasticMaterial& material) {
+  young_->setValue(material.youngsModulus);
+  poisson_->setValue(material.poissonRatio);
+  density_->setValue(material.density);
+  massDamping_->setValue(material.massDamping);
+  stiffnessDamping_->setValue(material.stiffnessDamping);
+}
+
+void SimulationDock::showPlaying(bool playing) {
+  const QSignalBlocker block(play_);  // the caller plays or pauses the runner
+  play_->setChecked(playing);
+  play_->setText(playing ? "Pause" : "Play");
+}
+
+void SimulationDock::showRecording(bool recording) {
+  const QSignalBlocker block(record_);
+  record_->setChecked(recording);
+}
+
+void SimulationDock::showSupports(const Eigen::Vector3d& reaction, std::size_t prescribed) {
+  supports_->setText(prescribed == 0
+                         ? "Supports: none (no node held or driven)"
+                         : QString("Supports: reaction %1 N on %2 prescribed node%3")
+                               .arg(QString::fromStdString(commaSeparatedToScale(reaction)))
+                               .arg(prescribed)
+                               .arg(prescribed == 1 ? "" : "s"));
+}
+
+void SimulationDock::clearSupports() {
+  supports_->clear();
+}
+
+}  // namespace tetskin::gui

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The Simulation dock: Play, Step, Reset, From frame..., Record; the
+// recorded run's box; the energy plot and the supports' reaction; the
+// scenario, solver and material the next run is made from (RunSpec). The
+// window owns the run (SimulationRunner) and answers the buttons.
+
+#include <QString>
+#include <QWidget>
+
+#include "Scene.h"
+#include "tetskin/session/SimulationSession.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace tetskin::gui {
+
+class EnergyPlot;
+class RecordedRunPanel;
+class ScenarioRows;
+
+class SimulationDock : public QWidget {
+  Q_OBJECT
+ public:
+  // `interactive`: the scenario rows may ask the user (ScenarioRows).
+  SimulationDock(Scene& scene, bool interactive, QWidget* parent = nullptr);
+
+  // The run the dock's fields describe, on the scene's level (the scenario
+  // rows set to its body and up axis first). Throws Error for a value the
+  // scenario refuses.
+  RunSpec runSpec();
+  // A dataset's body in the material fields (what the next Reset uses).
+  void showMaterial(const ElasticMaterial& material);
+
+  RecordedRunPanel* runPanel() const { return runPanel_; }
+  EnergyPlot* energyPlot() const { return energyPlot_; }
+  // Play as playing or not, Record as recording or not, without their
+  // requests.
+  void showPlaying(bool playing);
+  void showRecording(bool recording);
+  // "Supports: reaction 0,20748.1,0 N on 12 prescribed nodes" (or none).
+  void showSupports(const Eigen::Vector3d& reaction, std::size_t prescribed);
+  void clearSupports();
+
+ Q_SIGNALS:
+  void playToggled(bool on);
+  void stepRequested();
+  void resetRequested();
+  void fromFrameRequested();
+  void recordToggled(bool on);
+
+ private:
+  Scene& scene_;
+  QPushButton *play_, *record_;
+  RecordedRunPanel* runPanel_;
+  EnergyPlot* energyPlot_;
+  QLabel* supports_;
+  ScenarioRows* scenarioRows_;
+  QDoubleSpinBox *timeStep_, *young_, *poisson_, *density_, *massDamping_, *stiffnessDamping_;
+  QComboBox *solver_, *tolerance_, *tangent_;
+};
+
+}  // namespace tetskin::gui
