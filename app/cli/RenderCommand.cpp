@@ -61,9 +61,13 @@ FurParameters furParameters(const RenderArgs& a, const DatasetConfig& config) {
   if (a.furAdaptive) f.adaptiveShells = *a.furAdaptive;
   // The config's ranges, named by the option that sets each parameter.
   if (const auto problem = furParameterProblem(f)) {
-    std::string option = problem->key == "texture_repeats" ? "repeats" : problem->key;
-    std::replace(option.begin(), option.end(), '_', '-');
-    throw Error("--fur-" + option + ": " + problem->what);
+    std::string option = problem->key;
+    for (const NumberOption* o :
+         {&fur_option::kShells, &fur_option::kMinShells, &fur_option::kLength,
+          &fur_option::kDensity, &fur_option::kTextureSize, &fur_option::kTextureRepeats,
+          &fur_option::kDrag, &fur_option::kVelvet})
+      if (option == o->key) option = o->flag;
+    throw Error(option + ": " + problem->what);
   }
   return f;
 }
@@ -202,36 +206,35 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   // (The fur values' ranges are io furParameterProblem's, checked in run();
   // the checks here only keep CLI11's "Could not convert" from the user.)
-  cmd->add_option("--fur-shells", a->furShells, "most shells drawn")
+  using namespace fur_option;
+  cmd->add_option(kShells.flag, a->furShells, kShells.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-min-shells", a->furMinShells, "fewest shells when adaptive")
+  cmd->add_option(kMinShells.flag, a->furMinShells, kMinShells.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
   cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
       ->check(trueOrFalse())
       ->group(kFurGroup);
-  cmd->add_option("--fur-length", a->furLength, "fur length / bounding-box diagonal")
+  cmd->add_option(kLength.flag, a->furLength, kLength.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-density", a->furDensity, "share of texels with a hair")
+  cmd->add_option(kDensity.flag, a->furDensity, kDensity.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-texture-size", a->furTextureSize, "fur texture edge in texels")
+  cmd->add_option(kTextureSize.flag, a->furTextureSize, kTextureSize.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-repeats", a->furRepeats, "fur texture tiles across the diagonal")
+  cmd->add_option(kTextureRepeats.flag, a->furRepeats, kTextureRepeats.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
   cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
       ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
       ->group(kFurGroup);
-  cmd->add_option("--fur-drag", a->furDrag, "seconds of velocity the tips trail by (0: static)")
-      ->check(finiteNumber())
-      ->group(kFurGroup);
+  cmd->add_option(kDrag.flag, a->furDrag, kDrag.help)->check(finiteNumber())->group(kFurGroup);
   cmd->add_option("--fur-lighting", a->furLighting, oneOf(namesOf<FurLighting>()))
       ->group(kFurGroup);
-  cmd->add_option("--fur-velvet", a->furVelvet, "highlight offset off the mirror direction")
+  cmd->add_option(kVelvet.flag, a->furVelvet, kVelvet.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
   cmd->add_option("--fur-fins", a->furFins, "silhouette fins")

@@ -35,26 +35,16 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
-  cmd.add_option("--scenario", a.name, "wobble, drop, twist or sag")
+  cmd.add_option("--scenario", a.name, oneOf(scenarioNames()))
       ->capture_default_str()
       ->check(CLI::IsMember(scenarioNames()));
   ScenarioParameters& p = a.parameters;
-  auto number = [&](const char* name, double& value, const std::string& what) {
-    return cmd.add_option(name, value, what)->capture_default_str()->group(kGroup);
-  };
-  number("--base", p.baseShare,
-         "wobble, twist, sag: hold the nodes in this lowest share of the height still (0: none)")
-      ->check(numberFrom(0, 1));
-  number("--push", p.pushAcceleration, "wobble: peak sideways acceleration of the push, m/s^2")
-      ->check(finiteNumber());
-  number("--push-frequency", p.pushFrequency, "wobble: push frequency, Hz")
-      ->check(positiveNumber());
-  number("--drop-height", p.dropHeight,
-         "drop: start this share of the body's height above the floor")
-      ->check(numberFrom(0));
-  number("--twist-degrees", p.twistDegrees, "twist: final angle of the top, degrees")
-      ->check(finiteNumber());
-  number("--twist-seconds", p.twistSeconds, "twist: seconds to reach it")->check(positiveNumber());
+  using namespace scenario_option;
+  for (const auto& [option, value] :
+       {std::pair{&kBaseShare, &p.baseShare}, std::pair{&kPushAcceleration, &p.pushAcceleration},
+        std::pair{&kPushFrequency, &p.pushFrequency}, std::pair{&kDropHeight, &p.dropHeight},
+        std::pair{&kTwistDegrees, &p.twistDegrees}, std::pair{&kTwistSeconds, &p.twistSeconds}})
+    addNumberOption(cmd, *option, *value)->group(kGroup);
   cmd.add_option("--fixed-nodes", a.fixedNodes,
                  "also hold these nodes still: a text file of node numbers of the level, from 0 "
                  "(the point ids of its .vtu), separated by spaces or lines, # comments")

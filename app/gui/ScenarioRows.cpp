@@ -25,25 +25,19 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   scenario_->setObjectName("scenario");
   for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
   scenario_->setCurrentText("wobble");
-  const ScenarioParameters defaults;
-  baseShare_ = numberBox("baseShare", 0, std::nextafter(1.0, 0.0), defaults.baseShare,
-                         "the lowest share of the height held still (0: none)");
+  using namespace scenario_option;
+  baseShare_ = numberBox("baseShare", kBaseShare);
   baseShare_->setSingleStep(0.05);
   baseShare_->setStepType(QAbstractSpinBox::DefaultStepType);
-  push_ = numberBox("push", -kLargest, kLargest, defaults.pushAcceleration,
-                    "peak sideways acceleration of the push on the upper part");
-  pushFrequency_ = numberBox("pushFrequency", kLeastPositive, kLargest, defaults.pushFrequency,
-                             "push frequency");
-  dropHeight_ = numberBox("dropHeight", 0, kLargest, defaults.dropHeight,
-                          "start this share of the body's height above the floor");
+  push_ = numberBox("push", kPushAcceleration);
+  pushFrequency_ = numberBox("pushFrequency", kPushFrequency);
+  dropHeight_ = numberBox("dropHeight", kDropHeight);
   dropHeight_->setSingleStep(0.1);
   dropHeight_->setStepType(QAbstractSpinBox::DefaultStepType);
-  twistDegrees_ = numberBox("twistDegrees", -kLargest, kLargest, defaults.twistDegrees,
-                            "final angle of the top about the vertical axis");
+  twistDegrees_ = numberBox("twistDegrees", kTwistDegrees);
   twistDegrees_->setSingleStep(15);
   twistDegrees_->setStepType(QAbstractSpinBox::DefaultStepType);
-  twistSeconds_ = numberBox("twistSeconds", kLeastPositive, kLargest, defaults.twistSeconds,
-                            "seconds to reach it");
+  twistSeconds_ = numberBox("twistSeconds", kTwistSeconds);
   twistSeconds_->setSingleStep(0.1);
   twistSeconds_->setStepType(QAbstractSpinBox::DefaultStepType);
 

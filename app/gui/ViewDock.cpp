@@ -74,10 +74,11 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
   const FurParameters fur;
   furShells_ = new QSpinBox;
   furShells_->setObjectName("furShells");
-  furShells_->setRange(1, 256);
+  furShells_->setRange(static_cast<int>(fur_option::kShells.range.min),
+                       static_cast<int>(fur_option::kShells.range.max));
   furShells_->setValue(fur.shells);
-  furLength_ = numberBox("furLength", kLeastPositive, 1, fur.length,
-                         "fur length / the surface's bounding-box diagonal, in (0, 1]");
+  furShells_->setToolTip(fur_option::kShells.help);
+  furLength_ = numberBox("furLength", fur_option::kLength);
   furLighting_ = enumCombo("furLighting", fur.lighting);
   furFins_ = new QCheckBox("fins at silhouettes");
   furFins_->setObjectName("furFins");

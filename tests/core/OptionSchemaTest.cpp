@@ -101,5 +101,39 @@ TEST(OptionSchema, MaterialOptionsAreTheMaterialsDefaultsKeysAndChecks) {
             "Poisson's ratio must lie in (-1, 0.5), got 0.5");
 }
 
+TEST(OptionSchema, AnOptionMaySayItsRangeInItsOwnWords) {
+  constexpr NumberOption share{"share", "--share",  "the share", "", between(0, 1, true, false),
+                               0.5,     "in [0, 1)"};
+  EXPECT_EQ(*share.problem(1), "the share must be in [0, 1), got 1");
+  EXPECT_FALSE(share.problem(0));
+}
+
+// FurParameters' defaults are the schema's, and furParameterProblem checks
+// each option's range in the config's words.
+TEST(OptionSchema, FurDefaultsAndRangesAreTheSchemas) {
+  using namespace fur_option;
+  const FurParameters fur;
+  EXPECT_EQ(fur.shells, kShells.defaultValue);
+  EXPECT_EQ(fur.length, kLength.defaultValue);
+  EXPECT_EQ(fur.density, kDensity.defaultValue);
+  EXPECT_EQ(fur.textureSize, kTextureSize.defaultValue);
+  EXPECT_EQ(fur.textureRepeats, kTextureRepeats.defaultValue);
+  EXPECT_EQ(fur.rootShade, kRootShade.defaultValue);
+  EXPECT_EQ(fur.drag, kDrag.defaultValue);
+  EXPECT_EQ(fur.maxBend, kMaxBend.defaultValue);
+  EXPECT_EQ(fur.velvet, kVelvet.defaultValue);
+  EXPECT_EQ(fur.baseDarkening, kBaseDarkening.defaultValue);
+  EXPECT_EQ(fur.minShells, kMinShells.defaultValue);
+  EXPECT_FALSE(furParameterProblem(fur));
+  FurParameters spoiled;
+  spoiled.drag = kDrag.range.max * 2;
+  ASSERT_TRUE(furParameterProblem(spoiled));
+  EXPECT_EQ(furParameterProblem(spoiled)->key, "drag");
+  EXPECT_EQ(furParameterProblem(spoiled)->what, "must lie in [0, 10], found 20");
+  spoiled = {};
+  spoiled.minShells = spoiled.shells + 1;  // [1, shells]
+  EXPECT_EQ(furParameterProblem(spoiled)->key, "min_shells");
+}
+
 }  // namespace
 }  // namespace tetskin

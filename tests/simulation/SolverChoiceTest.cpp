@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/simulation/SolverChoice.h"
 
@@ -164,6 +165,19 @@ TEST(SolverChoice, SimulationOptionDefaultsAreTheSchemas) {
     EXPECT_FALSE(option->problem(option->defaultValue)) << option->key;
   EXPECT_EQ(*kTolerance.problem(1),
             "the solver tolerance (a relative residual) must lie in (0, 1), got 1");
+}
+
+// ScenarioParameters' defaults are the schema's, and each is in its range.
+TEST(SolverChoice, ScenarioParameterDefaultsAreTheSchemas) {
+  using namespace scenario_option;
+  const ScenarioParameters p;
+  for (const auto& [option, value] :
+       {std::pair{&kBaseShare, p.baseShare}, std::pair{&kPushAcceleration, p.pushAcceleration},
+        std::pair{&kPushFrequency, p.pushFrequency}, std::pair{&kDropHeight, p.dropHeight},
+        std::pair{&kTwistDegrees, p.twistDegrees}, std::pair{&kTwistSeconds, p.twistSeconds}}) {
+    EXPECT_EQ(value, option->defaultValue) << option->key;
+    EXPECT_FALSE(option->problem(value)) << option->key;
+  }
 }
 
 }  // namespace

@@ -9,24 +9,26 @@
 namespace tetskin {
 
 std::optional<FurParameterProblem> furParameterProblem(const FurParameters& p) {
+  using namespace fur_option;
   std::optional<FurParameterProblem> problem;
-  auto check = [&](const char* key, double value, double min, double max,
-                   bool minExclusive = false) {
+  // (The words of every range check of a config: outOfRange's.)
+  auto check = [&](const NumberOption& option, double value, double max) {
     if (problem) return;
-    if (!std::isfinite(value) || value < min || value > max || (minExclusive && value == min))
-      problem = FurParameterProblem{key, outOfRange(min, max, minExclusive, formatNumber(value))};
+    NumberRange range = option.range;
+    range.max = max;
+    if (!range.contains(value))
+      problem = FurParameterProblem{
+          option.key, outOfRange(range.min, range.max, !range.minIncluded, formatNumber(value))};
   };
-  check("shells", p.shells, 1, 256);
-  check("length", p.length, 0, 1, true);
-  check("density", p.density, 0, 1);
-  check("texture_size", p.textureSize, 8, 4096);
-  check("texture_repeats", p.textureRepeats, 0, 1000, true);
-  check("root_shade", p.rootShade, 0, 1);
-  check("drag", p.drag, 0, 10);
-  check("max_bend", p.maxBend, 0, 1);
-  check("velvet", p.velvet, 0, 1);
-  check("base_darkening", p.baseDarkening, 0, 1);
-  check("min_shells", p.minShells, 1, p.shells);
+  for (const auto& [option, value] :
+       {std::pair{&kShells, static_cast<double>(p.shells)}, std::pair{&kLength, p.length},
+        std::pair{&kDensity, p.density},
+        std::pair{&kTextureSize, static_cast<double>(p.textureSize)},
+        std::pair{&kTextureRepeats, p.textureRepeats}, std::pair{&kRootShade, p.rootShade},
+        std::pair{&kDrag, p.drag}, std::pair{&kMaxBend, p.maxBend}, std::pair{&kVelvet, p.velvet},
+        std::pair{&kBaseDarkening, p.baseDarkening}})
+    check(*option, value, option->range.max);
+  check(kMinShells, p.minShells, p.shells);
   return problem;
 }
 

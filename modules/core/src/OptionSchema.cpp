@@ -28,7 +28,8 @@ std::string NumberRange::words() const {
 
 std::optional<std::string> NumberOption::problem(double value) const {
   if (range.contains(value)) return std::nullopt;
-  return std::string(what) + " " + range.words() + ", got " + formatNumber(value);
+  const std::string words = rangeWords ? std::string("must be ") + rangeWords : range.words();
+  return std::string(what) + " " + words + ", got " + formatNumber(value);
 }
 
 }  // namespace tetskin

@@ -124,22 +124,18 @@ void Twist::drive(Simulation& sim, double time, Points3&) {
 }
 
 void validateScenarioParameters(const ScenarioParameters& p) {
-  auto require = [](bool ok, const char* what, double value, const char* range) {
-    if (!ok) throw Error(std::string(what) + " must be " + range + ", got " + formatNumber(value));
-  };
-  require(p.baseShare >= 0 && p.baseShare < 1, "the base share", p.baseShare, "in [0, 1)");
-  require(std::isfinite(p.pushAcceleration), "the push acceleration", p.pushAcceleration, "finite");
-  require(p.pushFrequency > 0 && std::isfinite(p.pushFrequency), "the push frequency",
-          p.pushFrequency, "finite and > 0");
-  require(p.dropHeight >= 0 && std::isfinite(p.dropHeight), "the drop height", p.dropHeight,
-          "finite and >= 0");
-  require(std::isfinite(p.twistDegrees), "the twist angle", p.twistDegrees, "finite");
-  require(p.twistSeconds > 0 && std::isfinite(p.twistSeconds), "the twist time", p.twistSeconds,
-          "finite and > 0");
+  using namespace scenario_option;
+  for (const auto& [option, value] :
+       {std::pair{&kBaseShare, p.baseShare}, std::pair{&kPushAcceleration, p.pushAcceleration},
+        std::pair{&kPushFrequency, p.pushFrequency}, std::pair{&kDropHeight, p.dropHeight},
+        std::pair{&kTwistDegrees, p.twistDegrees}, std::pair{&kTwistSeconds, p.twistSeconds}})
+    if (const auto problem = option->problem(value)) throw Error(*problem);
   if (!p.loads.allFinite()) throw Error("the loads must be finite");
   if (!p.loadCurve.empty() && p.loads.size() == 0)
     throw Error("a load curve scales the loads, but there are none");
-  require(p.loadSeconds > 0, "the time the loads act", p.loadSeconds, "> 0");
+  // (Infinite: the whole run.)
+  if (!(p.loadSeconds > 0))
+    throw Error("the time the loads act must be > 0, got " + formatNumber(p.loadSeconds));
 }
 
 }  // namespace

@@ -30,31 +30,75 @@ struct EnumSchema<FurLighting> {
       {FurLighting::KajiyaKay, "kajiya-kay", "strand highlights"}};
 };
 
+// The fur's number parameters (OptionSchema.h): config keys, `render`
+// flags ("" where it has none), help, ranges and defaults, read by
+// FurParameters' defaults, furParameterProblem, the command line and the
+// GUI's View dock.
+namespace fur_option {
+inline constexpr NumberOption kShells{
+    "shells", "--fur-shells", "fur shells", "most shells drawn", between(1, 256), 16};
+inline constexpr NumberOption kLength{"length",
+                                      "--fur-length",
+                                      "fur length",
+                                      "fur length / bounding-box diagonal",
+                                      between(0, 1, false, true),
+                                      0.03};
+inline constexpr NumberOption kDensity{
+    "density", "--fur-density", "fur density", "share of texels with a hair", between(0, 1), 0.6};
+inline constexpr NumberOption kTextureSize{"texture_size",     "--fur-texture-size",
+                                           "fur texture size", "fur texture edge in texels",
+                                           between(8, 4096),   128};
+inline constexpr NumberOption kTextureRepeats{"texture_repeats",
+                                              "--fur-repeats",
+                                              "fur texture repeats",
+                                              "fur texture tiles across the diagonal",
+                                              between(0, 1000, false, true),
+                                              6};
+inline constexpr NumberOption kRootShade{
+    "root_shade",  "",  "fur root shade", "brightness at the root (self-shadowing)",
+    between(0, 1), 0.35};
+inline constexpr NumberOption kDrag{
+    "drag",         "--fur-drag", "fur drag", "seconds of velocity the tips trail by (0: static)",
+    between(0, 10), 0.04};
+inline constexpr NumberOption kMaxBend{
+    "max_bend", "", "fur bend", "largest tip shift, in fur lengths", between(0, 1), 0.6};
+inline constexpr NumberOption kVelvet{"velvet",      "--fur-velvet",
+                                      "velvet",      "highlight offset off the mirror direction",
+                                      between(0, 1), 0.5};
+inline constexpr NumberOption kBaseDarkening{
+    "base_darkening", "",  "base darkening", "brightness of the skin under the fur",
+    between(0, 1),    0.55};
+// At most `shells` (furParameterProblem checks [1, shells]).
+inline constexpr NumberOption kMinShells{"min_shells",        "--fur-min-shells",
+                                         "fewest fur shells", "fewest shells when adaptive",
+                                         between(1, 256),     4};
+}  // namespace fur_option
+
 // The `fur` section; JSON keys in snake_case. Only `enabled`, `shells`,
 // `length`, `density`, `texture_size` and `seed` are required.
 struct FurParameters {
   bool enabled = false;
-  int shells = 16;            // [1, 256]; the most shells drawn
-  double length = 0.03;       // relative to the bounding-box diagonal, (0, 1]
-  double density = 0.6;       // share of texels that carry a hair, [0, 1]
-  int textureSize = 128;      // fur texture edge in texels, [8, 4096]
-  std::uint32_t seed = 1;     // random seed of the fur texture
-  double textureRepeats = 6;  // fur texture tiles across the bounding-box diagonal, (0, 1000]
-  double rootShade = 0.35;    // brightness at the root (self-shadowing), [0, 1]
-  double drag = 0.04;         // seconds of velocity the tips trail by (0 = static), [0, 10]
-  double maxBend = 0.6;       // largest tip shift, in fur lengths, [0, 1]
-  FurLighting lighting = FurLighting::Velvet;  // "velvet" or "kajiya-kay"
-  double velvet = 0.5;          // how far the highlight is pushed off the mirror direction, [0, 1]
-  double baseDarkening = 0.55;  // brightness of the skin under the fur, [0, 1]
-  bool fins = false;            // silhouette fins (Lengyel et al. 2001)
-  bool adaptiveShells = true;   // fewer shells when the fur is few pixels tall
-  int minShells = 4;            // [1, shells]
+  int shells = static_cast<int>(fur_option::kShells.defaultValue);
+  double length = fur_option::kLength.defaultValue;    // of the bounding-box diagonal
+  double density = fur_option::kDensity.defaultValue;  // share of texels that carry a hair
+  int textureSize = static_cast<int>(fur_option::kTextureSize.defaultValue);  // texels
+  std::uint32_t seed = 1;                                                     // of the texture
+  double textureRepeats = fur_option::kTextureRepeats.defaultValue;
+  double rootShade = fur_option::kRootShade.defaultValue;  // brightness at the root
+  double drag = fur_option::kDrag.defaultValue;            // seconds the tips trail by
+  double maxBend = fur_option::kMaxBend.defaultValue;      // largest tip shift, fur lengths
+  FurLighting lighting = FurLighting::Velvet;
+  double velvet = fur_option::kVelvet.defaultValue;  // highlight off the mirror direction
+  double baseDarkening = fur_option::kBaseDarkening.defaultValue;
+  bool fins = false;           // silhouette fins (Lengyel et al. 2001)
+  bool adaptiveShells = true;  // fewer shells when the fur is few pixels tall
+  int minShells = static_cast<int>(fur_option::kMinShells.defaultValue);
   std::optional<std::filesystem::path> colorTexture;  // RGBA PNG over the surface's texcoords;
                                                       // alpha 0 = no fur (default: `texture`)
 };
 
-// The first numeric fur parameter outside its range (the ranges noted in
-// FurParameters), as its config key and what is wrong, e.g. {"shells",
+// The first numeric fur parameter outside its range (fur_option's), as its
+// config key and what is wrong, e.g. {"shells",
 // "must lie in [1, 256], found 300"}; nullopt when all are in range. The one
 // check of the ranges: the config reader and the command line's overrides
 // both use it.

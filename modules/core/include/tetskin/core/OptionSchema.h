@@ -158,6 +158,9 @@ struct NumberOption {
   const char* help;  // "Poisson's ratio, in (-1, 0.5)"
   NumberRange range;
   double defaultValue;
+  // What an error says of the range, where it is not range.words():
+  // "in [0, 1)" reads "the base share must be in [0, 1), got 1".
+  const char* rangeWords = nullptr;
 
   // "Poisson's ratio must lie in (-1, 0.5), got 0.5"; nullopt when `value`
   // is in the range.

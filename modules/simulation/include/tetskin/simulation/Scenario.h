@@ -20,18 +20,58 @@
 
 namespace tetskin {
 
+// The scenarios' number parameters (OptionSchema.h): their flags, help,
+// ranges and defaults, read by ScenarioParameters' defaults, makeScenario's
+// check, the command line and the GUI's Simulation dock.
+namespace scenario_option {
+inline constexpr NumberOption kBaseShare{
+    "base_share",
+    "--base",
+    "the base share",
+    "wobble, twist, sag: hold the nodes in this lowest share of the height still (0: none)",
+    between(0, 1, true, false),
+    0.1,
+    "in [0, 1)"};
+inline constexpr NumberOption kPushAcceleration{
+    "push_acceleration",     "--push",
+    "the push acceleration", "wobble: peak sideways acceleration of the push, m/s^2",
+    NumberRange{},           15};
+inline constexpr NumberOption kPushFrequency{"push_frequency",
+                                             "--push-frequency",
+                                             "the push frequency",
+                                             "wobble: push frequency, Hz",
+                                             above(0),
+                                             1.0,
+                                             "finite and > 0"};
+inline constexpr NumberOption kDropHeight{
+    "drop_height",     "--drop-height",
+    "the drop height", "drop: start this share of the body's height above the floor",
+    atLeast(0),        0.3};
+inline constexpr NumberOption kTwistDegrees{
+    "twist_degrees",   "--twist-degrees",
+    "the twist angle", "twist: final angle of the top, degrees",
+    NumberRange{},     90};
+inline constexpr NumberOption kTwistSeconds{"twist_seconds",  "--twist-seconds",
+                                            "the twist time", "twist: seconds to reach it",
+                                            above(0),         1.0,
+                                            "finite and > 0"};
+}  // namespace scenario_option
+
 struct ScenarioParameters {
-  double baseShare = 0.1;        // wobble, twist, sag: nodes in the lowest share of the height
-                                 // are fixed (0: none)
-  double pushAcceleration = 15;  // wobble: peak sideways acceleration of the pushed part
-  double pushFrequency = 1.0;    // wobble: Hz
-  double dropHeight = 0.3;       // drop: start this share of the height above the floor
-  double twistDegrees = 90;      // twist: final angle of the top
-  double twistSeconds = 1.0;     // twist: time to reach it
-  std::vector<int> heldNodes;    // every scenario: also fixed (the level's node ids)
-  Points3 loads;                 // every scenario: a force on each node of the level
-                                 // (N; nodeCount rows), or empty for none
-  LoadCurve loadCurve;           // scales the loads over time (empty: by 1)
+  // wobble, twist, sag: nodes in the lowest share of the height are fixed (0: none)
+  double baseShare = scenario_option::kBaseShare.defaultValue;
+  // wobble: peak sideways acceleration of the pushed part, and its frequency (Hz)
+  double pushAcceleration = scenario_option::kPushAcceleration.defaultValue;
+  double pushFrequency = scenario_option::kPushFrequency.defaultValue;
+  // drop: start this share of the height above the floor
+  double dropHeight = scenario_option::kDropHeight.defaultValue;
+  // twist: final angle of the top (degrees) and the time to reach it (s)
+  double twistDegrees = scenario_option::kTwistDegrees.defaultValue;
+  double twistSeconds = scenario_option::kTwistSeconds.defaultValue;
+  std::vector<int> heldNodes;  // every scenario: also fixed (the level's node ids)
+  Points3 loads;               // every scenario: a force on each node of the level
+                               // (N; nodeCount rows), or empty for none
+  LoadCurve loadCurve;         // scales the loads over time (empty: by 1)
   double loadSeconds =
       std::numeric_limits<double>::infinity();  // the loads act in the
                                                 // steps that start before this time, then let go
