@@ -3,8 +3,9 @@
 # page differs from what --help prints now (an option added, renamed or
 # re-documented without the page).
 #   cmake -DTETSKIN=build/app/cli/tetskin -DTETSKIN_GUI=build/app/gui/tetskin-gui
-#         -DPAGE=doc/user/cli-reference.md [-DUPDATE=ON] -P tests/cli/CliReference.cmake
-foreach(var TETSKIN TETSKIN_GUI PAGE)
+#         -DPAGE=doc/user/cli-reference.md -DSOURCE_DIR=$PWD [-DUPDATE=ON]
+#         -P tests/cli/CliReference.cmake
+foreach(var TETSKIN TETSKIN_GUI PAGE SOURCE_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "CliReference.cmake needs -D${var}=...")
   endif()
@@ -19,6 +20,9 @@ function(help_of out)
   # The program's path as the user types it, not the build tree's.
   string(REPLACE "${TETSKIN_GUI}" "tetskin-gui" text "${text}")
   string(REPLACE "${TETSKIN}" "tetskin" text "${text}")
+  # Defaults under the source tree (bench --data) as the README's commands
+  # run them, from its root: the page is the same on every machine.
+  string(REPLACE "${SOURCE_DIR}/" "" text "${text}")
   string(STRIP "${text}" text)
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
@@ -28,7 +32,8 @@ string(APPEND page "Every option of `tetskin` and `tetskin-gui`, as their `--hel
 string(APPEND page "Generated: do not edit. `cli.reference` fails when this page and `--help`\n")
 string(APPEND page "differ; after changing an option, rewrite it from the build tree with\n\n")
 string(APPEND page "```sh\ncmake -DTETSKIN=build/app/cli/tetskin -DTETSKIN_GUI=build/app/gui/tetskin-gui \\\n")
-string(APPEND page "      -DPAGE=doc/user/cli-reference.md -DUPDATE=ON -P tests/cli/CliReference.cmake\n```\n\n")
+string(APPEND page "      -DPAGE=doc/user/cli-reference.md -DSOURCE_DIR=$PWD -DUPDATE=ON \\\n")
+string(APPEND page "      -P tests/cli/CliReference.cmake\n```\n\n")
 string(APPEND page "Conventions every command shares (levels, errors, outputs): [command-line.md](command-line.md).\n")
 help_of(text ${TETSKIN})
 string(APPEND page "\n## tetskin\n\n```text\n${text}\n```\n")

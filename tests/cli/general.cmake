@@ -27,7 +27,7 @@ tetskin_cli_test(render_live_film_decodes REQUIRES "live_film;live_first_frame" 
 if(TARGET tetskin-gui)
   add_test(NAME cli.reference
     COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin> -DTETSKIN_GUI=$<TARGET_FILE:tetskin-gui>
-            -DPAGE=${PROJECT_SOURCE_DIR}/doc/user/cli-reference.md
+            -DPAGE=${PROJECT_SOURCE_DIR}/doc/user/cli-reference.md -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
             -P ${CMAKE_CURRENT_SOURCE_DIR}/CliReference.cmake)
   set_tests_properties(cli.reference PROPERTIES LABELS cli)
 endif()
