@@ -16,22 +16,6 @@ namespace {
 
 constexpr const char* kGroup = "Scenario";
 
-// The options of the parameters that only some scenarios read.
-const std::vector<std::pair<const char*, ScenarioParameter>> kScenarioOnly = {
-    {"--base", ScenarioParameter::BaseShare},
-    {"--push", ScenarioParameter::PushAcceleration},
-    {"--push-frequency", ScenarioParameter::PushFrequency},
-    {"--drop-height", ScenarioParameter::DropHeight},
-    {"--twist-degrees", ScenarioParameter::TwistDegrees},
-    {"--twist-seconds", ScenarioParameter::TwistSeconds}};
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-  return text;
-}
-
 }  // namespace
 
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
@@ -39,12 +23,8 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
       ->capture_default_str()
       ->check(CLI::IsMember(scenarioNames()));
   ScenarioParameters& p = a.parameters;
-  using namespace scenario_option;
-  for (const auto& [option, value] :
-       {std::pair{&kBaseShare, &p.baseShare}, std::pair{&kPushAcceleration, &p.pushAcceleration},
-        std::pair{&kPushFrequency, &p.pushFrequency}, std::pair{&kDropHeight, &p.dropHeight},
-        std::pair{&kTwistDegrees, &p.twistDegrees}, std::pair{&kTwistSeconds, &p.twistSeconds}})
-    addNumberOption(cmd, *option, *value)->group(kGroup);
+  for (const ScenarioField& f : scenarioFields())
+    addNumberOption(cmd, *f.option, p.*f.field)->group(kGroup);
   cmd.add_option("--fixed-nodes", a.fixedNodes,
                  "also hold these nodes still: a text file of node numbers of the level, from 0 "
                  "(the point ids of its .vtu), separated by spaces or lines, # comments")
@@ -103,12 +83,9 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
 ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a,
                                       const Points3& restNodes) {
   const Index nodeCount = restNodes.rows();
-  for (const auto& [option, parameter] : kScenarioOnly)
-    if (cmd.count(option) > 0 && !scenarioReads(a.name, parameter)) {
-      const std::vector<std::string> scenarios = scenariosReading(parameter);
-      throw Error(std::string(option) + ": applies to the " + joined(scenarios) + " scenario" +
-                  (scenarios.size() > 1 ? "s" : "") + ", not to " + a.name);
-    }
+  for (const ScenarioField& f : scenarioFields())
+    if (cmd.count(f.option->flag) > 0 && !scenarioReads(a.name, f.parameter))
+      throw Error(std::string(f.option->flag) + ": " + notReadBy(a.name, f.parameter));
   for (const char* option : {"--load-curve", "--loads-seconds"})
     if (cmd.count(option) > 0 && a.loads.empty())
       throw Error(std::string(option) + ": applies with --loads, which is not given");

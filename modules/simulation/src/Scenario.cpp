@@ -178,6 +178,17 @@ std::vector<int> heldWithNodesInBox(const std::vector<int>& held, const Points3&
   return both;
 }
 
+std::array<ScenarioField, 6> scenarioFields() {
+  using namespace scenario_option;
+  using P = ScenarioParameters;
+  return {{{&kBaseShare, &P::baseShare, ScenarioParameter::BaseShare},
+           {&kPushAcceleration, &P::pushAcceleration, ScenarioParameter::PushAcceleration},
+           {&kPushFrequency, &P::pushFrequency, ScenarioParameter::PushFrequency},
+           {&kDropHeight, &P::dropHeight, ScenarioParameter::DropHeight},
+           {&kTwistDegrees, &P::twistDegrees, ScenarioParameter::TwistDegrees},
+           {&kTwistSeconds, &P::twistSeconds, ScenarioParameter::TwistSeconds}}};
+}
+
 std::vector<std::string> scenariosReading(ScenarioParameter parameter) {
   // (Sag reads the base only; wobble and twist are sag with a push or a
   // turned top; drop has no base.)
@@ -199,6 +210,14 @@ std::vector<std::string> scenariosReading(ScenarioParameter parameter) {
 bool scenarioReads(std::string_view name, ScenarioParameter parameter) {
   const std::vector<std::string> readers = scenariosReading(parameter);
   return std::find(readers.begin(), readers.end(), name) != readers.end();
+}
+
+std::string notReadBy(std::string_view name, ScenarioParameter parameter) {
+  const std::vector<std::string> scenarios = scenariosReading(parameter);
+  std::string text = "applies to the ";
+  for (std::size_t i = 0; i < scenarios.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == scenarios.size() ? " and " : ", ") + scenarios[i];
+  return text + " scenario" + (scenarios.size() > 1 ? "s" : "") + ", not to " + std::string(name);
 }
 
 SimulationOptions scenarioOptions(std::string_view name, SimulationOptions options,

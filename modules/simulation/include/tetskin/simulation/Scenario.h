@@ -8,6 +8,7 @@
 //   twist   base fixed, the top turned about the vertical axis
 //   sag     base fixed, gravity only
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -94,11 +95,24 @@ enum class ScenarioParameter {
   TwistSeconds
 };
 
+// Each number parameter of the scenarios with its option (scenario_option),
+// its field and which parameter it is: what the command line, the GUI and
+// Python read a scenario's numbers through.
+struct ScenarioField {
+  const NumberOption* option;
+  double ScenarioParameters::*field;
+  ScenarioParameter parameter;
+};
+std::array<ScenarioField, 6> scenarioFields();
+
 // The scenarios that read `parameter`, in scenarioNames() order; and
 // whether scenario `name` is one of them (the command line refuses, and the
 // GUI hides, a parameter the chosen scenario would ignore).
 std::vector<std::string> scenariosReading(ScenarioParameter parameter);
 bool scenarioReads(std::string_view name, ScenarioParameter parameter);
+// Why scenario `name` refuses `parameter`: "applies to the wobble, twist and
+// sag scenarios, not to drop" (after the option's name).
+std::string notReadBy(std::string_view name, ScenarioParameter parameter);
 
 class Scenario {
  public:
