@@ -8,9 +8,7 @@
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "tetskin/core/Error.h"
-#include "tetskin/io/AtomicFile.h"
-#include "tetskin/meshing/ModelBuilder.h"
-#include "tetskin/vtkio/SurfaceFile.h"
+#include "tetskin/session/DatasetBuild.h"
 
 namespace tetskin::cli {
 namespace {
@@ -40,35 +38,19 @@ std::vector<std::filesystem::path> inputPaths(const BuildArgs& a) {
 }
 
 void run(BuildArgs& a) {
-  const std::filesystem::path json = datasetConfigPath(a.output);
-  const std::filesystem::path directory = std::filesystem::absolute(json).parent_path();
-  requireWritableLocation(json);  // before the meshing, not after it
-
   a.options.mesher = fromName<MesherKind>(a.mesher);
   a.options.qualities = a.qualities;
   a.options.up = fromName<UpAxis>(a.up);
   a.options.wrap.mode = fromName<WrapMode>(a.wrap);
   Progress progress(a.quiet);
-  std::vector<SurfaceInput> inputs;
-  for (const auto& path : inputPaths(a)) {
-    SurfaceInput input;
-    input.mesh = readSurface(path);
-    input.name = path.string();
-    input.file =
-        std::filesystem::relative(std::filesystem::absolute(path), directory).generic_string();
-    progress.log("read " + path.string() + ": " + std::to_string(input.mesh.vertexCount()) +
-                 " vertices, " + std::to_string(input.mesh.triangleCount()) + " triangles");
-    inputs.push_back(std::move(input));
-  }
   BuildEvents events;
   events.log = [&](const std::string& line) { progress.log(line); };
   events.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
     progress.update(stage, done, total);
   };
-  BuildResult result = buildDataset(std::move(inputs), a.options, events);
-  // (The writers make the folder only now: bad input or a failed build
-  // leaves no empty folder behind.)
-  saveDataset(json, result.dataset);
+  const DatasetBuild build = buildDatasetFiles(inputPaths(a), a.output, a.options, events);
+  const BuildResult& result = build.result;
+  const std::filesystem::path& json = build.config;
   progress.log("");
 
   std::printf("%-5s %9s %8s  %-8s %-16s %8s %8s  %s\n", "level", "elements", "nodes", "mesher",
