@@ -42,21 +42,24 @@ Points3 displacementShifts(const SurfaceBinding& binding, const Points3& restSur
   return shifts;
 }
 
-void SurfaceDeformer::deformPositions(const Points3& control, Points3& positions) const {
+void SurfaceDeformer::deformPositions(ConstPoints3Ref control, Points3& positions) const {
   if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
   deformPositions(control, Points3Ref(positions));
 }
 
-void SurfaceDeformer::deformPositions(const Points3& control, Points3Ref positions) const {
+void SurfaceDeformer::deformPositions(ConstPoints3Ref control, Points3Ref positions) const {
   if (control.rows() <= maxControlId_)
     throw Error("the control state has " + std::to_string(control.rows()) +
                 " nodes, but the binding refers to node " + std::to_string(maxControlId_));
   requireRows("positions to deform into", positions.rows(), vertexCount(), "surface vertices");
   const Record* records = records_.data();
   const double* x = control.data();
+  const Index controlStride = control.outerStride();
   double* out = positions.data();
   const Index stride = positions.outerStride();
-  auto node = [x](int id) { return Eigen::Map<const Eigen::Vector3d>(x + 3 * id); };
+  auto node = [x, controlStride](int id) {
+    return Eigen::Map<const Eigen::Vector3d>(x + controlStride * id);
+  };
   auto kernel = [&](const tbb::blocked_range<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Record& r = records[v];
@@ -79,13 +82,13 @@ void SurfaceDeformer::deformPositions(const Points3& control, Points3Ref positio
   tbb::parallel_for(tbb::blocked_range<Index>(0, vertexCount(), 4096), kernel);
 }
 
-void SurfaceDeformer::deform(const Points3& control, Points3& positions, Points3& normals) {
+void SurfaceDeformer::deform(ConstPoints3Ref control, Points3& positions, Points3& normals) {
   if (positions.rows() != vertexCount()) positions.resize(vertexCount(), 3);
   if (normals.rows() != vertexCount()) normals.resize(vertexCount(), 3);
   deform(control, Points3Ref(positions), Points3Ref(normals));
 }
 
-void SurfaceDeformer::deform(const Points3& control, Points3Ref positions, Points3Ref normals) {
+void SurfaceDeformer::deform(ConstPoints3Ref control, Points3Ref positions, Points3Ref normals) {
   requireRows("normals to deform into", normals.rows(), vertexCount(), "surface vertices");
   deformPositions(control, positions);
   computeVertexNormals(positions, triangles_, adjacency_, faceScratch_, normals);

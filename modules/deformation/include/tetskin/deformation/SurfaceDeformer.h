@@ -24,16 +24,17 @@ class SurfaceDeformer {
   SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBinding& binding,
                   const Points3& controlRest, const std::string& bindingName = "binding");
 
-  // `control`: deformed node positions in dataset numbering. Writes the
-  // deformed positions and unit normals (resized only if their size differs).
-  void deform(const Points3& control, Points3& positions, Points3& normals);
+  // `control`: deformed node positions in dataset numbering (read where
+  // they lie: a NumPy array's rows too). Writes the deformed positions and
+  // unit normals (resized only if their size differs).
+  void deform(ConstPoints3Ref control, Points3& positions, Points3& normals);
   // The same into rows owned elsewhere (a VTK array's buffer): each must have
   // vertexCount() rows, else Error.
-  void deform(const Points3& control, Points3Ref positions, Points3Ref normals);
+  void deform(ConstPoints3Ref control, Points3Ref positions, Points3Ref normals);
 
   // Positions only (for callers that need no normals).
-  void deformPositions(const Points3& control, Points3& positions) const;
-  void deformPositions(const Points3& control, Points3Ref positions) const;
+  void deformPositions(ConstPoints3Ref control, Points3& positions) const;
+  void deformPositions(ConstPoints3Ref control, Points3Ref positions) const;
 
   Index vertexCount() const { return static_cast<Index>(records_.size()); }
   const Triangles& triangles() const { return triangles_; }
