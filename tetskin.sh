@@ -22,6 +22,7 @@ DEPS=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth assimp-testmodels netgen-doc paraview
   paraview-dev qtxmlpatterns5-dev-tools
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9
 )
 
 log() { printf '\n==> %s\n' "$*" >&2; }

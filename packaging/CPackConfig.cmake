@@ -32,6 +32,17 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 # One package per install component.
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_TETSKIN_PACKAGE_NAME tetskin)
+# The Python module (app/python) imports NumPy; tetskin.vtk needs VTK's Python.
+if(TETSKIN_BUILD_PYTHON AND NOT TETSKIN_SANITIZE)
+  set(CPACK_DEBIAN_TETSKIN_PACKAGE_DEPENDS "python3 (>= 3.11), python3 (<< 3.12), python3-numpy")
+  set(CPACK_DEBIAN_TETSKIN_PACKAGE_RECOMMENDS "python3-vtk9")
+endif()
+# Only these: the Python filters' VTK module installs a static library of its
+# own (component python_vtk_build_only), which is no package's.
+set(CPACK_COMPONENTS_ALL tetskin)
+if(TETSKIN_PARAVIEW_PLUGIN)
+  list(APPEND CPACK_COMPONENTS_ALL paraview_plugin)
+endif()
 set(CPACK_DEBIAN_PARAVIEW_PLUGIN_PACKAGE_NAME tetskin-paraview-plugin)
 set(CPACK_DEBIAN_PARAVIEW_PLUGIN_PACKAGE_SECTION science)
 set(CPACK_COMPONENT_PARAVIEW_PLUGIN_DESCRIPTION

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Builds the Debian packages as a user would (cpack -G DEB) and checks what
 # is in them: tetskin has the executables, the data and the desktop entry and
-# does not depend on ParaView; where the ParaView plugin was built,
+# does not depend on ParaView, and (where the Python module was built) has
+# it where Debian's python3 imports it from; where the ParaView plugin was built,
 # tetskin-paraview-plugin has it beside ParaView's own plugins, depends on
 # paraview 5.11, and ParaView loads it from there on its own (PV_PLUGIN_PATH,
 # the way the README gives).
-# Usage: check_packages.sh CPACK BUILD_DIR GUI(0|1) PLUGIN(0|1) [PARAVIEW_ROOT CHECKS_DIR]
+# Usage: check_packages.sh CPACK BUILD_DIR GUI(0|1) PLUGIN(0|1) PYTHON(0|1) [PARAVIEW_ROOT CHECKS_DIR]
 set -euo pipefail
 build=$(cd "$2" && pwd)
-cpack=$1 gui=$3 plugin=$4 pvroot=${5:-} checks=${6:-}
+cpack=$1 gui=$3 plugin=$4 python=$5 pvroot=${6:-} checks=${7:-}
 out=$build/package
 
 fail() {
@@ -33,7 +34,26 @@ has "$main" usr/share/doc/tetskin/doc/user/model-generation.md
 depends=$(dpkg-deb -f "$main" Depends)
 [[ $depends == *libvtk9.1* ]] || fail "tetskin does not depend on libvtk9.1: $depends"
 [[ $depends != *paraview* ]] || fail "tetskin depends on ParaView: $depends"
-echo "tetskin: $(dpkg-deb -c "$main" | wc -l) entries"
+# (The listing is kept: grep -q on a pipe would end dpkg-deb early, which
+# pipefail counts as a failure.)
+listing=$(dpkg-deb -c "$main")
+if [[ $python == 1 ]]; then
+  has "$main" usr/lib/python3/dist-packages/tetskin/__init__.py
+  # The module, its VTK filters, and that Debian's python3 imports them from
+  # where the package puts them.
+  grep -q "dist-packages/tetskin/_tetskin.cpython-.*\.so" <<<"$listing" ||
+    fail "tetskin lacks the Python module's library"
+  grep -q "dist-packages/tetskin/vtkTetSkinFilters.*\.so" <<<"$listing" ||
+    fail "tetskin lacks the VTK filters' Python module"
+  [[ $depends == *python3-numpy* ]] || fail "tetskin does not depend on python3-numpy: $depends"
+  ! grep -q "\.a$" <<<"$listing" || fail "tetskin holds a static library"
+  unpackedMain=$out/unpacked-main
+  dpkg-deb -x "$main" "$unpackedMain"
+  PYTHONPATH=$unpackedMain/usr/lib/python3/dist-packages /usr/bin/python3 -c \
+    "import tetskin, tetskin.vtk; tetskin.vtk.vtkTetSkinBindSurface()" ||
+    fail "the packaged Python module does not import"
+fi
+echo "tetskin: $(dpkg-deb -c "$main" | wc -l) entries, python module: $python"
 
 pluginDeb=$(find "$out" -maxdepth 1 -name 'tetskin-paraview-plugin_*.deb')
 if [[ $plugin == 0 ]]; then

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "KeywordOptions.h"
+
+#include <cmath>
+#include <vector>
+
+#include "ArrayConversion.h"
+#include "tetskin/core/ElasticMaterial.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/core/NumberText.h"
+
+namespace tetskin::python {
+namespace {
+
+// "--push-frequency" -> "push_frequency"; "" for an option without a flag.
+std::string flagName(const char* flag) {
+  std::string name(flag);
+  while (!name.empty() && name.front() == '-') name.erase(name.begin());
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+}  // namespace
+
+Keywords::Keywords(const py::kwargs& kwargs, std::string call)
+    : given_(kwargs), call_(std::move(call)) {}
+
+std::optional<py::object> Keywords::take(const char* key) {
+  known_.insert(key);
+  if (!given_.contains(key)) return std::nullopt;
+  py::object value = given_[key];
+  PyDict_DelItemString(given_.ptr(), key);
+  return value;
+}
+
+std::optional<double> Keywords::number(const NumberOption& option) {
+  std::optional<py::object> value = take(option.key);
+  const std::string flag = flagName(option.flag);
+  std::string name = option.key;
+  if (!flag.empty() && flag != option.key) {
+    std::optional<py::object> byFlag = take(flag.c_str());
+    if (value && byFlag)
+      throw Error(call_ + ": " + option.key + " and " + flag + " are the same option: give one");
+    if (byFlag) {
+      value = byFlag;
+      name = flag;
+    }
+  }
+  if (!value) return std::nullopt;
+  if (py::isinstance<py::bool_>(*value) ||
+      !(py::isinstance<py::float_>(*value) || py::isinstance<py::int_>(*value) ||
+        py::hasattr(*value, "__float__")))
+    throw Error(call_ + ": " + name + ": expected a number, got " +
+                std::string(py::str(py::type::handle_of(*value).attr("__name__"))));
+  const double number = value->cast<double>();
+  if (const std::optional<std::string> problem = option.problem(number))
+    throw Error(call_ + ": " + name + ": " + *problem);
+  return number;
+}
+
+std::optional<int> Keywords::count(const NumberOption& option) {
+  const std::optional<double> value = number(option);
+  if (!value) return std::nullopt;
+  if (*value != std::floor(*value) || std::abs(*value) > 1e9)
+    throw Error(call_ + ": " + option.key + ": expected a whole number, got " +
+                formatNumber(*value));
+  return static_cast<int>(*value);
+}
+
+void Keywords::finish() const {
+  if (given_.empty()) return;
+  const std::string unknown = py::str(given_.begin()->first);
+  std::vector<std::string> known(known_.begin(), known_.end());
+  throw Error(call_ + ": unknown option '" + unknown + "' (known: " + listed(known) + ")");
+}
+
+SimulationOptions simulationOptions(Keywords& k, const DatasetConfig& config) {
+  SimulationOptions o;
+  o.material = config.elasticity;
+  for (const MaterialField& field : materialFields())
+    if (const auto value = k.number(*field.option)) o.material.*field.field = *value;
+  validateMaterial(o.material);  // (each value was in range; the set must be too)
+  using namespace simulation_option;
+  if (const auto v = k.number(kTimeStep)) o.timeStep = *v;
+  if (const auto v = k.number(kTolerance)) o.tolerance = *v;
+  if (const auto v = k.count(kGuessSolutions)) o.guessSolutions = *v;
+  if (const auto v = k.count(kCoarseReuse)) o.coarseReuse = *v;
+  if (const auto v = k.count(kMaxIterations)) o.maxIterations = *v;
+  if (const auto v = k.number(kFriction)) o.friction = *v;
+  if (const auto v = k.number(kFloorStiffness)) o.floorStiffness = *v;
+  // As `tetskin simulate`: the faster solver on the running simulation.
+  o.solver = k.choice<SolverKind>("solver").value_or(SolverKind::Automatic);
+  if (const auto v = k.choice<Tangent>("tangent")) o.tangent = *v;
+  if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
+  o = uprightAlong(k.choice<UpAxis>("up").value_or(config.up), o);
+  if (const auto gravity = k.take("gravity")) {
+    const Points3 g = points3(py::array(py::module_::import("numpy").attr("reshape")(
+                                  py::array::ensure(*gravity), py::make_tuple(-1, 3))),
+                              "gravity");
+    if (g.rows() != 1) throw Error(k.call() + ": gravity: expected 3 numbers (x, y, z)");
+    o.gravity = g.row(0).transpose();
+  }
+  if (const auto floor = k.take("floor_height")) {
+    const double height = floor->cast<double>();
+    if (!std::isfinite(height)) throw Error(k.call() + ": floor_height: must be finite");
+    o.floorHeight = height;
+  }
+  return o;
+}
+
+ScenarioParameters scenarioParameters(Keywords& k, const std::string& scenario, Index levelNodes) {
+  ScenarioParameters p;
+  for (const ScenarioField& f : scenarioFields())
+    if (const auto value = k.number(*f.option)) {
+      if (!scenarioReads(scenario, f.parameter))
+        throw Error(k.call() + ": " + f.option->key + ": " + notReadBy(scenario, f.parameter));
+      p.*f.field = *value;
+    }
+  const std::string level = "the level (" + std::to_string(levelNodes) + " nodes)";
+  if (const auto held = k.take("held_nodes"))
+    p.heldNodes = idList(*held, "held_nodes", levelNodes, level);
+  if (const auto loads = k.take("loads")) {
+    p.loads = points3(*loads, "loads");
+    if (p.loads.rows() != levelNodes)
+      throw Error(k.call() + ": loads: expected one row per node of " + level + ", got " +
+                  std::to_string(p.loads.rows()));
+  }
+  if (const auto seconds = k.take("load_seconds")) {
+    if (p.loads.rows() == 0) throw Error(k.call() + ": load_seconds: applies with loads");
+    p.loadSeconds = seconds->cast<double>();
+    if (!(p.loadSeconds > 0)) throw Error(k.call() + ": load_seconds: must be > 0");
+  }
+  return p;
+}
+
+void readBuildOptions(Keywords& k, BuildOptions& o) {
+  if (const auto qualities = k.take("qualities")) {
+    o.qualities.clear();
+    for (const py::handle q : *qualities) {
+      const double value = q.cast<double>();
+      if (!(value > 1.0))
+        throw Error(k.call() + ": qualities: each must be > 1.0, got " + formatNumber(value));
+      o.qualities.push_back(value);
+    }
+    if (o.qualities.empty()) throw Error(k.call() + ": qualities: give at least one");
+  }
+  if (const auto v = k.take("size_to_targets")) o.sizeToTargets = v->cast<bool>();
+  if (const auto v = k.take("jobs")) {
+    o.jobs = v->cast<int>();
+    if (o.jobs < 1) throw Error(k.call() + ": jobs: must be >= 1");
+  }
+  if (const auto v = k.take("timeout")) {
+    o.timeoutSeconds = v->cast<double>();
+    if (!(o.timeoutSeconds > 0)) throw Error(k.call() + ": timeout: must be > 0 seconds");
+  }
+  if (const auto v = k.choice<WrapMode>("wrap")) o.wrap.mode = *v;
+  for (auto [key, value] :
+       {std::pair{"wrap_alpha", &o.wrap.alpha}, std::pair{"wrap_offset", &o.wrap.offset}})
+    if (const auto given = k.take(key)) {
+      *value = given->cast<double>();
+      if (!(*value > 0)) throw Error(k.call() + ": " + key + ": must be > 0");
+    }
+  if (const auto v = k.choice<UpAxis>("up")) o.up = *v;
+}
+
+}  // namespace tetskin::python

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Keyword arguments as the libraries' options, read through the option
+// schema (core/OptionSchema.h): a number option goes by its config key
+// (youngs_modulus) or by its command-line flag without the dashes (young),
+// an enumeration by its names (solver="multigrid"); each is checked as the
+// command line checks it, and an unknown keyword is an error that lists the
+// known ones. So Python takes what `tetskin` takes, in the same words.
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+#include <set>
+#include <string>
+
+#include "tetskin/core/OptionSchema.h"
+#include "tetskin/io/DatasetConfig.h"
+#include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/session/SimulationSession.h"
+
+namespace tetskin::python {
+
+namespace py = pybind11;
+
+// The keywords of one call, each read at most once; finish() refuses the
+// ones nobody read.
+class Keywords {
+ public:
+  Keywords(const py::kwargs& kwargs, std::string call);
+
+  // The option's value (by its key or its flag's name), checked against its
+  // range; nullopt when not given.
+  std::optional<double> number(const NumberOption& option);
+  // The same for an option that counts (a whole number).
+  std::optional<int> count(const NumberOption& option);
+  template <SchemaEnum E>
+  std::optional<E> choice(const char* key) {
+    const std::optional<py::object> value = take(key);
+    if (!value) return std::nullopt;
+    if (!py::isinstance<py::str>(*value))
+      throw Error(call_ + ": " + key + ": expected one of " + listed(namesOf<E>()));
+    try {
+      return fromName<E>(value->cast<std::string>());
+    } catch (const Error& e) {
+      throw Error(call_ + ": " + key + ": " + e.what());
+    }
+  }
+  // Any other keyword's value, nullopt when not given.
+  std::optional<py::object> take(const char* key);
+  // Error naming the keywords not read: "simulation: unknown option 'yung'
+  // (known: ...)".
+  void finish() const;
+  const std::string& call() const { return call_; }
+
+ private:
+  py::dict given_;
+  std::string call_;
+  std::set<std::string> known_;
+};
+
+// A simulation's options from keywords over the dataset config's material
+// and up axis, as `tetskin simulate` makes them from its options: the
+// material (youngs_modulus or young, ...), the time step, tolerance, solver
+// (default auto, as on the command line), tangent, coarse_operators and the
+// other numbers of simulation_option, up, gravity (3 numbers) and
+// floor_height.
+SimulationOptions simulationOptions(Keywords& keywords, const DatasetConfig& config);
+// A scenario's parameters: its numbers (base_share or base, ...; refused
+// for a scenario that does not read them, as on the command line),
+// held_nodes, loads ((n, 3) newtons on the level's nodes) and load_seconds.
+ScenarioParameters scenarioParameters(Keywords& keywords, const std::string& scenario,
+                                      Index levelNodes);
+// A build's options beyond those `build` names itself: qualities,
+// size_to_targets, jobs, timeout, wrap, wrap_alpha, wrap_offset, up.
+void readBuildOptions(Keywords& keywords, BuildOptions& options);
+
+}  // namespace tetskin::python

@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Simulation: a run of the corotated FEM on a dataset level through the run
+// layer (SimulationSession), as `tetskin simulate` and the GUI run it, with
+// the state as NumPy arrays, forces and fixed nodes from Python, and
+// recording to a ParaView time series.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <algorithm>
+#include <set>
+
+#include "Api.h"
+#include "ArrayConversion.h"
+#include "KeywordOptions.h"
+#include "Objects.h"
+#include "tetskin/core/Error.h"
+
+namespace tetskin::python {
+namespace {
+
+using Object = SimulationObject;
+
+std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
+                             std::optional<std::string> scenario, const py::kwargs& kwargs) {
+  Keywords keywords(kwargs, "Simulation");
+  RunSpec spec;
+  spec.level = resolveLevel(dataset.dataset->mesh, level);
+  spec.datasetName = dataset.path.string();
+  // No scenario: a free body under gravity, nothing held (sag without a base).
+  spec.scenario = scenario.value_or("sag");
+  const auto names = scenarioNames();
+  if (std::find(names.begin(), names.end(), spec.scenario) == names.end())
+    throw Error("Simulation: scenario: unknown scenario '" + spec.scenario +
+                "' (known: " + listed(names) + ", or None)");
+  spec.options = simulationOptions(keywords, dataset.dataset->config);
+  const Index nodes = dataset.dataset->mesh.levels[static_cast<std::size_t>(spec.level)].nodeCount;
+  spec.parameters = scenarioParameters(keywords, spec.scenario, nodes);
+  if (!scenario && !kwargs.contains("base_share") && !kwargs.contains("base"))
+    spec.parameters.baseShare = 0;
+  keywords.finish();
+  auto object = std::make_shared<Object>();
+  object->dataset = dataset.dataset;
+  {
+    py::gil_scoped_release unlocked;
+    object->session = std::make_unique<SimulationSession>(dataset.dataset->mesh, spec);
+  }
+  object->forces = Points3::Zero(nodes, 3);
+  return object;
+}
+
+py::dict statsDict(const StepStats& stats, double seconds) {
+  py::dict d;
+  d["solver"] = toString(stats.solver);
+  d["iterations"] = stats.iterations;
+  d["residual"] = stats.residual;
+  d["contacts"] = stats.contacts;
+  d["assembly_seconds"] = stats.assemblySeconds;
+  d["setup_seconds"] = stats.setupSeconds;
+  d["solve_seconds"] = stats.solveSeconds;
+  d["seconds"] = seconds;
+  return d;
+}
+
+py::object step(Object& s, int n) {
+  if (n < 0) throw Error("step: n must be >= 0");
+  StepStats stats;
+  for (int i = 0; i < n; ++i) {
+    {
+      py::gil_scoped_release unlocked;
+      std::lock_guard lock(s.changing);
+      stats = s.session->step(s.forcesGiven ? &s.forces : nullptr);
+      if (s.session->recording() && s.session->simulation().steps() % s.recordEvery == 0)
+        s.session->recordFrame();
+    }
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between steps
+  }
+  if (n == 0) return py::none();
+  return statsDict(stats, s.session->lastStepSeconds());
+}
+
+void setRows(Object& s, py::handle value, const char* name, bool positions) {
+  const Points3 rows = points3(value, name);
+  if (rows.rows() != s.nodeCount())
+    throw Error(std::string(name) + ": expected one row per node of " + s.levelWords() + ", got " +
+                std::to_string(rows.rows()));
+  py::gil_scoped_release unlocked;
+  std::lock_guard lock(s.changing);
+  if (positions)
+    s.session->simulation().setPositions(rows);
+  else
+    s.session->simulation().setVelocities(rows);
+}
+
+}  // namespace
+
+void addSimulationApi(py::module_& m) {
+  py::class_<Object, std::shared_ptr<Object>>(
+      m, "Simulation",
+      "A run of the corotated FEM on a dataset level, as `tetskin simulate` runs it.")
+      .def(py::init(&make), py::arg("dataset"), py::arg("level") = -1,
+           py::arg("scenario") = py::none(),
+           "Simulates `level` of `dataset` (negative: from the finest). scenario: 'wobble', "
+           "'drop', 'twist', 'sag', or None for a free body under gravity with nothing held. "
+           "Keyword options as `tetskin simulate`'s, by config key or flag name: the material "
+           "(youngs_modulus/young, poisson_ratio/poisson, density, mass_damping/alpha, "
+           "stiffness_damping/beta; default the dataset config's), time_step/dt, solver "
+           "('auto', 'cg', 'multigrid'), tolerance, tangent, coarse_operators, coarse_reuse, "
+           "guess_solutions, max_iterations, friction, floor_stiffness, up, gravity, "
+           "floor_height, the scenario's numbers (base_share/base, push_acceleration/push, "
+           "push_frequency, drop_height, twist_degrees, twist_seconds), held_nodes, loads, "
+           "load_seconds.")
+      .def("step", &step, py::arg("n") = 1,
+           "Takes n implicit steps (without the GIL); returns the last one's statistics "
+           "(solver, iterations, residual, contacts, seconds by stage).")
+      .def_property_readonly(
+          "time", [](const Object& s) { return s.session->simulation().time(); },
+          "seconds simulated")
+      .def_property_readonly(
+          "steps", [](const Object& s) { return s.session->simulation().steps(); }, "steps taken")
+      .def_property_readonly(
+          "level", [](const Object& s) { return s.session->level(); }, "the simulated level")
+      .def_property_readonly(
+          "solver",
+          [](const Object& s) { return std::string(toString(s.session->options().solver)); },
+          "the solver option: 'auto', 'cg' or 'multigrid'")
+      .def_property_readonly(
+          "positions", [](const Object& s) { return owning(s.session->state().positions); },
+          "node positions now, float64 (n, 3), the level's numbering (a copy)")
+      .def_property_readonly(
+          "velocities", [](const Object& s) { return owning(s.session->state().velocities); },
+          "node velocities now, float64 (n, 3) (a copy)")
+      .def_property_readonly(
+          "fixed_nodes", [](const Object& s) { return s.session->simulation().fixedNodes(); },
+          "the nodes held still (the scenario's and fix_nodes')")
+      .def(
+          "set_positions", [](Object& s, py::handle X) { setRows(s, X, "positions", true); },
+          py::arg("positions"), "Replaces the node positions (float (n, 3)).")
+      .def(
+          "set_velocities", [](Object& s, py::handle V) { setRows(s, V, "velocities", false); },
+          py::arg("velocities"), "Replaces the node velocities (float (n, 3)).")
+      .def(
+          "fix_nodes",
+          [](Object& s, py::handle ids) {
+            const std::vector<int> added = idList(ids, "ids", s.nodeCount(), s.levelWords());
+            py::gil_scoped_release unlocked;
+            std::lock_guard lock(s.changing);
+            Simulation& sim = s.session->simulation();
+            std::set<int> fixed(sim.fixedNodes().begin(), sim.fixedNodes().end());
+            fixed.insert(added.begin(), added.end());
+            sim.setFixedNodes(std::vector<int>(fixed.begin(), fixed.end()));
+          },
+          py::arg("ids"), "Holds these nodes (the level's ids) still, besides those held already.")
+      .def(
+          "apply_forces",
+          [](Object& s, py::handle ids, py::handle forces) {
+            const std::vector<int> nodes = idList(ids, "ids", s.nodeCount(), s.levelWords());
+            const Points3 f = points3(forces, "forces");
+            if (f.rows() != static_cast<Index>(nodes.size()))
+              throw Error("forces: expected one row per id (" + std::to_string(nodes.size()) +
+                          "), got " + std::to_string(f.rows()));
+            py::gil_scoped_release unlocked;
+            std::lock_guard lock(s.changing);
+            s.forces.setZero();
+            for (std::size_t i = 0; i < nodes.size(); ++i)
+              s.forces.row(nodes[i]) += f.row(static_cast<Index>(i));
+            s.forcesGiven = !nodes.empty();
+          },
+          py::arg("ids"), py::arg("forces"),
+          "Forces (newtons, float (k, 3)) on the nodes `ids`, added to the scenario's in every "
+          "step from now on; replaces the forces of an earlier call (none: empty ids).")
+      .def(
+          "energies",
+          [](const Object& s) {
+            const Energies e = s.session->simulation().energies();
+            py::dict d;
+            d["kinetic"] = e.kinetic;
+            d["elastic"] = e.elastic;
+            d["gravitational"] = e.gravitational;
+            d["total"] = e.total();
+            return d;
+          },
+          "Kinetic, elastic, gravitational and total energy now, joules (gravitational from the "
+          "rest shape).")
+      .def(
+          "von_mises",
+          [](const Object& s) {
+            const Simulation& sim = s.session->simulation();
+            return owning(sim.frameFields(sim.state()).vonMisesStress);
+          },
+          "The von Mises stress per element now, pascals, float64 (m,).")
+      .def(
+          "record",
+          [](Object& s, const std::filesystem::path& path, std::shared_ptr<BindingObject> surface,
+             int every) {
+            if (every < 1) throw Error("record: every must be >= 1");
+            if (surface) {
+              if (surface->dataset != s.dataset)
+                checkBindingFits(surface->bound, s.dataset->mesh, "surface");
+              if (surface->bound.binding.level != s.session->level())
+                throw Error("surface: bound to level " +
+                            std::to_string(surface->bound.binding.level) +
+                            ", the simulation runs level " + std::to_string(s.session->level()));
+            }
+            py::gil_scoped_release unlocked;
+            std::lock_guard lock(s.changing);
+            if (surface)
+              s.session->bindSurface(surface->bound.surface, surface->bound.binding,
+                                     surface->bound.dataset);
+            s.recordEvery = every;
+            s.session->record(path);
+            s.session->recordFrame();
+          },
+          py::arg("path"), py::arg("surface") = py::none(), py::arg("every") = 1,
+          "Records the run to `path` (.pvd, frames in PATH_frames/) as `tetskin simulate -o` "
+          "does: the state now, then every `every`-th step; with `surface` (a Binding of this "
+          "level), the surface deformed in each frame too.")
+      .def(
+          "stop_recording",
+          [](Object& s) {
+            py::gil_scoped_release unlocked;
+            std::lock_guard lock(s.changing);
+            s.session->stopRecording();
+          },
+          "Ends the recording; the series stays as written.")
+      .def("__repr__", [](const Object& s) {
+        return "<tetskin.Simulation " + s.levelWords() + ", scenario " +
+               s.session->scenario().name() +
+               ", t = " + std::to_string(s.session->simulation().time()) + " s>";
+      });
+}
+
+}  // namespace tetskin::python

@@ -1,0 +1,128 @@
+# SPDX-License-Identifier: AGPL-3.0-or-later
+"""Simulation: step for step as `tetskin simulate`, its state, forces, fixed
+nodes, recording and errors."""
+import csv
+import threading
+
+import numpy as np
+import pytest
+
+import tetskin
+from conftest import DATA
+
+vtk_xml = pytest.importorskip("vtkmodules.vtkIOXML")
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+
+def frame_points(path):
+    reader = vtk_xml.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(np.float64)
+
+
+@pytest.mark.parametrize("solver", ["cg", "multigrid"])
+def test_python_matches_the_command_step_for_step(tmp_path, cli, bunny, solver):
+    steps = 8
+    cli("simulate", DATA / "bunny.json", "--level", 1, "--steps", steps, "--solver", solver,
+        "--young", 4e5, "-o", tmp_path / "run.pvd", "--log", tmp_path / "log.csv", "-q")
+    with open(tmp_path / "log.csv") as f:
+        logged = list(csv.DictReader(f))
+    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver=solver, young=4e5)
+    np.testing.assert_array_equal(sim.positions, frame_points(tmp_path / "run_frames" / "control_00000.vtu"))
+    for k in range(1, steps + 1):
+        stats = sim.step()
+        assert stats["solver"] == solver
+        assert stats["iterations"] == int(logged[k]["iterations"])
+        expected = frame_points(tmp_path / "run_frames" / f"control_{k:05d}.vtu")
+        np.testing.assert_allclose(sim.positions, expected, rtol=0, atol=1e-12)
+    assert sim.steps == steps and sim.time == pytest.approx(steps / 60)
+
+
+def test_a_free_body_falls_and_fixed_nodes_stay(bunny):
+    level = bunny.level(0)
+    sim = tetskin.Simulation(bunny, level=0)  # no scenario: nothing held, gravity only
+    assert sim.fixed_nodes == []
+    sim.fix_nodes([0, 5])
+    sim.step(10)
+    X = sim.positions
+    np.testing.assert_array_equal(X[[0, 5]], level.nodes[[0, 5]])
+    free = np.setdiff1d(np.arange(len(X)), [0, 5])
+    assert (X[free, 1] < level.nodes[free, 1]).mean() > 0.5  # it sags, down y
+    assert sim.fixed_nodes == [0, 5]
+
+
+def test_forces_push_and_state_can_be_set(bunny):
+    sim = tetskin.Simulation(bunny, level=0, gravity=[0, 0, 0], scenario="sag")
+    rest = sim.positions
+    top = int(np.argmax(rest[:, 1]))
+    sim.apply_forces([top], [[1e4, 0, 0]])
+    sim.step(5)
+    assert sim.positions[top, 0] > rest[top, 0]
+    assert sim.energies()["kinetic"] > 0
+    sim.set_positions(rest)
+    sim.set_velocities(np.zeros_like(rest))
+    np.testing.assert_array_equal(sim.positions, rest)
+    assert sim.energies()["kinetic"] == 0
+    stress = sim.von_mises()
+    assert stress.shape == (len(bunny.level(0).elements),) and (stress >= 0).all()
+
+
+def test_record_writes_a_series_with_the_surface(tmp_path, bunny, bunny_8k):
+    V, F = bunny_8k
+    binding = tetskin.bind(bunny, V, F, level=0)
+    sim = tetskin.Simulation(bunny, level=0, scenario="wobble", solver="cg")
+    sim.record(tmp_path / "run.pvd", surface=binding, every=2)
+    sim.step(4)
+    sim.stop_recording()
+    sim.step(1)
+    text = (tmp_path / "run.pvd").read_text()
+    assert text.count("<DataSet") == 6  # frames 0, 2 and 4, control mesh and surface each
+    surfaces = sorted((tmp_path / "run_frames").glob("surface_*.vtp"))
+    assert len(surfaces) == 3
+    last, _ = tetskin.read_surface(surfaces[-1])
+    assert np.abs(last - V).max() > 0
+
+
+def test_a_step_runs_while_another_thread_reads(bunny):
+    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver="cg")
+    seen = []
+    worker = threading.Thread(target=lambda: sim.step(6))
+    worker.start()
+    while worker.is_alive():
+        seen.append(sim.positions.shape)
+    worker.join()
+    assert sim.steps == 6 and all(s == seen[0] for s in seen)
+
+
+@pytest.mark.parametrize(
+    "options, words",
+    [
+        ({"yung": 1e5}, "Simulation: unknown option 'yung' (known: "),
+        ({"poisson": 0.5}, "poisson: Poisson's ratio must lie in (-1, 0.5), got 0.5"),
+        ({"young": 1e5, "youngs_modulus": 1e5}, "youngs_modulus and young are the same option"),
+        ({"solver": "gmres"}, "solver: unknown solver 'gmres' (known: auto, cg, multigrid)"),
+        ({"drop_height": 0.5}, "drop_height: applies to the drop scenario, not to wobble"),
+        ({"dt": -1}, "dt: the time step must be"),
+        ({"guess_solutions": 2.5}, "guess_solutions: expected a whole number"),
+        ({"held_nodes": [10**6]}, "held_nodes: 1000000 is no node of"),
+        ({"loads": np.zeros((3, 3))}, "loads: expected one row per node"),
+        ({"young": "soft"}, "young: expected a number, got str"),
+    ],
+)
+def test_bad_options_are_errors_in_the_commands_words(bunny, options, words):
+    with pytest.raises(tetskin.Error) as caught:
+        tetskin.Simulation(bunny, level=0, scenario="wobble", **options)
+    assert words in str(caught.value)
+
+
+def test_bad_state_and_ids_are_errors_naming_the_argument(bunny):
+    sim = tetskin.Simulation(bunny, level=0)
+    with pytest.raises(tetskin.Error, match="positions: expected one row per node of level 0"):
+        sim.set_positions(np.zeros((3, 3)))
+    with pytest.raises(tetskin.Error, match="ids: -1 is no node of level 0"):
+        sim.fix_nodes([-1])
+    with pytest.raises(tetskin.Error, match="forces: expected one row per id"):
+        sim.apply_forces([1, 2], [[0, 0, 1]])
+    with pytest.raises(tetskin.Error, match="scenario: unknown scenario 'bounce'"):
+        tetskin.Simulation(bunny, scenario="bounce")
