@@ -52,6 +52,12 @@ def test_a_free_body_falls_and_fixed_nodes_stay(bunny):
     assert sim.fixed_nodes == [0, 5]
 
 
+def test_a_free_body_may_still_hold_its_base(bunny):
+    sim = tetskin.Simulation(bunny, level=0, base_share=0.2)
+    sag = tetskin.Simulation(bunny, level=0, scenario="sag", base_share=0.2)
+    assert len(sim.fixed_nodes) > 0 and sim.fixed_nodes == sag.fixed_nodes
+
+
 def test_forces_push_and_state_can_be_set(bunny):
     sim = tetskin.Simulation(bunny, level=0, gravity=[0, 0, 0], scenario="sag")
     rest = sim.positions

@@ -23,8 +23,9 @@ std::string flagName(const char* flag) {
 
 }  // namespace
 
+// (A copy: reading a keyword removes it, and the caller may ask what it was given.)
 Keywords::Keywords(const py::kwargs& kwargs, std::string call)
-    : given_(kwargs), call_(std::move(call)) {}
+    : given_(kwargs.attr("copy")()), call_(std::move(call)) {}
 
 std::optional<py::object> Keywords::take(const char* key) {
   known_.insert(key);

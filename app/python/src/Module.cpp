@@ -10,6 +10,7 @@ namespace py = pybind11;
 
 PYBIND11_MODULE(_tetskin, m) {
   m.doc() = "TetSkin: multiresolution deformable bodies with bound high-resolution surfaces";
+  m.attr("__version__") = TETSKIN_VERSION;
   // One error type for everything TetSkin refuses, with the message the
   // command line prints after "error: ". It is a ValueError (bad input) and
   // a RuntimeError (a step that blew up) both, so either except clause takes it.

@@ -20,6 +20,7 @@ from ._tetskin import (
     Error,
     Level,
     Simulation,
+    __version__,
     bind,
     build,
     deform,
