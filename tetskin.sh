@@ -139,7 +139,9 @@ sanitized_tests() {
   local dir=${BUILD_DIR}-asan
   configure "$dir" -DCMAKE_BUILD_TYPE=Debug -DTETSKIN_SANITIZE=ON -DTETSKIN_BUILD_GUI=OFF \
     -DTETSKIN_BUILD_BENCHMARKS=OFF
-  cmake --build "$dir" -j "$JOBS" --target core_tests io_tests vtkio_tests simulation_kernel_tests session_tests \
+  # (The tests are listed by running them at build time: leaks, which the
+  # run below does not check either, must not fail that; #53 takes LSan on.)
+  ASAN_OPTIONS=detect_leaks=0 cmake --build "$dir" -j "$JOBS" --target core_tests io_tests vtkio_tests simulation_kernel_tests session_tests \
     tetskin
   (cd "$dir" && ASAN_OPTIONS=detect_leaks=0 ctest -j "$JOBS" -L "^(core|io|vtkio|cli|simulation-kernels|session)$" \
     -LE rendering --output-on-failure --no-tests=error)
