@@ -14,6 +14,8 @@ BUILD_DIR=${BUILD_DIR:-build}
 export CCACHE_BASEDIR="$ROOT"
 JOBS=${JOBS:-$(nproc)}
 
+# (libsuitesparse-dev, libhypre-dev: solver_bench's baselines, CHOLMOD and
+# BoomerAMG; libopenblas0-pthread: the BLAS CHOLMOD's factorization runs on.)
 DEPS=(
   cmake ninja-build g++ pkg-config ccache dpkg-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
@@ -23,6 +25,7 @@ DEPS=(
   xvfb xauth assimp-testmodels netgen-doc paraview
   paraview-dev qtxmlpatterns5-dev-tools
   pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9
+  libsuitesparse-dev libhypre-dev libopenblas0-pthread
 )
 
 log() { printf '\n==> %s\n' "$*" >&2; }

@@ -458,5 +458,40 @@ TEST(Solvers, MultigridCycleIsSymmetric) {
   }
 }
 
+// A caller's preconditioner (SimulationOptions::preconditioner) is CG's:
+// one is made per simulation and set up on every step's system, and block
+// Jacobi made by the caller steps exactly as the built-in one does.
+TEST(Solvers, ACallersPreconditionerPreconditionsTheStepsCg) {
+  struct Counting : BlockJacobi {
+    explicit Counting(int* setups) : setups_(setups) {}
+    void setup(const SparseMatrix& A) override {
+      ++*setups_;
+      BlockJacobi::setup(A);
+    }
+    int* setups_;
+  };
+  const Dataset& d = sampleDataset();
+  int made = 0, setups = 0;
+  SimulationOptions builtIn;
+  builtIn.solver = SolverKind::ConjugateGradient;
+  SimulationOptions given = builtIn;
+  given.preconditioner = [&] {
+    ++made;
+    return std::make_unique<Counting>(&setups);
+  };
+  Simulation a(d.mesh, 1, builtIn), b(d.mesh, 1, given);
+  const auto wobbleA = makeScenario("wobble"), wobbleB = makeScenario("wobble");
+  wobbleA->setUp(a);
+  wobbleB->setUp(b);
+  for (int i = 0; i < 4; ++i) {
+    wobbleA->beforeStep(a, a.time());
+    wobbleB->beforeStep(b, b.time());
+    EXPECT_EQ(a.step().iterations, b.step().iterations);
+  }
+  EXPECT_EQ(made, 1);
+  EXPECT_EQ(setups, 4);
+  EXPECT_TRUE(a.state().positions == b.state().positions);
+}
+
 }  // namespace
 }  // namespace tetskin

@@ -47,7 +47,10 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
                          const SimulationOptions& options, const CoarseDiscretization& coarse,
                          const std::string& datasetName)
     : options_(options), discretization_(coarse), guess_(options.guessSolutions) {
-  if (options.solver != SolverKind::Multigrid) blockJacobi_ = std::make_unique<BlockJacobi>();
+  if (options.solver != SolverKind::Multigrid)
+    cgPreconditioner_ = options.preconditioner && options.solver == SolverKind::ConjugateGradient
+                            ? options.preconditioner()
+                            : std::make_unique<BlockJacobi>();
   if (options.solver == SolverKind::Automatic)
     choice_.emplace(std::clamp(options.coarseReuse, kMinTrialSteps, kMaxTrialSteps),
                     kStepsBetweenTrials);
@@ -132,7 +135,7 @@ SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, E
   const bool multigrid = stats.solver == SolverKind::Multigrid;
   auto start = std::chrono::steady_clock::now();
   if (!multigrid) {
-    blockJacobi_->setup(A);
+    cgPreconditioner_->setup(A);
   } else {
     // Coarse operators left from before a spell of CG steps are stale:
     // rebuild them.
@@ -152,7 +155,7 @@ SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, E
   start = std::chrono::steady_clock::now();
   guess_.guess(blockSystem_, b, dv);  // (dv holds the last solution: the plain warm start)
   const Preconditioner& preconditioner =
-      multigrid ? static_cast<const Preconditioner&>(*multigrid_) : *blockJacobi_;
+      multigrid ? static_cast<const Preconditioner&>(*multigrid_) : *cgPreconditioner_;
   const SolveStats solve = conjugateGradient(blockSystem_, b, dv, preconditioner,
                                              options_.tolerance, options_.maxIterations);
   stats.solveSeconds = secondsSince(start);

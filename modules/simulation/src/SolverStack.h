@@ -57,7 +57,7 @@ class SolverStack {
 
   SimulationOptions options_;
   CoarseDiscretization discretization_;
-  std::unique_ptr<BlockJacobi> blockJacobi_;            // cg, auto
+  std::unique_ptr<Preconditioner> cgPreconditioner_;    // cg (or the caller's), auto
   std::unique_ptr<MultigridPreconditioner> multigrid_;  // multigrid, auto
   std::optional<SolverChoice> choice_;                  // auto
   Index lastMultigridStep_ = -1;                        // the last step multigrid solved

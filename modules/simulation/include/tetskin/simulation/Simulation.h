@@ -22,6 +22,7 @@
 // frameFields() and reactionForces() of a state taken before, which read
 // nothing a step changes. Two threads must not call step() at the same time.
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -39,6 +40,7 @@
 namespace tetskin {
 
 class FloorContact;
+class Preconditioner;
 class ImplicitEuler;
 class NodeConstraints;
 class NodeNumbering;
@@ -139,6 +141,11 @@ struct SimulationOptions {
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = static_cast<int>(simulation_option::kMaxIterations.defaultValue);
+  // cg: CG preconditioned by what this makes (one per simulation, set up
+  // on every step's system) instead of block Jacobi; empty: block Jacobi.
+  // How another solver is tried on the stepper's own systems (the solver
+  // benchmark's sparse direct and algebraic multigrid baselines).
+  std::function<std::unique_ptr<Preconditioner>()> preconditioner;
 
   // The floor plane, if there is one (floorHeight along up).
   std::optional<FloorPlane> floor() const {
