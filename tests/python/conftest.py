@@ -6,7 +6,9 @@ compared; TETSKIN_SOURCE_DIR the source tree (its data/ and tests/data/).
 """
 import os
 import pathlib
+import signal
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -49,3 +51,12 @@ def rotation(angle, axis=2):
     i, j = [k for k in range(3) if k != axis]
     r[i, i], r[i, j], r[j, i], r[j, j] = c, -s, s, c
     return r
+
+
+def interrupt_after(seconds):
+    """Sends this process SIGINT (Ctrl-C) after `seconds`, with Python's own
+    handler installed (a job started in the background ignores SIGINT)."""
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer

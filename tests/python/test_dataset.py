@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import tetskin
-from conftest import DATA, TEST_DATA
+from conftest import DATA, TEST_DATA, interrupt_after
 
 
 def test_levels_count_from_the_coarsest_and_negative_from_the_finest(bunny):
@@ -96,3 +96,11 @@ def test_build_refuses_unknown_options_and_bad_values(tmp_path):
     with pytest.raises(tetskin.Error, match="unknown mesher 'tetgem'"):
         tetskin.build(TEST_DATA / "cube_0.obj", tmp_path / "x", mesher="tetgem")
     assert not (tmp_path / "x.json").exists()
+
+
+def test_ctrl_c_stops_a_build_and_leaves_no_dataset(tmp_path):
+    interrupt_after(1.0)
+    with pytest.raises(KeyboardInterrupt):
+        tetskin.build(DATA / "bunny.obj", tmp_path / "big", levels=4, max_elements=100000,
+                      decimate=True, jobs=1)
+    assert not (tmp_path / "big.json").exists()

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import tetskin
-from conftest import DATA
+from conftest import DATA, interrupt_after
 
 vtk_xml = pytest.importorskip("vtkmodules.vtkIOXML")
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -132,3 +132,12 @@ def test_bad_state_and_ids_are_errors_naming_the_argument(bunny):
         sim.apply_forces([1, 2], [[0, 0, 1]])
     with pytest.raises(tetskin.Error, match="scenario: unknown scenario 'bounce'"):
         tetskin.Simulation(bunny, scenario="bounce")
+
+
+def test_ctrl_c_stops_a_long_step_between_steps(bunny):
+    sim = tetskin.Simulation(bunny, level=-1, scenario="wobble", solver="cg")
+    interrupt_after(0.5)
+    with pytest.raises(KeyboardInterrupt):
+        sim.step(100000)
+    assert 0 < sim.steps < 100000
+    sim.step()  # the run goes on from where it stopped
