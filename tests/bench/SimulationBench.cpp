@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "LargeBunny.h"
 #include "tetskin/io/Dataset.h"
-#include "tetskin/io/ObjFormat.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/NodeBlockMatrix.h"
@@ -301,15 +301,7 @@ int main(int argc, char** argv) {
       if (level > 0 || solver.coarseReuse == 1)
         row(name.c_str(), sample.mesh, level, solver, steps);
   }
-  // A ~100k-element dataset: the bunny at TetGen quality 1.2 on top of
-  // coarser levels, built here.
-  BuildOptions options;
-  options.decimate = true;
-  options.levels = 4;
-  options.minElements = 600;
-  options.maxElements = 100000;
-  options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const BuildResult big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
+  const BuildResult big = bench::buildLargeBunny(data);
   for (const Solver& solver : {cg, cgPlain, cgWarped, mg, mg4, galerkin, galerkin4, galerkin4Plain,
                                galerkin4double, galerkin4Warped})
     row("bunny 4 levels, finest", big.dataset.mesh, 3, solver, std::max(3, steps / 5));

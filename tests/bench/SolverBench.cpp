@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "BaselineSolvers.h"
+#include "LargeBunny.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/Dataset.h"
-#include "tetskin/io/ObjFormat.h"
 #include "tetskin/meshing/ModelBuilder.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
@@ -186,14 +186,7 @@ int main(int argc, char** argv) {
   for (const std::string& name : levelNames) {
     if (name == "small") levels.push_back({"bunny level 2", &sample.mesh, 2});
     if (name == "large") {
-      // The bunny at TetGen quality 1.2 over coarser levels (~109k elements).
-      BuildOptions options;
-      options.decimate = true;
-      options.levels = 4;
-      options.minElements = 600;
-      options.maxElements = 100000;
-      options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-      big = buildDataset({{"bunny.obj", readObj(data + "bunny.obj"), ""}}, options);
+      big = bench::buildLargeBunny(data);
       levels.push_back({"bunny, 4 levels, finest", &big.dataset.mesh, 3});
     }
   }
