@@ -96,11 +96,11 @@ SimulationOptions simulationOptions(Keywords& k, const DatasetConfig& config) {
   if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
   o = uprightAlong(k.choice<UpAxis>("up").value_or(config.up), o);
   if (const auto gravity = k.take("gravity")) {
-    const Points3 g = points3(py::array(py::module_::import("numpy").attr("reshape")(
-                                  py::array::ensure(*gravity), py::make_tuple(-1, 3))),
-                              "gravity");
-    if (g.rows() != 1) throw Error(k.call() + ": gravity: expected 3 numbers (x, y, z)");
-    o.gravity = g.row(0).transpose();
+    const py::array given = py::array::ensure(*gravity);
+    if (!given) PyErr_Clear();
+    if (!given || given.size() != 3)
+      throw Error(k.call() + ": gravity: expected 3 numbers (x, y, z)");
+    o.gravity = points3(given.attr("reshape")(1, 3), "gravity").row(0).transpose();
   }
   if (const auto floor = k.take("floor_height")) {
     const double height = floor->cast<double>();
