@@ -36,6 +36,7 @@ struct SimulateArgs {
   int steps = 120, level = -1, every = 1;
   std::string solver = toString(SolverKind::Automatic),
               coarseOperators = toString(SimulationOptions{}.coarseOperators),
+              coarseLevels = toString(SimulationOptions{}.coarseLevels),
               tangent = toString(SimulationOptions{}.tangent);
   ScenarioArgs scenario;
   SimulationOptions options;
@@ -46,7 +47,7 @@ struct SimulateArgs {
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
-    for (const char* option : {"--coarse-reuse", "--coarse-operators"})
+    for (const char* option : {"--coarse-reuse", "--coarse-operators", "--coarse-levels"})
       if (cmd.count(option) > 0)
         throw Error(std::string(option) +
                     ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
@@ -72,6 +73,7 @@ RunSpec runSpec(SimulateArgs& a, const CLI::App& cmd, const Dataset& dataset, in
   options.solver = fromName<SolverKind>(a.solver);
   options.tangent = fromName<Tangent>(a.tangent);
   options.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
+  options.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
   options.material = materialOf(a.material, dataset.config.elasticity);
   options =
       withGravityAndFloor(uprightAlong(upAxisOf(a.scenario, dataset.config), options), a.scenario);
@@ -97,12 +99,14 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
   const ScenarioParameters& parameters = spec.parameters;
   const Energies e = sim.energies();
   std::printf(
-      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s, "
+      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s%s%s, "
       "%s tangent\n",
       a.steps, options.timeStep, session.level(),
       static_cast<long long>(sim.restMesh().elementCount()), session.scenario().name(),
       toString(options.solver), options.solver != SolverKind::ConjugateGradient ? ", " : "",
       options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "",
+      options.solver != SolverKind::ConjugateGradient ? " on " : "",
+      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseLevels) : "",
       toString(options.tangent));
   if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
   std::printf("  material: %s\n", describe(options.material).c_str());
@@ -245,6 +249,7 @@ void addSimulateCommand(CLI::App& app) {
   addNumberOption(*cmd, simulation_option::kGuessSolutions, a->options.guessSolutions);
   addNumberOption(*cmd, simulation_option::kCoarseReuse, a->options.coarseReuse);
   addEnumOption<CoarseOperators>(*cmd, "--coarse-operators", "multigrid: ", a->coarseOperators);
+  addEnumOption<CoarseLevels>(*cmd, "--coarse-levels", "multigrid: ", a->coarseLevels);
   addMaterialOptions(*cmd, a->material);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame; a binding "

@@ -61,6 +61,9 @@ Wobble wobble(const MultiLevelTetMesh& mesh, int level, const Solver& solver, do
   options.material.youngsModulus = youngsModulus;
   options.solver = solver.kind;
   options.coarseOperators = solver.coarse;
+  // (The rows of this table are the dataset's levels' multigrid; solver_bench
+  // times the solver's own grid levels.)
+  options.coarseLevels = CoarseLevels::Dataset;
   options.coarseReuse = solver.coarseReuse;
   options.singlePrecisionCycle = solver.singlePrecisionCycle;
   options.guessSolutions = solver.guessSolutions;

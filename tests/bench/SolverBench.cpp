@@ -34,6 +34,7 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/meshing/ModelBuilder.h"
+#include "tetskin/simulation/GridHierarchy.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
 
@@ -58,6 +59,7 @@ struct Solver {
   std::string name;
   SolverKind kind = SolverKind::ConjugateGradient;
   std::function<std::unique_ptr<Preconditioner>()> preconditioner;
+  CoarseLevels coarseLevels = SimulationOptions{}.coarseLevels;
 };
 
 constexpr int kCholmodKeptSteps = 10, kAmgSetupEvery = 4;
@@ -66,6 +68,9 @@ std::vector<Solver> allSolvers() {
   return {{"cg", SolverKind::ConjugateGradient, {}},
           {"multigrid", SolverKind::Multigrid, {}},
           {"auto", SolverKind::Automatic, {}},
+          // The multigrid over the dataset's own coarser levels (before
+          // issue #51 its only hierarchy): what the solver's grids gain.
+          {"mg-dataset", SolverKind::Multigrid, {}, CoarseLevels::Dataset},
           {"cholmod", SolverKind::ConjugateGradient, [] { return bench::cholmodFactor(1); }},
           {"cholmod-pcg/" + std::to_string(kCholmodKeptSteps), SolverKind::ConjugateGradient,
            [] { return bench::cholmodFactor(kCholmodKeptSteps); }},
@@ -93,6 +98,7 @@ Run run(const Level& level, const MaterialRow& material, const Solver& solver, i
   options.material.poissonRatio = material.poissonRatio;
   options.solver = solver.kind;
   options.preconditioner = solver.preconditioner;
+  options.coarseLevels = solver.coarseLevels;
   options.tolerance = 1e-6;
   Run r;
   try {
@@ -220,11 +226,22 @@ int main(int argc, char** argv) {
     std::printf("\n%s: %lld elements, %lld nodes\n", level.name.c_str(),
                 static_cast<long long>(rest.elementCount()),
                 static_cast<long long>(rest.nodeCount()));
+    // The multigrid's hierarchies: its own grids and the dataset's levels.
+    std::string grids = std::to_string(rest.nodeCount()), datasetLevels = grids;
+    for (const GridLevel& grid : enclosingGrids(rest).levels)
+      grids += " / " + std::to_string(grid.nodes.rows());
+    for (int coarser = level.level - 1; coarser >= 0; --coarser)
+      datasetLevels +=
+          " / " + std::to_string(level.mesh->levels[static_cast<std::size_t>(coarser)].nodeCount);
+    std::printf("multigrid nodes per level: grid %s; dataset %s\n", grids.c_str(),
+                datasetLevels.c_str());
     std::printf("%-16s %-18s %10s %17s %8s %9s %8s %8s %8s %7s\n", "material", "solver", "ms/step",
                 "(range)", "vs cg", "iter", "element", "setup", "solve", "steps/s");
     nlohmann::json& levelJson = json["levels"][level.name];
     levelJson["elements"] = rest.elementCount();
     levelJson["nodes"] = rest.nodeCount();
+    levelJson["grid_levels"] = grids;
+    levelJson["dataset_levels"] = datasetLevels;
     for (int m : materialRows) {
       const MaterialRow& material = kMaterials[static_cast<std::size_t>(m)];
       const double L = difficulty(material, rest);

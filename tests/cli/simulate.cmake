@@ -231,9 +231,17 @@ tetskin_cli_test(simulate_option_over_config_material
 tetskin_cli_test(simulate_coarse_reuse STDOUT "simulated 4 steps .*solver multigrid"
   ARGS simulate ${data}/bunny.json --level 1 --solver multigrid --steps 4 --every 4 --coarse-reuse 3
        -o ${cli_out}/reuse.pvd -q)
-tetskin_cli_test(simulate_rediscretized STDOUT "simulated 4 steps .*solver multigrid, rediscretized"
+tetskin_cli_test(simulate_rediscretized STDOUT "simulated 4 steps .*solver multigrid, rediscretized on dataset"
   ARGS simulate ${data}/bunny.json --solver multigrid --steps 4 --every 4 --coarse-operators rediscretized
-       --coarse-reuse 2 -o ${cli_out}/rediscretized.pvd -q)
+       --coarse-levels dataset --coarse-reuse 2 -o ${cli_out}/rediscretized.pvd -q)
+tetskin_cli_test(simulate_rediscretized_needs_dataset_levels FAIL STATUS 1
+  STDERR "rediscretized coarse operators need the dataset's coarse levels"
+  NOT_EXIST ${cli_out}/rediscretized_grid.pvd
+  ARGS simulate ${data}/bunny.json --solver multigrid --coarse-operators rediscretized --steps 2
+       -o ${cli_out}/rediscretized_grid.pvd -q)
+tetskin_cli_test(simulate_dataset_levels STDOUT "simulated 4 steps .*solver multigrid, galerkin on dataset"
+  ARGS simulate ${data}/bunny.json --solver multigrid --steps 4 --every 4 --coarse-levels dataset
+       -o ${cli_out}/dataset_levels.pvd -q)
 tetskin_cli_test(simulate_coarse_option_with_cg FAIL STATUS 1
   STDERR "^error: --coarse-reuse: applies to the multigrid solver \\(--solver multigrid or auto\\), not to cg\n$"
   NOT_EXIST ${cli_out}/cg_reuse.pvd

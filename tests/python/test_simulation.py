@@ -21,14 +21,16 @@ def frame_points(path):
     return vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(np.float64)
 
 
-@pytest.mark.parametrize("solver", ["cg", "multigrid"])
-def test_python_matches_the_command_step_for_step(tmp_path, cli, bunny, solver):
+@pytest.mark.parametrize("solver,levels", [("cg", None), ("multigrid", None), ("multigrid", "dataset")])
+def test_python_matches_the_command_step_for_step(tmp_path, cli, bunny, solver, levels):
     steps = 8
+    chosen = {} if levels is None else {"coarse_levels": levels}
     cli("simulate", DATA / "bunny.json", "--level", 1, "--steps", steps, "--solver", solver,
+        *([] if levels is None else ["--coarse-levels", levels]),
         "--young", 4e5, "-o", tmp_path / "run.pvd", "--log", tmp_path / "log.csv", "-q")
     with open(tmp_path / "log.csv") as f:
         logged = list(csv.DictReader(f))
-    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver=solver, young=4e5)
+    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver=solver, young=4e5, **chosen)
     np.testing.assert_array_equal(sim.positions, frame_points(tmp_path / "run_frames" / "control_00000.vtu"))
     for k in range(1, steps + 1):
         stats = sim.step()
@@ -114,6 +116,8 @@ def test_a_step_runs_while_another_thread_reads(bunny):
         ({"held_nodes": [10**6]}, "held_nodes: 1000000 is no node of"),
         ({"loads": np.zeros((3, 3))}, "loads: expected one row per node"),
         ({"young": "soft"}, "young: expected a number, got str"),
+        ({"coarse_levels": "octree"}, "coarse_levels: unknown coarse levels 'octree' (known: grid, dataset)"),
+        ({"coarse_operators": "rediscretized"}, "rediscretized coarse operators need the dataset's coarse levels"),
     ],
 )
 def test_bad_options_are_errors_in_the_commands_words(bunny, options, words):

@@ -1069,7 +1069,9 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
   for (const char* name : {"wobble", "drop"}) {
     std::vector<Points3> ends;
     std::vector<int> contacts;
-    for (int variant = 0; variant < 4; ++variant) {
+    // 0 cg, 1 multigrid (grid levels), 2 rediscretized on the dataset's
+    // levels, 3 auto, 4 multigrid (Galerkin) on the dataset's levels.
+    for (int variant = 0; variant < 5; ++variant) {
       SimulationOptions options =
           scenarioOptions(name, SimulationOptions{}, extractLevel(d.mesh, d.mesh.finestLevel()));
       options.tolerance = 1e-10;
@@ -1078,6 +1080,7 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
                                       : SolverKind::Multigrid;
       options.coarseOperators =
           variant == 2 ? CoarseOperators::Rediscretized : CoarseOperators::Galerkin;
+      if (variant == 2 || variant == 4) options.coarseLevels = CoarseLevels::Dataset;
       if (variant < 3) options.coarseReuse = variant == 2 ? 3 : 1;
       Simulation sim(d.mesh, -1, options);
       auto scenario = makeScenario(name);
@@ -1104,7 +1107,7 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
       contacts.push_back(touching);
     }
     const double size = (ends[0].colwise().maxCoeff() - ends[0].colwise().minCoeff()).norm();
-    for (int variant = 1; variant < 4; ++variant)
+    for (int variant = 1; variant < 5; ++variant)
       EXPECT_LT((ends[variant] - ends[0]).cwiseAbs().maxCoeff(), 1e-6 * size)
           << name << " variant " << variant;
     if (std::string(name) == "drop") {
@@ -1322,16 +1325,18 @@ TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {
 }
 
 // A level with an inverted element is refused, naming the dataset, the
-// level and the element; a coarse level only where the multigrid uses it.
+// level and the element; a coarse level only where the multigrid uses it
+// (on the dataset's levels: the solver's own grid levels do not read them).
 TEST(Simulation, InvertedElementIsAnErrorNamingDatasetLevelAndElement) {
   MultiLevelTetMesh dataset;
   TetMesh coarse = test::tetGrid(1, 1, 1, {1, 1, 1});
   std::swap(coarse.elements(2, 0), coarse.elements(2, 1));  // element 2 turned inside out
   appendLevel(dataset, coarse);
   appendLevel(dataset, test::tetGrid(2, 2, 2, {1, 1, 1}));
-  auto message = [&](int level, SolverKind solver) -> std::string {
+  auto message = [&](int level, SolverKind solver, CoarseLevels levels) -> std::string {
     SimulationOptions options;
     options.solver = solver;
+    options.coarseLevels = levels;
     try {
       Simulation(dataset, level, options, "blocks.json");
     } catch (const Error& e) {
@@ -1339,17 +1344,21 @@ TEST(Simulation, InvertedElementIsAnErrorNamingDatasetLevelAndElement) {
     }
     return "";
   };
-  EXPECT_EQ(message(1, SolverKind::ConjugateGradient), "");
-  for (SolverKind solver : {SolverKind::Multigrid, SolverKind::Automatic})
-    EXPECT_EQ(message(1, solver).rfind("blocks.json: level 0 (a coarser level, used by the "
-                                       "multigrid solver): element 2 has non-positive volume -",
-                                       0),
+  for (CoarseLevels levels : {CoarseLevels::Grid, CoarseLevels::Dataset})
+    EXPECT_EQ(message(1, SolverKind::ConjugateGradient, levels), "");
+  for (SolverKind solver : {SolverKind::Multigrid, SolverKind::Automatic}) {
+    EXPECT_EQ(message(1, solver, CoarseLevels::Grid), "");
+    EXPECT_EQ(message(1, solver, CoarseLevels::Dataset)
+                  .rfind("blocks.json: level 0 (a coarser level, used by the "
+                         "multigrid solver): element 2 has non-positive volume -",
+                         0),
               0u)
-        << message(1, solver);
-  EXPECT_EQ(message(0, SolverKind::ConjugateGradient)
+        << message(1, solver, CoarseLevels::Dataset);
+  }
+  EXPECT_EQ(message(0, SolverKind::ConjugateGradient, CoarseLevels::Grid)
                 .rfind("blocks.json: level 0: element 2 has non-positive volume -", 0),
             0u)
-      << message(0, SolverKind::ConjugateGradient);
+      << message(0, SolverKind::ConjugateGradient, CoarseLevels::Grid);
 }
 
 }  // namespace

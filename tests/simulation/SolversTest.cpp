@@ -10,6 +10,7 @@
 #include "SampleData.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
+#include "tetskin/simulation/GridHierarchy.h"
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/Prolongation.h"
 #include "tetskin/simulation/Scenario.h"
@@ -75,9 +76,18 @@ TEST(Solvers, CgAndMultigridAgreeWithADirectSolve) {
   Eigen::VectorXd xMg = Eigen::VectorXd::Zero(b.size());
   const SolveStats mgStats = conjugateGradient(A, b, xMg, mg, 1e-10, 5000);
 
+  // The same over the solver's own grid levels (GridHierarchy.h).
+  MultigridPreconditioner grids(enclosingGrids(sim.restMesh()).prolongations());
+  EXPECT_EQ(grids.levelCount(), 2);
+  grids.setup(A);
+  Eigen::VectorXd xGrids = Eigen::VectorXd::Zero(b.size());
+  const SolveStats gridStats = conjugateGradient(A, b, xGrids, grids, 1e-10, 5000);
+
   EXPECT_LT((xCg - reference).norm() / reference.norm(), 1e-8);
   EXPECT_LT((xMg - reference).norm() / reference.norm(), 1e-8);
+  EXPECT_LT((xGrids - reference).norm() / reference.norm(), 1e-8);
   EXPECT_LT(mgStats.iterations, cg.iterations);
+  EXPECT_LT(gridStats.iterations * 2, cg.iterations);
 
   // Coarse operators reused from an earlier system: still the exact solution
   // of this one, with a few iterations more at most.
@@ -98,8 +108,8 @@ TEST(Solvers, CgAndMultigridAgreeWithADirectSolve) {
   EXPECT_LT(reusedStats.iterations, cg.iterations);
   std::printf("multigrid CG with coarse operators of 0.7 A: %d iterations\n",
               reusedStats.iterations);
-  std::printf("iterations to 1e-10: block-Jacobi CG %d, multigrid CG %d\n", cg.iterations,
-              mgStats.iterations);
+  std::printf("iterations to 1e-10: block-Jacobi CG %d, multigrid CG %d (grid levels %d)\n",
+              cg.iterations, mgStats.iterations, gridStats.iterations);
   // The streamed Galerkin product equals the plain sparse product.
   const SparseMatrix P3 = expandToDofs(prolongations[0]);
   SparseMatrix plain = SparseMatrix(P3.transpose()) * A * P3;

@@ -94,6 +94,7 @@ SimulationOptions simulationOptions(Keywords& k, const DatasetConfig& config) {
   o.solver = k.choice<SolverKind>("solver").value_or(SolverKind::Automatic);
   if (const auto v = k.choice<Tangent>("tangent")) o.tangent = *v;
   if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
+  if (const auto v = k.choice<CoarseLevels>("coarse_levels")) o.coarseLevels = *v;
   o = uprightAlong(k.choice<UpAxis>("up").value_or(config.up), o);
   if (const auto gravity = k.take("gravity")) {
     const py::array given = py::array::ensure(*gravity);

@@ -68,6 +68,12 @@ void validateOptions(const SimulationOptions& o) {
         std::pair{&kFriction, o.friction}, std::pair{&kFloorStiffness, o.floorStiffness}})
     if (const auto problem = option->problem(value)) throw Error(*problem);
   if (!o.gravity.allFinite()) throw Error("gravity must be finite");
+  if (o.solver != SolverKind::ConjugateGradient &&
+      o.coarseOperators == CoarseOperators::Rediscretized &&
+      o.coarseLevels != CoarseLevels::Dataset)
+    throw Error(
+        "rediscretized coarse operators need the dataset's coarse levels (coarse levels "
+        "\"dataset\"): the solver's grid levels are no body meshes with an FEM of their own");
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
 }

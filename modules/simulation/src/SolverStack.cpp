@@ -7,6 +7,7 @@
 
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
+#include "tetskin/simulation/GridHierarchy.h"
 #include "tetskin/simulation/Prolongation.h"
 
 namespace tetskin {
@@ -55,6 +56,20 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
     choice_.emplace(std::clamp(options.coarseReuse, kMinTrialSteps, kMaxTrialSteps),
                     kStepsBetweenTrials);
   if (options.solver == SolverKind::ConjugateGradient) return;
+  if (options.coarseLevels == CoarseLevels::Grid) {
+    prolongations_ = enclosingGrids(mesh).prolongations();
+  } else {
+    datasetLevels(dataset, level, mesh, options, coarse, datasetName);
+  }
+  multigrid_ = std::make_unique<MultigridPreconditioner>(prolongations_);
+  multigrid_->setCoarseReuse(options.coarseReuse);
+  multigrid_->setSinglePrecision(options.singlePrecisionCycle);
+}
+
+void SolverStack::datasetLevels(const MultiLevelTetMesh& dataset, int level, const TetMesh& mesh,
+                                const SimulationOptions& options,
+                                const CoarseDiscretization& coarse,
+                                const std::string& datasetName) {
   // This level, then the coarser ones, each renumbered breadth first.
   std::vector<TetMesh> meshes{mesh};
   for (int coarser = level - 1; coarser >= 0; --coarser) {
@@ -73,9 +88,6 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
       coarseSystems_.push_back(coarseLevel.fem.pattern());
     }
   }
-  multigrid_ = std::make_unique<MultigridPreconditioner>(prolongations_);
-  multigrid_->setCoarseReuse(options.coarseReuse);
-  multigrid_->setSinglePrecision(options.singlePrecisionCycle);
 }
 
 SolverStack::~SolverStack() = default;

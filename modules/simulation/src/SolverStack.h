@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The linear solve of each step, A dv = b: CG preconditioned by block
-// Jacobi, CG with a multigrid V-cycle over the dataset's coarser levels
-// (their operators Galerkin products or their own FEM, rediscretized), or
+// Jacobi, CG with a multigrid V-cycle over the solver's own grid levels
+// (GridHierarchy.h; Galerkin coarse operators) or over the dataset's coarser
+// levels (their operators Galerkin products or their own FEM,
+// rediscretized), or
 // whichever of the two is faster on the running simulation (SolverChoice.h);
 // every solve starts from the projected guess of the last solutions
 // (ProjectedInitialGuess.h). Another solver is added here (and to
@@ -25,6 +27,7 @@ class SolverStack {
   // stepper's internal numbering; the coarser levels (multigrid) are read
   // and checked here, named after `datasetName` in errors. `coarse` says
   // how a coarse level's own FEM becomes a coarse operator (rediscretized).
+  // The dataset's levels are read only where the options ask for them.
   SolverStack(const MultiLevelTetMesh& dataset, int level, const TetMesh& mesh,
               const SimulationOptions& options, const CoarseDiscretization& coarse,
               const std::string& datasetName);
@@ -52,6 +55,11 @@ class SolverStack {
   void remember(const Eigen::VectorXd& dv) { guess_.remember(dv); }
 
  private:
+  // The multigrid's coarse levels from the dataset's coarser levels (and
+  // their own FEM where the coarse operators are rediscretized).
+  void datasetLevels(const MultiLevelTetMesh& dataset, int level, const TetMesh& mesh,
+                     const SimulationOptions& options, const CoarseDiscretization& coarse,
+                     const std::string& datasetName);
   // Rediscretized multigrid: the coarse systems at the step's point.
   void buildCoarseSystems(const StepPoint& at);
 

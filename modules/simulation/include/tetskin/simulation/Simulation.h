@@ -58,6 +58,20 @@ struct EnumSchema<CoarseOperators> {
       {CoarseOperators::Rediscretized, "rediscretized", "each coarse mesh's own FEM"}};
 };
 
+// Multigrid coarse levels: the solver's own nested grids enclosing the mesh
+// (GridHierarchy.h: about 8x fewer nodes per level, no extrapolated
+// weights), or the dataset's coarser levels (decimated and meshed again).
+// Rediscretized coarse operators need the dataset's: a grid level is no
+// body mesh with an FEM of its own.
+enum class CoarseLevels { Grid, Dataset };
+template <>
+struct EnumSchema<CoarseLevels> {
+  static constexpr const char* what = "coarse levels";
+  static constexpr EnumValue<CoarseLevels> values[] = {
+      {CoarseLevels::Grid, "grid", "nested grids enclosing the mesh, about 8x coarser each"},
+      {CoarseLevels::Dataset, "dataset", "the dataset's coarser levels"}};
+};
+
 // The implicit step's tangent stiffness: full (R K R^T and the rotation term
 // K_rot, CorotatedFem.h: steady under large steps on stretched bodies) or
 // warped (R K R^T alone, the stiffness warping of Müller et al. 2002: an
@@ -139,6 +153,7 @@ struct SimulationOptions {
   // every step, and the steps were 1.3-1.9x as fast (doc/user/simulation.md).
   int coarseReuse = static_cast<int>(simulation_option::kCoarseReuse.defaultValue);
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
+  CoarseLevels coarseLevels = CoarseLevels::Grid;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
   int maxIterations = static_cast<int>(simulation_option::kMaxIterations.defaultValue);
   // cg: CG preconditioned by what this makes (one per simulation, set up
