@@ -143,16 +143,15 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
                 a.steps / std::max(totals.stepSeconds, 1e-12),
                 static_cast<double>(totals.iterations) / a.steps);
   if (options.solver == SolverKind::Automatic && a.steps > 0) {
-    // Before the first round of trials ends, neither solver has been found faster.
     const SolverChoice& choice = *sim.solverChoice();
-    std::string verdict = "too few steps to compare them";
-    if (choice.rounds() > 0)
-      verdict = std::string(choice.decidedByShortfalls()
-                                ? "fewer solves short of the tolerance in the last round: "
-                                : "faster in the last round: ") +
-                toString(choice.preferred());
-    std::printf("  auto: multigrid solved %ld of %d steps, cg the rest; %s\n",
-                totals.multigridSteps, a.steps, verdict.c_str());
+    std::printf(
+        "  auto: multigrid solved %ld of %d steps, cg the rest; %d sample steps of the other "
+        "solver (%d cut off at their budget), %d changes; preferred at the end: %s%s\n",
+        totals.multigridSteps, a.steps, choice.samples(), choice.cutOffSamples(), choice.switches(),
+        toString(choice.preferred()),
+        choice.switches() > 0 && choice.decidedByShortfalls()
+            ? " (the other stopped short of the tolerance)"
+            : "");
   }
   std::printf(
       "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",

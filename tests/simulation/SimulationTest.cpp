@@ -1095,13 +1095,12 @@ TEST(Simulation, CgMultigridVariantsAndAutomaticFollowTheSameTrajectory) {
         scenario->beforeStep(sim, sim.time());
         const StepStats stats = sim.step();
         EXPECT_LE(stats.residual, 1e-10) << name << " variant " << variant;
-        if (variant == 3) {
-          const SolverKind expected = i >= 10      ? sim.solverChoice()->preferred()
-                                      : i % 2 == 0 ? SolverKind::ConjugateGradient
-                                                   : SolverKind::Multigrid;
-          EXPECT_EQ(stats.solver, expected) << name << " step " << i;
-        }
         touching = std::max(touching, stats.contacts);
+      }
+      // (auto: CG's samples at steps 2, 4 and 6 at least, some of them
+      // perhaps cut off and finished by multigrid.)
+      if (variant == 3) {
+        EXPECT_GE(sim.solverChoice()->samples(), 3) << name;
       }
       ends.push_back(sim.state().positions);
       contacts.push_back(touching);

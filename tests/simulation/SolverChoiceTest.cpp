@@ -13,16 +13,21 @@ namespace tetskin {
 namespace {
 
 using Kind = SolverKind;
+constexpr Kind C = Kind::ConjugateGradient, M = Kind::Multigrid;
 
 // Runs `steps` steps, each taking the time `seconds(kind, step)` and
-// reaching the tolerance where `reached(kind, step)`, and returns the solver
-// of every step.
+// reaching the tolerance where `reached(kind, step)`; a step over its
+// budget is cut off there, as SolverStack does. Returns the solver of
+// every step.
 template <typename Seconds, typename Reached>
 std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds, Reached reached) {
   std::vector<Kind> used;
   for (int i = 0; i < steps; ++i) {
-    used.push_back(choice.next());
-    choice.record(seconds(used.back(), i), reached(used.back(), i));
+    const SolverChoice::Turn turn = choice.next();
+    used.push_back(turn.solver);
+    const double t = seconds(turn.solver, i);
+    const bool cut = t > turn.budgetSeconds;
+    choice.record(cut ? turn.budgetSeconds : t, !cut && reached(turn.solver, i), cut);
   }
   return used;
 }
@@ -33,109 +38,95 @@ std::vector<Kind> run(SolverChoice& choice, int steps, Seconds seconds) {
   return run(choice, steps, seconds, [](Kind, int) { return true; });
 }
 
-TEST(SolverChoice, AlternatesTheTrialsThenKeepsTheFasterUntilTheNextRound) {
-  SolverChoice choice(3, 5);
-  const std::vector<Kind> used = run(choice, 2 + 2 * (6 + 5), [](Kind kind, int) {
-    return kind == Kind::Multigrid ? 0.010 : 0.025;
+TEST(SolverChoice, StartsWithMultigridAndSamplesCgWithinABudget) {
+  SolverChoice choice(10);
+  std::vector<double> budgets;
+  const std::vector<Kind> used = run(choice, 30, [&](Kind kind, int) {
+    if (kind == C) budgets.push_back(choice.next().budgetSeconds);
+    return kind == M ? 0.010 : 0.025;
   });
-  const Kind C = Kind::ConjugateGradient, M = Kind::Multigrid;
-  const std::vector<Kind> expected{C, M,                              // untimed
-                                   C, M, C, M, C, M, M, M, M, M, M,   // round 1
-                                   C, M, C, M, C, M, M, M, M, M, M};  // round 2
+  std::vector<Kind> expected(30, M);
+  for (int sample : {2, 4, 6, 16, 26}) expected[static_cast<std::size_t>(sample)] = C;
   EXPECT_EQ(used, expected);
-  EXPECT_EQ(choice.rounds(), 2);
   EXPECT_EQ(choice.preferred(), M);
+  EXPECT_EQ(choice.samples(), 5);
+  EXPECT_EQ(choice.cutOffSamples(), 5);  // CG's 0.025 s over its 0.0095 s budget
+  EXPECT_EQ(choice.switches(), 0);
+  for (double budget : budgets) EXPECT_DOUBLE_EQ(budget, SolverChoice::kWinningShare * 0.010);
 }
 
-TEST(SolverChoice, FollowsAChangeOfRegime) {
-  // CG is faster for the first 22 steps, multigrid after.
-  SolverChoice choice(2, 6);
-  const std::vector<Kind> used = run(choice, 32, [](Kind kind, int step) {
-    const bool cgFaster = step < 22;
-    return (kind == Kind::ConjugateGradient) == cgFaster ? 0.01 : 0.02;
-  });
-  // Two untimed steps, then rounds of 4 trials + 6 steps: steps 6-11 and
-  // 16-21 with CG, 26-31 (after the trials of 22-25) with multigrid.
-  for (int i : {6, 11, 16, 21}) EXPECT_EQ(used[i], Kind::ConjugateGradient) << i;
-  for (int i : {26, 31}) EXPECT_EQ(used[i], Kind::Multigrid) << i;
+TEST(SolverChoice, TwoWinningSamplesInARowMakeTheChallengerPreferred) {
+  SolverChoice choice(10);
+  const std::vector<Kind> used =
+      run(choice, 20, [](Kind kind, int) { return kind == M ? 0.020 : 0.010; });
+  // Multigrid for steps 0-1 and 3, CG's winning samples at 2 and 4; then
+  // CG, with multigrid's samples at 6 and 16 (lost).
+  const std::vector<Kind> expected{M, M, C, M, C, C, M, C, C, C, C, C, C, C, C, C, M, C, C, C};
+  EXPECT_EQ(used, expected);
+  EXPECT_EQ(choice.preferred(), C);
+  EXPECT_EQ(choice.switches(), 1);
+  EXPECT_FALSE(choice.decidedByShortfalls());
 }
 
-TEST(SolverChoice, ComparesTheTrialsTotalsNotSingleSteps) {
-  // Multigrid's trials include one slow step (a coarse rebuild) in three:
-  // 0.03 + 0.005 + 0.005 = 0.04 against CG's 3 x 0.012 = 0.036.
-  SolverChoice choice(3, 10);
-  int multigridStep = 0;
-  run(choice, 2 + 6, [&](Kind kind, int step) {
-    if (step < 2) return 1.0;  // untimed
-    if (kind == Kind::ConjugateGradient) return 0.012;
-    return multigridStep++ == 0 ? 0.03 : 0.005;
+TEST(SolverChoice, FollowsAChangeOfRegimeAndConfirmsAWinTwoStepsLater) {
+  // CG is faster for the first 40 steps, multigrid after.
+  SolverChoice choice(10);
+  const std::vector<Kind> used = run(choice, 60, [](Kind kind, int step) {
+    const bool cgFaster = step < 40;
+    return (kind == C) == cgFaster ? 0.01 : 0.02;
   });
-  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+  // CG preferred from step 5; multigrid's samples at 6, 16, 26, 36 lose,
+  // at 46 and (confirming) 48 win: multigrid from step 49.
+  for (int i : {5, 15, 39, 45, 47}) EXPECT_EQ(used[static_cast<std::size_t>(i)], C) << i;
+  for (int i : {46, 48, 49, 59}) EXPECT_EQ(used[static_cast<std::size_t>(i)], M) << i;
+  EXPECT_EQ(choice.preferred(), M);
+  EXPECT_EQ(choice.switches(), 2);
+}
+
+TEST(SolverChoice, AWinMustBeClearAndTheFirstStepIsNotTimed) {
+  // CG 3% faster: within the margin, multigrid stays. A one-time cost in
+  // multigrid's first step (its streams) does not count.
+  SolverChoice choice(10);
+  run(choice, 40, [](Kind kind, int step) {
+    if (step == 0) return 100.0;
+    return kind == M ? 0.0100 : 0.0097;
+  });
+  EXPECT_EQ(choice.preferred(), M);
+  EXPECT_EQ(choice.switches(), 0);
 }
 
 TEST(SolverChoice, AnUntimedStepCountsAsSlow) {
-  SolverChoice choice(1, 4);
-  run(choice, 2 + 2, [](Kind kind, int) {
-    return kind == Kind::Multigrid ? std::numeric_limits<double>::quiet_NaN() : 1.0;
-  });
-  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
+  SolverChoice choice(10);
+  run(choice, 10,
+      [](Kind kind, int) { return kind == C ? std::numeric_limits<double>::quiet_NaN() : 1.0; });
+  EXPECT_EQ(choice.preferred(), M);
 }
 
-TEST(SolverChoice, TheFirstTwoStepsAreNotTimed) {
-  // A one-time cost in the first multigrid step (its streams) must not
-  // decide the first round.
-  SolverChoice choice(2, 4);
-  run(choice, 2 + 4, [](Kind kind, int step) {
-    if (step == 1) return 100.0;
-    return kind == Kind::Multigrid ? 0.01 : 0.02;
-  });
-  EXPECT_EQ(choice.rounds(), 1);
-  EXPECT_EQ(choice.preferred(), Kind::Multigrid);
-}
-
-TEST(SolverChoice, ASolverStoppingShortOfTheToleranceLosesWhateverItsTime) {
-  // CG at the iteration limit in one of its three trials (a nearly
-  // incompressible body): its steps were quicker, but not solved.
-  SolverChoice choice(3, 10);
+TEST(SolverChoice, ASampleShortOfTheToleranceLosesWhateverItsTime) {
+  // CG quicker, but at the iteration limit (a nearly incompressible body).
+  SolverChoice choice(10);
   run(
-      choice, 2 + 6, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
-      [](Kind kind, int step) { return kind == Kind::Multigrid || step != 4; });
-  EXPECT_EQ(choice.preferred(), Kind::Multigrid);
+      choice, 20, [](Kind kind, int) { return kind == M ? 0.05 : 0.02; },
+      [](Kind kind, int) { return kind == M; });
+  EXPECT_EQ(choice.preferred(), M);
+  EXPECT_EQ(choice.switches(), 0);
+}
+
+TEST(SolverChoice, APreferredShortOfTheToleranceTwiceGivesWay) {
+  // Multigrid stops short from step 10 on. CG's samples so far were cut
+  // off; its next one (step 16) runs without a budget while the preferred
+  // stops short, and reaches the tolerance, slower: CG takes over at
+  // multigrid's next short step.
+  SolverChoice choice(10);
+  run(
+      choice, 20, [](Kind kind, int) { return kind == M ? 0.01 : 0.03; },
+      [](Kind kind, int step) { return kind == C || step < 10; });
+  EXPECT_EQ(choice.preferred(), C);
   EXPECT_TRUE(choice.decidedByShortfalls());
 }
 
-TEST(SolverChoice, TheTimesDecideBetweenSolversStoppingShortAlike) {
-  SolverChoice choice(2, 10);
-  run(
-      choice, 2 + 4, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
-      [](Kind, int step) { return step != 2 && step != 3; });  // one short trial each
-  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
-  EXPECT_FALSE(choice.decidedByShortfalls());
-}
-
-TEST(SolverChoice, ShortSolvesCountOnlyInTheirRound) {
-  // CG short in round 1 (multigrid preferred), then fine and faster in
-  // round 2: CG again.
-  SolverChoice choice(1, 3);
-  run(
-      choice, 2 + 2 * (2 + 3), [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
-      [](Kind kind, int step) { return kind == Kind::Multigrid || step != 2; });
-  EXPECT_EQ(choice.rounds(), 2);
-  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
-  EXPECT_FALSE(choice.decidedByShortfalls());
-}
-
-TEST(SolverChoice, TheUntimedStepsShortfallsDoNotCount) {
-  SolverChoice choice(1, 3);
-  run(
-      choice, 2 + 2, [](Kind kind, int) { return kind == Kind::Multigrid ? 0.05 : 0.02; },
-      [](Kind, int step) { return step >= 2; });
-  EXPECT_EQ(choice.preferred(), Kind::ConjugateGradient);
-}
-
-TEST(SolverChoice, RefusesEmptyTrials) {
-  EXPECT_THROW(SolverChoice(0, 10), Error);
-  EXPECT_THROW(SolverChoice(2, -1), Error);
+TEST(SolverChoice, RefusesAnEmptyPeriod) {
+  EXPECT_THROW(SolverChoice(0), Error);
 }
 
 TEST(SolverChoice, SolverNamesRoundTrip) {
@@ -145,6 +136,8 @@ TEST(SolverChoice, SolverNamesRoundTrip) {
   EXPECT_THROW(fromName<SolverKind>("gmres"), Error);
   for (CoarseOperators kind : {CoarseOperators::Galerkin, CoarseOperators::Rediscretized})
     EXPECT_EQ(fromName<CoarseOperators>(toString(kind)), kind);
+  for (CoarseLevels levels : {CoarseLevels::Grid, CoarseLevels::Dataset})
+    EXPECT_EQ(fromName<CoarseLevels>(toString(levels)), levels);
   for (Tangent tangent : {Tangent::Full, Tangent::Warped})
     EXPECT_EQ(fromName<Tangent>(toString(tangent)), tangent);
 }

@@ -70,8 +70,9 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
 
 SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
-                             int maxIterations) {
+                             int maxIterations, std::chrono::steady_clock::time_point deadline) {
   SolveStats stats;
+  const bool timed = deadline != std::chrono::steady_clock::time_point::max();
   if (b.size() != A.rows()) throw Error("conjugate gradients: the right-hand side does not fit");
   const double bNorm = b.norm();
   if (x.size() != b.size()) x.setZero(b.size());
@@ -108,6 +109,11 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
   Eigen::VectorXd p = Eigen::VectorXd::Zero(b.size()), q = Eigen::VectorXd::Zero(b.size());
   double beta = 0;
   for (stats.iterations = 1; stats.iterations <= maxIterations; ++stats.iterations) {
+    if (timed && std::chrono::steady_clock::now() >= deadline) {
+      stats.stoppedAtDeadline = true;
+      --stats.iterations;  // (this one not begun)
+      break;
+    }
     const double pq = chunks.sum(
         [&](Index first, Index last) {
           return Eigen::Vector3d(search(A, first, last, beta, z.data(), p.data(), q.data()), 0, 0);

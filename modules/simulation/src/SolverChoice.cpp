@@ -1,42 +1,86 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/simulation/SolverChoice.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
 
-SolverChoice::SolverChoice(int trialSteps, int period) : trialSteps_(trialSteps), period_(period) {
-  if (trialSteps < 1 || period < 0)
-    throw Error("solver choice: at least one trial step and a period of zero steps or more");
+namespace {
+
+SolverKind other(SolverKind kind) {
+  return kind == SolverKind::Multigrid ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
 }
 
-SolverKind SolverChoice::next() const {
-  if (position_ >= 2 * trialSteps_) return preferred_;
-  return (position_ + 2) % 2 == 0 ? SolverKind::ConjugateGradient : SolverKind::Multigrid;
+constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+SolverChoice::SolverChoice(int period) : period_(period) {
+  if (period < 1) throw Error("solver choice: a sample period of at least one step is needed");
 }
 
-void SolverChoice::record(double seconds, bool reachedTolerance) {
-  if (position_ < 0) {
-    ++position_;
-  } else if (position_ < 2 * trialSteps_) {
-    // A step that failed to time (NaN) counts as very slow, not as free.
-    trialSeconds_[position_ % 2] += std::isfinite(seconds) && seconds >= 0 ? seconds : 1e30;
-    if (!reachedTolerance) ++trialShortfalls_[position_ % 2];
-    if (++position_ == 2 * trialSteps_) {
-      decidedByShortfalls_ = trialShortfalls_[1] != trialShortfalls_[0];
-      const bool multigridBetter = decidedByShortfalls_ ? trialShortfalls_[1] < trialShortfalls_[0]
-                                                        : trialSeconds_[1] < trialSeconds_[0];
-      preferred_ = multigridBetter ? SolverKind::Multigrid : SolverKind::ConjugateGradient;
-      trialSeconds_[0] = trialSeconds_[1] = 0;
-      trialShortfalls_[0] = trialShortfalls_[1] = 0;
-      ++rounds_;
+bool SolverChoice::isSampleStep(int step) const {
+  if (step == 2 || step == 4 || step == 6) return true;
+  if (!challengerWins_.empty() && step == lastSample_ + 2) return true;  // confirm a win
+  return step > 6 && (step - 6) % period_ == 0;
+}
+
+double SolverChoice::preferredMedian() const {
+  if (preferredTimes_.empty()) return kUnlimited;
+  std::vector<double> times = preferredTimes_;
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
+SolverChoice::Turn SolverChoice::next() const {
+  // (No budget while the preferred itself stops short of the tolerance:
+  // its times then bound nothing.)
+  if (!isSampleStep(step_) || preferredTimes_.empty()) return {preferred_, false, kUnlimited};
+  return {other(preferred_), true,
+          preferredShortfalls_ > 0 ? kUnlimited : kWinningShare * preferredMedian()};
+}
+
+void SolverChoice::makeChallengerPreferred(bool byShortfalls) {
+  preferred_ = other(preferred_);
+  preferredTimes_ = challengerWins_;  // (its samples: its first times as the preferred)
+  preferredShortfalls_ = 0;
+  challengerWins_.clear();
+  decidedByShortfalls_ = byShortfalls;
+  ++switches_;
+}
+
+void SolverChoice::record(double seconds, bool reachedTolerance, bool cutOff) {
+  const Turn turn = next();
+  const int step = step_++;
+  // A step that failed to time (NaN) counts as very slow, not as free.
+  if (!(std::isfinite(seconds) && seconds >= 0)) seconds = 1e30;
+  if (turn.sample) {
+    lastSample_ = step;
+    ++samples_;
+    cutOffSamples_ += cutOff;
+    challengerLastReached_ = reachedTolerance && !cutOff;
+    const bool win = challengerLastReached_ && seconds < turn.budgetSeconds &&
+                     seconds < kWinningShare * preferredMedian();
+    if (!win) {
+      challengerWins_.clear();
+      return;
     }
-  } else {
-    ++position_;
+    challengerWins_.push_back(seconds);
+    if (challengerWins_.size() >= 2) makeChallengerPreferred(false);
+    return;
   }
-  if (position_ >= 2 * trialSteps_ + period_) position_ = 0;
+  if (step == 0) return;  // one-time costs: not timed
+  if (!reachedTolerance) {
+    if (++preferredShortfalls_ >= 2 && challengerLastReached_) makeChallengerPreferred(true);
+    return;
+  }
+  preferredShortfalls_ = 0;
+  preferredTimes_.push_back(seconds);
+  if (preferredTimes_.size() > kWindow) preferredTimes_.erase(preferredTimes_.begin());
 }
 
 }  // namespace tetskin

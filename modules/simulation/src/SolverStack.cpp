@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
@@ -33,10 +34,9 @@ static_assert(simulation_option::kGuessSolutions.range.max == kMaxProductColumns
 
 namespace {
 
-// The automatic solver's rounds: trial steps of each solver (at least a
-// full coarse-reuse period of multigrid steps, so its trials carry their
-// share of coarse rebuilds), and steps between rounds (2 s at 60 steps/s).
-constexpr int kMinTrialSteps = 3, kMaxTrialSteps = 8, kStepsBetweenTrials = 120;
+// The automatic solver's samples of the other solver, after the first
+// ones: one in this many steps (half a second at 60 steps/s).
+constexpr int kSamplePeriod = 30;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -52,9 +52,7 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
     cgPreconditioner_ = options.preconditioner && options.solver == SolverKind::ConjugateGradient
                             ? options.preconditioner()
                             : std::make_unique<BlockJacobi>();
-  if (options.solver == SolverKind::Automatic)
-    choice_.emplace(std::clamp(options.coarseReuse, kMinTrialSteps, kMaxTrialSteps),
-                    kStepsBetweenTrials);
+  if (options.solver == SolverKind::Automatic) choice_.emplace(kSamplePeriod);
   if (options.solver == SolverKind::ConjugateGradient) return;
   if (options.coarseLevels == CoarseLevels::Grid) {
     prolongations_ = enclosingGrids(mesh).prolongations();
@@ -141,11 +139,14 @@ void SolverStack::buildCoarseSystems(const StepPoint& at) {
   }
 }
 
-SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& dv,
-                              Index step, const StepPoint& at, StepStats& stats) {
-  stats.solver = choice_ ? choice_->next() : options_.solver;
-  const bool multigrid = stats.solver == SolverKind::Multigrid;
+SolverStack::Outcome SolverStack::solveWith(SolverKind solver, const SparseMatrix& A,
+                                            const Eigen::VectorXd& b, Eigen::VectorXd& dv,
+                                            Index step, const StepPoint& at, bool guess,
+                                            double budgetSeconds) {
+  const bool multigrid = solver == SolverKind::Multigrid;
+  Outcome outcome;
   auto start = std::chrono::steady_clock::now();
+  bool coarseBuilt = false;
   if (!multigrid) {
     cgPreconditioner_->setup(A);
   } else {
@@ -153,30 +154,72 @@ SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, E
     // rebuild them.
     if (choice_ && step - lastMultigridStep_ > options_.coarseReuse) multigrid_->renewCoarse();
     lastMultigridStep_ = step;
+    coarseBuilt = multigrid_->coarseDue();
     if (coarse_.empty()) {
       multigrid_->setup(A);
     } else {
       // Rediscretized multigrid: new coarse systems when the multigrid takes
       // them (every coarseReuse steps).
-      if (multigrid_->coarseDue()) buildCoarseSystems(at);
+      if (coarseBuilt) buildCoarseSystems(at);
       multigrid_->setup(A, coarseSystems_);
     }
   }
-  blockSystem_.assign(A);
-  stats.setupSeconds = secondsSince(start);
+  if (guess) blockSystem_.assign(A);
+  outcome.setupSeconds = secondsSince(start);
+  // The setup as a run of this solver pays it: a coarse rebuild spread over
+  // the steps that reuse it (the rest, the finest level's, every step).
+  double amortizedSetup = outcome.setupSeconds;
+  if (multigrid && coarseBuilt && options_.coarseReuse > 1) {
+    const double finest = std::min(lastFinestSetupSeconds_, outcome.setupSeconds);
+    amortizedSetup = finest + (outcome.setupSeconds - finest) / options_.coarseReuse;
+  } else if (multigrid) {
+    lastFinestSetupSeconds_ = outcome.setupSeconds;
+  }
   start = std::chrono::steady_clock::now();
-  guess_.guess(blockSystem_, b, dv);  // (dv holds the last solution: the plain warm start)
+  if (guess)
+    guess_.guess(blockSystem_, b, dv);  // (dv holds the last solution: the plain warm start)
   const Preconditioner& preconditioner =
       multigrid ? static_cast<const Preconditioner&>(*multigrid_) : *cgPreconditioner_;
-  const SolveStats solve = conjugateGradient(blockSystem_, b, dv, preconditioner,
-                                             options_.tolerance, options_.maxIterations);
-  stats.solveSeconds = secondsSince(start);
+  const auto deadline =
+      std::isfinite(budgetSeconds)
+          ? start +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(std::max(0.0, budgetSeconds - amortizedSetup)))
+          : std::chrono::steady_clock::time_point::max();
+  outcome.solve = conjugateGradient(blockSystem_, b, dv, preconditioner, options_.tolerance,
+                                    options_.maxIterations, deadline);
+  outcome.solveSeconds = secondsSince(start);
+  outcome.amortizedSeconds = amortizedSetup + outcome.solveSeconds;
+  return outcome;
+}
+
+SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& dv,
+                              Index step, const StepPoint& at, StepStats& stats) {
+  const SolverChoice::Turn turn =
+      choice_ ? choice_->next()
+              : SolverChoice::Turn{options_.solver, false, std::numeric_limits<double>::infinity()};
+  Outcome outcome = solveWith(turn.solver, A, b, dv, step, at, true, turn.budgetSeconds);
+  stats.solver = turn.solver;
+  stats.setupSeconds = outcome.setupSeconds;
+  stats.solveSeconds = outcome.solveSeconds;
+  stats.iterations = outcome.solve.iterations;
+  const bool cutOff = outcome.solve.stoppedAtDeadline;
   if (choice_)
-    choice_->record(stats.setupSeconds + stats.solveSeconds,
-                    solve.relativeResidual <= options_.tolerance);
-  stats.iterations = solve.iterations;
-  stats.residual = solve.relativeResidual;
-  return solve;
+    choice_->record(outcome.amortizedSeconds, outcome.solve.relativeResidual <= options_.tolerance,
+                    cutOff);
+  if (cutOff) {
+    // A sample out of its budget: the preferred solver finishes the step
+    // from the sample's last iterate.
+    const Outcome finish = solveWith(choice_->preferred(), A, b, dv, step, at, false,
+                                     std::numeric_limits<double>::infinity());
+    stats.solver = choice_->preferred();
+    stats.setupSeconds += finish.setupSeconds;
+    stats.solveSeconds += finish.solveSeconds;
+    stats.iterations += finish.solve.iterations;
+    outcome.solve = finish.solve;
+  }
+  stats.residual = outcome.solve.relativeResidual;
+  return outcome.solve;
 }
 
 }  // namespace tetskin

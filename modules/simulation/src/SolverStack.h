@@ -60,6 +60,17 @@ class SolverStack {
   void datasetLevels(const MultiLevelTetMesh& dataset, int level, const TetMesh& mesh,
                      const SimulationOptions& options, const CoarseDiscretization& coarse,
                      const std::string& datasetName);
+  // One solve of the step by `solver` (setup included; with `guess`, from
+  // the projected guess and after copying A, else from dv as it is),
+  // stopped once it has taken `budgetSeconds` (amortized as below).
+  struct Outcome {
+    SolveStats solve;
+    double setupSeconds = 0, solveSeconds = 0;
+    double amortizedSeconds = 0;  // with a coarse rebuild's share, as a run pays it
+  };
+  Outcome solveWith(SolverKind solver, const SparseMatrix& A, const Eigen::VectorXd& b,
+                    Eigen::VectorXd& dv, Index step, const StepPoint& at, bool guess,
+                    double budgetSeconds);
   // Rediscretized multigrid: the coarse systems at the step's point.
   void buildCoarseSystems(const StepPoint& at);
 
@@ -69,8 +80,9 @@ class SolverStack {
   std::unique_ptr<MultigridPreconditioner> multigrid_;  // multigrid, auto
   std::optional<SolverChoice> choice_;                  // auto
   Index lastMultigridStep_ = -1;                        // the last step multigrid solved
-  struct CoarseLevel;                                   // rediscretized: one per coarser level
-  std::vector<CoarseLevel> coarse_;                     // the next coarser first
+  double lastFinestSetupSeconds_ = 0;  // the last multigrid setup without a coarse rebuild
+  struct CoarseLevel;                  // rediscretized: one per coarser level
+  std::vector<CoarseLevel> coarse_;    // the next coarser first
   std::vector<SparseMatrix> coarseSystems_;
   std::vector<SparseMatrix> prolongations_;  // nodal, level l+1 to level l (l = 0: this one)
   NodeBlockMatrix blockSystem_;              // A's copy for CG's products

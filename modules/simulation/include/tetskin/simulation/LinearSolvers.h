@@ -6,6 +6,7 @@
 // Both start from the x passed in (the stepper passes the projected guess of
 // ProjectedInitialGuess.h).
 
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -16,7 +17,8 @@ namespace tetskin {
 
 struct SolveStats {
   int iterations = 0;
-  double relativeResidual = 0;  // |b - A x| / |b|
+  double relativeResidual = 0;     // |b - A x| / |b|
+  bool stoppedAtDeadline = false;  // short of the tolerance: out of time
 };
 
 // The systems here have the node-block layout of CorotatedFem::pattern():
@@ -152,9 +154,13 @@ class MultigridPreconditioner : public Preconditioner {
 // Its products use A's block copy (NodeBlockMatrix.h): a caller that
 // solves with the same A repeatedly, or keeps the copy's storage from step
 // to step, passes that copy instead.
-SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                             const Preconditioner& preconditioner, double tolerance,
-                             int maxIterations);
+// With a `deadline`, the solve also stops before an iteration that would
+// start after it (stoppedAtDeadline; x is the last iterate): how the
+// automatic solver cuts a trial off (SolverChoice.h).
+SolveStats conjugateGradient(
+    const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+    const Preconditioner& preconditioner, double tolerance, int maxIterations,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations);
