@@ -169,11 +169,12 @@ tetskin_cli_test(simulate_drop_multigrid STDOUT "scenario drop, solver multigrid
 tetskin_cli_test(simulate_auto
   STDOUT "scenario wobble, solver auto, galerkin on grid.*auto: multigrid solved ([0-9]|1[0-2]) of 12 steps, cg the rest. [34] sample steps of the other solver \\([0-4] cut off at their budget\\), [0-2] changes. preferred at the end: (cg|multigrid)\n"
   ARGS simulate ${data}/bunny.json --level 1 --steps 12 --every 12 -o ${cli_out}/auto.pvd -q)
-# A nearly incompressible body: CG's samples run out of their budget (they
-# would stop at the iteration limit), multigrid finishes those steps and
-# solves the rest.
+# A nearly incompressible body: both solvers need hundreds of iterations
+# (CG up to the limit); which is faster depends on the machine, and the
+# run completes with one of them (SolverChoiceTest: a solver that stops
+# short of the tolerance loses whatever its time).
 tetskin_cli_test(simulate_auto_incompressible
-  STDOUT "auto: multigrid solved 12 of 12 steps, cg the rest. 3 sample steps of the other solver \\(3 cut off at their budget\\), 0 changes. preferred at the end: multigrid\n"
+  STDOUT "auto: multigrid solved ([0-9]|1[0-2]) of 12 steps, cg the rest. [3-5] sample steps of the other solver \\([0-5] cut off at their budget\\), [0-3] changes. preferred at the end: (cg|multigrid)"
   ARGS simulate ${data}/bunny.json --level 1 --poisson 0.4999 --steps 12 --every 12
        -o ${cli_out}/auto_incompressible.pvd -q)
 # --log: every step in a table (the start too), for plots of energy,

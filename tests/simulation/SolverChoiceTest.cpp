@@ -125,6 +125,17 @@ TEST(SolverChoice, APreferredShortOfTheToleranceTwiceGivesWay) {
   EXPECT_TRUE(choice.decidedByShortfalls());
 }
 
+TEST(SolverChoice, ShortfallsCountOverTheLastStepsNotOnlyInARow) {
+  // CG preferred (faster), but short of the tolerance on every third step;
+  // multigrid's samples, slower, reach it: multigrid takes over.
+  SolverChoice choice(10);
+  run(
+      choice, 30, [](Kind kind, int) { return kind == M ? 0.02 : 0.01; },
+      [](Kind kind, int step) { return kind == M || step < 10 || step % 3 != 0; });
+  EXPECT_EQ(choice.preferred(), M);
+  EXPECT_TRUE(choice.decidedByShortfalls());
+}
+
 TEST(SolverChoice, RefusesAnEmptyPeriod) {
   EXPECT_THROW(SolverChoice(0), Error);
 }

@@ -36,18 +36,22 @@ double SolverChoice::preferredMedian() const {
   return times[times.size() / 2];
 }
 
+int SolverChoice::shortfalls() const {
+  return static_cast<int>(std::count(recentShortfalls_.begin(), recentShortfalls_.end(), 1));
+}
+
 SolverChoice::Turn SolverChoice::next() const {
   // (No budget while the preferred itself stops short of the tolerance:
   // its times then bound nothing.)
   if (!isSampleStep(step_) || preferredTimes_.empty()) return {preferred_, false, kUnlimited};
   return {other(preferred_), true,
-          preferredShortfalls_ > 0 ? kUnlimited : kWinningShare * preferredMedian()};
+          shortfalls() > 0 ? kUnlimited : kWinningShare * preferredMedian()};
 }
 
 void SolverChoice::makeChallengerPreferred(bool byShortfalls) {
   preferred_ = other(preferred_);
   preferredTimes_ = challengerWins_;  // (its samples: its first times as the preferred)
-  preferredShortfalls_ = 0;
+  recentShortfalls_.clear();
   challengerWins_.clear();
   decidedByShortfalls_ = byShortfalls;
   ++switches_;
@@ -63,8 +67,11 @@ void SolverChoice::record(double seconds, bool reachedTolerance, bool cutOff) {
     ++samples_;
     cutOffSamples_ += cutOff;
     challengerLastReached_ = reachedTolerance && !cutOff;
-    const bool win = challengerLastReached_ && seconds < turn.budgetSeconds &&
-                     seconds < kWinningShare * preferredMedian();
+    // (A challenger that lost its place by stopping short comes back only
+    // when the preferred stops short in turn: its quick samples do not
+    // show that its shortfalls are over.)
+    const bool win = !decidedByShortfalls_ && challengerLastReached_ &&
+                     seconds < turn.budgetSeconds && seconds < kWinningShare * preferredMedian();
     if (!win) {
       challengerWins_.clear();
       return;
@@ -74,11 +81,12 @@ void SolverChoice::record(double seconds, bool reachedTolerance, bool cutOff) {
     return;
   }
   if (step == 0) return;  // one-time costs: not timed
+  recentShortfalls_.push_back(!reachedTolerance);
+  if (recentShortfalls_.size() > kWindow) recentShortfalls_.erase(recentShortfalls_.begin());
   if (!reachedTolerance) {
-    if (++preferredShortfalls_ >= 2 && challengerLastReached_) makeChallengerPreferred(true);
+    if (shortfalls() >= 2 && challengerLastReached_) makeChallengerPreferred(true);
     return;
   }
-  preferredShortfalls_ = 0;
   preferredTimes_.push_back(seconds);
   if (preferredTimes_.size() > kWindow) preferredTimes_.erase(preferredTimes_.begin());
 }

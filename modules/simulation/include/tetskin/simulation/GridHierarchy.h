@@ -38,7 +38,7 @@ struct GridLevel {
 
 struct GridHierarchyOptions {
   double coarsening = 8;      // about this many times fewer nodes per level
-  Index coarsestNodes = 400;  // stop once a level has at most this many
+  Index coarsestNodes = 200;  // stop once a level has at most this many
   int maxLevels = 8;          // coarse levels at most
 };
 

@@ -29,9 +29,11 @@
 // solve stops at the iteration limit short of it (CG on a nearly
 // incompressible body, nu = 0.4999): its step is then inexact and its time
 // says nothing about the time to reach the tolerance. So a sample short of
-// the tolerance loses, and a preferred that stops short twice in a row
-// gives way to a challenger whose last sample reached it, whatever the
-// times.
+// the tolerance loses, and a preferred that stopped short in two of its
+// last 8 steps gives way to a challenger whose last sample reached it,
+// whatever the times (while the preferred stops short, samples run
+// without a budget), and comes back only when the other stops short in
+// turn.
 
 #include <string>
 #include <vector>
@@ -87,6 +89,7 @@ class SolverChoice {
  private:
   bool isSampleStep(int step) const;
   double preferredMedian() const;
+  int shortfalls() const;  // among the preferred's last steps
   void makeChallengerPreferred(bool byShortfalls);
 
   int period_;
@@ -94,7 +97,7 @@ class SolverChoice {
   int lastSample_ = -1;  // the step of the last sample
   SolverKind preferred_ = SolverKind::Multigrid;
   std::vector<double> preferredTimes_;  // its last full steps (at most kWindow)
-  int preferredShortfalls_ = 0;         // its steps short of the tolerance in a row
+  std::vector<char> recentShortfalls_;  // its last steps (at most kWindow): 1 = short
   std::vector<double> challengerWins_;  // the challenger's last samples in a row within budget
   bool challengerLastReached_ = false;  // its last sample reached the tolerance
   bool decidedByShortfalls_ = false;
