@@ -24,9 +24,9 @@ SolverChoice::SolverChoice(int period) : period_(period) {
 }
 
 bool SolverChoice::isSampleStep(int step) const {
-  if (step == 2 || step == 4 || step == 6) return true;
+  if (step == 2 || step == 4) return true;
   if (!challengerWins_.empty() && step == lastSample_ + 2) return true;  // confirm a win
-  return step > 6 && (step - 6) % period_ == 0;
+  return step > 4 && (step - 4) % period_ == 0;
 }
 
 double SolverChoice::preferredMedian() const {

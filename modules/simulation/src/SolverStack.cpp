@@ -35,8 +35,9 @@ static_assert(simulation_option::kGuessSolutions.range.max == kMaxProductColumns
 namespace {
 
 // The automatic solver's samples of the other solver, after the first
-// ones: one in this many steps (half a second at 60 steps/s).
-constexpr int kSamplePeriod = 30;
+// ones: one in this many steps (two thirds of a second at 60 steps/s; a
+// losing sample costs about one step more, so 3 in 120 steps).
+constexpr int kSamplePeriod = 40;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,7 +9,7 @@
 // the two cross depends on the mesh, the material, the motion and the
 // machine (doc/benchmarks.md: solver_bench). So one solver, the preferred,
 // solves the steps, and the other, the challenger, solves a sample step now
-// and then: steps 2, 4 and 6, then one in every `period`, so that the
+// and then: steps 2 and 4, then one in every `period`, so that the
 // samples spread over the run and a change of regime (a body coming to
 // rest, a stiffer contact) is followed. A sample has a budget: the
 // preferred's median time over its last steps, less the margin the
