@@ -98,16 +98,17 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
   const SimulationOptions& options = session.options();
   const ScenarioParameters& parameters = spec.parameters;
   const Energies e = sim.energies();
+  // The multigrid's coarse operators and levels, where it may run.
+  const std::string multigrid = options.solver == SolverKind::ConjugateGradient
+                                    ? ""
+                                    : std::string(", ") + toString(options.coarseOperators) +
+                                          " on " + toString(options.coarseLevels);
   std::printf(
-      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s%s%s%s, "
+      "simulated %d steps of %g s on level %d (%lld tetrahedra), scenario %s, solver %s%s, "
       "%s tangent\n",
       a.steps, options.timeStep, session.level(),
       static_cast<long long>(sim.restMesh().elementCount()), session.scenario().name(),
-      toString(options.solver), options.solver != SolverKind::ConjugateGradient ? ", " : "",
-      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseOperators) : "",
-      options.solver != SolverKind::ConjugateGradient ? " on " : "",
-      options.solver != SolverKind::ConjugateGradient ? toString(options.coarseLevels) : "",
-      toString(options.tangent));
+      toString(options.solver), multigrid.c_str(), toString(options.tangent));
   if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
   std::printf("  material: %s\n", describe(options.material).c_str());
   {

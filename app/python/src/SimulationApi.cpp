@@ -104,11 +104,11 @@ void addSimulationApi(py::module_& m) {
            "Keyword options as `tetskin simulate`'s, by config key or flag name: the material "
            "(youngs_modulus/young, poisson_ratio/poisson, density, mass_damping/alpha, "
            "stiffness_damping/beta; default the dataset config's), time_step/dt, solver "
-           "('auto', 'cg', 'multigrid'), tolerance, tangent, coarse_operators, coarse_levels, coarse_reuse, "
-           "guess_solutions, max_iterations, friction, floor_stiffness, up, gravity, "
-           "floor_height, the scenario's numbers (base_share/base, push_acceleration/push, "
-           "push_frequency, drop_height, twist_degrees, twist_seconds), held_nodes, loads, "
-           "load_seconds.")
+           "('auto', 'cg', 'multigrid'), tolerance, tangent, coarse_operators, coarse_levels, "
+           "coarse_reuse, guess_solutions, max_iterations, friction, floor_stiffness, up, "
+           "gravity, floor_height, the scenario's numbers (base_share/base, "
+           "push_acceleration/push, push_frequency, drop_height, twist_degrees, twist_seconds), "
+           "held_nodes, loads, load_seconds.")
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "
            "(solver, iterations, residual, contacts, seconds by stage).")

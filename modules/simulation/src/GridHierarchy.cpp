@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "NodeNumbering.h"
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -100,12 +101,17 @@ GridLevel gridLevel(const Eigen::MatrixX3d& latticePoints, double cellSize,
               weights[4 * static_cast<std::size_t>(v) + b].node)
             pieces.unite(4 * u + a, 4 * v + b);
     }
-  // The coarse nodes: (lattice node, piece), in lattice order.
+  // The coarse node of each weight: (lattice node, piece); all of them, in
+  // lattice order.
+  std::vector<std::pair<Key, int>> nodeOfWeight(weights.size());
   std::vector<std::pair<Key, int>> nodes;
   nodes.reserve(weights.size());
   for (std::size_t p = 0; p < points; ++p)
-    for (int k = 0; k < counts[p]; ++k)
-      nodes.emplace_back(weights[4 * p + k].node, pieces.find(static_cast<int>(4 * p) + k));
+    for (int k = 0; k < counts[p]; ++k) {
+      const std::size_t w = 4 * p + static_cast<std::size_t>(k);
+      nodeOfWeight[w] = {weights[w].node, pieces.find(static_cast<int>(w))};
+      nodes.push_back(nodeOfWeight[w]);
+    }
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
 
@@ -122,27 +128,27 @@ GridLevel gridLevel(const Eigen::MatrixX3d& latticePoints, double cellSize,
   triplets.reserve(weights.size());
   for (std::size_t p = 0; p < points; ++p)
     for (int k = 0; k < counts[p]; ++k) {
-      const std::pair<Key, int> node{weights[4 * p + k].node,
-                                     pieces.find(static_cast<int>(4 * p) + k)};
-      const auto column = std::lower_bound(nodes.begin(), nodes.end(), node) - nodes.begin();
-      triplets.emplace_back(static_cast<int>(p), static_cast<int>(column),
-                            weights[4 * p + k].value);
+      const std::size_t w = 4 * p + static_cast<std::size_t>(k);
+      const auto column =
+          std::lower_bound(nodes.begin(), nodes.end(), nodeOfWeight[w]) - nodes.begin();
+      triplets.emplace_back(static_cast<int>(p), static_cast<int>(column), weights[w].value);
     }
   level.prolongation.resize(latticePoints.rows(), static_cast<Index>(nodes.size()));
   level.prolongation.setFromTriplets(triplets.begin(), triplets.end());
   return level;
 }
 
-// The mesh's nodes joined by its elements' edges.
+// The mesh's node graph (meshNodeNeighbours) as a sparse pattern, for the
+// coarse levels' graphs (coarseAdjacency).
 SparseMatrix meshAdjacency(const TetMesh& mesh) {
-  std::vector<Eigen::Triplet<double, int>> edges;
-  edges.reserve(static_cast<std::size_t>(mesh.elementCount()) * 12);
-  for (Index e = 0; e < mesh.elementCount(); ++e)
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b)
-        if (a != b) edges.emplace_back(mesh.elements(e, a), mesh.elements(e, b), 1.0);
+  const std::vector<std::vector<int>> neighbours = meshNodeNeighbours(mesh);
   SparseMatrix adjacency(mesh.nodeCount(), mesh.nodeCount());
-  adjacency.setFromTriplets(edges.begin(), edges.end());
+  std::vector<int> sizes;
+  for (const std::vector<int>& list : neighbours) sizes.push_back(static_cast<int>(list.size()));
+  adjacency.reserve(sizes);
+  for (std::size_t v = 0; v < neighbours.size(); ++v)
+    for (int u : neighbours[v]) adjacency.insert(static_cast<Index>(v), u) = 1.0;
+  adjacency.makeCompressed();
   return adjacency;
 }
 

@@ -12,8 +12,16 @@ namespace {
 // after checking the mesh.
 std::vector<int> meshNodeOrder(const TetMesh& mesh, const std::string& name) {
   validateTetMesh(mesh, name, /*requirePositiveVolume=*/true);
-  const auto n = static_cast<std::size_t>(mesh.nodeCount());
-  std::vector<std::vector<int>> neighbours(n);
+  const std::vector<std::vector<int>> neighbours = meshNodeNeighbours(mesh);
+  return breadthFirstOrder(static_cast<int>(neighbours.size()), [&](int v, auto&& visit) {
+    for (int u : neighbours[static_cast<std::size_t>(v)]) visit(u);
+  });
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> meshNodeNeighbours(const TetMesh& mesh) {
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(mesh.nodeCount()));
   for (Index e = 0; e < mesh.elementCount(); ++e)
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)
@@ -23,12 +31,8 @@ std::vector<int> meshNodeOrder(const TetMesh& mesh, const std::string& name) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
-  return breadthFirstOrder(static_cast<int>(n), [&](int v, auto&& visit) {
-    for (int u : neighbours[static_cast<std::size_t>(v)]) visit(u);
-  });
+  return neighbours;
 }
-
-}  // namespace
 
 NodeNumbering::NodeNumbering(const TetMesh& mesh, const std::string& name)
     : order_(meshNodeOrder(mesh, name)), rank_(order_.size()) {

@@ -39,6 +39,10 @@ class NodeNumbering {
 // multigrid, which keeps no numbering of its own outside).
 TetMesh renumberedBreadthFirst(const TetMesh& mesh, const std::string& name);
 
+// The mesh's node graph: each node's neighbours along the elements' edges,
+// ascending, each once.
+std::vector<std::vector<int>> meshNodeNeighbours(const TetMesh& mesh);
+
 // Where a level is, for the errors of its checks: "bunny.json: level 0".
 std::string levelName(const std::string& datasetName, int level);
 
