@@ -15,6 +15,7 @@ void addBuildCommand(CLI::App& app);
 void addBindCommand(CLI::App& app);
 void addDeformCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 

@@ -15,6 +15,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/io/TetGenFormat.h"
+#include "tetskin/session/SkinFields.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
@@ -68,7 +69,10 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
     const FrameState state = recorded.read(i, rest, restName);
     deformer.deform(datasetPositions(dataset.mesh, level, state.positions, recorded.file(i)),
                     positions, normals);
-    bound.deformed = DeformedState{positions, normals};
+    // With the frame's stress and strain on the skin, as simulate writes it.
+    bound.deformed = DeformedState{positions, normals,
+                                   skinFields(dataset.mesh, level, bound.binding,
+                                              state.vonMisesStress, state.equivalentStrain)};
     series.addSurfaceFrame(recorded.time(i), bound);
   }
   std::printf("wrote %s (%zu frames of %lld vertices deformed by %s, t %g .. %g s)\n",

@@ -12,10 +12,9 @@
 #include <utility>
 
 #include "Commands.h"
-#include "MaterialOptions.h"
 #include "OptionChecks.h"
 #include "Progress.h"
-#include "ScenarioOptions.h"
+#include "RunOptions.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -34,23 +33,13 @@ namespace {
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
   int steps = 120, level = -1, every = 1;
-  std::string solver = toString(SolverKind::Automatic),
-              coarseOperators = toString(SimulationOptions{}.coarseOperators),
-              coarseLevels = toString(SimulationOptions{}.coarseLevels),
-              tangent = toString(SimulationOptions{}.tangent);
-  ScenarioArgs scenario;
-  SimulationOptions options;
-  MaterialArgs material;  // over the config's elasticity
+  RunArgs run;
   bool quiet = false;
 };
 
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
-  if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
-    for (const char* option : {"--coarse-reuse", "--coarse-operators", "--coarse-levels"})
-      if (cmd.count(option) > 0)
-        throw Error(std::string(option) +
-                    ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
+  checkRunOptions(a.run, cmd);
   if (!a.log.empty()) {
     requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});
     requireWritableLocation(a.log);  // before the run, not after it
@@ -65,25 +54,6 @@ void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
                   "is among the frames this run writes (-o " + a.output.string() +
                       "): write the new run to another name");
   }
-}
-
-// The run the options describe, on `level` of `dataset`.
-RunSpec runSpec(SimulateArgs& a, const CLI::App& cmd, const Dataset& dataset, int level) {
-  SimulationOptions options = a.options;
-  options.solver = fromName<SolverKind>(a.solver);
-  options.tangent = fromName<Tangent>(a.tangent);
-  options.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
-  options.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
-  options.material = materialOf(a.material, dataset.config.elasticity);
-  options =
-      withGravityAndFloor(uprightAlong(upAxisOf(a.scenario, dataset.config), options), a.scenario);
-  RunSpec spec;
-  spec.level = level;
-  spec.options = options;
-  spec.scenario = a.scenario.name;
-  spec.parameters = scenarioParameters(cmd, a.scenario, extractLevel(dataset.mesh, level).nodes);
-  spec.datasetName = a.dataset.string();
-  return spec;
 }
 
 struct RunTotals {
@@ -179,7 +149,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
   const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
                           : resolveLevel(dataset.mesh, a.level);
-  const RunSpec spec = runSpec(a, cmd, dataset, level);
+  const RunSpec spec = runSpec(a.run, cmd, dataset, level, a.dataset.string());
   SimulationSession session(dataset.mesh, spec);
   if (!a.initial.empty()) session.startFromFrame(a.initial);  // (drop's lift too)
   if (const std::string warning = nodesBelowFloor(session.simulation()); !warning.empty())
@@ -233,24 +203,15 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
       ->required();
   cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));
-  addTimeStepOption(*cmd, a->options.timeStep);
   cmd->add_option("--every", a->every, "write every k-th step (and the last)")
       ->capture_default_str()
       ->check(wholeNumber(1));
-  addScenarioOptions(*cmd, a->scenario);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--initial", a->initial,
                   "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
                   "positions and velocities replace the scenario's start; time starts at 0")
       ->check(CLI::ExistingFile);
-  addEnumOption<SolverKind>(*cmd, "--solver", "", a->solver);
-  addEnumOption<Tangent>(*cmd, "--tangent", "the implicit step's stiffness: ", a->tangent);
-  addNumberOption(*cmd, simulation_option::kTolerance, a->options.tolerance);
-  addNumberOption(*cmd, simulation_option::kGuessSolutions, a->options.guessSolutions);
-  addNumberOption(*cmd, simulation_option::kCoarseReuse, a->options.coarseReuse);
-  addEnumOption<CoarseOperators>(*cmd, "--coarse-operators", "multigrid: ", a->coarseOperators);
-  addEnumOption<CoarseLevels>(*cmd, "--coarse-levels", "multigrid: ", a->coarseLevels);
-  addMaterialOptions(*cmd, a->material);
+  addRunOptions(*cmd, a->run);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   tetskin::cli::addBindCommand(app);
   tetskin::cli::addDeformCommand(app);
   tetskin::cli::addSimulateCommand(app);
+  tetskin::cli::addCompareCommand(app);
   tetskin::cli::addRenderCommand(app);
   tetskin::cli::addBenchCommand(app);
   tetskin::cli::addInfoCommand(app);

@@ -24,6 +24,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
+#include <QProgressDialog>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -37,9 +38,12 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/NumberText.h"
 #include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/rendering/MovieFile.h"
+#include "tetskin/session/LevelComparison.h"
+#include "tetskin/session/SkinFields.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SimulationFrame.h"
@@ -92,13 +96,17 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   viewDock_ = new ViewDock(*scene_);
   simulationDock_ = new SimulationDock(*scene_, interactive_);
   bindingDock_ = new BindingDock(*scene_);
+  compareDock_ = new CompareDock(*scene_);
   runPanel_ = simulationDock_->runPanel();
   energyPlot_ = simulationDock_->energyPlot();
   QDockWidget* viewDock = dock("View", viewDock_);
   QDockWidget* simulationDock = dock("Simulation", simulationDock_);
-  dock("Binding", bindingDock_);
+  QDockWidget* bindingDock = dock("Binding", bindingDock_);
+  QDockWidget* compareDock = dock("Compare", compareDock_);
   tabifyDockWidget(viewDock, simulationDock);
+  tabifyDockWidget(bindingDock, compareDock);
   viewDock->raise();
+  bindingDock->raise();
   connectDocks();
   buildMenus();
 
@@ -133,6 +141,11 @@ void MainWindow::connectDocks() {
     renderNow();
   });
   connect(bindingDock_, &BindingDock::redraw, this, redraw);
+  connect(compareDock_, &CompareDock::redraw, this, redraw);
+  connect(compareDock_, &CompareDock::compareRequested, this, [this] {
+    compareLevels(compareDock_->referenceLevel(), compareDock_->inspectedLevel(),
+                  compareDock_->steps());
+  });
   connect(bindingDock_, &BindingDock::rebindRequested, this,
           [this](BindingMethod method, int level) {
             try {
@@ -312,6 +325,8 @@ void MainWindow::afterLoad(const QString& path) {
   rememberRecent(QFileInfo(path).absoluteFilePath());
   viewDock_->showDataset();
   bindingDock_->showDataset();
+  compareDock_->close();  // (of another dataset or surface)
+  compareDock_->showDataset();
   setWindowTitle("TetSkin - " + QString::fromStdString(scene_->datasetPath().filename().string()));
   resetSimulation();
   bindingDock_->refresh();
@@ -477,8 +492,20 @@ bool MainWindow::showRunFrame() {
   replaying_ = true;
   scene_->setRunConditions(runPanel_->conditions());
   lastTimes_ = scene_->showControlState(state.positions);
+  showOnSkin(state.vonMisesStress, state.equivalentStrain);  // (none in older frames)
   renderNow();
   return true;
+}
+
+void MainWindow::showOnSkin(const Eigen::VectorXd& stress, const Eigen::VectorXd& strain) {
+  if (!scene_->colorsBySimulation() || !scene_->hasSurface()) return;
+  const bool byStress = scene_->colorBy() == ColorBy::VonMisesStress;
+  const Eigen::VectorXd& values = byStress ? stress : strain;
+  if (values.size() == 0) return;
+  const std::vector<PointScalars> fields =
+      byStress ? skinFields(scene_->dataset().mesh, scene_->level(), scene_->binding(), values, {})
+               : skinFields(scene_->dataset().mesh, scene_->level(), scene_->binding(), {}, values);
+  scene_->setSurfaceScalars(scene_->colorBy(), fields.front().values);
 }
 
 bool MainWindow::filmRun(const QString& qpath) {
@@ -534,6 +561,10 @@ void MainWindow::showLatestState() {
   scene_->setRunConditions(runner_->simulation().conditions());
   const SimulationState state = runner_->state();
   lastTimes_ = scene_->showControlState(state.positions);
+  if (scene_->colorsBySimulation()) {
+    const FrameFields fields = runner_->simulation().frameFields(state);
+    showOnSkin(fields.vonMisesStress, fields.equivalentStrain);
+  }
   shownSteps_ = state.steps;
   plotEnergy(state);
   if (runner_->session().recording()) {
@@ -547,6 +578,66 @@ void MainWindow::showLatestState() {
     }
   }
   renderNow();
+}
+
+bool MainWindow::compareLevels(int reference, int inspected, int steps) {
+  if (!scene_->hasDataset() || !scene_->hasSurface()) {
+    fail("open a dataset and a surface before comparing levels");
+    return false;
+  }
+  try {
+    const MultiLevelTetMesh& mesh = scene_->dataset().mesh;
+    const std::vector<RunSpec> specs = {simulationDock_->runSpec(inspected),
+                                        simulationDock_->runSpec(reference)};
+    LevelComparison comparison(mesh, scene_->surface(), specs, 1, scene_->datasetPath().string());
+    ComparedLevels compared;
+    compared.reference = reference;
+    compared.inspected = inspected;
+    compared.diagonal = comparison.diagonal();
+    compared.surface = scene_->surface();
+    compared.binding = comparison.surface(0).binding;
+    const auto keep = [&] {
+      const ComparedFrame& frame = comparison.compare();
+      compared.times.push_back(frame.time);
+      compared.nodes.push_back(datasetPositions(
+          mesh, inspected, comparison.session(0)->state().positions, "the compared level"));
+      const SurfaceErrors& e = comparison.errors(0);
+      compared.distance.emplace_back(e.distance.begin(), e.distance.end());
+      compared.angle.emplace_back(e.normalAngle.begin(), e.normalAngle.end());
+    };
+    std::optional<QProgressDialog> progress;
+    if (interactive_) {
+      progress.emplace("Comparing level " + QString::number(inspected) + " with level " +
+                           QString::number(reference) + "...",
+                       "Cancel", 0, steps, this);
+      progress->setWindowModality(Qt::WindowModal);
+      progress->setMinimumDuration(300);
+    }
+    keep();
+    for (int i = 0; i < steps; ++i) {
+      comparison.advance();
+      keep();
+      if (progress) {
+        progress->setValue(i + 1);
+        if (progress->wasCanceled()) return false;
+      }
+    }
+    compared.overall = comparison.overall(0);
+    compared.inspectedSecondsPerStep = comparison.meanStepSeconds(0);
+    compared.referenceSecondsPerStep = comparison.meanStepSeconds(1);
+    compareDock_->show(std::move(compared));
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  lastError_.clear();
+  if (auto* dock = findChild<QDockWidget*>("CompareDock")) dock->raise();
+  statusBar()->showMessage(QString("compared level %1 with level %2 over %3 steps")
+                               .arg(inspected)
+                               .arg(reference)
+                               .arg(steps));
+  renderNow();
+  return true;
 }
 
 void MainWindow::plotEnergy(const SimulationState& state) {
@@ -639,6 +730,15 @@ QString MainWindow::vertexInfoText() const {
 }
 
 std::optional<Index> MainWindow::clickAt(int x, int y) {
+  if (scene_->comparisonShown()) {
+    const std::optional<Index> v = scene_->pickComparisonVertex(x, y);
+    compareDock_->showVertex(v);
+    statusBar()->showMessage(
+        v ? QString("vertex %1: its error over time in the Compare dock").arg(*v)
+          : "no surface vertex there");
+    renderNow();
+    return v;
+  }
   const std::optional<Index> v = scene_->pickVertex(x, y);
   if (!v) scene_->showPickedVertex(std::nullopt);
   bindingDock_->showPickedVertex();

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // tetskin-gui's window: the VTK view in the middle, docks for the view,
-// binding diagnostics and the simulation (ViewDock, BindingDock,
-// SimulationDock, each its own controller over the scene), menus for files
+// binding diagnostics, the simulation and the comparison of levels
+// (ViewDock, BindingDock, SimulationDock, CompareDock, each its own
+// controller over the scene), menus for files
 // and export. The window owns the run (SimulationRunner over the session),
 // opens files, and answers the docks' requests that reach beyond one dock.
 // Every action is also a public method, so tests drive the window as a user
@@ -19,6 +20,7 @@
 #include <optional>
 
 #include "BindingDock.h"
+#include "CompareDock.h"
 #include "Scene.h"
 #include "SimulationDock.h"
 #include "SimulationRunner.h"
@@ -105,6 +107,11 @@ class MainWindow : public QMainWindow {
   bool filmRun(const QString& ogv);
   // Draws the latest simulated state (the timer does this while playing).
   void showLatestState();
+  // Compare: runs the Simulation dock's scenario on `inspected` and
+  // `reference` for `steps` steps (LevelComparison) and shows the result in
+  // the Compare dock. False on error (see lastError()), or when cancelled.
+  bool compareLevels(int reference, int inspected, int steps);
+  CompareDock* compareDock() { return compareDock_; }
   // The FPS and timing overlay (off for reproducible screenshots); View >
   // Frame statistics, --no-overlay.
   void setOverlayVisible(bool visible);
@@ -137,6 +144,9 @@ class MainWindow : public QMainWindow {
   // message is shown (lastError()). Or more of its solves stopped at the
   // iteration limit: a warning in the status bar.
   void reportSimulationProblems();
+  // The stress or strain of the frame shown (per element of the simulated
+  // level; empty: none) on the skin, where the scene is coloured by it.
+  void showOnSkin(const Eigen::VectorXd& stress, const Eigen::VectorXd& strain);
   // Closes the open run when the dataset or the simulated level changed.
   void closeRunIfItNoLongerFits();
   void closeRun();
@@ -154,6 +164,7 @@ class MainWindow : public QMainWindow {
   QMenu* recentMenu_;
   ViewDock* viewDock_;
   BindingDock* bindingDock_;
+  CompareDock* compareDock_;
   SimulationDock* simulationDock_;
   EnergyPlot* energyPlot_;   // the simulation dock's
   Index plottedSteps_ = -1;  // the step of the energy plot's last sample

@@ -39,10 +39,27 @@ const char* arrayName(ColorBy c) {
       return arrays::kDistance;
     case ColorBy::FaceId:
       return arrays::kFaceId;
+    case ColorBy::VonMisesStress:
+      return arrays::kVonMisesStress;
+    case ColorBy::EquivalentStrain:
+      return arrays::kEquivalentStrain;
     case ColorBy::Material:
       break;
   }
   return "";
+}
+
+bool bySimulation(ColorBy c) {
+  return c == ColorBy::VonMisesStress || c == ColorBy::EquivalentStrain;
+}
+
+// Blue (0) to red (`maxValue`), as a legend shows it.
+vtkSmartPointer<vtkLookupTable> zeroToMax(double maxValue) {
+  auto lut = vtkSmartPointer<vtkLookupTable>::New();
+  lut->SetHueRange(0.66, 0.0);
+  lut->SetTableRange(0, std::max(maxValue, 1e-30));
+  lut->Build();
+  return lut;
 }
 
 vtkSmartPointer<vtkActor> overlayActor(double r, double g, double b, float pointSize) {
@@ -246,7 +263,7 @@ void Scene::setControlLevel(int level) {
 void Scene::setSurfaceVisible(bool visible) {
   surfaceVisible_ = visible;
   if (!surfaceDrawing_) return;
-  surfaceDrawing_->actor()->SetVisibility(visible);
+  surfaceDrawing_->actor()->SetVisibility(visible && !comparisonShown_);
   setFurVisible(furVisible_);
 }
 
@@ -254,7 +271,8 @@ void Scene::setFurVisible(bool visible) {
   furVisible_ = visible;
   if (!surfaceDrawing_) return;
   if (FurLayer* fur = surfaceDrawing_->fur())
-    for (vtkActor* a : fur->actors()) a->SetVisibility(visible && surfaceVisible_);
+    for (vtkActor* a : fur->actors())
+      a->SetVisibility(visible && surfaceVisible_ && !comparisonShown_);
 }
 
 void Scene::setColorBy(ColorBy colorBy) {
@@ -262,7 +280,64 @@ void Scene::setColorBy(ColorBy colorBy) {
   applyColoring();
 }
 
+bool Scene::colorsBySimulation() const {
+  return bySimulation(colorBy_);
+}
+
+void Scene::setSurfaceScalars(ColorBy colorBy, const Eigen::VectorXd& values) {
+  if (colorBy != colorBy_ || !bySimulation(colorBy) || !surface_ ||
+      values.size() != surface_->vertexCount())
+    return;
+  simulationScalars_ = values;
+  applyColoring();
+}
+
+void Scene::showComparison(const SurfaceMesh& surface, const Eigen::VectorXd& values,
+                           const std::string& title, double maxValue) {
+  vtkSmartPointer<vtkPolyData> poly = toVtkPolyData(surface);
+  poly->GetPointData()->SetScalars(toVtkScalars(title.c_str(), values));
+  if (!comparison_) {
+    comparison_ = vtkSmartPointer<vtkActor>::New();
+    comparison_->SetMapper(vtkSmartPointer<vtkPolyDataMapper>::New());
+    renderer_->AddActor(comparison_);
+  }
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(comparison_->GetMapper());
+  mapper->SetInputData(poly);
+  const vtkSmartPointer<vtkLookupTable> lut = zeroToMax(maxValue);
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(lut->GetTableRange());
+  mapper->SetScalarModeToUsePointData();
+  mapper->ScalarVisibilityOn();
+  comparison_->VisibilityOn();
+  comparisonPositions_ = surface.positions;
+  comparisonShown_ = true;
+  setSurfaceVisible(surfaceVisible_);  // (hidden while the comparison is shown)
+  legend_->SetLookupTable(lut);
+  legend_->SetTitle(title.c_str());
+  legend_->VisibilityOn();
+}
+
+void Scene::hideComparison() {
+  if (!comparisonShown_) return;
+  comparison_->VisibilityOff();
+  comparisonShown_ = false;
+  comparisonPositions_.resize(0, 3);
+  setSurfaceVisible(surfaceVisible_);
+  applyColoring();
+}
+
+std::optional<Index> Scene::pickComparisonVertex(int x, int y) {
+  if (!comparisonShown_) return std::nullopt;
+  auto picker = vtkSmartPointer<vtkPropPicker>::New();
+  if (!picker->Pick(x, y, 0, renderer_) || picker->GetActor() != comparison_) return std::nullopt;
+  const double* p = picker->GetPickPosition();
+  const Index v = nearestPoint(comparisonPositions_, Eigen::Vector3d(p[0], p[1], p[2]));
+  if (v < 0) return std::nullopt;
+  return v;
+}
+
 void Scene::applyColoring() {
+  if (comparisonShown_) return;  // (its legend stays)
   legend_->VisibilityOff();
   if (!surfaceDrawing_) return;
   vtkMapper* mapper = surfaceDrawing_->actor()->GetMapper();
@@ -291,6 +366,20 @@ void Scene::applyColoring() {
       lut->SetNumberOfTableValues(64);
       lut->SetHueRange(0.0, 1.0);
       break;
+    case ColorBy::VonMisesStress:
+    case ColorBy::EquivalentStrain: {
+      // The frame's values (zero before the window sets any).
+      const Index n = surface_ ? surface_->vertexCount() : 0;
+      if (simulationScalars_.size() != n) simulationScalars_ = Eigen::VectorXd::Zero(n);
+      vtkPolyData* poly = surfaceDrawing_->polyData();
+      poly->GetPointData()->RemoveArray(arrays::kVonMisesStress);
+      poly->GetPointData()->RemoveArray(arrays::kEquivalentStrain);
+      poly->GetPointData()->AddArray(toVtkScalars(arrayName(colorBy_), simulationScalars_));
+      range[1] =
+          std::max(simulationScalars_.size() > 0 ? simulationScalars_.maxCoeff() : 0.0, 1e-30);
+      lut->SetHueRange(0.66, 0.0);
+      break;
+    }
     case ColorBy::Material:
       break;
   }

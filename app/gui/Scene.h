@@ -35,8 +35,9 @@ class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace tetskin::gui {
-// What colours the surface: its material, or a binding array.
-enum class ColorBy { Material, MinBarycentric, Distance, FaceId };
+// What colours the surface: its material, a binding array, or the
+// simulated level's stress or strain carried to the skin (SurfaceFields.h).
+enum class ColorBy { Material, MinBarycentric, Distance, FaceId, VonMisesStress, EquivalentStrain };
 }  // namespace tetskin::gui
 
 template <>
@@ -46,7 +47,9 @@ struct tetskin::EnumSchema<tetskin::gui::ColorBy> {
       {gui::ColorBy::Material, "material", ""},
       {gui::ColorBy::MinBarycentric, arrays::kMinBarycentric, ""},
       {gui::ColorBy::Distance, arrays::kDistance, ""},
-      {gui::ColorBy::FaceId, arrays::kFaceId, ""}};
+      {gui::ColorBy::FaceId, arrays::kFaceId, ""},
+      {gui::ColorBy::VonMisesStress, arrays::kVonMisesStress, ""},
+      {gui::ColorBy::EquivalentStrain, arrays::kEquivalentStrain, ""}};
 };
 
 namespace tetskin::gui {
@@ -103,6 +106,25 @@ class Scene {
   bool furVisible() const { return furVisible_; }
   void setColorBy(ColorBy colorBy);
   ColorBy colorBy() const { return colorBy_; }
+  // Whether the colouring is by a value of the simulation's frame (stress,
+  // strain), which the window sets each frame it shows (setSurfaceScalars).
+  bool colorsBySimulation() const;
+  // The bound surface's values of `colorBy` (VonMisesStress or
+  // EquivalentStrain) this frame, one per vertex; ignored for a surface of
+  // another size.
+  void setSurfaceScalars(ColorBy colorBy, const Eigen::VectorXd& values);
+
+  // A comparison of levels (CompareDock): `surface` (a level's deformation
+  // of the bound surface, with normals) drawn in place of the bound surface
+  // and its fur, coloured by `values` from 0 (blue) to `maxValue` (red)
+  // under the legend `title`, until hideComparison().
+  void showComparison(const SurfaceMesh& surface, const Eigen::VectorXd& values,
+                      const std::string& title, double maxValue);
+  void hideComparison();
+  bool comparisonShown() const { return comparisonShown_; }
+  // The comparison's vertex nearest the surface point under display (x, y);
+  // nullopt off it.
+  std::optional<Index> pickComparisonVertex(int x, int y);
   // Marks vertices with a negative weight or a distance beyond the 99th percentile.
   void setHighlightProblems(bool on);
   Index highlightedCount() const { return highlighted_; }
@@ -216,6 +238,12 @@ class Scene {
   // level): nodalProlongation at the shown level's rest nodes.
   SparseMatrix controlTransfer_;
   vtkSmartPointer<vtkActor> problems_, triangle_, prescribed_;
+  // Stress or strain on the skin this frame (setSurfaceScalars), and the
+  // comparison shown in place of the surface.
+  Eigen::VectorXd simulationScalars_;
+  vtkSmartPointer<vtkActor> comparison_;
+  Points3 comparisonPositions_;
+  bool comparisonShown_ = false;
   vtkSmartPointer<vtkScalarBarActor> legend_;
   vtkSmartPointer<vtkTextActor> overlay_;
 };

@@ -96,9 +96,9 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   layout->addStretch();
 }
 
-RunSpec SimulationDock::runSpec() {
+RunSpec SimulationDock::runSpec(int levelNumber) {
   const MultiLevelTetMesh& mesh = scene_.dataset().mesh;
-  const LevelRange& level = mesh.levels[static_cast<std::size_t>(scene_.level())];
+  const LevelRange& level = mesh.levels[static_cast<std::size_t>(levelNumber)];
   const UpAxis up = scene_.dataset().config.up;
   scenarioRows_->setUpAxis(up);
   const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
@@ -116,7 +116,7 @@ RunSpec SimulationDock::runSpec() {
   options.tolerance = tolerance_->currentText().toDouble();
   options.tangent = chosen<Tangent>(tangent_);
   RunSpec spec;
-  spec.level = scene_.level();
+  spec.level = levelNumber;
   spec.options = options;
   spec.scenario = scenarioRows_->scenario();
   spec.parameters = scenarioRows_->parameters(restNodes);

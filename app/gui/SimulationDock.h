@@ -31,7 +31,9 @@ class SimulationDock : public QWidget {
   // The run the dock's fields describe, on the scene's level (the scenario
   // rows set to its body and up axis first). Throws Error for a value the
   // scenario refuses.
-  RunSpec runSpec();
+  RunSpec runSpec() { return runSpec(scene_.level()); }
+  // The same on `level` (the Compare dock's levels).
+  RunSpec runSpec(int level);
   // A dataset's body in the material fields (what the next Reset uses).
   void showMaterial(const ElasticMaterial& material);
 

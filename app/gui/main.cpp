@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSurfaceFormat>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -21,6 +22,7 @@
 
 #include "MainWindow.h"
 #include "Scene.h"
+#include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/ImageSize.h"
 #include "tetskin/rendering/OffscreenView.h"
@@ -60,10 +62,15 @@ struct GuiArguments {
       "scenario",
       QString::fromStdString(tetskin::oneOf(tetskin::scenarioNames())) + " (the Simulation dock's)",
       "NAME"};
-  QCommandLineOption steps{"steps", "simulate N steps first", "N", "0"};
+  QCommandLineOption steps{"steps", "simulate N steps first (with --compare: compare over N)", "N",
+                           "0"};
   QCommandLineOption noOverlay{"no-overlay", "hide the frame statistics (View > Frame statistics)"};
+  QCommandLineOption compare{"compare",
+                             "compare LEVEL with the finest over --steps steps instead of "
+                             "simulating them (the Compare dock), showing the last frame",
+                             "LEVEL"};
   // Checked values.
-  int width = 0, height = 0, stepCount = 0;
+  int width = 0, height = 0, stepCount = 0, compareLevel = 0;
 
   GuiArguments() {
     parser.setApplicationDescription(
@@ -74,7 +81,7 @@ struct GuiArguments {
         "DATASET", "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)", "[DATASET]");
     parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
     parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight,
-                       prescribed, pick, scenario, steps, noOverlay});
+                       prescribed, pick, scenario, steps, noOverlay, compare});
   }
 
   // Parses the application's arguments; prints help or the version and
@@ -95,6 +102,11 @@ struct GuiArguments {
     if (!stepsOk || stepCount < 0)
       return usageError("--steps: '" + parser.value(steps).toStdString() +
                         "' is not a whole number >= 0");
+    bool compareOk = true;
+    if (parser.isSet(compare)) compareLevel = parser.value(compare).toInt(&compareOk);
+    if (!compareOk)
+      return usageError("--compare: '" + parser.value(compare).toStdString() +
+                        "' is not a level (a whole number; negative from the finest)");
     if (const QString problem =
             tetskin::gui::MainWindow::screenshotNameProblem(parser.value(screenshot));
         parser.isSet(screenshot) && !problem.isEmpty())
@@ -203,7 +215,25 @@ int main(int argc, char** argv) {
     window.findChild<QPushButton*>("reset")->click();  // as the dock applies it
     if (oneShot && !window.lastError().isEmpty()) return fail();
   }
-  for (int i = 0; i < args.stepCount; ++i) window.findChild<QPushButton*>("step")->click();
+  if (parser.isSet(args.compare)) {
+    if (!window.scene().hasDataset()) {
+      std::fprintf(stderr, "error: --compare: open a dataset and a surface to compare levels\n");
+      return 1;
+    }
+    try {
+      const tetskin::MultiLevelTetMesh& mesh = window.scene().dataset().mesh;
+      const int level = tetskin::resolveLevel(mesh, args.compareLevel);
+      if (!window.compareLevels(mesh.finestLevel(), level, std::max(args.stepCount, 1)))
+        return fail();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: --compare: %s\n", e.what());
+      return 1;
+    }
+    tetskin::gui::CompareDock& dock = *window.compareDock();
+    dock.setFrame(static_cast<int>(dock.frameCount()) - 1);
+  } else {
+    for (int i = 0; i < args.stepCount; ++i) window.findChild<QPushButton*>("step")->click();
+  }
   // Steps asked for but not taken (the simulation could not start: its
   // error is the window's last) must not pass for a simulated screenshot.
   if (oneShot && args.stepCount > 0 && !window.lastError().isEmpty()) return fail();

@@ -23,6 +23,15 @@ if(TETSKIN_BUILD_GUI)
   tetskin_cli_test(gui_bad_file FAIL EXE tetskin-gui STDERR "(^|\n)error: [^\n]*bad_index.obj:5: vertex index"
     NOT_EXIST ${cli_out}/gui_bad.png
     ARGS ${data}/bunny.json ${tdata}/bad_index.obj --screenshot ${cli_out}/gui_bad.png)
+  # A comparison from the command line: level 0 against the finest.
+  tetskin_cli_test(gui_compare_screenshot EXE tetskin-gui STDOUT "wrote .*gui_compare.png"
+    PNG_SIZE ${cli_out}/gui_compare.png 320x240
+    ARGS ${data}/bunny.json ${data}/bunny.obj --compare 0 --steps 6 --size 320x240
+         --screenshot ${cli_out}/gui_compare.png)
+  tetskin_cli_test(gui_compare_bad_level FAIL STATUS 1 EXE tetskin-gui
+    STDERR "(^|\n)error: --compare: [^\n]*level 7[^\n]*\n$"
+    NOT_EXIST ${cli_out}/gui_compare_bad.png
+    ARGS ${data}/bunny.json ${data}/bunny.obj --compare 7 --screenshot ${cli_out}/gui_compare_bad.png)
   # A scenario as the Simulation dock sets it: a drop lands on its floor,
   # which fills the bottom of the view; the wobble's view has no floor.
   # (--no-overlay: the frame statistics' text would reach the edges.)

@@ -12,7 +12,11 @@ namespace tetskin::test {
 inline FrameFields unloadedFrame(const TetMesh& rest, const Points3& positions,
                                  const Points3& velocities = {}) {
   const Points3 zero = Points3::Zero(rest.nodeCount(), 3);
-  return {positions, velocities.size() ? velocities : zero, zero, zero,
+  return {positions,
+          velocities.size() ? velocities : zero,
+          zero,
+          zero,
+          Eigen::VectorXd::Zero(rest.elementCount()),
           Eigen::VectorXd::Zero(rest.elementCount())};
 }
 

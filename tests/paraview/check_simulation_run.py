@@ -5,23 +5,7 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import OpenDataFile, UpdatePipeline
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
-
-
-def leaves(data):
-    """The datasets of a (possibly nested) multiblock, depth first."""
-    if data is None:
-        return []
-    if data.IsA("vtkMultiBlockDataSet"):
-        out = []
-        for i in range(data.GetNumberOfBlocks()):
-            out += leaves(data.GetBlock(i))
-        return out
-    return [data]
+from pvcheck import fail, leaves
 
 
 def array_range(data, association, name, component=-1):

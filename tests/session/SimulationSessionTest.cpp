@@ -3,6 +3,11 @@
 // hand do, starts from a frame, keeps the step log, pulls, and records a
 // series with its bound surface.
 #include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <filesystem>
 #include <string>
@@ -11,9 +16,12 @@
 #include "Shapes.h"
 #include "TestFiles.h"
 #include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/deformation/SurfaceFields.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/vtkio/RecordedRun.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
 namespace {
@@ -146,6 +154,27 @@ TEST(SimulationSession, RecordsTheRunWithItsBoundSurface) {
   const BoundSurface last = readBinding(dir / "run_frames" / "surface_00001.vtp");
   ASSERT_TRUE(last.deformed.has_value());
   EXPECT_GT((last.deformed->positions - skin.positions).norm(), 1e-6);
+  // The skin carries the frame's stress and strain: each vertex the
+  // binding-weighted, volume-weighted node means of its control frame's
+  // element values (SurfaceFields.h), as the .vtu beside it has them.
+  const vtkSmartPointer<vtkPolyData> surfaceFrame =
+      readVtp(dir / "run_frames" / "surface_00001.vtp");
+  const vtkSmartPointer<vtkUnstructuredGrid> controlFrame =
+      readVtu(dir / "run_frames" / "control_00001.vtu");
+  const TetMesh rest = extractLevel(mesh, 0);
+  for (const char* name : {arrays::kVonMisesStress, arrays::kEquivalentStrain}) {
+    vtkDataArray* cells = controlFrame->GetCellData()->GetArray(name);
+    vtkDataArray* points = surfaceFrame->GetPointData()->GetArray(name);
+    ASSERT_NE(cells, nullptr) << name;
+    ASSERT_NE(points, nullptr) << name;
+    Eigen::VectorXd perElement(rest.elementCount());
+    for (Index e = 0; e < rest.elementCount(); ++e) perElement[e] = cells->GetTuple1(e);
+    ASSERT_GT(perElement.maxCoeff(), 0) << name;
+    const Eigen::VectorXd expected = boundValues(last.binding, 0, nodeMeans(rest, perElement));
+    ASSERT_EQ(points->GetNumberOfTuples(), expected.size()) << name;
+    for (Index v = 0; v < expected.size(); ++v)
+      EXPECT_NEAR(points->GetTuple1(v), expected[v], 1e-12 * perElement.maxCoeff()) << name << v;
+  }
 }
 
 }  // namespace

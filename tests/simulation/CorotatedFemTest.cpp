@@ -103,6 +103,29 @@ TEST(CorotatedFem, RigidMotionProducesNoElasticForce) {
     EXPECT_TRUE(fem.elementRotation(e).isApprox(R, 1e-10));
 }
 
+// A stretch s along x, turned: every element's rotated-frame strain is
+// diag(s, 0, 0), whose equivalent strain is 2/3 s and whose stress's von
+// Mises value is 2 mu s; a rigid motion has neither.
+TEST(CorotatedFem, ElementMeasuresOfATurnedStretchAreKnown) {
+  const TetMesh mesh = test::tetGrid(3, 2, 2, {3, 2, 2});
+  const ElasticMaterial m = material();
+  CorotatedFem fem(mesh, m);
+  const double s = 0.02, mu = m.youngsModulus / (2 * (1 + m.poissonRatio));
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -0.4, 0.5).normalized()).toRotationMatrix();
+  const CorotatedFem::ElementMeasures stretched =
+      fem.elementMeasures(linearlyMapped(fem, Q * Eigen::Vector3d(1 + s, 1, 1).asDiagonal()));
+  const CorotatedFem::ElementMeasures rigid = fem.elementMeasures(linearlyMapped(fem, Q));
+  ASSERT_EQ(stretched.vonMisesStress.size(), mesh.elementCount());
+  ASSERT_EQ(stretched.equivalentStrain.size(), mesh.elementCount());
+  for (Index e = 0; e < mesh.elementCount(); ++e) {
+    EXPECT_NEAR(stretched.equivalentStrain[e], 2.0 / 3.0 * s, 1e-12) << e;
+    EXPECT_NEAR(stretched.vonMisesStress[e], 2 * mu * s, 1e-9 * mu) << e;
+    EXPECT_LT(rigid.equivalentStrain[e], 1e-12) << e;
+    EXPECT_LT(rigid.vonMisesStress[e], 1e-9 * mu) << e;
+  }
+}
+
 TEST(CorotatedFem, ForcesRotateWithTheBody) {
   const TetMesh mesh = test::tetGrid(2, 2, 2, {1, 1, 1});
   CorotatedFem fem(mesh, material());

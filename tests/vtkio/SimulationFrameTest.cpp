@@ -102,7 +102,10 @@ TEST(SimulationFrame, EachFieldGoesIntoTheArrayOfItsName) {
     fields.externalForces.row(v) << 1.5 * static_cast<double>(v), 0, -2;
     fields.reactionForces.row(v) << 0, 0.25 * static_cast<double>(v), 7;
   }
-  for (Index e = 0; e < elements; ++e) fields.vonMisesStress[e] = 100.0 + static_cast<double>(e);
+  for (Index e = 0; e < elements; ++e) {
+    fields.vonMisesStress[e] = 100.0 + static_cast<double>(e);
+    fields.equivalentStrain[e] = 0.001 * static_cast<double>(e);
+  }
   const vtkSmartPointer<vtkUnstructuredGrid> grid = simulationFrame(f.rest, fields, 2);
   const auto vectors = [&](const char* name) {
     vtkDataArray* array = grid->GetPointData()->GetArray(name);
@@ -120,6 +123,10 @@ TEST(SimulationFrame, EachFieldGoesIntoTheArrayOfItsName) {
   ASSERT_NE(stress, nullptr);
   ASSERT_EQ(stress->GetNumberOfTuples(), elements);
   for (Index e = 0; e < elements; ++e) EXPECT_EQ(stress->GetTuple1(e), fields.vonMisesStress[e]);
+  vtkDataArray* strain = grid->GetCellData()->GetArray("EquivalentStrain");
+  ASSERT_NE(strain, nullptr);
+  ASSERT_EQ(strain->GetNumberOfTuples(), elements);
+  for (Index e = 0; e < elements; ++e) EXPECT_EQ(strain->GetTuple1(e), fields.equivalentStrain[e]);
 
   const std::string counts = std::to_string(nodes) + " nodes";
   FrameFields shortReactions = fields;
@@ -130,6 +137,10 @@ TEST(SimulationFrame, EachFieldGoesIntoTheArrayOfItsName) {
   noStresses.vonMisesStress.resize(0);
   EXPECT_EQ(test::errorText([&] { simulationFrame(f.rest, noStresses, 2); }),
             "the frame's stresses: 0 rows for " + std::to_string(elements) + " elements");
+  FrameFields noStrains = fields;
+  noStrains.equivalentStrain.resize(0);
+  EXPECT_EQ(test::errorText([&] { simulationFrame(f.rest, noStrains, 2); }),
+            "the frame's strains: 0 rows for " + std::to_string(elements) + " elements");
 }
 
 // A recorded run read back (render --run, deform --positions RUN.pvd, the

@@ -8,6 +8,7 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/core/Spread.h"
 
 namespace tetskin {
 
@@ -26,10 +27,7 @@ BindingSummary summarizeBinding(const SurfaceBinding& b, double diagonal) {
   s.shareInside = static_cast<double>(inside) / static_cast<double>(s.vertices);
   std::vector<double> sorted = distances;
   std::sort(sorted.begin(), sorted.end());
-  auto percentile = [&](double p) {
-    const auto i = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())) - 1);
-    return sorted[std::min(i, sorted.size() - 1)];
-  };
+  auto percentile = [&](double p) { return percentileOfSorted(sorted, p); };
   s.distanceP50 = percentile(0.50);
   s.distanceP90 = percentile(0.90);
   s.distanceP99 = percentile(0.99);

@@ -6,6 +6,7 @@
 
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/session/SkinFields.h"
 
 namespace tetskin {
 
@@ -53,6 +54,7 @@ const BoundSurface& SimulationSession::deformedSurface(const Points3& positions)
   const LevelRange& range = dataset_.levels[static_cast<std::size_t>(level_)];
   allNodes_.middleRows(range.firstNode, range.nodeCount) = positions;
   deformer_->deform(allNodes_, bound_->deformed->positions, bound_->deformed->normals);
+  bound_->deformed->scalars.clear();  // (of another state)
   return *bound_;
 }
 
@@ -104,10 +106,28 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
                                     const BoundSurface* drawnSurface) {
   if (!recorder_) throw Error("the run is not being recorded");
   const SimulationState s = state ? *state : simulation_->state();
-  const BoundSurface* surface = drawnSurface;
-  if (!surface && bound_) surface = &deformedSurface(s.positions);
-  recorder_->addFrame(s.time, simulation_->restMesh(), simulation_->frameFields(s), level_,
-                      surface);
+  const FrameFields fields = simulation_->frameFields(s);
+  if (!bound_ && !drawnSurface) {
+    recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_);
+    return;
+  }
+  // The surface with the stress and strain on its skin: the front end's
+  // drawing of it, or the session's own deformation.
+  std::optional<BoundSurface> drawn;
+  BoundSurface* surface = bound_.get();
+  if (drawnSurface)
+    surface = &drawn.emplace(*drawnSurface);
+  else
+    deformedSurface(s.positions);
+  if (!surface->deformed)
+    surface->deformed.emplace(DeformedState{surface->surface.positions, surface->surface.normals});
+  surface->deformed->scalars = surfaceFields(fields, surface->binding);
+  recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface);
+}
+
+std::vector<PointScalars> SimulationSession::surfaceFields(const FrameFields& fields,
+                                                           const SurfaceBinding& binding) const {
+  return skinFields(dataset_, level_, binding, fields.vonMisesStress, fields.equivalentStrain);
 }
 
 }  // namespace tetskin

@@ -336,15 +336,24 @@ double CorotatedFem::elasticEnergy(const Eigen::VectorXd& x) const {
       std::plus<>());
 }
 
-Eigen::VectorXd CorotatedFem::vonMisesStress(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd stress(elementCount());
-  for (std::size_t e = 0; e < scatter_.size(); ++e) {
-    const Eigen::Matrix3d F = deformationGradient(e, x);
-    const Eigen::Matrix3d sigma = linearStress(rotatedFrameStrain(rotation(F), F));
-    const Eigen::Matrix3d deviator = sigma - sigma.trace() / 3.0 * Eigen::Matrix3d::Identity();
-    stress[scatter_[e].id] = std::sqrt(1.5 * deviator.squaredNorm());
-  }
-  return stress;
+CorotatedFem::ElementMeasures CorotatedFem::elementMeasures(const Eigen::VectorXd& x) const {
+  ElementMeasures m;
+  m.vonMisesStress.resize(elementCount());
+  m.equivalentStrain.resize(elementCount());
+  const auto deviatorNorm = [](const Eigen::Matrix3d& t) {
+    return (t - t.trace() / 3.0 * Eigen::Matrix3d::Identity()).norm();
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, scatter_.size(), 1024),
+                    [&](const auto& range) {
+                      for (std::size_t e = range.begin(); e < range.end(); ++e) {
+                        const Eigen::Matrix3d F = deformationGradient(e, x);
+                        const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
+                        const int id = scatter_[e].id;
+                        m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(strain));
+                        m.equivalentStrain[id] = std::sqrt(2.0 / 3.0) * deviatorNorm(strain);
+                      }
+                    });
+  return m;
 }
 
 Eigen::VectorXd CorotatedFem::dampedElasticForce(const Eigen::VectorXd& x, const Eigen::VectorXd& v,

@@ -293,8 +293,14 @@ Eigen::Vector3d Simulation::supportReaction(const SimulationState& state) const 
 }
 
 FrameFields Simulation::frameFields(const SimulationState& state) const {
-  return {state.positions, state.velocities, state.externalForces, reactionForces(state),
-          fem_.vonMisesStress(numbering_->toInternal(state.positions))};
+  CorotatedFem::ElementMeasures measures =
+      fem_.elementMeasures(numbering_->toInternal(state.positions));
+  return {state.positions,
+          state.velocities,
+          state.externalForces,
+          reactionForces(state),
+          std::move(measures.vonMisesStress),
+          std::move(measures.equivalentStrain)};
 }
 
 }  // namespace tetskin

@@ -124,9 +124,17 @@ SurfaceMesh shownSurface(const BoundSurface& bound) {
 vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
   vtkSmartPointer<vtkPolyData> data = toVtkPolyData(shownSurface(bound));
   addBindingArrays(data, bound.binding);
-  if (bound.deformed)
+  if (bound.deformed) {
     markDeformed(data, toVtkVectors(arrays::kDisplacement,
                                     bound.deformed->positions - bound.surface.positions));
+    for (const PointScalars& scalars : bound.deformed->scalars) {
+      if (scalars.values.size() != bound.surface.vertexCount())
+        throw Error("the deformed surface's " + scalars.name + ": " +
+                    std::to_string(scalars.values.size()) + " values for " +
+                    std::to_string(bound.surface.vertexCount()) + " vertices");
+      data->GetPointData()->AddArray(toVtkScalars(scalars.name.c_str(), scalars.values));
+    }
+  }
   addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;
 }

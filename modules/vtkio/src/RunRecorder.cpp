@@ -36,7 +36,7 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions)
   // sequence with them (control_00000.vtu ...), which file dialogs such as
   // ParaView's offer as one series. Only files named as this class names
   // frames go, and the old .pvd, which names them.
-  static const std::regex frameName(R"((control_\d{5}\.vtu|surface_\d{5}\.vtp))");
+  static const std::regex frameName(R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?\.vtp))");
   for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
     if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
       std::filesystem::remove(entry.path());
@@ -58,6 +58,19 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const FrameFields& 
 
 void RunRecorder::addSurfaceFrame(double time, const BoundSurface& deformedSurface) {
   addSurface(time, deformedSurface);
+  series_.write();
+  ++frames_;
+}
+
+void RunRecorder::addSurfacesFrame(double time,
+                                   const std::vector<const BoundSurface*>& deformedSurfaces) {
+  for (std::size_t part = 0; part < deformedSurfaces.size(); ++part) {
+    char name[64];
+    std::snprintf(name, sizeof name, "surface_%05lld_%zu.vtp", static_cast<long long>(frames_),
+                  part);
+    writeBinding(framesDirectory_ / name, *deformedSurfaces[part]);
+    series_.add(time, static_cast<int>(part), framesDirectory_.filename().string() + "/" + name);
+  }
   series_.write();
   ++frames_;
 }

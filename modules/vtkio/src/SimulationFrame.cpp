@@ -46,6 +46,8 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   requireRows("the frame's reaction forces", fields.reactionForces.rows(), nodes, "nodes");
   requireRows("the frame's stresses", fields.vonMisesStress.size(), rest.elementCount(),
               "elements");
+  requireRows("the frame's strains", fields.equivalentStrain.size(), rest.elementCount(),
+              "elements");
   TetMesh deformed{fields.positions, rest.elements};
   vtkSmartPointer<vtkUnstructuredGrid> grid = toVtkUnstructuredGrid(deformed);
   grid->GetPointData()->AddArray(
@@ -67,19 +69,24 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetPointData()->AddArray(prescribed);
   auto stress = vtkSmartPointer<vtkDoubleArray>::New();
   stress->SetName(arrays::kVonMisesStress);
+  auto strain = vtkSmartPointer<vtkDoubleArray>::New();
+  strain->SetName(arrays::kEquivalentStrain);
   auto ratio = vtkSmartPointer<vtkDoubleArray>::New();
   ratio->SetName("VolumeRatio");
   auto levels = vtkSmartPointer<vtkIntArray>::New();
   levels->SetName(arrays::kLevel);
   stress->SetNumberOfValues(rest.elementCount());
+  strain->SetNumberOfValues(rest.elementCount());
   ratio->SetNumberOfValues(rest.elementCount());
   levels->SetNumberOfValues(rest.elementCount());
   for (Index e = 0; e < rest.elementCount(); ++e) {
     stress->SetValue(e, fields.vonMisesStress[e]);
+    strain->SetValue(e, fields.equivalentStrain[e]);
     ratio->SetValue(e, elementVolume(deformed, e) / elementVolume(rest, e));
     levels->SetValue(e, level);
   }
   grid->GetCellData()->AddArray(stress);
+  grid->GetCellData()->AddArray(strain);
   grid->GetCellData()->AddArray(ratio);
   grid->GetCellData()->AddArray(levels);
   if (const std::optional<FloorPlane>& floor = conditions.floor) {
@@ -122,6 +129,19 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
                   "point " + std::to_string(v) +
                       ": its position less its Displacement is not its rest position in " +
                       restName + " (a frame of another body)");
+  const auto elementValues = [&](const char* name) {
+    vtkDataArray* array = grid->GetCellData()->GetArray(name);
+    Eigen::VectorXd values;
+    if (!array || array->GetNumberOfComponents() != 1 ||
+        array->GetNumberOfTuples() != rest.elementCount())
+      return values;
+    values.resize(rest.elementCount());
+    for (Index e = 0; e < rest.elementCount(); ++e) values[e] = array->GetTuple1(e);
+    if (!values.allFinite()) values.resize(0);
+    return values;
+  };
+  state.vonMisesStress = elementValues(arrays::kVonMisesStress);
+  state.equivalentStrain = elementValues(arrays::kEquivalentStrain);
   return state;
 }
 

@@ -56,6 +56,14 @@ vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& va
   return out;
 }
 
+vtkSmartPointer<vtkDoubleArray> toVtkScalars(const char* name, const Eigen::VectorXd& values) {
+  auto out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->SetName(name);
+  out->SetNumberOfValues(values.size());
+  for (Index i = 0; i < values.size(); ++i) out->SetValue(i, values[i]);
+  return out;
+}
+
 Eigen::Map<Points3> vectorRows(vtkDoubleArray* array) {
   if (!array || array->GetNumberOfComponents() != 3)
     throw Error("vector rows: " +

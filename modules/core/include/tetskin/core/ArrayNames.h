@@ -14,6 +14,8 @@ inline constexpr const char* kExternalForce = "ExternalForce";    // point vecto
 inline constexpr const char* kReactionForce = "ReactionForce";    // point vectors, N
 inline constexpr const char* kPrescribed = "Prescribed";          // point 0/1: held or driven
 inline constexpr const char* kVonMisesStress = "VonMisesStress";  // cell scalars, Pa
+// Cell scalars: the von Mises equivalent strain (CorotatedFem::elementMeasures).
+inline constexpr const char* kEquivalentStrain = "EquivalentStrain";
 inline constexpr const char* kLevel = "Level";  // cell data of a level, field data of a binding
 
 // Bindings (.vtp of bind): per surface vertex.
@@ -25,5 +27,13 @@ inline constexpr const char* kFaceId = "FaceId";  // the element bound to (Surfa
 
 // Surfaces: the active point normals.
 inline constexpr const char* kNormals = "Normals";
+// Surface frames (simulate --surface, compare): VonMisesStress and
+// EquivalentStrain as point scalars, carried from the control elements
+// (SurfaceFields.h); and compare's errors against the reference level, per
+// vertex: the distance (model units), the same over the rest surface's
+// bounding-box diagonal, and the angle between the normals (degrees).
+inline constexpr const char* kSurfaceError = "SurfaceError";
+inline constexpr const char* kRelativeError = "RelativeError";
+inline constexpr const char* kNormalAngle = "NormalAngle";
 
 }  // namespace tetskin::arrays

@@ -4,7 +4,8 @@
 // level's numbering) the positions, velocities, the external forces of the
 // step that led to it (loads, scenario forces, pulls; not gravity) and the
 // supports' reactions (at the prescribed nodes, zero elsewhere), both in
-// newtons; per element the von Mises stress (Pa). Simulation::frameFields()
+// newtons; per element the von Mises stress (Pa) and the equivalent strain
+// (CorotatedFem::elementMeasures). Simulation::frameFields()
 // takes them at one instant; the .vtu frames carry them.
 
 #include <Eigen/Core>
@@ -15,7 +16,7 @@ namespace tetskin {
 
 struct FrameFields {
   Points3 positions, velocities, externalForces, reactionForces;
-  Eigen::VectorXd vonMisesStress;
+  Eigen::VectorXd vonMisesStress, equivalentStrain;
 };
 
 }  // namespace tetskin

@@ -90,9 +90,16 @@ class SimulationSession {
   const RunRecorder* recorder() const { return recorder_.get(); }
   // Adds `state` (by default the current one) to the recording, with the
   // bound surface: `drawnSurface` if the front end has deformed it already
-  // (a render path), else the session's own deformation of it.
+  // (a render path), else the session's own deformation of it; the surface
+  // frame carries the state's stress and strain (surfaceFields).
   void recordFrame(const std::optional<SimulationState>& state = std::nullopt,
                    const BoundSurface* drawnSurface = nullptr);
+
+  // The elements' von Mises stress and equivalent strain in `fields` (a
+  // frame of this run) carried to the surface `binding` binds to this
+  // run's level, as VonMisesStress and EquivalentStrain (SkinFields.h).
+  std::vector<PointScalars> surfaceFields(const FrameFields& fields,
+                                          const SurfaceBinding& binding) const;
 
   Simulation& simulation() { return *simulation_; }
   const Simulation& simulation() const { return *simulation_; }

@@ -112,8 +112,14 @@ class CorotatedFem {
   // Elastic energy sum 1/2 z^T K_e z, z = R^T x_e - X_e, R from x.
   double elasticEnergy(const Eigen::VectorXd& x) const;
 
-  // Per element von Mises stress at positions x.
-  Eigen::VectorXd vonMisesStress(const Eigen::VectorXd& x) const;
+  // Per element at positions x: the von Mises stress of the rotated-frame
+  // stress (Pa), and the equivalent (von Mises) strain of the rotated-frame
+  // strain e = sym(R^T F) - I, sqrt(2/3 dev(e) : dev(e)) (dimensionless: 0.01
+  // is 1% in a uniaxial stretch of an incompressible body).
+  struct ElementMeasures {
+    Eigen::VectorXd vonMisesStress, equivalentStrain;
+  };
+  ElementMeasures elementMeasures(const Eigen::VectorXd& x) const;
 
   // The elastic force with its stiffness damping at positions x and
   // velocities v (3n each): f_el(x) - beta K v, K = R K_e R^T at x (the

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -26,9 +27,18 @@ class vtkPolyData;
 
 namespace tetskin {
 
-// Where a binding has moved its surface.
+// A named value per surface vertex, written with a deformed surface as a
+// point array (the stress carried to the skin, compare's errors).
+struct PointScalars {
+  std::string name;
+  Eigen::VectorXd values;
+};
+
+// Where a binding has moved its surface, and what else its file shows of
+// that state (not read back: the file's points and normals are the state).
 struct DeformedState {
   Points3 positions, normals;
+  std::vector<PointScalars> scalars = {};
 };
 
 struct BoundSurface {

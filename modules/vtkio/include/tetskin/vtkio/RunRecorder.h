@@ -2,12 +2,13 @@
 #pragma once
 // A simulation run as a ParaView time series: RUN.pvd plus RUN_frames/ with
 // one control-mesh .vtu (and optionally one bound-surface .vtp) per frame,
-// or the bound surface's frames alone.
+// or the bound surface's frames alone, or several bound surfaces' frames.
 // The .pvd is rewritten after every frame, so a run stopped at any point
 // leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/TetMesh.h"
@@ -36,6 +37,9 @@ class RunRecorder {
   // A frame of the bound surface alone (part 1, as beside a control frame):
   // `tetskin deform` of a recorded run.
   void addSurfaceFrame(double time, const BoundSurface& deformedSurface);
+  // A frame of several bound surfaces, one part each in the given order
+  // (surface_NNNNN_K.vtp for part K): `tetskin compare`'s levels.
+  void addSurfacesFrame(double time, const std::vector<const BoundSurface*>& deformedSurfaces);
 
  private:
   std::filesystem::path framesDirectory_;  // absolute

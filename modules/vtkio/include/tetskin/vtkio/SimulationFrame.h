@@ -7,7 +7,7 @@
 // forces at the prescribed nodes, zero elsewhere) and Prescribed (1 where
 // the run prescribes the node's motion: held still, or driven as the
 // twist's top; else 0),
-// cell arrays VonMisesStress, VolumeRatio (current / rest volume, < 0 for
+// cell arrays VonMisesStress, EquivalentStrain, VolumeRatio (current / rest volume, < 0 for
 // inverted elements) and Level, and for a run with a floor the field data
 // FloorNormal (the up axis' unit vector) and FloorHeight; and the state
 // read back from such a frame.
@@ -32,9 +32,13 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
                                                      const RunConditions& conditions = {});
 
 // What a simulation restarts from: a frame's positions (its points) and
-// velocities (its Velocity array).
+// velocities (its Velocity array); and, where the frame has them (one
+// finite value per tetrahedron; frames written before strains were have no
+// EquivalentStrain), its elements' VonMisesStress and EquivalentStrain,
+// else empty: what deform carries to the skin of a recorded run.
 struct FrameState {
   Points3 positions, velocities;
+  Eigen::VectorXd vonMisesStress = {}, equivalentStrain = {};
 };
 
 // The state in the frame file `path` (a .vtu simulationFrame wrote) of the

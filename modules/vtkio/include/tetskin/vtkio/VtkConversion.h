@@ -36,6 +36,8 @@ Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName);
 
 // Rows as a named 3-component double array (normals, displacements).
 vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& values);
+// Values as a named 1-component double array (stresses, errors).
+vtkSmartPointer<vtkDoubleArray> toVtkScalars(const char* name, const Eigen::VectorXd& values);
 // The other way without a copy: a 3-component double array's buffer seen as
 // rows, one per tuple, for a kernel to write in place (Points3Ref). Throws
 // Error for a null array or another component count.

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// `tetskin compare`: which control level is enough (issue #55). The same
+// scenario on several levels (or runs recorded earlier), the same surface
+// bound to each, and per vertex and frame how far each level's surface lies
+// from the reference level's, with the cost per step beside it.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Commands.h"
+#include "OptionChecks.h"
+#include "Progress.h"
+#include "RunOptions.h"
+#include "SurfaceInput.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/Dataset.h"
+#include "tetskin/session/LevelComparison.h"
+#include "tetskin/vtkio/RunRecorder.h"
+
+namespace tetskin::cli {
+namespace {
+
+constexpr const char* kMotionGroup = "Motion";
+
+struct CompareArgs {
+  std::filesystem::path dataset, surface, output, table;
+  std::vector<int> levels;
+  int reference = -1, steps = 120, every = 1;
+  std::vector<std::filesystem::path> runs;
+  RunArgs run;
+  bool quiet = false;
+};
+
+// The table beside the series: OUT.csv for OUT.pvd.
+std::filesystem::path tableOf(const CompareArgs& a) {
+  if (!a.table.empty()) return a.table;
+  std::filesystem::path table = a.output;
+  return table.replace_extension(".csv");
+}
+
+void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
+  if (!a.runs.empty()) {
+    // What would be simulated is read from the runs instead.
+    for (const char* option : {"--levels", "--reference", "--steps", "--every"})
+      if (cmd.count(option) > 0)
+        throw Error(std::string(option) + ": compares simulated levels; --runs compares " +
+                    "recorded runs (the first the reference) frame by frame");
+    if (const std::optional<std::string> given = givenScenarioOption(cmd))
+      throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
+    for (const char* option : {"--solver", "--tangent", "--dt", "--young", "--poisson", "--density",
+                               "--alpha", "--beta", "--gravity", "--floor", "--up"})
+      if (cmd.count(option) > 0)
+        throw Error(std::string(option) + ": compares simulated levels; --runs compares " +
+                    "recorded runs");
+  }
+  // A node list names nodes of one level; the levels compared have others.
+  if (!a.run.scenario.fixedNodes.empty())
+    throw Error(
+        "--fixed-nodes: names nodes of one level, and compare runs several: hold nodes "
+        "by --fixed-box, which takes each level's nodes in the box");
+  if (!a.run.scenario.loads.empty())
+    throw Error(
+        "--loads: names nodes of one level, and compare runs several: compare recorded "
+        "runs (--runs) whose loads were given per level");
+  checkRunOptions(a.run, cmd);
+  const std::filesystem::path table = tableOf(a);
+  requireNotAnInput(a.output, {a.dataset, a.surface});
+  requireNotAnInput(table, {a.dataset, a.surface, a.output});
+  for (const std::filesystem::path& run : a.runs) requireNotAnInput(a.output, {run});
+  requireWritableLocation(table);  // before the runs, not after them
+}
+
+// The levels to simulate, resolved, in the order given, with the reference
+// (appended when missing); and which of them is the reference.
+std::pair<std::vector<int>, std::size_t> comparedLevels(const CompareArgs& a,
+                                                        const MultiLevelTetMesh& mesh) {
+  const int reference = resolveLevel(mesh, a.reference);
+  std::vector<int> levels;
+  if (a.levels.empty())
+    for (int level = 0; level < mesh.levelCount(); ++level) levels.push_back(level);
+  for (int level : a.levels) {
+    const int resolved = resolveLevel(mesh, level);
+    if (std::find(levels.begin(), levels.end(), resolved) != levels.end())
+      throw Error("--levels: level " + std::to_string(resolved) + " is given twice");
+    levels.push_back(resolved);
+  }
+  auto at = std::find(levels.begin(), levels.end(), reference);
+  if (at == levels.end()) at = levels.insert(levels.end(), reference);
+  if (levels.size() < 2)
+    throw Error("--levels: level " + std::to_string(reference) +
+                " alone: name another level to compare with the reference (" +
+                std::to_string(mesh.levelCount()) + " levels in the dataset)");
+  return {levels, static_cast<std::size_t>(at - levels.begin())};
+}
+
+std::string percent(double value, double diagonal) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", 100 * value / (diagonal > 0 ? diagonal : 1));
+  return text;
+}
+
+std::string degrees(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+void report(const CompareArgs& a, const LevelComparison& comparison,
+            const MultiLevelTetMesh& mesh) {
+  const double diagonal = comparison.diagonal();
+  if (comparison.simulated()) {
+    const SimulationSession& first = *comparison.session(0);
+    std::printf(
+        "compared %zu levels of %s over %d steps of %g s, scenario %s, reference level %d\n",
+        comparison.runCount(), a.dataset.c_str(), a.steps, first.options().timeStep,
+        first.scenario().name(), comparison.level(comparison.reference()));
+  } else {
+    std::printf("compared %zu recorded runs of %s over %zu frames, reference %s (level %d)\n",
+                comparison.runCount(), a.dataset.c_str(), comparison.recordedFrames(),
+                a.runs.front().c_str(), comparison.level(0));
+  }
+  std::printf("  surface %s: %lld vertices, diagonal %s; errors over every vertex of %zu frames\n",
+              a.surface.c_str(), static_cast<long long>(comparison.vertexCount()),
+              formatNumber(diagonal).c_str(), comparison.frames().size());
+  std::printf("  %-6s %9s %9s   %-34s %s\n", "level", "elements", "ms/step",
+              "distance max / p99 / median", "normal angle max / p99 / median (deg)");
+  for (std::size_t r = 0; r < comparison.runCount(); ++r) {
+    const int level = comparison.level(r);
+    const Index elements = mesh.levels[static_cast<std::size_t>(level)].elementCount;
+    char cost[32] = "-";
+    if (comparison.simulated())
+      std::snprintf(cost, sizeof cost, "%.3g", 1e3 * comparison.meanStepSeconds(r));
+    const std::string name = std::to_string(level) + (r == comparison.reference() ? " ref" : "");
+    if (r == comparison.reference()) {
+      std::printf("  %-6s %9lld %9s   %-34s %s\n", name.c_str(), static_cast<long long>(elements),
+                  cost, "(reference)", "");
+      continue;
+    }
+    const ErrorSpread e = comparison.overall(r);
+    const std::string distance = percent(e.distance.max, diagonal) + " / " +
+                                 percent(e.distance.p99, diagonal) + " / " +
+                                 percent(e.distance.median, diagonal);
+    const std::string angle =
+        degrees(e.angle.max) + " / " + degrees(e.angle.p99) + " / " + degrees(e.angle.median);
+    std::printf("  %-6s %9lld %9s   %-34s %s\n", name.c_str(), static_cast<long long>(elements),
+                cost, distance.c_str(), angle.c_str());
+  }
+  std::printf("  (distances as %% of the diagonal; absolute values in the table)\n");
+  const RunRecorder& recorder = *comparison.recorder();
+  std::printf("wrote %s (%lld frames of %zu surfaces)\n", recorder.path().c_str(),
+              static_cast<long long>(recorder.frames()), comparison.runCount());
+  std::printf("wrote %s\n", tableOf(a).c_str());
+}
+
+void run(CompareArgs& a, const CLI::App& cmd) {
+  checkOptions(a, cmd);
+  const Dataset dataset = loadDataset(a.dataset);
+  // A binding's surface is bound anew to every level.
+  const SurfaceInput input = readSurfaceInput(a.surface, dataset.mesh);
+  std::unique_ptr<LevelComparison> comparison;
+  if (a.runs.empty()) {
+    const auto [levels, reference] = comparedLevels(a, dataset.mesh);
+    std::vector<RunSpec> specs;
+    for (int level : levels)
+      specs.push_back(runSpec(a.run, cmd, dataset, level, a.dataset.string()));
+    comparison = std::make_unique<LevelComparison>(dataset.mesh, input.surface, specs, reference,
+                                                   a.dataset.generic_string());
+  } else {
+    comparison = std::make_unique<LevelComparison>(dataset.mesh, input.surface, a.runs,
+                                                   a.dataset.generic_string());
+  }
+  comparison->record(a.output);
+  Progress progress(a.quiet);
+  comparison->compare();
+  if (comparison->simulated()) {
+    for (int i = 0; i < a.steps; ++i) {
+      comparison->advance();
+      if ((i + 1) % a.every == 0 || i + 1 == a.steps) comparison->compare();
+      progress.update("compare", static_cast<std::size_t>(i + 1),
+                      static_cast<std::size_t>(a.steps));
+    }
+  } else {
+    for (std::size_t f = 1; f < comparison->recordedFrames(); ++f) {
+      comparison->advance();
+      comparison->compare();
+      progress.update("compare", f + 1, comparison->recordedFrames());
+    }
+  }
+  comparison->writeFrameTable(tableOf(a));
+  report(a, *comparison, dataset.mesh);
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app) {
+  auto a = std::make_shared<CompareArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Which level is enough: the same scenario on several levels, the same surface bound to "
+      "each; per vertex and frame the distance and normal angle against the reference level, "
+      "with each level's cost per step");
+  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
+  cmd->add_option("SURFACE", a->surface,
+                  "the surface (OBJ, PLY, STL, VTP; a binding's surface), bound to every level "
+                  "by its closest boundary point with the normal offset")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", a->output,
+                  "time series OUT.pvd: per frame the surface as each level deforms it (a part "
+                  "per level), with SurfaceError, RelativeError, NormalAngle, VonMisesStress and "
+                  "EquivalentStrain (frames go to OUT_frames/)")
+      ->required()
+      ->check(fileEnding(".pvd"));
+  cmd->add_option("--table", a->table,
+                  "the errors per frame and level (.csv; default: OUT.csv beside OUT.pvd)")
+      ->check(fileEnding(".csv"));
+  cmd->add_option("--levels", a->levels,
+                  "the levels compared, e.g. 0,1 (negative from the finest; default: all)")
+      ->delimiter(',')
+      ->check(anyWholeNumber())
+      ->group(kMotionGroup);
+  cmd->add_option("--reference", a->reference,
+                  "the level the others are measured against (default -1: the finest)")
+      ->check(anyWholeNumber())
+      ->group(kMotionGroup);
+  cmd->add_option("--steps", a->steps, "time steps")
+      ->capture_default_str()
+      ->check(wholeNumber(1))
+      ->group(kMotionGroup);
+  cmd->add_option("--every", a->every, "compare every k-th step (and the last)")
+      ->capture_default_str()
+      ->check(wholeNumber(1))
+      ->group(kMotionGroup);
+  cmd->add_option("--runs", a->runs,
+                  "compare runs recorded by simulate (RUN.pvd, two or more, the first the "
+                  "reference; each on the level its frames name) instead of simulating")
+      ->expected(2, 1 << 20)
+      ->check(CLI::ExistingFile)
+      ->group(kMotionGroup);
+  addRunOptions(*cmd, a->run);
+  cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
+  cmd->callback([a, cmd] { run(*a, *cmd); });
+}
+
+}  // namespace tetskin::cli

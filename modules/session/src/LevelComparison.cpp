@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/session/LevelComparison.h"
+
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/core/ArrayNames.h"
+#include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/io/AtomicFile.h"
+#include "tetskin/session/SkinFields.h"
+#include "tetskin/vtkio/RecordedRun.h"
+#include "tetskin/vtkio/RunRecorder.h"
+
+namespace tetskin {
+
+struct LevelComparison::Run {
+  int level = 0;
+  std::unique_ptr<SimulationSession> session;  // simulated runs
+  FrameState recordedState;                    // recorded runs: the current frame
+  BoundSurface bound;                          // deformed at the last compare()
+  std::unique_ptr<SurfaceDeformer> deformer;
+  SurfaceErrors errors;
+  // Every compared frame's values, for the spread over the whole run (as
+  // floats: a 35k-vertex surface over 121 frames keeps 34 MB a run).
+  std::vector<float> distances, angles;
+  double stepSeconds = 0, frameStepSeconds = 0;
+  Index steps = 0, frameSteps = 0;
+};
+
+namespace {
+
+Spread spreadOfValues(const Eigen::VectorXd& values) {
+  std::vector<double> copy(values.data(), values.data() + values.size());
+  return spreadOf(copy);
+}
+
+Spread spreadOfFloats(const std::vector<float>& values) {
+  std::vector<double> copy(values.begin(), values.end());
+  return spreadOf(copy);
+}
+
+}  // namespace
+
+LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const SurfaceMesh& surface,
+                                 const std::vector<RunSpec>& runs, std::size_t reference,
+                                 const std::string& datasetPath)
+    : dataset_(dataset), surface_(surface), datasetPath_(datasetPath), reference_(reference) {
+  if (runs.size() < 2)
+    throw Error("a comparison needs at least two levels, " + std::to_string(runs.size()) +
+                " given");
+  if (reference >= runs.size())
+    throw Error("the reference is run " + std::to_string(reference) + " of " +
+                std::to_string(runs.size()));
+  diagonal_ = boundingBox(surface_.positions).diagonal();
+  for (const RunSpec& spec : runs) {
+    bind(spec.level);
+    runs_.back()->session = std::make_unique<SimulationSession>(dataset, spec);
+  }
+}
+
+LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const SurfaceMesh& surface,
+                                 const std::vector<std::filesystem::path>& recordedRuns,
+                                 const std::string& datasetPath)
+    : dataset_(dataset), surface_(surface), datasetPath_(datasetPath) {
+  if (recordedRuns.size() < 2)
+    throw Error("a comparison needs at least two runs, " + std::to_string(recordedRuns.size()) +
+                " given");
+  diagonal_ = boundingBox(surface_.positions).diagonal();
+  for (const std::filesystem::path& path : recordedRuns) {
+    const RecordedRun& run = recorded_.emplace_back(path);
+    if (!run.level())
+      throw Error(path.string(), 0,
+                  "its frames do not say which level they are of (no Level array)");
+    if (*run.level() < 0 || *run.level() >= dataset.levelCount())
+      throw Error(path.string(), 0,
+                  "its frames are of level " + std::to_string(*run.level()) +
+                      ", which the dataset lacks (levels 0 to " +
+                      std::to_string(dataset.levelCount() - 1) + ")");
+    const RecordedRun& first = recorded_.front();
+    if (run.frameCount() != first.frameCount())
+      throw Error(path.string(), 0,
+                  "has " + std::to_string(run.frameCount()) + " frames, " + first.path().string() +
+                      " " + std::to_string(first.frameCount()) +
+                      ": compared runs are matched frame by frame");
+    for (std::size_t f = 0; f < run.frameCount(); ++f)
+      if (std::abs(run.time(f) - first.time(f)) > 1e-9 * std::max(1.0, std::abs(first.time(f))))
+        throw Error(path.string(), 0,
+                    "frame " + std::to_string(f) + " is at time " + formatNumber(run.time(f)) +
+                        ", in " + first.path().string() + " at " + formatNumber(first.time(f)) +
+                        ": compared runs are matched frame by frame");
+    bind(*run.level());
+  }
+  // Each run at its first frame.
+  recordedFrame_ = 0;
+  for (std::size_t r = 0; r < runs_.size(); ++r)
+    runs_[r]->recordedState = recorded_[r].read(0, extractLevel(dataset_, runs_[r]->level),
+                                                "level " + std::to_string(runs_[r]->level));
+}
+
+LevelComparison::~LevelComparison() = default;
+
+void LevelComparison::bind(int level) {
+  auto run = std::make_unique<Run>();
+  run->level = level;
+  run->bound.surface = surface_;
+  run->bound.binding = bindSurface(surface_, dataset_, level);
+  run->bound.dataset = datasetPath_;
+  run->bound.deformed.emplace(DeformedState{surface_.positions, surface_.normals});
+  run->deformer =
+      std::make_unique<SurfaceDeformer>(run->bound.surface, run->bound.binding, dataset_.nodes,
+                                        "the surface on level " + std::to_string(level));
+  runs_.push_back(std::move(run));
+}
+
+int LevelComparison::level(std::size_t run) const {
+  return runs_.at(run)->level;
+}
+
+std::size_t LevelComparison::recordedFrames() const {
+  return recorded_.empty() ? 0 : recorded_.front().frameCount();
+}
+
+const SimulationSession* LevelComparison::session(std::size_t run) const {
+  return runs_.at(run)->session.get();
+}
+
+void LevelComparison::record(const std::filesystem::path& pvd) {
+  recorder_.reset();
+  recorder_ = std::make_unique<RunRecorder>(pvd);
+}
+
+void LevelComparison::advance() {
+  if (simulated()) {
+    for (const auto& run : runs_) {
+      run->session->step();
+      run->stepSeconds += run->session->lastStepSeconds();
+      run->frameStepSeconds += run->session->lastStepSeconds();
+      ++run->steps;
+      ++run->frameSteps;
+    }
+    ++steps_;
+    return;
+  }
+  if (recordedFrame_ + 1 >= recordedFrames())
+    throw Error(recorded_.front().path().string(), 0,
+                "has no frame after frame " + std::to_string(recordedFrame_));
+  ++recordedFrame_;
+  for (std::size_t r = 0; r < runs_.size(); ++r)
+    runs_[r]->recordedState =
+        recorded_[r].read(recordedFrame_, extractLevel(dataset_, runs_[r]->level),
+                          "level " + std::to_string(runs_[r]->level));
+}
+
+Points3 LevelComparison::currentPositions(std::size_t r) const {
+  const Run& run = *runs_[r];
+  const Points3 level = run.session ? run.session->state().positions : run.recordedState.positions;
+  return datasetPositions(dataset_, run.level, level, "level " + std::to_string(run.level));
+}
+
+const ComparedFrame& LevelComparison::compare() {
+  ComparedFrame frame;
+  frame.time = simulated() ? runs_.front()->session->simulation().time()
+                           : recorded_.front().time(recordedFrame_);
+  frame.steps = steps_;
+  for (std::size_t r = 0; r < runs_.size(); ++r) {
+    Run& run = *runs_[r];
+    DeformedState& deformed = *run.bound.deformed;
+    run.deformer->deform(currentPositions(r), deformed.positions, deformed.normals);
+    if (run.session) {
+      const SimulationSession& session = *run.session;
+      deformed.scalars = session.surfaceFields(session.simulation().frameFields(session.state()),
+                                               run.bound.binding);
+    } else {
+      deformed.scalars =
+          skinFields(dataset_, run.level, run.bound.binding, run.recordedState.vonMisesStress,
+                     run.recordedState.equivalentStrain);
+    }
+    frame.stepSeconds.push_back(
+        run.frameSteps > 0 ? run.frameStepSeconds / static_cast<double>(run.frameSteps) : 0.0);
+    run.frameStepSeconds = 0;
+    run.frameSteps = 0;
+  }
+  const DeformedState& reference = *runs_[reference_]->bound.deformed;
+  for (const auto& run : runs_) {
+    DeformedState& deformed = *run->bound.deformed;
+    surfaceErrors(deformed.positions, deformed.normals, reference.positions, reference.normals,
+                  run->errors);
+    deformed.scalars.push_back({arrays::kSurfaceError, run->errors.distance});
+    deformed.scalars.push_back(
+        {arrays::kRelativeError, run->errors.distance / (diagonal_ > 0 ? diagonal_ : 1.0)});
+    deformed.scalars.push_back({arrays::kNormalAngle, run->errors.normalAngle});
+    run->distances.insert(run->distances.end(), run->errors.distance.begin(),
+                          run->errors.distance.end());
+    run->angles.insert(run->angles.end(), run->errors.normalAngle.begin(),
+                       run->errors.normalAngle.end());
+    frame.errors.push_back(
+        {spreadOfValues(run->errors.distance), spreadOfValues(run->errors.normalAngle)});
+  }
+  if (recorder_) {
+    std::vector<const BoundSurface*> surfaces;
+    for (const auto& run : runs_) surfaces.push_back(&run->bound);
+    recorder_->addSurfacesFrame(frame.time, surfaces);
+  }
+  frames_.push_back(std::move(frame));
+  return frames_.back();
+}
+
+const BoundSurface& LevelComparison::surface(std::size_t run) const {
+  return runs_.at(run)->bound;
+}
+
+const SurfaceErrors& LevelComparison::errors(std::size_t run) const {
+  return runs_.at(run)->errors;
+}
+
+ErrorSpread LevelComparison::overall(std::size_t run) const {
+  const Run& r = *runs_.at(run);
+  return {spreadOfFloats(r.distances), spreadOfFloats(r.angles)};
+}
+
+double LevelComparison::meanStepSeconds(std::size_t run) const {
+  const Run& r = *runs_.at(run);
+  return r.steps > 0 ? r.stepSeconds / static_cast<double>(r.steps) : 0.0;
+}
+
+void LevelComparison::writeFrameTable(const std::filesystem::path& csv) const {
+  const double diagonal = diagonal_ > 0 ? diagonal_ : 1.0;
+  writeTextAtomically(csv, [&](std::ostream& out) {
+    out << "frame,time,run,level,step_ms,distance_max,distance_p99,distance_median,"
+           "relative_max,relative_p99,relative_median,angle_max,angle_p99,angle_median\n";
+    char row[512];
+    for (std::size_t f = 0; f < frames_.size(); ++f)
+      for (std::size_t r = 0; r < runs_.size(); ++r) {
+        const ErrorSpread& e = frames_[f].errors[r];
+        std::snprintf(
+            row, sizeof row, "%zu,%.9g,%zu,%d,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g\n",
+            f, frames_[f].time, r, runs_[r]->level, 1e3 * frames_[f].stepSeconds[r], e.distance.max,
+            e.distance.p99, e.distance.median, e.distance.max / diagonal, e.distance.p99 / diagonal,
+            e.distance.median / diagonal, e.angle.max, e.angle.p99, e.angle.median);
+        out << row;
+      }
+  });
+}
+
+}  // namespace tetskin

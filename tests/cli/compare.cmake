@@ -1,0 +1,38 @@
+# CLI tests of tetskin compare (included by tests/cli/CMakeLists.txt).
+
+# The bunny's levels over its wobble: the finer level is the closer one.
+add_test(NAME cli.compare_levels_of_the_bunny
+  COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin> -DDATASET=${data}/bunny.json
+          -DSURFACE=${data}/bunny.obj -DOUT=${cli_out}/compare -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckCompare.cmake)
+set_tests_properties(cli.compare_levels_of_the_bunny PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "finer is closer")
+
+# Two runs of one level recorded alike (cg alone: the automatic choice
+# times its solvers) compared: no error anywhere.
+tetskin_cli_test(compare_run_a SETUP compare_runs
+  ARGS simulate ${data}/bunny.json --level 0 --solver cg --steps 6 --every 2 -o ${cli_out}/compare_a.pvd -q)
+tetskin_cli_test(compare_run_b SETUP compare_runs
+  ARGS simulate ${data}/bunny.json --level 0 --solver cg --steps 6 --every 2 -o ${cli_out}/compare_b.pvd -q)
+tetskin_cli_test(compare_recorded_runs REQUIRES compare_runs
+  STDOUT "^compared 2 recorded runs of [^\n]*bunny.json over 4 frames, reference [^\n]*compare_a.pvd .level 0.\n[^\n]*\n[^\n]*\n  0 ref +598 +- +.reference. *\n  0 +598 +- +0% / 0% / 0% +0 / 0 / 0\n"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --runs ${cli_out}/compare_a.pvd ${cli_out}/compare_b.pvd
+       -o ${cli_out}/compare_ab.pvd -q)
+
+# Bad input: named, nothing written.
+tetskin_cli_test(compare_one_level FAIL STATUS 1
+  STDERR "^error: --levels: level 2 alone: name another level to compare with the reference .3 levels in the dataset.\n$"
+  NOT_EXIST ${cli_out}/one_level.pvd
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --levels -1 -o ${cli_out}/one_level.pvd)
+tetskin_cli_test(compare_level_twice FAIL STATUS 1
+  STDERR "^error: --levels: level 0 is given twice\n$"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --levels 0,-3 -o ${cli_out}/twice.pvd)
+tetskin_cli_test(compare_node_list FAIL STATUS 1
+  STDERR "^error: --fixed-nodes: names nodes of one level, and compare runs several: hold nodes by --fixed-box[^\n]*\n$"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --fixed-nodes ${tdata}/held_nodes.txt -o ${cli_out}/held.pvd)
+tetskin_cli_test(compare_runs_and_steps FAIL STATUS 1 REQUIRES compare_runs
+  STDERR "^error: --steps: compares simulated levels. --runs compares recorded runs .the first the reference. frame by frame\n$"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --runs ${cli_out}/compare_a.pvd ${cli_out}/compare_b.pvd
+       --steps 3 -o ${cli_out}/runs_steps.pvd)
+tetskin_cli_test(compare_not_a_pvd FAIL STATUS 1
+  STDERR "^error: [^\n]*out.vtp[^\n]*\n$"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj -o ${cli_out}/out.vtp)
