@@ -5,7 +5,8 @@
 #   ./tetskin.sh build  install what is missing and build (Release, in build/), the
 #                       ParaView plugin included
 #   ./tetskin.sh deps   only install the Debian packages
-# Environment: BUILD_DIR (default build), JOBS (default: all cores).
+# Environment: BUILD_DIR (default build), JOBS (default: all cores),
+# FUZZ_SECONDS (test: each reader's fuzzer runs this long, default 30).
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -15,7 +16,8 @@ export CCACHE_BASEDIR="$ROOT"
 JOBS=${JOBS:-$(nproc)}
 
 # (libsuitesparse-dev, libhypre-dev: solver_bench's baselines, CHOLMOD and
-# BoomerAMG; libopenblas0-pthread: the BLAS CHOLMOD's factorization runs on.)
+# BoomerAMG; libopenblas0-pthread: the BLAS CHOLMOD's factorization runs on;
+# clang, libclang-rt-14-dev: the readers' fuzzers, libFuzzer.)
 DEPS=(
   cmake ninja-build g++ pkg-config ccache dpkg-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
@@ -26,6 +28,7 @@ DEPS=(
   paraview-dev qtxmlpatterns5-dev-tools
   pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9
   libsuitesparse-dev libhypre-dev libopenblas0-pthread
+  clang libclang-rt-14-dev
 )
 
 log() { printf '\n==> %s\n' "$*" >&2; }
@@ -144,10 +147,22 @@ sanitized_tests() {
     -DTETSKIN_BUILD_BENCHMARKS=OFF
   # (The tests are listed by running them at build time: leaks, which the
   # run below does not check either, must not fail that; #53 takes LSan on.)
-  ASAN_OPTIONS=detect_leaks=0 cmake --build "$dir" -j "$JOBS" --target core_tests io_tests vtkio_tests simulation_kernel_tests session_tests \
-    tetskin
+  ASAN_OPTIONS=detect_leaks=0 cmake --build "$dir" -j "$JOBS" --target core_tests io_tests \
+    vtkio_tests simulation_kernel_tests session_tests fuzz_corpus_tests tetskin
   (cd "$dir" && ASAN_OPTIONS=detect_leaks=0 ctest -j "$JOBS" -L "^(core|io|vtkio|cli|simulation-kernels|session)$" \
     -LE rendering --output-on-failure --no-tests=error)
+}
+
+fuzz_tests() {
+  # Every reader's libFuzzer target for FUZZ_SECONDS on the committed corpus
+  # (tests/fuzz; its seeds and regressions also run in every build's suite).
+  log "the readers' fuzzers (libFuzzer, ASan + UBSan), ${FUZZ_SECONDS:-30} s each"
+  local dir=${BUILD_DIR}-fuzz
+  CC=clang CXX=clang++ configure "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETSKIN_FUZZ=ON \
+    -DTETSKIN_BUILD_GUI=OFF -DTETSKIN_BUILD_BENCHMARKS=OFF -DTETSKIN_BUILD_PYTHON=OFF \
+    -DTETSKIN_BUILD_PARAVIEW_PLUGIN=OFF
+  cmake --build "$dir" -j "$JOBS" --target fuzzers
+  tests/fuzz/run_fuzzers.sh "$dir" "${FUZZ_SECONDS:-30}"
 }
 
 # The build with the ParaView plugin and tests: ParaView's Python packages
@@ -161,6 +176,7 @@ build_with_paraview() {
 run_tests() {
   build_with_paraview
   sanitized_tests
+  fuzz_tests
   log "the whole test suite"
   # --repeat until-pass:3: a test that fails is run again, up to 3 times in all
   # (a real failure fails all three times).

@@ -12,3 +12,13 @@ if(TETSKIN_SANITIZE)
     -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(tetskin_flags INTERFACE -fsanitize=address,undefined)
 endif()
+# The fuzzers' build (tests/fuzz): every module instrumented for libFuzzer's
+# coverage and checked by ASan and UBSan; the targets link libFuzzer itself.
+if(TETSKIN_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "TETSKIN_FUZZ needs clang's libFuzzer: configure with CC=clang CXX=clang++")
+  endif()
+  target_compile_options(tetskin_flags INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+    -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(tetskin_flags INTERFACE -fsanitize=address,undefined)
+endif()

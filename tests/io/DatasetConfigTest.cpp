@@ -227,6 +227,9 @@ TEST(DatasetConfig, SyntaxErrorNamesTheLine) {
   expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2.0,,)"), "invalid JSON", 12);
   expectConfigError("", "invalid JSON", 1);
   expectConfigError("[1, 2]", "/: must be an object");
+  // A number beyond a double: a clean error on its line (found by fuzz_config).
+  expectConfigError(replaced(kConfig, R"("scale": 2.0,)", R"("scale": 2e999,)"),
+                    "invalid JSON: number overflow parsing '2e999'", 12);
 }
 
 // The one check of the fur ranges (the config reader and render's options):

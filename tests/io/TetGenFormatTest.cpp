@@ -193,6 +193,9 @@ TEST(TetGenFormat, MalformedInputNamesFileAndLine) {
   expectError(face, "1 0\n0 0 1\n", 2, "expected 4 to 6 values");
   expectError(poly, "0 3 0 0\n1 0\n1\n4 1 2 3\n", 4, "declares 4 corners but lists 3");
   expectError(poly, "0 3 0 0\n2 0\n1\n3 1 2 3\n", 4, "unexpected end of file");
+  // A facet naming a node the file does not list (found by fuzz_tetgen).
+  expectError(poly, "3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n1 0\n1\n3 1 13 2\n", 7,
+              "node index 13 names no node: the file lists 3 from 1");
 }
 
 TEST(TetGenFormat, BinaryGarbageIsAClearError) {

@@ -190,6 +190,20 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     if (const auto pos = what.find("parse error"); pos != std::string::npos)
       what = what.substr(pos);
     throw Error(sourceName, line, "invalid JSON: " + what);
+  } catch (const json::exception& e) {
+    // A number beyond a double ("number overflow parsing '1e999'", found by
+    // fuzz_config): the line of the text it quotes.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    long line = 0;
+    if (open != std::string::npos && close > open + 1)
+      if (const std::size_t at = content.find(what.substr(open + 1, close - open - 1));
+          at != std::string_view::npos)
+        line = 1 + std::count(content.begin(), content.begin() + static_cast<long>(at), '\n');
+    const std::size_t bracket = what.find("] ");
+    throw Error(
+        sourceName, line,
+        "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
   Fields top(root, "", sourceName);
   DatasetConfig config;

@@ -202,8 +202,15 @@ PolyFile parsePoly(std::string_view content, const std::string& sourceName, int 
         lines.fail("polygon declares " + std::to_string(corners) + " corners but lists " +
                    std::to_string(lines.size() - 1));
       std::vector<int>& polygon = facet.polygons.emplace_back();
-      for (std::size_t k = 1; k < lines.size(); ++k)
-        polygon.push_back(toNodeIndex(lines, lines[k], base));
+      for (std::size_t k = 1; k < lines.size(); ++k) {
+        const int id = toNodeIndex(lines, lines[k], base);
+        // (A .poly whose points are in a separate .node file is checked
+        // against it by whoever pairs the two.)
+        if (!poly.nodesInSeparateFile && id >= poly.nodes.points.rows())
+          lines.fail("node index " + std::string(lines[k]) + " names no node: the file lists " +
+                     std::to_string(poly.nodes.points.rows()) + " from " + std::to_string(base));
+        polygon.push_back(id);
+      }
     }
     parseHolePoints(lines, holeCount, "a facet hole", "facet hole", facet.holes);
   }
