@@ -5,10 +5,17 @@
 # grown. A crash or a broken invariant stops it with the input written to
 # BUILD/fuzz-crashes/ (commit it under tests/fuzz/regressions/TARGET/: the
 # regression suite then runs it in every build).
+# The run is reproducible: libFuzzer's seed is FUZZ_SEED (default 1) and a
+# target stops after FUZZ_RUNS inputs (default 200000) or SECONDS, whichever
+# comes first: a slower machine runs a prefix of the same inputs, so CI
+# fails only where a run here with the same settings fails. FUZZ_SEED=0
+# (a random seed) and a long SECONDS explore further.
 # Usage: run_fuzzers.sh BUILD_DIR [SECONDS_PER_TARGET (default 30)]
 set -euo pipefail
 build=$(cd "$1" && pwd)
 seconds=${2:-30}
+seed=${FUZZ_SEED:-1}
+runs=${FUZZ_RUNS:-200000}
 here=$(cd "$(dirname "$0")" && pwd)
 crashes="$build/fuzz-crashes"
 mkdir -p "$crashes"
@@ -20,18 +27,19 @@ for corpus in "$here"/corpus/*/; do
   log="$build/fuzz-$target.log"
   # (A grown corpus lands in $work, not in the committed one.)
   if ! "$build/tests/fuzz/fuzz_$target" "$work" "$corpus" -max_total_time="$seconds" \
+      -seed="$seed" -runs="$runs" \
       -dict="$here/dict/$target.dict" -artifact_prefix="$crashes/$target-" \
       -print_final_stats=1 -rss_limit_mb=2048 -timeout=10 >"$log" 2>&1; then
     echo "fuzz_$target FAILED: see $log and $crashes" >&2
     tail -30 "$log" >&2
     status=1
   fi
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+  executed=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
   last=$(grep -E '^#[0-9]+' "$log" | tail -1)
   cov=$(echo "$last" | grep -o 'cov: [0-9]*' | grep -o '[0-9]*' || echo '?')
   ft=$(echo "$last" | grep -o 'ft: [0-9]*' | grep -o '[0-9]*' || echo '?')
   units=$(echo "$last" | grep -o 'corp: [0-9]*' | grep -o '[0-9]*' || echo '?')
-  printf '%-12s %12s %8s %8s %8s\n' "$target" "$runs" "$cov" "$ft" "$units"
+  printf '%-12s %12s %8s %8s %8s\n' "$target" "$executed" "$cov" "$ft" "$units"
   rm -rf "$work"
 done
 exit $status

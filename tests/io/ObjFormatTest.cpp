@@ -174,6 +174,32 @@ TEST(ObjFormat, WriteThenReadIsExact) {
   EXPECT_EQ(back.texcoords, m.texcoords);
 }
 
+// A vertex no face uses keeps the texture coordinate and normal of its
+// own number, as a file written one per vertex has them (ours do), so such
+// a surface reads back as it was written (found by fuzz_obj: it took the
+// file's first ones, which changed on the way round).
+TEST(ObjFormat, AnUnusedVertexKeepsTheAttributesOfItsNumber) {
+  const SurfaceMesh m = parseObj(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 0.25\n"
+      "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 1 0\n"
+      "f 1/1/1 2/2/2 3/3/3\n",
+      "u.obj");
+  ASSERT_EQ(m.vertexCount(), 4);
+  EXPECT_EQ(m.texcoords.row(3), Eigen::RowVector2d(0.5, 0.25));
+  EXPECT_EQ(m.normals.row(3), Eigen::RowVector3d(0, 1, 0));
+  test::ScratchDir dir;
+  writeObj(dir / "u.obj", m);
+  const SurfaceMesh back = readObj(dir / "u.obj");
+  EXPECT_EQ(back.positions, m.positions);
+  EXPECT_EQ(back.texcoords, m.texcoords);
+  EXPECT_EQ(back.normals, m.normals);
+  // Fewer attributes than positions: the first.
+  const SurfaceMesh few =
+      parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nvt 0.5 0.5\nf 1/1 2/1 3/1\n", "f.obj");
+  EXPECT_EQ(few.texcoords.row(3), Eigen::RowVector2d(0.5, 0.5));
+}
+
 TEST(ObjFormat, MissingFileIsAnError) {
   try {
     readObj("/nonexistent/dir/x.obj");

@@ -138,7 +138,10 @@ class ObjParser {
     }
     // One output vertex per distinct (position, texcoord, normal) in use; a
     // position never used by a face keeps one vertex of its own so vertex
-    // numbering stays close to the file's.
+    // numbering stays close to the file's, with the texture coordinate and
+    // normal of its own number where the file has that many (as a file
+    // written one per vertex has: ours, read back, keeps them), else the
+    // first. (fuzz_obj found the first alone broke the round trip.)
     std::map<Corner, int> vertexOf;
     std::vector<Corner> vertices;
     std::vector<char> positionUsed(positions_.size(), 0);
@@ -158,7 +161,11 @@ class ObjParser {
         mesh.triangles(static_cast<Index>(t), k) = it->second;
       }
     for (std::size_t p = 0; p < positions_.size(); ++p)
-      if (!positionUsed[p]) vertices.push_back(Corner{static_cast<int>(p), 0, 0});
+      if (!positionUsed[p]) {
+        const auto own = [p](std::size_t count) { return p < count ? static_cast<int>(p) : 0; };
+        vertices.push_back(
+            Corner{static_cast<int>(p), own(texcoords_.size()), own(normals_.size())});
+      }
     const Index n = static_cast<Index>(vertices.size());
     mesh.positions.resize(n, 3);
     if (allTex) mesh.texcoords.resize(n, 2);
