@@ -70,9 +70,10 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
     deformer.deform(datasetPositions(dataset.mesh, level, state.positions, recorded.file(i)),
                     positions, normals);
     // With the frame's stress and strain on the skin, as simulate writes it.
-    bound.deformed = DeformedState{positions, normals,
-                                   skinFields(dataset.mesh, level, bound.binding,
-                                              state.vonMisesStress, state.equivalentStrain)};
+    bound.deformed = DeformedState{
+        positions, normals,
+        skinFields(rest, dataset.mesh.levels[static_cast<std::size_t>(level)].firstNode,
+                   bound.binding, state.vonMisesStress, state.equivalentStrain)};
     series.addSurfaceFrame(recorded.time(i), bound);
   }
   std::printf("wrote %s (%zu frames of %lld vertices deformed by %s, t %g .. %g s)\n",

@@ -498,13 +498,17 @@ bool MainWindow::showRunFrame() {
 }
 
 void MainWindow::showOnSkin(const Eigen::VectorXd& stress, const Eigen::VectorXd& strain) {
-  if (!scene_->colorsBySimulation() || !scene_->hasSurface()) return;
+  // (The simulated level is the scene's: its rest mesh is the runner's.)
+  if (!scene_->colorsBySimulation() || !scene_->hasSurface() || !runner_) return;
   const bool byStress = scene_->colorBy() == ColorBy::VonMisesStress;
   const Eigen::VectorXd& values = byStress ? stress : strain;
   if (values.size() == 0) return;
+  const TetMesh& rest = runner_->simulation().restMesh();
+  const Index firstNode =
+      scene_->dataset().mesh.levels[static_cast<std::size_t>(scene_->level())].firstNode;
   const std::vector<PointScalars> fields =
-      byStress ? skinFields(scene_->dataset().mesh, scene_->level(), scene_->binding(), values, {})
-               : skinFields(scene_->dataset().mesh, scene_->level(), scene_->binding(), {}, values);
+      byStress ? skinFields(rest, firstNode, scene_->binding(), values, {})
+               : skinFields(rest, firstNode, scene_->binding(), {}, values);
   scene_->setSurfaceScalars(scene_->colorBy(), fields.front().values);
 }
 

@@ -19,6 +19,7 @@ namespace tetskin {
 
 struct LevelComparison::Run {
   int level = 0;
+  TetMesh rest;                                // the level at rest, its own numbering
   std::unique_ptr<SimulationSession> session;  // simulated runs
   FrameState recordedState;                    // recorded runs: the current frame
   BoundSurface bound;                          // deformed at the last compare()
@@ -97,8 +98,8 @@ LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const Surface
   // Each run at its first frame.
   recordedFrame_ = 0;
   for (std::size_t r = 0; r < runs_.size(); ++r)
-    runs_[r]->recordedState = recorded_[r].read(0, extractLevel(dataset_, runs_[r]->level),
-                                                "level " + std::to_string(runs_[r]->level));
+    runs_[r]->recordedState =
+        recorded_[r].read(0, runs_[r]->rest, "level " + std::to_string(runs_[r]->level));
 }
 
 LevelComparison::~LevelComparison() = default;
@@ -106,6 +107,7 @@ LevelComparison::~LevelComparison() = default;
 void LevelComparison::bind(int level) {
   auto run = std::make_unique<Run>();
   run->level = level;
+  run->rest = extractLevel(dataset_, level);
   run->bound.surface = surface_;
   run->bound.binding = bindSurface(surface_, dataset_, level);
   run->bound.dataset = datasetPath_;
@@ -150,9 +152,8 @@ void LevelComparison::advance() {
                 "has no frame after frame " + std::to_string(recordedFrame_));
   ++recordedFrame_;
   for (std::size_t r = 0; r < runs_.size(); ++r)
-    runs_[r]->recordedState =
-        recorded_[r].read(recordedFrame_, extractLevel(dataset_, runs_[r]->level),
-                          "level " + std::to_string(runs_[r]->level));
+    runs_[r]->recordedState = recorded_[r].read(recordedFrame_, runs_[r]->rest,
+                                                "level " + std::to_string(runs_[r]->level));
 }
 
 Points3 LevelComparison::currentPositions(std::size_t r) const {
@@ -175,9 +176,9 @@ const ComparedFrame& LevelComparison::compare() {
       deformed.scalars = session.surfaceFields(session.simulation().frameFields(session.state()),
                                                run.bound.binding);
     } else {
-      deformed.scalars =
-          skinFields(dataset_, run.level, run.bound.binding, run.recordedState.vonMisesStress,
-                     run.recordedState.equivalentStrain);
+      deformed.scalars = skinFields(
+          run.rest, dataset_.levels[static_cast<std::size_t>(run.level)].firstNode,
+          run.bound.binding, run.recordedState.vonMisesStress, run.recordedState.equivalentStrain);
     }
     frame.stepSeconds.push_back(
         run.frameSteps > 0 ? run.frameStepSeconds / static_cast<double>(run.frameSteps) : 0.0);

@@ -127,7 +127,9 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
 
 std::vector<PointScalars> SimulationSession::surfaceFields(const FrameFields& fields,
                                                            const SurfaceBinding& binding) const {
-  return skinFields(dataset_, level_, binding, fields.vonMisesStress, fields.equivalentStrain);
+  return skinFields(simulation_->restMesh(),
+                    dataset_.levels[static_cast<std::size_t>(level_)].firstNode, binding,
+                    fields.vonMisesStress, fields.equivalentStrain);
 }
 
 }  // namespace tetskin

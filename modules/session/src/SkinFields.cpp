@@ -6,11 +6,9 @@
 
 namespace tetskin {
 
-std::vector<PointScalars> skinFields(const MultiLevelTetMesh& dataset, int level,
+std::vector<PointScalars> skinFields(const TetMesh& rest, Index firstNode,
                                      const SurfaceBinding& binding, const Eigen::VectorXd& stress,
                                      const Eigen::VectorXd& strain) {
-  const Index firstNode = dataset.levels.at(static_cast<std::size_t>(level)).firstNode;
-  const TetMesh rest = extractLevel(dataset, level);
   std::vector<PointScalars> fields;
   if (stress.size() > 0)
     fields.push_back(

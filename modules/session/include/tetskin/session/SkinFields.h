@@ -15,11 +15,14 @@
 
 namespace tetskin {
 
-// Per element of `level` of `dataset`, `stress` and `strain` carried to the
-// surface `binding` binds to that level; each left out where it is empty
-// (a recorded frame without it). Throws Error for values of another count
-// than the level's elements, or a binding to another level's nodes.
-std::vector<PointScalars> skinFields(const MultiLevelTetMesh& dataset, int level,
+// Per element of a level (`rest`, its own numbering; `firstNode`, its first
+// node in the dataset's numbering, which the binding's ids use), `stress`
+// and `strain` carried to the surface `binding` binds to that level; each
+// left out where it is empty (a recorded frame without it). Throws Error
+// for values of another count than the level's elements, or a binding to
+// another level's nodes. (The caller's rest mesh: a frame's fields are
+// carried without copying the level out of the dataset again.)
+std::vector<PointScalars> skinFields(const TetMesh& rest, Index firstNode,
                                      const SurfaceBinding& binding, const Eigen::VectorXd& stress,
                                      const Eigen::VectorXd& strain);
 
