@@ -144,7 +144,6 @@ void LevelComparison::advance() {
       ++run->steps;
       ++run->frameSteps;
     }
-    ++steps_;
     return;
   }
   if (recordedFrame_ + 1 >= recordedFrames())
@@ -166,7 +165,7 @@ const ComparedFrame& LevelComparison::compare() {
   ComparedFrame frame;
   frame.time = simulated() ? runs_.front()->session->simulation().time()
                            : recorded_.front().time(recordedFrame_);
-  frame.steps = steps_;
+  frame.steps = runs_.front()->steps;  // (every run takes each step)
   for (std::size_t r = 0; r < runs_.size(); ++r) {
     Run& run = *runs_[r];
     DeformedState& deformed = *run.bound.deformed;

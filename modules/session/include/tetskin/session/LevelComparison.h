@@ -123,7 +123,6 @@ class LevelComparison {
   std::vector<std::unique_ptr<Run>> runs_;
   std::vector<RecordedRun> recorded_;  // empty when simulated
   std::size_t recordedFrame_ = 0;
-  Index steps_ = 0;
   std::unique_ptr<RunRecorder> recorder_;
   std::vector<ComparedFrame> frames_;
 
