@@ -22,3 +22,13 @@ if(TETSKIN_FUZZ)
     -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(tetskin_flags INTERFACE -fsanitize=address,undefined)
 endif()
+# The race check (issue #53): every module under ThreadSanitizer. Its
+# parallel loops then run on std::threads instead of TBB, which TSan cannot
+# see into (tetskin/core/Parallel.h).
+if(TETSKIN_TSAN)
+  if(TETSKIN_SANITIZE OR TETSKIN_FUZZ)
+    message(FATAL_ERROR "TETSKIN_TSAN cannot be combined with ASan (TETSKIN_SANITIZE, TETSKIN_FUZZ)")
+  endif()
+  target_compile_options(tetskin_flags INTERFACE -fsanitize=thread -fno-omit-frame-pointer)
+  target_link_options(tetskin_flags INTERFACE -fsanitize=thread)
+endif()

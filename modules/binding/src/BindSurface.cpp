@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/binding/BindSurface.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <array>
@@ -13,6 +10,7 @@
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/core/Parallel.h"
 #include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/spatial/AabbTree.h"
 #include "tetskin/spatial/TetLocator.h"
@@ -137,7 +135,7 @@ void checkSurface(const SurfaceMesh& surface) {
 
 template <typename PerVertex>
 void forEachVertex(Index n, PerVertex&& f) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 256), [&](const tbb::blocked_range<Index>& r) {
+  parallelFor<Index>(0, n, 256, [&](const IndexRange<Index>& r) {
     for (Index v = r.begin(); v != r.end(); ++v) f(v);
   });
 }

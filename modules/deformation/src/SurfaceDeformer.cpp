@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/deformation/SurfaceDeformer.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Geometry>
 #include <string>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
@@ -60,7 +58,7 @@ void SurfaceDeformer::deformPositions(ConstPoints3Ref control, Points3Ref positi
   auto node = [x, controlStride](int id) {
     return Eigen::Map<const Eigen::Vector3d>(x + controlStride * id);
   };
-  auto kernel = [&](const tbb::blocked_range<Index>& range) {
+  auto kernel = [&](const IndexRange<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Record& r = records[v];
       Eigen::Map<Eigen::Vector3d> p(out + stride * v);
@@ -79,7 +77,7 @@ void SurfaceDeformer::deformPositions(ConstPoints3Ref control, Points3Ref positi
       }
     }
   };
-  tbb::parallel_for(tbb::blocked_range<Index>(0, vertexCount(), 4096), kernel);
+  parallelFor<Index>(0, vertexCount(), 4096, kernel);
 }
 
 void SurfaceDeformer::deform(ConstPoints3Ref control, Points3& positions, Points3& normals) {

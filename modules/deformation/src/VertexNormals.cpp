@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/deformation/VertexNormals.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Geometry>
+
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
@@ -27,7 +26,7 @@ void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& tri
                           const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
                           Points3Ref normals) {
   constexpr Index kGrain = 4096;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, triangles.rows(), kGrain), [&](const auto& r) {
+  parallelFor<Index>(0, triangles.rows(), kGrain, [&](const auto& r) {
     for (Index t = r.begin(); t != r.end(); ++t) {
       const Eigen::Vector3d a = positions.row(triangles(t, 0));
       const Eigen::Vector3d b = positions.row(triangles(t, 1));
@@ -36,7 +35,7 @@ void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& tri
       faceScratch.row(t) = (b - a).cross(c - a).transpose();
     }
   });
-  tbb::parallel_for(tbb::blocked_range<Index>(0, positions.rows(), kGrain), [&](const auto& r) {
+  parallelFor<Index>(0, positions.rows(), kGrain, [&](const auto& r) {
     for (Index v = r.begin(); v != r.end(); ++v) {
       Eigen::Vector3d n = Eigen::Vector3d::Zero();
       for (int i = adjacency.offsets[static_cast<std::size_t>(v)];

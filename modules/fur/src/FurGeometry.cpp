@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/fur/FurGeometry.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <unordered_map>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
@@ -92,7 +91,7 @@ void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
                const FurDynamicsOptions& dynamics, Points3Ref out) {
   const Index n = mesh.vertexCount();
   requireRows("fur points", out.rows(), n, "fur vertices");
-  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 4096), [&](const tbb::blocked_range<Index>& r) {
+  parallelFor<Index>(0, n, 4096, [&](const IndexRange<Index>& r) {
     for (Index i = r.begin(); i != r.end(); ++i) {
       const Index v = mesh.source[static_cast<std::size_t>(i)];
       const Eigen::Vector3d p = positions.row(v);
@@ -105,7 +104,7 @@ void furPoints(const ConstPoints3Ref& positions, const ConstPoints3Ref& normals,
 void furNormals(const ConstPoints3Ref& normals, const FurMesh& mesh, Points3Ref out) {
   const Index n = mesh.vertexCount();
   requireRows("fur normals", out.rows(), n, "fur vertices");
-  tbb::parallel_for(tbb::blocked_range<Index>(0, n, 8192), [&](const tbb::blocked_range<Index>& r) {
+  parallelFor<Index>(0, n, 8192, [&](const IndexRange<Index>& r) {
     for (Index i = r.begin(); i != r.end(); ++i)
       out.row(i) = normals.row(mesh.source[static_cast<std::size_t>(i)]);
   });

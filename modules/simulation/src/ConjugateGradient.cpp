@@ -10,7 +10,6 @@
 // second updates x and r, runs a per-node preconditioner on each chunk of
 // nodes it has just updated, and forms the dot products for the next alpha
 // and beta.
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 

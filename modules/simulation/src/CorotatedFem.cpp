@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/simulation/CorotatedFem.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
-
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -15,6 +12,7 @@
 #include "CorotatedElementPass.h"
 #include "CorotatedLanes.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 namespace {
@@ -279,7 +277,7 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, Spar
   double* values = matrix.valuePtr();
   const int* outer = matrix.outerIndexPtr();
   // Clear each node's three rows and force, then put D on the diagonal.
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 512), [&](const auto& nodes) {
+  parallelFor<Index>(0, nodeCount(), 512, [&](const auto& nodes) {
     for (Index v = nodes.begin(); v != nodes.end(); ++v) {
       std::fill(values + outer[3 * v], values + outer[3 * v + 3], 0.0);
       force.segment<3>(3 * v).setZero();
@@ -307,14 +305,13 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, Spar
   args.rotations = rotations_.data()->data();
   const corotated::GroupsKernel kernel = corotated::groupsKernel(kernel_);
   for (const std::vector<int>& colour : colors_) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 1),
-                      [&](const auto& chunks) {
-                        for (std::size_t c = chunks.begin(); c != chunks.end(); ++c) {
-                          const auto first = static_cast<std::size_t>(colour[c]);
-                          const std::size_t last = std::min(scatter_.size(), first + kChunk);
-                          kernel(args, first / 4, (last + 3) / 4);
-                        }
-                      });
+    parallelFor<std::size_t>(0, colour.size(), 1, [&](const auto& chunks) {
+      for (std::size_t c = chunks.begin(); c != chunks.end(); ++c) {
+        const auto first = static_cast<std::size_t>(colour[c]);
+        const std::size_t last = std::min(scatter_.size(), first + kChunk);
+        kernel(args, first / 4, (last + 3) / 4);
+      }
+    });
   }
 }
 
@@ -323,9 +320,9 @@ double CorotatedFem::elasticEnergy(const Eigen::VectorXd& x) const {
   // per element: 7.7 ms at 12.7k elements on one core, which simulate
   // --log and the GUI's energy plot pay every sample), summed in a fixed
   // order: the same state gives the same energy, bit for bit.
-  return tbb::parallel_deterministic_reduce(
-      tbb::blocked_range<std::size_t>(0, scatter_.size(), 1024), 0.0,
-      [&](const tbb::blocked_range<std::size_t>& elements, double energy) {
+  return parallelDeterministicReduce<std::size_t>(
+      0, scatter_.size(), 1024, 0.0,
+      [&](const IndexRange<std::size_t>& elements, double energy) {
         for (std::size_t e = elements.begin(); e < elements.end(); ++e) {
           const Eigen::Matrix3d F = deformationGradient(e, x);
           const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
@@ -343,16 +340,15 @@ CorotatedFem::ElementMeasures CorotatedFem::elementMeasures(const Eigen::VectorX
   const auto deviatorNorm = [](const Eigen::Matrix3d& t) {
     return (t - t.trace() / 3.0 * Eigen::Matrix3d::Identity()).norm();
   };
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, scatter_.size(), 1024),
-                    [&](const auto& range) {
-                      for (std::size_t e = range.begin(); e < range.end(); ++e) {
-                        const Eigen::Matrix3d F = deformationGradient(e, x);
-                        const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
-                        const int id = scatter_[e].id;
-                        m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(strain));
-                        m.equivalentStrain[id] = std::sqrt(2.0 / 3.0) * deviatorNorm(strain);
-                      }
-                    });
+  parallelFor<std::size_t>(0, scatter_.size(), 1024, [&](const auto& range) {
+    for (std::size_t e = range.begin(); e < range.end(); ++e) {
+      const Eigen::Matrix3d F = deformationGradient(e, x);
+      const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
+      const int id = scatter_[e].id;
+      m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(strain));
+      m.equivalentStrain[id] = std::sqrt(2.0 / 3.0) * deviatorNorm(strain);
+    }
+  });
   return m;
 }
 
@@ -364,22 +360,21 @@ Eigen::VectorXd CorotatedFem::dampedElasticForce(const Eigen::VectorXd& x, const
   // K_e R^T v rotated back. Elements in parallel, scattered in order: the
   // same state gives the same forces, bit for bit.
   std::vector<Eigen::Matrix<double, 3, 4>> perElement(scatter_.size());
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, scatter_.size(), 512), [&](const auto& range) {
-        for (std::size_t e = range.begin(); e < range.end(); ++e) {
-          const Eigen::Matrix3d F = deformationGradient(e, x);
-          const Eigen::Matrix3d R = rotation(F);
-          Eigen::Matrix3d rate = Eigen::Matrix3d::Zero();
-          for (int k = 0; k < 4; ++k)
-            rate.noalias() += v.segment<3>(3 * node(e, k)) * gradient(e, k).transpose();
-          const Eigen::Matrix3d rotatedRate = R.transpose() * rate;
-          const Eigen::Matrix3d stress =
-              linearStress(rotatedFrameStrain(R, F)) +
-              beta * linearStress(0.5 * (rotatedRate + rotatedRate.transpose()));
-          const Eigen::Matrix3d P = -volume(e) * R * stress;
-          for (int k = 0; k < 4; ++k) perElement[e].col(k) = P * gradient(e, k);
-        }
-      });
+  parallelFor<std::size_t>(0, scatter_.size(), 512, [&](const auto& range) {
+    for (std::size_t e = range.begin(); e < range.end(); ++e) {
+      const Eigen::Matrix3d F = deformationGradient(e, x);
+      const Eigen::Matrix3d R = rotation(F);
+      Eigen::Matrix3d rate = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < 4; ++k)
+        rate.noalias() += v.segment<3>(3 * node(e, k)) * gradient(e, k).transpose();
+      const Eigen::Matrix3d rotatedRate = R.transpose() * rate;
+      const Eigen::Matrix3d stress =
+          linearStress(rotatedFrameStrain(R, F)) +
+          beta * linearStress(0.5 * (rotatedRate + rotatedRate.transpose()));
+      const Eigen::Matrix3d P = -volume(e) * R * stress;
+      for (int k = 0; k < 4; ++k) perElement[e].col(k) = P * gradient(e, k);
+    }
+  });
   Eigen::VectorXd force = Eigen::VectorXd::Zero(dofCount());
   for (std::size_t e = 0; e < scatter_.size(); ++e)
     for (int k = 0; k < 4; ++k) force.segment<3>(3 * node(e, k)) += perElement[e].col(k);

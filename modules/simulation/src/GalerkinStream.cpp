@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "GalerkinStream.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
+
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 namespace {
@@ -85,23 +85,22 @@ void GalerkinStream::compute(const SparseMatrix& fine, SparseMatrix& coarse) con
   if (coarse.nonZeros() != coarse_.nonZeros()) coarse = coarse_;
   const double* a = fine.valuePtr();
   double* c = coarse.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, targets_.size(), 256),
-                    [&](const auto& range) {
-                      for (std::size_t t = range.begin(); t != range.end(); ++t) {
-                        double block[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-                        for (int k = offsets_[t]; k < offsets_[t + 1]; ++k) {
-                          const double w = weights_[static_cast<std::size_t>(k)];
-                          const double* s = a + sources_[static_cast<std::size_t>(k)];
-                          const int stride = fineRowStride_[static_cast<std::size_t>(k)];
-                          for (int r = 0; r < 3; ++r)
-                            for (int q = 0; q < 3; ++q) block[3 * r + q] += w * s[r * stride + q];
-                        }
-                        double* out = c + targets_[t];
-                        const int stride = coarseRowStride_[t];
-                        for (int r = 0; r < 3; ++r)
-                          for (int q = 0; q < 3; ++q) out[r * stride + q] = block[3 * r + q];
-                      }
-                    });
+  parallelFor<std::size_t>(0, targets_.size(), 256, [&](const auto& range) {
+    for (std::size_t t = range.begin(); t != range.end(); ++t) {
+      double block[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+      for (int k = offsets_[t]; k < offsets_[t + 1]; ++k) {
+        const double w = weights_[static_cast<std::size_t>(k)];
+        const double* s = a + sources_[static_cast<std::size_t>(k)];
+        const int stride = fineRowStride_[static_cast<std::size_t>(k)];
+        for (int r = 0; r < 3; ++r)
+          for (int q = 0; q < 3; ++q) block[3 * r + q] += w * s[r * stride + q];
+      }
+      double* out = c + targets_[t];
+      const int stride = coarseRowStride_[t];
+      for (int r = 0; r < 3; ++r)
+        for (int q = 0; q < 3; ++q) out[r * stride + q] = block[3 * r + q];
+    }
+  });
   for (std::size_t I = 0; I < reached_.size(); ++I)
     if (!reached_[I]) {
       double* out = c + targets_[static_cast<std::size_t>(diagonal_[I])];

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/simulation/LinearSolvers.h"
 
-#include <tbb/parallel_for.h>
-
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -12,6 +10,7 @@
 
 #include "GalerkinStream.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
@@ -41,26 +40,25 @@ void multiplyBlocks(const SparseMatrix& A, const double* in, double* out) {
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const double* values = A.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(A.rows() / 3), 256),
-                    [&](const auto& r) {
-                      for (int v = r.begin(); v != r.end(); ++v) {
-                        const int start = outer[3 * v], length = outer[3 * v + 1] - start;
-                        const int* columns = inner + start;
-                        const double* row0 = values + start;
-                        const double* row1 = values + outer[3 * v + 1];
-                        const double* row2 = values + outer[3 * v + 2];
-                        double s0 = 0, s1 = 0, s2 = 0;
-                        for (int k = 0; k < length; k += 3) {
-                          const double* xc = in + columns[k];
-                          s0 += row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
-                          s1 += row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
-                          s2 += row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
-                        }
-                        out[3 * v] = s0;
-                        out[3 * v + 1] = s1;
-                        out[3 * v + 2] = s2;
-                      }
-                    });
+  parallelFor<int>(0, static_cast<int>(A.rows() / 3), 256, [&](const auto& r) {
+    for (int v = r.begin(); v != r.end(); ++v) {
+      const int start = outer[3 * v], length = outer[3 * v + 1] - start;
+      const int* columns = inner + start;
+      const double* row0 = values + start;
+      const double* row1 = values + outer[3 * v + 1];
+      const double* row2 = values + outer[3 * v + 2];
+      double s0 = 0, s1 = 0, s2 = 0;
+      for (int k = 0; k < length; k += 3) {
+        const double* xc = in + columns[k];
+        s0 += row0[k] * xc[0] + row0[k + 1] * xc[1] + row0[k + 2] * xc[2];
+        s1 += row1[k] * xc[0] + row1[k + 1] * xc[1] + row1[k + 2] * xc[2];
+        s2 += row2[k] * xc[0] + row2[k + 1] * xc[1] + row2[k + 2] * xc[2];
+      }
+      out[3 * v] = s0;
+      out[3 * v + 1] = s1;
+      out[3 * v + 2] = s2;
+    }
+  });
 }
 
 // y = P x for a nodal P on xyz vectors of Scalar.
@@ -69,22 +67,21 @@ void multiplyNodalBlocks(const SparseMatrix& P, const Scalar* in, Scalar* out) {
   const int* outer = P.outerIndexPtr();
   const int* inner = P.innerIndexPtr();
   const double* values = P.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(P.rows()), 512),
-                    [&](const auto& r) {
-                      for (int i = r.begin(); i != r.end(); ++i) {
-                        Scalar s0 = 0, s1 = 0, s2 = 0;
-                        for (int k = outer[i]; k < outer[i + 1]; ++k) {
-                          const auto w = static_cast<Scalar>(values[k]);
-                          const Scalar* xc = in + 3 * inner[k];
-                          s0 += w * xc[0];
-                          s1 += w * xc[1];
-                          s2 += w * xc[2];
-                        }
-                        out[3 * i] = s0;
-                        out[3 * i + 1] = s1;
-                        out[3 * i + 2] = s2;
-                      }
-                    });
+  parallelFor<int>(0, static_cast<int>(P.rows()), 512, [&](const auto& r) {
+    for (int i = r.begin(); i != r.end(); ++i) {
+      Scalar s0 = 0, s1 = 0, s2 = 0;
+      for (int k = outer[i]; k < outer[i + 1]; ++k) {
+        const auto w = static_cast<Scalar>(values[k]);
+        const Scalar* xc = in + 3 * inner[k];
+        s0 += w * xc[0];
+        s1 += w * xc[1];
+        s2 += w * xc[2];
+      }
+      out[3 * i] = s0;
+      out[3 * i + 1] = s1;
+      out[3 * i + 2] = s2;
+    }
+  });
 }
 
 }  // namespace
@@ -210,7 +207,7 @@ void sweepNodes(const SweepOrder& order, int count, bool forward, Relax&& relax)
       for (int first : chunks) sweepChunk(first);
       continue;
     }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), 2), [&](const auto& range) {
+    parallelFor<std::size_t>(0, chunks.size(), 2, [&](const auto& range) {
       for (std::size_t c = range.begin(); c != range.end(); ++c) sweepChunk(chunks[c]);
     });
   }
@@ -264,7 +261,7 @@ void forwardSweepFromZero(const BasicNodeBlockMatrix<Scalar>& A,
 
 template <typename Scalar>
 void residualAfterSweepFromZero(const BasicNodeBlockMatrix<Scalar>& A, const Scalar* x, Scalar* r) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
+  parallelFor<Index>(0, A.nodeCount(), 256, [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       Scalar sums[3];
       blockRangeSum(A, A.laterBlocks(v), A.blockStarts()[static_cast<std::size_t>(v) + 1], x, -1,
@@ -292,16 +289,18 @@ template <typename Matrix, typename Scalar>
 void invertDiagonalBlocks(const Matrix& A, std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverse) {
   const Index nodes = A.rows() / 3;
   inverse.resize(static_cast<std::size_t>(nodes));
-  tbb::parallel_for(Index(0), nodes, [&](Index v) {
-    const Eigen::Matrix3d block = diagonalBlock(A, v);
-    const double size = block.norm();
-    Eigen::Matrix3d result;
-    double determinant = 0;
-    bool invertible = false;
-    block.computeInverseAndDetWithCheck(result, determinant, invertible,
-                                        1e-12 * size * size * size);
-    inverse[static_cast<std::size_t>(v)] =
-        (invertible ? result : Eigen::Matrix3d::Identity()).cast<Scalar>();
+  parallelFor<Index>(0, nodes, 256, [&](const IndexRange<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Eigen::Matrix3d block = diagonalBlock(A, v);
+      const double size = block.norm();
+      Eigen::Matrix3d result;
+      double determinant = 0;
+      bool invertible = false;
+      block.computeInverseAndDetWithCheck(result, determinant, invertible,
+                                          1e-12 * size * size * size);
+      inverse[static_cast<std::size_t>(v)] =
+          (invertible ? result : Eigen::Matrix3d::Identity()).cast<Scalar>();
+    }
   });
 }
 
@@ -351,9 +350,9 @@ void BlockJacobi::applyToNodes(Index first, Index last, const double* r, double*
 
 void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (z.size() != r.size()) z.resize(r.size());
-  tbb::parallel_for(
-      tbb::blocked_range<Index>(0, static_cast<Index>(inverse_.size()), 256),
-      [&](const auto& range) { applyToNodes(range.begin(), range.end(), r.data(), z.data()); });
+  parallelFor<Index>(0, static_cast<Index>(inverse_.size()), 256, [&](const auto& range) {
+    applyToNodes(range.begin(), range.end(), r.data(), z.data());
+  });
 }
 
 struct MultigridPreconditioner::Impl {

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/simulation/NodeBlockMatrix.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <string>
 #include <utility>
 
 #include "SimdTarget.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
@@ -70,7 +69,7 @@ template <typename Scalar>
 void BasicNodeBlockMatrix<Scalar>::assign(const SparseMatrix& A) {
   allocate(A);
   laterStarts_.clear();
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 256), [&](const auto& range) {
+  parallelFor<Index>(0, nodeCount(), 256, [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const int first = blockStarts_[static_cast<std::size_t>(v)];
       const int count = blockStarts_[static_cast<std::size_t>(v) + 1] - first;
@@ -89,7 +88,7 @@ void BasicNodeBlockMatrix<Scalar>::assignInSweepOrder(const SparseMatrix& A,
   laterStarts_.resize(static_cast<std::size_t>(nodeCount()));
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nodeCount(), 256), [&](const auto& range) {
+  parallelFor<Index>(0, nodeCount(), 256, [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const auto node = static_cast<std::size_t>(v);
       const int first = blockStarts_[node];
@@ -218,14 +217,14 @@ void multiply(const NodeBlockMatrix& A, const Eigen::VectorXd& x, Eigen::VectorX
               SimdKernel kernel) {
   checkSizes(A, x, y);
   const RowsKernel rows = rowsKernel(kernel);
-  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
+  parallelFor<Index>(0, A.nodeCount(), 256, [&](const auto& range) {
     rows(A, x.data(), y.data(), range.begin(), range.end());
   });
 }
 
 void multiply(const FloatNodeBlockMatrix& A, const Eigen::VectorXf& x, Eigen::VectorXf& y) {
   checkSizes(A, x, y);
-  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 256), [&](const auto& range) {
+  parallelFor<Index>(0, A.nodeCount(), 256, [&](const auto& range) {
     for (Index v = range.begin(); v != range.end(); ++v)
       blockRowSum(A, v, x.data(), -1, y.data() + 3 * v);
   });
@@ -239,7 +238,7 @@ void multiply(const NodeBlockMatrix& A, const DenseRows& X, DenseRows& Y, SimdKe
   if (k == 0) return;
   const ColumnsKernel rows =
       columnsKernel(kernel, k, std::make_integer_sequence<int, kMaxProductColumns>());
-  tbb::parallel_for(tbb::blocked_range<Index>(0, A.nodeCount(), 128), [&](const auto& range) {
+  parallelFor<Index>(0, A.nodeCount(), 128, [&](const auto& range) {
     rows(A, X.data(), Y.data(), range.begin(), range.end());
   });
 }

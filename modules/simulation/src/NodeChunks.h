@@ -6,11 +6,10 @@
 // are added in chunk order. CG's dot products and the initial guess's small
 // Gram matrices use it, so a simulation repeats exactly on any thread count.
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <vector>
 
+#include "tetskin/core/Parallel.h"
 #include "tetskin/simulation/CorotatedFem.h"
 
 namespace tetskin {
@@ -30,13 +29,12 @@ class NodeChunks {
   // the total starts from `zero`.
   template <typename Body>
   Sums sum(const Body& body, const Sums& zero) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, partial_.size(), 1),
-                      [&](const auto& range) {
-                        for (std::size_t c = range.begin(); c != range.end(); ++c) {
-                          const Index first = static_cast<Index>(c) * chunkNodes_;
-                          partial_[c] = body(first, std::min(nodes_, first + chunkNodes_));
-                        }
-                      });
+    parallelFor<std::size_t>(0, partial_.size(), 1, [&](const auto& range) {
+      for (std::size_t c = range.begin(); c != range.end(); ++c) {
+        const Index first = static_cast<Index>(c) * chunkNodes_;
+        partial_[c] = body(first, std::min(nodes_, first + chunkNodes_));
+      }
+    });
     Sums total = zero;
     for (const Sums& sums : partial_) total += sums;
     return total;

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/simulation/ProjectedInitialGuess.h"
 
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <string>
@@ -10,6 +8,7 @@
 
 #include "NodeChunks.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 namespace {
@@ -90,7 +89,7 @@ void project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::
   coefficients.head(rank) = factor.solve(basisB.head(rank));
   if (!coefficients.allFinite()) return;
   x.resize(A.rows());
-  tbb::parallel_for(tbb::blocked_range<Index>(0, A.rows(), 1024), [&](const auto& range) {
+  parallelFor<Index>(0, A.rows(), 1024, [&](const auto& range) {
     for (Index i = range.begin(); i != range.end(); ++i)
       x[i] = Eigen::Map<const Row>(basis.data() + i * K).dot(coefficients.transpose());
   });

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/spatial/SurfaceDistance.h"
 
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/core/Parallel.h"
 #include "tetskin/spatial/AabbTree.h"
 #include "tetskin/spatial/TriangleDistance.h"
 
@@ -24,20 +23,18 @@ std::vector<double> distancesToSurface(const Points3& points, const SurfaceMesh&
     for (int k = 0; k < 3; ++k) boxes[static_cast<std::size_t>(t)].extend(corner(t, k));
   const AabbTree tree(boxes);
   std::vector<double> distances(static_cast<std::size_t>(points.rows()));
-  tbb::parallel_for(
-      tbb::blocked_range<Index>(0, points.rows(), 512),
-      [&](const tbb::blocked_range<Index>& range) {
-        for (Index i = range.begin(); i < range.end(); ++i) {
-          const Eigen::Vector3d p = points.row(i).transpose();
-          double best2 = std::numeric_limits<double>::infinity();
-          tree.forEachNear(p, best2, [&](int t, double& radius2) {
-            const double d2 =
-                closestPointOnTriangle(p, corner(t, 0), corner(t, 1), corner(t, 2)).squaredDistance;
-            if (d2 < radius2) radius2 = d2;
-          });
-          distances[static_cast<std::size_t>(i)] = std::sqrt(best2);
-        }
+  parallelFor<Index>(0, points.rows(), 512, [&](const IndexRange<Index>& range) {
+    for (Index i = range.begin(); i < range.end(); ++i) {
+      const Eigen::Vector3d p = points.row(i).transpose();
+      double best2 = std::numeric_limits<double>::infinity();
+      tree.forEachNear(p, best2, [&](int t, double& radius2) {
+        const double d2 =
+            closestPointOnTriangle(p, corner(t, 0), corner(t, 1), corner(t, 2)).squaredDistance;
+        if (d2 < radius2) radius2 = d2;
       });
+      distances[static_cast<std::size_t>(i)] = std::sqrt(best2);
+    }
+  });
   return distances;
 }
 
