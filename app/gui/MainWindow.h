@@ -23,8 +23,8 @@
 #include "CompareDock.h"
 #include "Scene.h"
 #include "SimulationDock.h"
-#include "SimulationRunner.h"
 #include "ViewDock.h"
+#include "tetskin/session/SimulationRunner.h"
 #include "tetskin/vtkio/RunRecorder.h"
 
 class QCheckBox;

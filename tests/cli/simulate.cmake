@@ -340,3 +340,10 @@ tetskin_cli_test(simulate_tolerance_out_of_range FAIL STATUS 1
   STDERR "^error: --tolerance: 1 is not in \\(0, 1\\) \\(see tetskin simulate --help\\)\n$"
   NOT_EXIST ${cli_out}/tolerance1.pvd
   ARGS simulate ${data}/bunny.json --tolerance 1 -o ${cli_out}/tolerance1.pvd)
+
+# Soak (issue #53): a long simulate with periodic frames needs no more memory
+# than one a tenth as long (simulate_soak.py; TETSKIN_SOAK_STEPS sets the
+# length, the default a short form). Label long: not in the sanitized suite.
+add_test(NAME cli.simulate_soak
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/simulate_soak.py $<TARGET_FILE:tetskin> ${cli_out}/soak)
+set_tests_properties(cli.simulate_soak PROPERTIES LABELS long TIMEOUT 3600)

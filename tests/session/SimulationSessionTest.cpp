@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <string>
 
+#include "BlockRun.h"
 #include "ExpectError.h"
 #include "Shapes.h"
 #include "TestFiles.h"
@@ -26,26 +27,12 @@
 namespace tetskin {
 namespace {
 
-// A small upright block (y up), one level.
-MultiLevelTetMesh block() {
-  MultiLevelTetMesh mesh;
-  appendLevel(mesh, test::tetGrid(2, 4, 2, {0.2, 0.4, 0.2}));
-  return mesh;
-}
-
-RunSpec wobble(int steps_per_second = 100) {
-  RunSpec spec;
-  spec.level = 0;
-  spec.options.timeStep = 1.0 / steps_per_second;
-  spec.options.material.youngsModulus = 2e4;
-  spec.scenario = "wobble";
-  spec.datasetName = "block";
-  return spec;
-}
+using test::blockWobble;
+using test::uprightBlock;
 
 TEST(SimulationSession, StepsAsTheSimulationAndScenarioWiredByHand) {
-  const MultiLevelTetMesh mesh = block();
-  const RunSpec spec = wobble();
+  const MultiLevelTetMesh mesh = uprightBlock();
+  const RunSpec spec = blockWobble();
   SimulationSession session(mesh, spec);
 
   const TetMesh rest = extractLevel(mesh, 0);
@@ -68,18 +55,18 @@ TEST(SimulationSession, StepsAsTheSimulationAndScenarioWiredByHand) {
 }
 
 TEST(SimulationSession, RefusesAnUnknownScenarioAndALevelTheDatasetLacks) {
-  const MultiLevelTetMesh mesh = block();
-  RunSpec spec = wobble();
+  const MultiLevelTetMesh mesh = uprightBlock();
+  RunSpec spec = blockWobble();
   spec.scenario = "spin";
   EXPECT_THROW(SimulationSession(mesh, spec), Error);
-  spec = wobble();
+  spec = blockWobble();
   spec.level = 3;
   EXPECT_THROW(SimulationSession(mesh, spec), Error);
 }
 
 TEST(SimulationSession, PulledNodesMoveTheWayTheyArePulled) {
-  const MultiLevelTetMesh mesh = block();
-  RunSpec spec = wobble();
+  const MultiLevelTetMesh mesh = uprightBlock();
+  RunSpec spec = blockWobble();
   spec.scenario = "sag";
   spec.options.gravity.setZero();
   SimulationSession still(mesh, spec), pulled(mesh, spec);
@@ -95,8 +82,8 @@ TEST(SimulationSession, PulledNodesMoveTheWayTheyArePulled) {
 }
 
 TEST(SimulationSession, StartsFromAFrameAndLogsFromThere) {
-  const MultiLevelTetMesh mesh = block();
-  SimulationSession session(mesh, wobble());
+  const MultiLevelTetMesh mesh = uprightBlock();
+  SimulationSession session(mesh, blockWobble());
   session.keepStepLog();
   ASSERT_EQ(session.stepLog().size(), 1u);
   session.step();
@@ -123,8 +110,8 @@ TEST(SimulationSession, StartsFromAFrameAndLogsFromThere) {
 
 TEST(SimulationSession, RecordsTheRunWithItsBoundSurface) {
   const test::ScratchDir dir;
-  const MultiLevelTetMesh mesh = block();
-  SimulationSession session(mesh, wobble());
+  const MultiLevelTetMesh mesh = uprightBlock();
+  SimulationSession session(mesh, blockWobble());
   EXPECT_THROW(session.recordFrame(), Error);  // nothing to record to
   EXPECT_THROW(session.deformedSurface(mesh.nodes), Error);
 

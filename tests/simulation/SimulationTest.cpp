@@ -928,6 +928,23 @@ TEST(Simulation, StateSettersRefuseAnotherNumberOfRows) {
   EXPECT_EQ(sim.state().positions, sim.restMesh().nodes);  // nothing was set
 }
 
+// A non-finite force (a NaN from a script, an overflowing load) is refused
+// where it is set, naming its node, and the forces before it stay.
+TEST(Simulation, ExternalForcesRefuseANonFiniteForceNamingItsNode) {
+  const Dataset& d = sampleDataset();
+  Simulation sim(d.mesh, 0, SimulationOptions{});
+  Points3 forces = Points3::Zero(sim.restMesh().nodeCount(), 3);
+  forces(7, 0) = 2;
+  sim.setExternalForces(forces);
+  Points3 bad = forces;
+  bad(12, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(test::errorText([&] { sim.setExternalForces(bad); }),
+            "external forces: node 12's force is not finite");
+  bad(12, 1) = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(sim.setExternalForces(bad), Error);
+  EXPECT_EQ(sim.externalForces(), forces);
+}
+
 // The state reports the external forces of the step that led to it (what
 // the exported frames show as ExternalForce): none before the first step,
 // and forces set for the next step only once it is taken.

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "SimulationRunner.h"
+#include "tetskin/session/SimulationRunner.h"
 
 #include <chrono>
 #include <utility>
 
-namespace tetskin::gui {
+namespace tetskin {
 
-SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec)
-    : session_(dataset, spec) {
+SimulationRunner::SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec, Pace pace)
+    : session_(dataset, spec), pace_(pace) {
   pull_ = Points3::Zero(session_.simulation().restMesh().nodeCount(), 3);
   thread_ = std::thread([this] { loop(); });
 }
@@ -83,6 +83,7 @@ void SimulationRunner::loop() {
       continue;
     }
     stepOnce();
+    if (pace_ == Pace::Unpaced) continue;
     // Real time at most: simulated seconds do not run ahead of the clock.
     next += std::chrono::duration_cast<Clock::duration>(dt);
     if (next > Clock::now())
@@ -92,4 +93,4 @@ void SimulationRunner::loop() {
   }
 }
 
-}  // namespace tetskin::gui
+}  // namespace tetskin

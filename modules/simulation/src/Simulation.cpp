@@ -146,6 +146,9 @@ void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points
 
 void Simulation::setExternalForces(const Points3& forces) {
   requireRows("external forces", forces.rows(), rest_.nodeCount(), "nodes");
+  for (Index v = 0; v < forces.rows(); ++v)
+    if (!forces.row(v).allFinite())
+      throw Error("external forces: node " + std::to_string(v) + "'s force is not finite");
   std::lock_guard lock(mutex_);
   external_ = numbering_->toInternal(forces);
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The simulation of tetskin-gui on its own thread, in parallel with the
-// drawing (the report expected this to raise the frame rate): play runs steps
-// paced to real time, pause stops after the current step, step() runs one.
+// A run (SimulationSession) stepped on a thread of its own: tetskin-gui's
+// simulation, in parallel with the drawing (the report expected this to raise
+// the frame rate), and the soak test's. play runs steps, paced to real time
+// or as fast as they go; pause stops after the current step; step() runs one.
 // The GUI thread reads the latest state and sets pulling forces at any time
 // (Simulation guards both with its mutex). A step that fails (the
 // simulation diverged) pauses the runner, keeps the last good state and
@@ -19,13 +20,19 @@
 
 #include "tetskin/session/SimulationSession.h"
 
-namespace tetskin::gui {
+namespace tetskin {
 
 class SimulationRunner {
  public:
+  enum class Pace {
+    RealTime,  // simulated seconds never run ahead of the clock (the GUI)
+    Unpaced,   // each step as soon as the last is done
+  };
+
   // The run `spec` of `dataset` (SimulationSession). Throws Error for an
   // unknown scenario, bad options or a level the simulation refuses.
-  SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec);
+  SimulationRunner(const MultiLevelTetMesh& dataset, const RunSpec& spec,
+                   Pace pace = Pace::RealTime);
   ~SimulationRunner();
 
   void play();
@@ -51,6 +58,7 @@ class SimulationRunner {
   void stepOnce();
 
   SimulationSession session_;
+  Pace pace_;
   Points3 pull_;  // what the user pulls with now (guarded by pullMutex_)
   std::mutex pullMutex_;
   std::atomic<bool> playing_{false}, quit_{false};
@@ -63,4 +71,4 @@ class SimulationRunner {
   std::thread thread_;
 };
 
-}  // namespace tetskin::gui
+}  // namespace tetskin

@@ -250,7 +250,9 @@ class Simulation {
   RunConditions conditions() const { return {options_.floor(), fixedNodes_}; }
   // Positions the given fixed nodes must reach at the end of the next step.
   void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
-  // Per-node external forces (level-local), kept until replaced.
+  // Per-node external forces (level-local), kept until replaced. Throws
+  // Error naming the first node whose force is not finite: such a force
+  // must not reach a step.
   void setExternalForces(const Points3& forces);
   Points3 externalForces() const;
   void setPositions(const Points3& positions);
