@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "Shapes.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/DatasetConfig.h"
 #include "tetskin/io/GmshFormat.h"
@@ -20,7 +21,9 @@
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/PlyFormat.h"
 #include "tetskin/io/TetGenFormat.h"
+#include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/SurfaceFile.h"
 
 namespace tetskin::fuzz {
 namespace {
@@ -253,6 +256,67 @@ void checkPvd(const std::uint8_t* data, std::size_t size) {
             "series round trip differs at entry " + std::to_string(i));
 }
 
+// STL through our adapter over VTK's reader (ASCII or binary: the reader
+// tells them apart): what it accepts is a surface that holds up, and its
+// triangles round-trip through our STL writer (STL keeps no shared
+// vertices and floats only: compared as the surface written, read twice).
+void checkStl(const std::uint8_t* data, std::size_t size) {
+  SurfaceMesh mesh;
+  if (!accepted([&] { mesh = readSurface(written("fuzz.stl", text(data, size))); })) return;
+  requireSurface(mesh);
+  writeSurface(scratch("round.stl"), mesh);
+  const SurfaceMesh once = readSurface(scratch("round.stl"));
+  requireSurface(once);
+  require(once.triangles.rows() == mesh.triangles.rows(), "STL round trip: triangles lost");
+  writeSurface(scratch("round2.stl"), once);
+  requireSameSurface(once, readSurface(scratch("round2.stl")), "STL");
+}
+
+// The control mesh a fuzzed binding is checked against: one level of 2x2x2
+// cubes, 27 nodes.
+const MultiLevelTetMesh& bindingDataset() {
+  static const MultiLevelTetMesh mesh = [] {
+    MultiLevelTetMesh m;
+    appendLevel(m, test::tetGrid(2, 2, 2, {1, 1, 1}));
+    return m;
+  }();
+  return mesh;
+}
+
+// A .vtp as the applications open it (readSurfaceOrBinding: a plain
+// surface, or a binding file, then checked against a dataset as `deform`
+// and the GUI check it). A surface accepted holds up and round-trips; a
+// binding that fits has every vertex bound to nodes of the level with
+// finite weights, and round-trips through writeBinding.
+void checkVtp(const std::uint8_t* data, std::size_t size) {
+  const std::filesystem::path path = written("fuzz.vtp", text(data, size));
+  SurfaceOrBinding read;
+  if (!accepted([&] { read = readSurfaceOrBinding(path); })) return;
+  requireSurface(read.surface);
+  if (!read.binding) {
+    writeSurface(scratch("round.vtp"), read.surface);
+    requireSameSurface(read.surface, readSurface(scratch("round.vtp")), "VTP");
+    return;
+  }
+  const MultiLevelTetMesh& dataset = bindingDataset();
+  if (!accepted([&] {
+        checkBindingFits(*read.binding, read.surface.vertexCount(), dataset, "fuzz.vtp");
+      }))
+    return;
+  const SurfaceBinding& b = *read.binding;
+  require(b.controlIds.rows() == read.surface.vertexCount(), "a binding row per vertex");
+  requireIndices(b.controlIds.leftCols(b.controlsPerVertex()).eval(), dataset.nodes.rows(),
+                 "bound control node");
+  requireFinite(b.weights, "binding weights");
+  BoundSurface bound{read.surface, b, "dataset.json", std::nullopt};
+  writeBinding(scratch("round_binding.vtp"), bound);
+  const BoundSurface back = readBinding(scratch("round_binding.vtp"), dataset);
+  require(back.binding.controlIds == b.controlIds && back.binding.weights == b.weights &&
+              back.surface.positions == read.surface.positions &&
+              back.surface.triangles == read.surface.triangles,
+          "binding round trip differs");
+}
+
 }  // namespace
 
 const std::vector<Target>& targets() {
@@ -264,7 +328,9 @@ const std::vector<Target>& targets() {
                                           {"config", checkConfig},
                                           {"load_curve", checkLoadCurve},
                                           {"node_list", checkNodeList},
-                                          {"pvd", checkPvd}};
+                                          {"pvd", checkPvd},
+                                          {"stl", checkStl},
+                                          {"vtp", checkVtp}};
   return all;
 }
 
