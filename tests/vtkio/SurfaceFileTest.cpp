@@ -60,6 +60,18 @@ TEST(SurfaceFile, BrokenFilesGiveErrorsNamingTheFile) {
   }
   dir.write("empty.stl", "");
   EXPECT_THROW(readSurface(dir / "empty.stl"), Error);
+  // A binary STL (VTK's reader takes a file with 5% of its first 256 bytes
+  // binary for one) whose count claims more triangles than it holds is
+  // refused before VTK allocates for the count: here 4 billion triangles
+  // (200 GB) claimed by 134 bytes.
+  std::string truncated(84, '\0');
+  truncated.replace(0, 6, "solid ");  // (binary files may start so too)
+  truncated.replace(80, 4, "\xff\xff\xff\xff");
+  truncated += std::string(50, '\0');
+  EXPECT_EQ(test::errorText([&] { readSurface(dir.write("truncated.stl", truncated)); }),
+            (dir / "truncated.stl").string() +
+                ": a binary STL of 4294967295 triangles needs 214748364834 bytes; the file has "
+                "134 (truncated, or not an STL)");
   EXPECT_THROW(readSurface(dir / "missing.ply"), Error);
   EXPECT_THROW(readSurface(dir / "x.abc"), Error);
 }

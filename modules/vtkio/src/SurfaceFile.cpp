@@ -5,6 +5,10 @@
 #include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 
+#include <cstdint>
+#include <fstream>
+#include <string>
+
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/FileNames.h"
@@ -28,6 +32,39 @@ SurfaceMesh readWithVtk(const std::filesystem::path& path) {
   if (errors.failed() || reader->GetOutput()->GetNumberOfPolys() == 0)
     throw Error(path.string(), 0, errors.message("contains no triangles"));
   return fromVtkPolyData(reader->GetOutput(), path.string());
+}
+
+// vtkSTLReader takes a file for binary as vtksys's DetectFileType does (5%
+// or more of its first 256 bytes outside printable ASCII, tab, newline and
+// return; an empty file too), and then allocates for the triangle count at
+// byte 80 before it reads a triangle. A binary file must hold that many
+// 50-byte triangles after its 84-byte header: one that does not is refused
+// here, before VTK allocates what it claims (19 GB for a 100-byte file
+// starting "solid", found by fuzz_stl).
+void checkBinaryStlSize(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[256];
+  in.read(head, sizeof head);
+  const std::streamsize read = in.gcount();
+  std::streamsize text = 0;
+  for (std::streamsize i = 0; i < read; ++i) {
+    const auto c = static_cast<unsigned char>(head[i]);
+    if ((c >= 0x20 && c <= 0x7F) || c == '\n' || c == '\r' || c == '\t') ++text;
+  }
+  if (read > 0 && static_cast<double>(read - text) < 0.05 * static_cast<double>(read)) return;
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size < 84)
+    throw Error(path.string(), 0,
+                "a binary STL starts with an 84-byte header and triangle count; the file has " +
+                    std::to_string(size) + " bytes");
+  const auto* bytes = reinterpret_cast<const unsigned char*>(head);
+  const std::uint64_t count = std::uint64_t{bytes[80]} | std::uint64_t{bytes[81]} << 8 |
+                              std::uint64_t{bytes[82]} << 16 | std::uint64_t{bytes[83]} << 24;
+  if (84 + 50 * count > size)
+    throw Error(path.string(), 0,
+                "a binary STL of " + std::to_string(count) + " triangles needs " +
+                    std::to_string(84 + 50 * count) + " bytes; the file has " +
+                    std::to_string(size) + " (truncated, or not an STL)");
 }
 
 template <typename Writer>
@@ -55,7 +92,10 @@ SurfaceMesh readSurface(const std::filesystem::path& path) {
   const std::string e = lowerExtension(path);
   if (e == ".obj") return readObj(path);
   if (e == ".ply") return readPly(path);
-  if (e == ".stl") return readWithVtk<vtkSTLReader>(path);
+  if (e == ".stl") {
+    if (std::filesystem::is_regular_file(path)) checkBinaryStlSize(path);
+    return readWithVtk<vtkSTLReader>(path);
+  }
   if (e == ".vtp") return fromVtkPolyData(readVtp(path), path.string());
   throw Error(path.string(), 0,
               "unknown surface format '" + e + "' (expected .obj, .ply, .stl or .vtp)");
