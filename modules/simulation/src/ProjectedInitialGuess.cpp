@@ -13,6 +13,50 @@
 namespace tetskin {
 namespace {
 
+// The k x k parts (k <= 16) are solved on dynamic-size matrices: their cost
+// is nothing beside the O(n k^2) passes, and Eigen's eigensolver and
+// Cholesky instantiated at 16 fixed sizes took this file 9 to 15 minutes to
+// compile.
+
+// A basis of the span of the stored solutions S from their Gram matrix
+// S^T S: Q = S V D^-1/2 over the eigenpairs (V, D) that are not negligible
+// (then Q^T Q = I up to the Gram matrix's rounding), written to the first
+// columns of `toBasis`, the others zero. Returns their count, 0 when the
+// eigensolver fails or only zeros are stored.
+template <typename Square>
+int spanBasis(const Square& gram, Square& toBasis) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(gram)};
+  toBasis.setZero();
+  if (eigen.info() != Eigen::Success) return 0;
+  const Index k = gram.rows();
+  const double largest = eigen.eigenvalues()[k - 1];
+  if (!(largest > 0)) return 0;
+  int rank = 0;
+  for (; rank < k; ++rank) {
+    const double value = eigen.eigenvalues()[k - 1 - rank];
+    if (!(value >
+          ProjectedInitialGuess::kDependence * ProjectedInitialGuess::kDependence * largest))
+      break;
+    toBasis.col(rank) = eigen.eigenvectors().col(k - 1 - rank) / std::sqrt(value);
+  }
+  return rank;
+}
+
+// The coefficients c of x = Q c: (Q^T A Q) c = Q^T b on the basis's first
+// `rank` columns (symmetrized against rounding); false when Q^T A Q is not
+// SPD there (A not SPD on the span) or c is not finite.
+template <typename Square, typename Column>
+bool solveReduced(const Square& reduced, const Column& basisB, int rank, Column& coefficients) {
+  const Eigen::MatrixXd system =
+      0.5 * (reduced.topLeftCorner(rank, rank) + reduced.topLeftCorner(rank, rank).transpose());
+  const Eigen::LLT<Eigen::MatrixXd> factor(system);
+  if (factor.info() != Eigen::Success) return false;
+  Eigen::VectorXd rhs(rank);
+  for (int i = 0; i != rank; ++i) rhs[i] = basisB[i];
+  coefficients.head(rank) = factor.solve(rhs);
+  return coefficients.allFinite();
+}
+
 // The projection with K stored solutions, K fixed at compile time so that
 // the per-dof work (K x K outer products) unrolls and stays in registers.
 // x is left as it is when nothing usable is stored.
@@ -38,22 +82,9 @@ void project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::
       },
       Square::Zero());
   if (!gram.allFinite()) return;
-  // A basis of the span: Q = S V D^-1/2 over the eigenpairs (V, D) of S^T S
-  // that are not negligible (then Q^T Q = I up to the Gram matrix's
-  // rounding); the columns of the others are zero.
-  const Eigen::SelfAdjointEigenSolver<Square> eigen(gram);
-  if (eigen.info() != Eigen::Success) return;
-  const double largest = eigen.eigenvalues()[K - 1];
-  if (!(largest > 0)) return;  // only zeros stored
-  int rank = 0;
-  Square toBasis = Square::Zero();  // Q = S toBasis
-  for (; rank < K; ++rank) {
-    const double value = eigen.eigenvalues()[K - 1 - rank];
-    if (!(value >
-          ProjectedInitialGuess::kDependence * ProjectedInitialGuess::kDependence * largest))
-      break;
-    toBasis.col(rank) = eigen.eigenvectors().col(K - 1 - rank) / std::sqrt(value);
-  }
+  Square toBasis;  // Q = S toBasis
+  const int rank = spanBasis(gram, toBasis);
+  if (rank == 0) return;
 
   // Q and Q^T b.
   basis.resize(A.rows(), K);
@@ -81,13 +112,8 @@ void project(const NodeBlockMatrix& A, const DenseRows& solutions, const Eigen::
         return sums;
       },
       Square::Zero());
-  const Eigen::MatrixXd system =
-      0.5 * (reduced.topLeftCorner(rank, rank) + reduced.topLeftCorner(rank, rank).transpose());
-  const Eigen::LLT<Eigen::MatrixXd> factor(system);
-  if (factor.info() != Eigen::Success) return;  // A not SPD on the span
   Column coefficients = Column::Zero();
-  coefficients.head(rank) = factor.solve(basisB.head(rank));
-  if (!coefficients.allFinite()) return;
+  if (!solveReduced(reduced, basisB, rank, coefficients)) return;
   x.resize(A.rows());
   parallelFor<Index>(0, A.rows(), 1024, [&](const auto& range) {
     for (Index i = range.begin(); i != range.end(); ++i)
