@@ -41,7 +41,7 @@ template <typename Reader, typename Data>
 vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_view type) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
-  detail::checkVtkXmlHeader(path, type);
+  detail::checkVtkXmlData(path, detail::checkVtkXmlHeader(path, type));
   auto reader = vtkSmartPointer<Reader>::New();
   VtkErrorCapture errors(reader);
   reader->SetFileName(path.c_str());
