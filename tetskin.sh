@@ -167,7 +167,8 @@ thread_tests() {
   # TBB, which TSan cannot see into: they run sequentially here. (-O1 -g1:
   # enough for TSan and its stacks, and a third quicker to compile than
   # RelWithDebInfo's -O2 -g; GridHierarchy's tests, of serial code and the
-  # slowest under TSan, are left out.)
+  # slowest under TSan, are left out, and so is boundary_faces_tests, which
+  # alone would build the meshing module and CGAL here.)
   log "threaded tests under ThreadSanitizer"
   local dir=${BUILD_DIR}-tsan
   configure "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \

@@ -8,7 +8,7 @@
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "tetskin/core/Error.h"
-#include "tetskin/session/DatasetBuild.h"
+#include "tetskin/meshing/DatasetBuild.h"
 
 namespace tetskin::cli {
 namespace {

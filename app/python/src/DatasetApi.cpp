@@ -14,7 +14,7 @@
 #include "Objects.h"
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/meshing/IsolatedJobs.h"
-#include "tetskin/session/DatasetBuild.h"
+#include "tetskin/meshing/DatasetBuild.h"
 
 namespace tetskin::python {
 namespace {

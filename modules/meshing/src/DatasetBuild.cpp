@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
-#include "tetskin/session/DatasetBuild.h"
+#include "tetskin/meshing/DatasetBuild.h"
 
 #include <string>
 #include <utility>
