@@ -17,14 +17,15 @@ JOBS=${JOBS:-$(nproc)}
 
 # (libsuitesparse-dev, libhypre-dev: solver_bench's baselines, CHOLMOD and
 # BoomerAMG; libopenblas0-pthread: the BLAS CHOLMOD's factorization runs on;
-# clang, libclang-rt-14-dev: the readers' fuzzers, libFuzzer.)
+# clang, libclang-rt-14-dev: the readers' fuzzers, libFuzzer; mpi-default-bin:
+# mpiexec, for the ParaView filters under pvbatch on several ranks.)
 DEPS=(
   cmake ninja-build g++ pkg-config ccache dpkg-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
   libvtk9-qt-dev qtbase5-dev libglew-dev libpng-dev zlib1g-dev
   libtet1.5-dev libnglib-dev libcgal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels netgen-doc paraview
+  xvfb xauth assimp-testmodels netgen-doc paraview mpi-default-bin
   paraview-dev qtxmlpatterns5-dev-tools
   pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9
   libsuitesparse-dev libhypre-dev libopenblas0-pthread

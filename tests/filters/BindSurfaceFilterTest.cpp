@@ -140,8 +140,11 @@ TEST(BindSurfaceFilter, BadInputIsAnErrorNamingTheInputAndElementAndAnEmptyOutpu
         << errors.message();
     EXPECT_EQ(bind->GetOutput()->GetNumberOfPoints(), 0);
   }
-  {  // no triangles at all
+  {  // points but no triangles (no points at all is an empty piece: PiecesTest.cpp)
     vtkNew<vtkPolyData> empty;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    empty->SetPoints(points);
     vtkNew<vtkTetSkinBindSurface> bind;
     const VtkErrorCapture errors(bind);
     bind->SetInputData(empty);

@@ -11,6 +11,7 @@
 #include <exception>
 #include <string>
 
+#include "WholeInput.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BindingSummary.h"
 #include "tetskin/core/Error.h"
@@ -18,6 +19,22 @@
 #include "tetskin/vtkio/VtkConversion.h"
 
 vtkStandardNewMacro(vtkTetSkinBindSurface);
+
+namespace {
+
+tetskin::BindingMethod methodOf(int method) {
+  using tetskin::BindingMethod;
+  return method == vtkTetSkinBindSurface::SEED    ? BindingMethod::Seed
+         : method == vtkTetSkinBindSurface::EMBED ? BindingMethod::Embed
+                                                  : BindingMethod::Closest;
+}
+
+tetskin::OffsetMode offsetModeOf(int mode) {
+  return mode == vtkTetSkinBindSurface::DISPLACEMENT ? tetskin::OffsetMode::Displacement
+                                                     : tetskin::OffsetMode::Normal;
+}
+
+}  // namespace
 
 vtkTetSkinBindSurface::vtkTetSkinBindSurface() {
   SetNumberOfInputPorts(2);
@@ -37,6 +54,12 @@ int vtkTetSkinBindSurface::FillInputPortInformation(int port, vtkInformation* in
   return 1;
 }
 
+int vtkTetSkinBindSurface::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputs,
+                                               vtkInformationVector*) {
+  tetskin::filters::requestWholeInput(inputs[1]);
+  return 1;
+}
+
 int vtkTetSkinBindSurface::RequestData(vtkInformation*, vtkInformationVector** inputs,
                                        vtkInformationVector* outputs) {
   vtkPolyData* surfaceIn = vtkPolyData::GetData(inputs[0]);
@@ -44,16 +67,24 @@ int vtkTetSkinBindSurface::RequestData(vtkInformation*, vtkInformationVector** i
   vtkPolyData* out = vtkPolyData::GetData(outputs);
   try {
     using namespace tetskin;
+    if (surfaceIn->GetNumberOfPoints() == 0) {
+      // A rank's empty piece of a distributed surface: the same arrays,
+      // empty, so that the pieces append with them.
+      out->ShallowCopy(surfaceIn);
+      SurfaceBinding empty;
+      empty.method = methodOf(Method);
+      empty.offset = offsetModeOf(OffsetMode);
+      empty.level = 0;  // (as bound: input 1 is one level)
+      addBindingArrays(out, empty);
+      return 1;
+    }
     const SurfaceMesh surface = fromVtkPolyData(surfaceIn, "input 0 (surface)");
     // One level: control ids are point ids of input 1.
     MultiLevelTetMesh mesh;
     appendLevel(mesh, fromVtkUnstructuredGrid(controlIn, "input 1 (control mesh)"));
     BindingOptions options;
-    options.method = Method == SEED    ? BindingMethod::Seed
-                     : Method == EMBED ? BindingMethod::Embed
-                                       : BindingMethod::Closest;
-    options.offset = OffsetMode == DISPLACEMENT ? tetskin::OffsetMode::Displacement
-                                                : tetskin::OffsetMode::Normal;
+    options.method = methodOf(Method);
+    options.offset = offsetModeOf(OffsetMode);
     options.tieTolerance = TieTolerance;
     const SurfaceBinding binding = bindSurface(surface, mesh, 0, options);
     out->ShallowCopy(surfaceIn);

@@ -18,6 +18,7 @@
 #include <exception>
 #include <optional>
 
+#include "WholeInput.h"
 #include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -141,6 +142,13 @@ int vtkTetSkinDeformSurface::RequestInformation(vtkInformation*, vtkInformationV
   return 1;
 }
 
+int vtkTetSkinDeformSurface::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputs,
+                                                 vtkInformationVector*) {
+  tetskin::filters::requestWholeInput(inputs[1]);
+  tetskin::filters::requestWholeInput(inputs[2]);
+  return 1;
+}
+
 int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector** inputs,
                                          vtkInformationVector* outputs) {
   vtkPolyData* boundIn = vtkPolyData::GetData(inputs[0]);
@@ -150,6 +158,20 @@ int vtkTetSkinDeformSurface::RequestData(vtkInformation*, vtkInformationVector**
   vtkPolyData* out = vtkPolyData::GetData(outputs);
   try {
     using namespace tetskin;
+    if (boundIn->GetNumberOfPoints() == 0) {
+      // A rank's empty piece of a distributed surface: the same arrays,
+      // empty, so that the pieces append with them.
+      Kept.reset();
+      out->ShallowCopy(boundIn);
+      auto normals = vtkSmartPointer<vtkDoubleArray>::New();
+      normals->SetNumberOfComponents(3);
+      normals->SetName(tetskin::arrays::kNormals);
+      out->GetPointData()->SetNormals(normals);
+      auto displacement = vtkSmartPointer<vtkDoubleArray>::New();
+      displacement->SetNumberOfComponents(3);
+      markDeformed(out, displacement);
+      return 1;
+    }
     const vtkMTimeType boundTime =
         std::max(boundIn->GetMTime(), boundIn->GetFieldData()->GetMTime());
     if (!Kept || Kept->bound != boundIn || Kept->boundTime != boundTime ||

@@ -15,6 +15,10 @@
 // vtkTetSkinDeformSurface applies it. Bad input (no triangles, a cell that
 // is not a tetrahedron, a non-finite coordinate, no usable boundary face)
 // is a vtkErrorMacro naming the input and the element, and an empty output.
+//
+// Distributed (ParaView's pvserver, pvbatch under MPI): input 0 arrives in
+// the rank's piece and is bound there (an empty piece gives an empty output
+// with the same arrays); input 1 is asked for whole on every rank.
 
 #include <vtkPolyDataAlgorithm.h>
 
@@ -58,6 +62,8 @@ class vtkTetSkinBindSurface : public vtkPolyDataAlgorithm {
   vtkTetSkinBindSurface();
   ~vtkTetSkinBindSurface() override = default;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputs,
+                          vtkInformationVector* output) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputs,
                   vtkInformationVector* output) override;
 

@@ -31,6 +31,12 @@
 // points, normals and displacement are the last update's arrays written again where
 // nothing else holds them; a consumer holding an earlier output (a cache, a
 // shallow copy) keeps its values, and the filter makes new arrays then.
+// Distributed (ParaView's pvserver, pvbatch under MPI): input 0 arrives in
+// the rank's piece and is deformed there (an empty piece gives an empty
+// output with the same arrays); inputs 1 and 2 are asked for whole on every
+// rank. A vertex's position depends on it alone; its normal on the
+// triangles around it in its piece, so at a piece's border (without ghost
+// cells: ParaView 5.11 makes none for surfaces) it is the piece's normal.
 
 #include <vtkPolyDataAlgorithm.h>
 
@@ -67,6 +73,8 @@ class vtkTetSkinDeformSurface : public vtkPolyDataAlgorithm {
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation* request, vtkInformationVector** inputs,
                          vtkInformationVector* output) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputs,
+                          vtkInformationVector* output) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputs,
                   vtkInformationVector* output) override;
 
