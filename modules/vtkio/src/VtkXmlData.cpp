@@ -40,6 +40,13 @@ std::optional<Size> maxExpansion(std::string_view compressor) {
 }
 constexpr Size kExpansionSlack = 1024;
 
+// An unsigned integer of `size` bytes in the file's byte order.
+Size fromBytes(const unsigned char* bytes, Size size, bool bigEndian) {
+  Size value = 0;
+  for (Size i = 0; i != size; ++i) value |= Size(bytes[bigEndian ? size - 1 - i : i]) << (8 * i);
+  return value;
+}
+
 // The bytes one value of an array's type takes in its binary data.
 Size wordBytes(std::string_view type) {
   if (type.find("64") != std::string_view::npos) return 8;
@@ -249,10 +256,7 @@ class ArrayCheck {
     std::array<unsigned char, 8> bytes{};
     const auto size = static_cast<Size>(layout_.headerBytes);
     if (!data.read(bytes.data(), size)) fail(std::string("the file ends inside its ") + header);
-    Size value = 0;
-    for (Size i = 0; i != size; ++i)
-      value |= Size(bytes[layout_.bigEndian ? size - 1 - i : i]) << (8 * i);
-    return value;
+    return fromBytes(bytes.data(), size, layout_.bigEndian);
   }
   Size uncompressedBytes(std::size_t block) const {
     return block + 1 == compressed_.size() && lastBlockBytes_ != 0 ? lastBlockBytes_ : blockBytes_;
@@ -260,9 +264,7 @@ class ArrayCheck {
   // One value of the array's integer type, in the file's byte order.
   long long decode(const unsigned char* bytes) const {
     const Size size = wordBytes(array_.type);
-    Size raw = 0;
-    for (Size i = 0; i != size; ++i)
-      raw |= Size(bytes[layout_.bigEndian ? size - 1 - i : i]) << (8 * i);
+    const Size raw = fromBytes(bytes, size, layout_.bigEndian);
     if (array_.type.front() == 'U' || size == 8) return static_cast<long long>(raw);
     const Size sign = Size(1) << (8 * size - 1);  // sign-extended
     return static_cast<long long>((raw ^ sign) - sign);
