@@ -5,7 +5,7 @@
 import sys
 
 from paraview import servermanager
-from paraview.simple import OpenDataFile, UpdatePipeline
+from paraview.simple import OpenDataFile
 from pvcheck import fail, leaves
 
 
@@ -14,7 +14,7 @@ reader = OpenDataFile(pvd)
 times = list(reader.TimestepValues)
 if len(times) != frames:
     fail("expected %d time steps, found %d" % (frames, len(times)))
-UpdatePipeline(time=times[-1], proxy=reader)
+reader.UpdatePipeline(times[-1])
 surfaces = leaves(servermanager.Fetch(reader))
 if len(surfaces) != levels or not all(s.IsA("vtkPolyData") for s in surfaces):
     fail("expected %d surfaces, got %s" % (levels, [s.GetClassName() for s in surfaces]))

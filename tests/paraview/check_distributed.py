@@ -18,7 +18,7 @@ import sys
 
 from paraview import servermanager
 from paraview.simple import (ExtractSurface, GenerateIds, LoadPlugin, ProcessIdScalars,
-                             RedistributeDataSet, UpdatePipeline, XMLPolyDataReader,
+                             RedistributeDataSet, XMLPolyDataReader,
                              XMLUnstructuredGridReader)
 from pvcheck import fail
 
@@ -47,7 +47,7 @@ def pipeline(source):
 
 
 def fetch(proxy, time):
-    UpdatePipeline(time=time, proxy=proxy)
+    proxy.UpdatePipeline(time)
     return servermanager.Fetch(proxy)
 
 

@@ -6,7 +6,7 @@
 import sys
 
 from paraview import servermanager
-from paraview.simple import OpenDataFile, UpdatePipeline
+from paraview.simple import OpenDataFile
 
 
 def fail(message):
@@ -26,7 +26,7 @@ def first_grid(data):
 
 reader = OpenDataFile(sys.argv[1])
 for time in (reader.TimestepValues[0], reader.TimestepValues[-1]):
-    UpdatePipeline(time=time, proxy=reader)
+    reader.UpdatePipeline(time)
     grid = first_grid(servermanager.Fetch(reader))
     if grid is None:
         fail("no control mesh in the run")

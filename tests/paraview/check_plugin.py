@@ -9,7 +9,7 @@ import json
 import sys
 
 from paraview import servermanager
-from paraview.simple import LoadPlugin, UpdatePipeline, XMLPolyDataReader, XMLUnstructuredGridReader
+from paraview.simple import LoadPlugin, XMLPolyDataReader, XMLUnstructuredGridReader
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 
@@ -42,7 +42,7 @@ times = list(control.TimestepValues)
 
 
 def fetch(proxy, time):
-    UpdatePipeline(time=time, proxy=proxy)
+    proxy.UpdatePipeline(time)
     return servermanager.Fetch(proxy)
 
 

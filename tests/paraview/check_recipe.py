@@ -13,7 +13,7 @@ import sys
 import tempfile
 
 from paraview import servermanager
-from paraview.simple import PVDReader, UpdatePipeline, XMLPolyDataReader
+from paraview.simple import PVDReader, XMLPolyDataReader
 from pvcheck import fail
 
 page, plugin, ranks, surface, frames_dir, mpiexec, pvbatch, wrapper, root = sys.argv[1:10]
@@ -52,7 +52,7 @@ with tempfile.TemporaryDirectory() as folder:
     if len(times) != control_frames:
         fail("deformed.pvd lists %d times, expected %d" % (len(times), control_frames))
     for time in (times[0], times[-1]):
-        UpdatePipeline(time=time, proxy=series)
+        series.UpdatePipeline(time)
         data = servermanager.Fetch(series)
         if data.GetNumberOfCells() != rest.GetNumberOfCells():
             fail("time %g: %d triangles read back, the surface has %d"

@@ -4,7 +4,7 @@
 import sys
 
 from paraview import servermanager
-from paraview.simple import OpenDataFile, UpdatePipeline
+from paraview.simple import OpenDataFile
 from pvcheck import fail, leaves
 
 
@@ -25,7 +25,7 @@ if times != sorted(times) or times[0] != 0.0:
     fail("time steps are not ascending from 0: %s" % times)
 
 for index, time in enumerate([times[0], times[-1]]):
-    UpdatePipeline(time=time, proxy=reader)
+    reader.UpdatePipeline(time)
     data = servermanager.Fetch(reader)
     blocks = leaves(data)
     grids = [b for b in blocks if b.IsA("vtkUnstructuredGrid")]
