@@ -27,6 +27,7 @@ namespace {
 
 struct DeformArgs {
   std::filesystem::path dataset, binding, positions, output;
+  int pieces = 1;
 };
 
 Points3 readPositions(const std::filesystem::path& path) {
@@ -63,7 +64,7 @@ void deformRun(const DeformArgs& a, const Dataset& dataset, BoundSurface bound) 
   requireWritableLocation(a.output);
   SurfaceDeformer deformer(bound.surface, bound.binding, dataset.mesh.nodes);
   bound.dataset = a.dataset.generic_string();
-  RunRecorder series(a.output);
+  RunRecorder series(a.output, {}, a.pieces);
   Points3 positions, normals;
   for (std::size_t i = 0; i < frames; ++i) {
     const FrameState state = recorded.read(i, rest, restName);
@@ -87,10 +88,14 @@ void run(const DeformArgs& a) {
   if (recordedRun && lowerExtension(a.output) != ".pvd")
     throw Error("-o " + a.output.string() +
                 ": the surface of a recorded run (--positions RUN.pvd) is a series: name a .pvd");
-  if (!recordedRun && lowerExtension(a.output) != ".vtp")
+  const std::string outputExtension = lowerExtension(a.output);
+  if (!recordedRun && outputExtension != ".vtp" && outputExtension != ".pvtp")
     throw Error("-o " + a.output.string() +
-                ": a deformed surface is a .vtp (a .pvd series is written for a recorded run, "
-                "--positions RUN.pvd)");
+                ": a deformed surface is a .vtp, or a .pvtp in pieces (a .pvd series is written "
+                "for a recorded run, --positions RUN.pvd)");
+  if (!recordedRun && a.pieces > 1 && outputExtension != ".pvtp")
+    throw Error("-o " + a.output.string() + ": a surface in " + std::to_string(a.pieces) +
+                " pieces is written as a .pvtp");
   requireNotAnInput(a.output, {a.dataset, a.binding, a.positions});
   const Dataset dataset = loadDataset(a.dataset);
   BoundSurface bound = readBinding(a.binding, dataset.mesh);
@@ -103,7 +108,10 @@ void run(const DeformArgs& a) {
   deformer.deform(control, positions, normals);
   bound.deformed = DeformedState{positions, normals};
   bound.dataset = a.dataset.generic_string();  // the one its ids were checked against
-  writeBinding(a.output, bound);
+  if (outputExtension == ".pvtp")
+    writeBinding(a.output, bound, restPieces(bound, a.pieces));
+  else
+    writeBinding(a.output, bound);
   std::printf("wrote %s (%lld vertices deformed by %s)\n", a.output.c_str(),
               static_cast<long long>(positions.rows()), a.positions.c_str());
 }
@@ -114,7 +122,8 @@ void addDeformCommand(CLI::App& app) {
   auto a = std::make_shared<DeformArgs>();
   CLI::App* cmd = app.add_subcommand(
       "deform",
-      "Apply a control-mesh state to a bound surface; writes the deformed surface (.vtp)");
+      "Apply a control-mesh state to a bound surface; writes the deformed surface (.vtp, "
+      ".pvtp)");
   cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("BINDING", a->binding, "binding (.vtp from tetskin bind)")
       ->required()
@@ -125,8 +134,12 @@ void addDeformCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output,
-                  "deformed surface (.vtp); for a recorded run, its series (.pvd)")
+                  "deformed surface (.vtp, or .pvtp in pieces); for a recorded run, its series "
+                  "(.pvd)")
       ->required();
+  cmd->add_option("--pieces", a->pieces, kPiecesHelp)
+      ->capture_default_str()
+      ->check(wholeNumber(1));
   cmd->callback([a] { run(*a); });
 }
 

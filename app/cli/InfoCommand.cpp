@@ -28,6 +28,7 @@
 #include "tetskin/meshing/SurfaceNesting.h"
 #include "tetskin/meshing/SurfaceRepair.h"
 #include "tetskin/vtkio/BindingFile.h"
+#include "tetskin/vtkio/PartitionedSurface.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -273,6 +274,26 @@ void printMeshFile(const std::filesystem::path& path) {
   printBox(boundingBox(read.mesh.nodes));
 }
 
+// A .pvtp's pieces (it was described whole before).
+void printPieces(const std::filesystem::path& path) {
+  const std::vector<std::filesystem::path> pieces = pvtpPieceFiles(path);
+  std::printf("  pieces     %zu (%s .. %s), read whole\n", pieces.size(),
+              pieces.front().filename().c_str(), pieces.back().filename().c_str());
+}
+
+// Whether a series' file is there: for a .pvtp, every piece it names too.
+bool seriesFilePresent(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) return false;
+  if (lowerExtension(file) != ".pvtp") return true;
+  try {
+    for (const std::filesystem::path& piece : pvtpPieceFiles(file))
+      if (!std::filesystem::is_regular_file(piece)) return false;
+  } catch (const Error&) {
+    return false;
+  }
+  return true;
+}
+
 // A .pvd (from simulate, the GUI's recorder or ParaView): its time steps and,
 // per part, how many files it lists and whether they are all there.
 void printSeries(const std::filesystem::path& path) {
@@ -292,7 +313,7 @@ void printSeries(const std::filesystem::path& path) {
     std::size_t missing = 0;
     std::string firstMissing;
     for (const std::string& f : files)
-      if (!std::filesystem::is_regular_file(folder / f) && missing++ == 0) firstMissing = f;
+      if (!seriesFilePresent(folder / f) && missing++ == 0) firstMissing = f;
     std::printf("  part %d     %zu file%s, %s .. %s", part, files.size(),
                 files.size() == 1 ? "" : "s", files.front().c_str(), files.back().c_str());
     if (missing == 0)
@@ -324,7 +345,8 @@ void addInfoCommand(CLI::App& app) {
   auto files = std::make_shared<std::vector<std::filesystem::path>>();
   CLI::App* cmd = app.add_subcommand(
       "info",
-      "Print a summary of surfaces (.obj/.ply/.stl/.vtp), bindings (.vtp from bind: what they are "
+      "Print a summary of surfaces (.obj/.ply/.stl/.vtp, .pvtp in pieces read whole), bindings "
+      "(.vtp from bind: what they are "
       "bound to and their quality), tetrahedral meshes (.vtu from convert or simulate: arrays "
       "and their ranges; Gmsh .msh, MEDIT .mesh), time series (.pvd: steps, files, any missing) "
       "and datasets "
@@ -333,12 +355,13 @@ void addInfoCommand(CLI::App& app) {
   cmd->callback([files] {
     for (const auto& path : *files) {
       const std::string extension = lowerExtension(path);
-      if (extension == ".vtp") {
-        const vtkSmartPointer<vtkPolyData> data = readVtp(path);
+      if (extension == ".vtp" || extension == ".pvtp") {
+        const vtkSmartPointer<vtkPolyData> data = readVtp(path);  // (a .pvtp whole)
         if (isBinding(data))
           printBinding(path, data);
         else  // (what readSurface makes of a .vtp, without reading it again)
           printSurface(path, fromVtkPolyData(data, path.string()), "surface");
+        if (extension == ".pvtp") printPieces(path);
       } else if (isSurfaceFile(path)) {
         printSurface(path, readSurface(path), "surface");
       } else if (extension == ".vtu") {
@@ -352,7 +375,8 @@ void addInfoCommand(CLI::App& app) {
       } else {
         throw Error(
             path.string(), 0,
-            "info reads surfaces (.obj .ply .stl .vtp), tetrahedral meshes (.vtu, Gmsh .msh, MEDIT "
+            "info reads surfaces (.obj .ply .stl .vtp .pvtp), tetrahedral meshes (.vtu, Gmsh .msh, "
+            "MEDIT "
             ".mesh), time "
             "series "
             "(.pvd) and datasets (.json .node .ele), not " +

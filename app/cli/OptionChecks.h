@@ -30,6 +30,12 @@ inline constexpr const char* kLevelHelp =
 inline constexpr const char* kDatasetHelp =
     "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)";
 
+// --help of the --pieces options (RunRecorder, PartitionedSurface.h).
+inline constexpr const char* kPiecesHelp =
+    "write the surface (each frame's) as a .pvtp in N compact pieces, cut the same in every "
+    "frame, for ParaView's distributed server (mpiexec pvbatch, pvserver: each rank reads its "
+    "own)";
+
 // A whole number of any sign, e.g. --level (negative counts from the
 // finest) or an option whose range a module checks with its own message.
 CLI::Validator anyWholeNumber();

@@ -32,7 +32,7 @@ namespace {
 
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
-  int steps = 120, level = -1, every = 1;
+  int steps = 120, level = -1, every = 1, pieces = 1;
   RunArgs run;
   bool quiet = false;
 };
@@ -40,6 +40,9 @@ struct SimulateArgs {
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   checkRunOptions(a.run, cmd);
+  if (a.pieces > 1 && a.surface.empty())
+    throw Error("--pieces " + std::to_string(a.pieces) +
+                " splits the surface's frames: give the surface (--surface)");
   if (!a.log.empty()) {
     requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});
     requireWritableLocation(a.log);  // before the run, not after it
@@ -160,7 +163,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     SurfaceBinding binding = bindingAt(*input, dataset.mesh, level);
     session.bindSurface(std::move(input->surface), std::move(binding), a.dataset.generic_string());
   }
-  session.record(a.output);
+  session.record(a.output, a.pieces);
   // --log: the start and every step, written at the end (and by a run cut
   // short, with the steps before it).
   if (!a.log.empty()) session.keepStepLog();
@@ -216,6 +219,9 @@ void addSimulateCommand(CLI::App& app) {
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--pieces", a->pieces, kPiecesHelp)
+      ->capture_default_str()
+      ->check(wholeNumber(1));
   cmd->add_option("--log", a->log,
                   "also write every step to this table (.csv): time, solver, iterations, "
                   "residual, floor contacts, the step's times by stage, kinetic, elastic and "

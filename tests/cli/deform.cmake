@@ -49,7 +49,7 @@ tetskin_cli_test(deform_recorded_run_to_one_file FAIL STATUS 1 REQUIRES "recorde
   ARGS deform ${data}/bunny.json ${cli_out}/run_binding.vtp --positions ${cli_out}/recorded/run.pvd
        -o ${cli_out}/deformed_other/surf.vtp)
 tetskin_cli_test(deform_one_frame_to_a_series FAIL STATUS 1 REQUIRES "recorded_run;run_binding"
-  STDERR "^error: -o [^\n]*surf.pvd: a deformed surface is a .vtp \\(a .pvd series is written for a recorded run, --positions RUN.pvd\\)\n$"
+  STDERR "^error: -o [^\n]*surf.pvd: a deformed surface is a .vtp, or a .pvtp in pieces \\(a .pvd series is written for a recorded run, --positions RUN.pvd\\)\n$"
   ARGS deform ${data}/bunny.json ${cli_out}/run_binding.vtp
        --positions ${cli_out}/recorded/run_frames/control_00001.vtu -o ${cli_out}/deformed_other/surf.pvd)
 # A series written where the run's own frames lie would clear them first:
@@ -71,3 +71,44 @@ add_test(NAME cli.deform_recorded_run_over_its_frames_kept COMMAND ${CMAKE_COMMA
   ${cli_out}/recorded/run_frames/control_00003.vtu)
 set_tests_properties(cli.deform_recorded_run_over_its_frames_kept PROPERTIES LABELS cli
   DEPENDS cli.deform_recorded_run_over_its_frames FIXTURES_REQUIRED guarded_run)
+
+# In pieces (issue #54): a recorded run's surface as a .pvtp per frame, in 3
+# compact pieces; read back whole (info, and deform reading a frame as its
+# binding), it is the run written whole: deformed again to the same frame,
+# a frame read from its pieces and the same frame written whole give the
+# same file, byte for byte.
+tetskin_cli_test(deform_recorded_run_in_pieces REQUIRES "recorded_run;run_binding"
+  SETUP deformed_pieces FRESH ${cli_out}/deformed_pieces
+  STDOUT "^wrote [^\n]*deformed_pieces/surf.pvd \\(4 frames of 4001 vertices deformed by [^\n]*recorded/run.pvd, t 0 .. 0.5 s\\)\n$"
+  ARGS deform ${data}/bunny.json ${cli_out}/run_binding.vtp --positions ${cli_out}/recorded/run.pvd
+       --pieces 3 -o ${cli_out}/deformed_pieces/surf.pvd)
+tetskin_cli_test(info_run_in_pieces REQUIRES deformed_pieces
+  STDOUT "surf.pvd: time series, 4 time steps, t 0 .. 0.5\n  part 1 +4 files, surf_frames/surface_00000.pvtp .. surf_frames/surface_00003.pvtp, all present\n$"
+  ARGS info ${cli_out}/deformed_pieces/surf.pvd)
+tetskin_cli_test(info_surface_in_pieces REQUIRES deformed_pieces
+  STDOUT "surface_00003.pvtp: binding, deformed[^\n]*\n  vertices   4001\n  triangles  7998\n.*  pieces +3 \\(surface_00003_piece0.vtp .. surface_00003_piece2.vtp\\), read whole\n$"
+  ARGS info ${cli_out}/deformed_pieces/surf_frames/surface_00003.pvtp)
+tetskin_cli_test(deform_frame_read_from_pieces REQUIRES deformed_pieces SETUP from_pieces
+  ARGS deform ${data}/bunny.json ${cli_out}/deformed_pieces/surf_frames/surface_00003.pvtp
+       --positions ${cli_out}/recorded/run_frames/control_00003.vtu
+       -o ${cli_out}/deformed_pieces/again_from_pieces.vtp)
+tetskin_cli_test(deform_frame_read_whole REQUIRES deformed_run SETUP from_whole
+  ARGS deform ${data}/bunny.json ${cli_out}/deformed_run/surf_frames/surface_00003.vtp
+       --positions ${cli_out}/recorded/run_frames/control_00003.vtu
+       -o ${cli_out}/deformed_run/again_whole.vtp)
+add_test(NAME cli.deform_pieces_read_back_whole COMMAND ${CMAKE_COMMAND} -E compare_files
+  ${cli_out}/deformed_pieces/again_from_pieces.vtp ${cli_out}/deformed_run/again_whole.vtp)
+set_tests_properties(cli.deform_pieces_read_back_whole PROPERTIES LABELS cli
+  FIXTURES_REQUIRED "from_pieces;from_whole")
+# One state in pieces: a .pvtp; more than one piece to a .vtp is refused.
+tetskin_cli_test(deform_one_frame_in_pieces REQUIRES "recorded_run;run_binding"
+  STDOUT "wrote [^\n]*deformed_pieces/one.pvtp \\(4001 vertices deformed"
+  ARGS deform ${data}/bunny.json ${cli_out}/run_binding.vtp
+       --positions ${cli_out}/recorded/run_frames/control_00001.vtu --pieces 2
+       -o ${cli_out}/deformed_pieces/one.pvtp)
+tetskin_cli_test(deform_pieces_to_a_vtp FAIL STATUS 1 REQUIRES "recorded_run;run_binding"
+  NOT_EXIST ${cli_out}/deformed_pieces_bad.vtp
+  STDERR "^error: -o [^\n]*deformed_pieces_bad.vtp: a surface in 2 pieces is written as a .pvtp\n$"
+  ARGS deform ${data}/bunny.json ${cli_out}/run_binding.vtp
+       --positions ${cli_out}/recorded/run_frames/control_00001.vtu --pieces 2
+       -o ${cli_out}/deformed_pieces_bad.vtp)

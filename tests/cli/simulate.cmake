@@ -347,3 +347,17 @@ tetskin_cli_test(simulate_tolerance_out_of_range FAIL STATUS 1
 add_test(NAME cli.simulate_soak
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/simulate_soak.py $<TARGET_FILE:tetskin> ${cli_out}/soak)
 set_tests_properties(cli.simulate_soak PROPERTIES LABELS long TIMEOUT 3600)
+
+# The surface's frames in pieces (issue #54): a .pvtp per frame, 2 pieces,
+# the control frames whole; --pieces without a surface is refused.
+tetskin_cli_test(simulate_surface_in_pieces SETUP pieces_run FRESH ${cli_out}/pieces_run
+  STDOUT "wrote [^\n]*pieces_run/run.pvd \\(3 frames\\)"
+  ARGS simulate ${data}/bunny.json --steps 2 --surface ${data}/bunny_8k.obj --pieces 2
+       -o ${cli_out}/pieces_run/run.pvd -q)
+tetskin_cli_test(info_simulated_surface_in_pieces REQUIRES pieces_run
+  STDOUT "run.pvd: time series, 3 time steps[^\n]*\n  part 0 +3 files, run_frames/control_00000.vtu .. run_frames/control_00002.vtu, all present\n  part 1 +3 files, run_frames/surface_00000.pvtp .. run_frames/surface_00002.pvtp, all present\n"
+  ARGS info ${cli_out}/pieces_run/run.pvd)
+tetskin_cli_test(simulate_pieces_without_surface FAIL STATUS 1
+  NOT_EXIST ${cli_out}/pieces_nothing.pvd
+  STDERR "^error: --pieces 3 splits the surface's frames: give the surface \\(--surface\\)\n$"
+  ARGS simulate ${data}/bunny.json --steps 1 --pieces 3 -o ${cli_out}/pieces_nothing.pvd)

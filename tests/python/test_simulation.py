@@ -92,6 +92,24 @@ def test_record_writes_a_series_with_the_surface(tmp_path, bunny, bunny_8k):
     assert np.abs(last - V).max() > 0
 
 
+def test_record_writes_the_surface_in_pieces(tmp_path, bunny, bunny_8k):
+    V, F = bunny_8k
+    binding = tetskin.bind(bunny, V, F, level=0)
+    sim = tetskin.Simulation(bunny, level=0, scenario="wobble", solver="cg")
+    with pytest.raises(tetskin.Error, match="record: pieces must be >= 1"):
+        sim.record(tmp_path / "bad.pvd", surface=binding, pieces=0)
+    sim.record(tmp_path / "run.pvd", surface=binding, pieces=3)
+    sim.step(2)
+    sim.stop_recording()
+    frames = tmp_path / "run_frames"
+    assert len(list(frames.glob("surface_*.pvtp"))) == 3
+    assert sorted(p.name for p in frames.glob("surface_00002_piece*.vtp")) == [
+        "surface_00002_piece%d.vtp" % k for k in range(3)]
+    last, faces = tetskin.read_surface(frames / "surface_00002.pvtp")  # read whole
+    assert last.shape == V.shape and (faces == F).all()
+    assert np.abs(last - V).max() > 0
+
+
 def test_a_step_runs_while_another_thread_reads(bunny):
     sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver="cg")
     seen = []

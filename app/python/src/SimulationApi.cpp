@@ -191,8 +191,9 @@ void addSimulationApi(py::module_& m) {
       .def(
           "record",
           [](Object& s, const std::filesystem::path& path, std::shared_ptr<BindingObject> surface,
-             int every) {
+             int every, int pieces) {
             if (every < 1) throw Error("record: every must be >= 1");
+            if (pieces < 1) throw Error("record: pieces must be >= 1");
             if (surface) {
               if (surface->dataset != s.dataset)
                 checkBindingFits(surface->bound, s.dataset->mesh, "surface");
@@ -207,13 +208,15 @@ void addSimulationApi(py::module_& m) {
               s.session->bindSurface(surface->bound.surface, surface->bound.binding,
                                      surface->bound.dataset);
             s.recordEvery = every;
-            s.session->record(path);
+            s.session->record(path, pieces);
             s.session->recordFrame();
           },
           py::arg("path"), py::arg("surface") = py::none(), py::arg("every") = 1,
+          py::arg("pieces") = 1,
           "Records the run to `path` (.pvd, frames in PATH_frames/) as `tetskin simulate -o` "
           "does: the state now, then every `every`-th step; with `surface` (a Binding of this "
-          "level), the surface deformed in each frame too.")
+          "level), the surface deformed in each frame too, as a .pvtp in `pieces` pieces "
+          "where pieces > 1 (simulate --pieces).")
       .def(
           "stop_recording",
           [](Object& s) {

@@ -97,9 +97,9 @@ void SimulationSession::logRow(Index step, const StepStats* stats, double second
   log_.push_back(row);
 }
 
-void SimulationSession::record(const std::filesystem::path& pvd) {
+void SimulationSession::record(const std::filesystem::path& pvd, int surfacePieces) {
   recorder_.reset();  // (its series stays as written)
-  recorder_ = std::make_unique<RunRecorder>(pvd, simulation_->conditions());
+  recorder_ = std::make_unique<RunRecorder>(pvd, simulation_->conditions(), surfacePieces);
 }
 
 void SimulationSession::recordFrame(const std::optional<SimulationState>& state,

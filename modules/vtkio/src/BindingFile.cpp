@@ -13,6 +13,7 @@
 #include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/vtkio/PartitionedSurface.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 #include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -205,9 +206,25 @@ std::string datasetOfField(const std::string& field, const std::filesystem::path
 }
 
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
+  if (lowerExtension(path) == ".pvtp") return writeBinding(path, bound, restPieces(bound, 1));
   const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
   addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
   writeVtp(path, data);
+}
+
+void writeBinding(const std::filesystem::path& path, const BoundSurface& bound,
+                  const std::vector<SurfacePiece>& pieces) {
+  if (lowerExtension(path) != ".pvtp")
+    throw Error(path.string(), 0, "a surface in pieces is written as a .pvtp");
+  const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
+  addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
+  writePvtp(path, data, pieces);
+}
+
+std::vector<SurfacePiece> restPieces(const BoundSurface& bound, int count) {
+  const SurfaceMesh& rest = bound.surface;
+  return splitSurface(rest.vertexCount(), rest.triangles,
+                      surfacePieces(rest.positions, rest.triangles, count));
 }
 
 BoundSurface bindingFromFile(vtkPolyData* data, const std::filesystem::path& path) {

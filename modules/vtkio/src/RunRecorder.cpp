@@ -7,6 +7,7 @@
 #include <regex>
 #include <utility>
 
+#include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SimulationFrame.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -26,17 +27,22 @@ std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& 
   return file.parent_path() / (file.stem().string() + "_frames");
 }
 
-RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions)
+RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions, int surfacePieces)
     : framesDirectory_(framesDirectory(pvd)),
       series_(withPvdExtension(pvd)),
-      conditions_(std::move(conditions)) {
+      conditions_(std::move(conditions)),
+      surfacePieces_(surfacePieces) {
+  if (surfacePieces < 1)
+    throw Error(series_.path().string(), 0,
+                "a surface is written in 1 or more pieces, not " + std::to_string(surfacePieces));
   std::filesystem::create_directories(framesDirectory_);
   // A run written under the name of an earlier one replaces it. The earlier
   // frames would otherwise stay beside the new ones, in one numbered
   // sequence with them (control_00000.vtu ...), which file dialogs such as
   // ParaView's offer as one series. Only files named as this class names
   // frames go, and the old .pvd, which names them.
-  static const std::regex frameName(R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?\.vtp))");
+  static const std::regex frameName(
+      R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?(\.vtp|\.pvtp|_piece\d+\.vtp)))");
   for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
     if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
       std::filesystem::remove(entry.path());
@@ -65,21 +71,33 @@ void RunRecorder::addSurfaceFrame(double time, const BoundSurface& deformedSurfa
 void RunRecorder::addSurfacesFrame(double time,
                                    const std::vector<const BoundSurface*>& deformedSurfaces) {
   for (std::size_t part = 0; part < deformedSurfaces.size(); ++part) {
-    char name[64];
-    std::snprintf(name, sizeof name, "surface_%05lld_%zu.vtp", static_cast<long long>(frames_),
-                  part);
-    writeBinding(framesDirectory_ / name, *deformedSurfaces[part]);
-    series_.add(time, static_cast<int>(part), framesDirectory_.filename().string() + "/" + name);
+    char stem[64];
+    std::snprintf(stem, sizeof stem, "surface_%05lld_%zu", static_cast<long long>(frames_), part);
+    writeSurface(time, static_cast<int>(part), stem, *deformedSurfaces[part]);
   }
   series_.write();
   ++frames_;
 }
 
 void RunRecorder::addSurface(double time, const BoundSurface& deformedSurface) {
-  char name[64];
-  std::snprintf(name, sizeof name, "surface_%05lld.vtp", static_cast<long long>(frames_));
-  writeBinding(framesDirectory_ / name, deformedSurface);
-  series_.add(time, 1, framesDirectory_.filename().string() + "/" + name);
+  char stem[64];
+  std::snprintf(stem, sizeof stem, "surface_%05lld", static_cast<long long>(frames_));
+  writeSurface(time, 1, stem, deformedSurface);
+}
+
+void RunRecorder::writeSurface(double time, int part, const std::string& stem,
+                               const BoundSurface& surface) {
+  const std::string name = stem + (surfacePieces_ > 1 ? ".pvtp" : ".vtp");
+  if (surfacePieces_ == 1) {
+    writeBinding(framesDirectory_ / name, surface);
+  } else {
+    if (piecesOfPart_.size() <= static_cast<std::size_t>(part))
+      piecesOfPart_.resize(static_cast<std::size_t>(part) + 1);
+    std::vector<SurfacePiece>& pieces = piecesOfPart_[static_cast<std::size_t>(part)];
+    if (pieces.empty()) pieces = restPieces(surface, surfacePieces_);
+    writeBinding(framesDirectory_ / name, surface, pieces);
+  }
+  series_.add(time, part, framesDirectory_.filename().string() + "/" + name);
 }
 
 }  // namespace tetskin

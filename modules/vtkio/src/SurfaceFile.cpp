@@ -96,9 +96,9 @@ SurfaceMesh readSurface(const std::filesystem::path& path) {
     if (std::filesystem::is_regular_file(path)) checkBinaryStlSize(path);
     return readWithVtk<vtkSTLReader>(path);
   }
-  if (e == ".vtp") return fromVtkPolyData(readVtp(path), path.string());
+  if (e == ".vtp" || e == ".pvtp") return fromVtkPolyData(readVtp(path), path.string());
   throw Error(path.string(), 0,
-              "unknown surface format '" + e + "' (expected .obj, .ply, .stl or .vtp)");
+              "unknown surface format '" + e + "' (expected .obj, .ply, .stl, .vtp or .pvtp)");
 }
 
 void writeSurface(const std::filesystem::path& path, const SurfaceMesh& mesh) {

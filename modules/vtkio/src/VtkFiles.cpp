@@ -18,6 +18,8 @@
 #include "VtkXmlHeader.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/FileNames.h"
+#include "tetskin/vtkio/PartitionedSurface.h"
 #include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin {
@@ -37,8 +39,10 @@ void writeXml(const std::filesystem::path& path, Data* data) {
   });
 }
 
+// (`allowEmpty`: a piece of a .pvtp may hold no points.)
 template <typename Reader, typename Data>
-vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_view type) {
+vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_view type,
+                              bool allowEmpty = false) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(path.string(), 0, "cannot open for reading");
   detail::checkVtkXmlData(path, detail::checkVtkXmlHeader(path, type));
@@ -47,7 +51,7 @@ vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_vie
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkSmartPointer<Data> out = reader->GetOutput();
-  if (errors.failed() || !out || out->GetNumberOfPoints() == 0)
+  if (errors.failed() || !out || (!allowEmpty && out->GetNumberOfPoints() == 0))
     throw Error(path.string(), 0, errors.message("contains no points"));
   return out;
 }
@@ -57,11 +61,16 @@ vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_vie
 void writeVtp(const std::filesystem::path& path, vtkPolyData* data) {
   writeXml<vtkXMLPolyDataWriter>(path, data);
 }
+
 void writeVtu(const std::filesystem::path& path, vtkUnstructuredGrid* data) {
   writeXml<vtkXMLUnstructuredGridWriter>(path, data);
 }
 vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path) {
+  if (lowerExtension(path) == ".pvtp") return readPvtp(path);
   return readXml<vtkXMLPolyDataReader, vtkPolyData>(path, "PolyData");
+}
+vtkSmartPointer<vtkPolyData> detail::readVtpPiece(const std::filesystem::path& path) {
+  return readXml<vtkXMLPolyDataReader, vtkPolyData>(path, "PolyData", true);
 }
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path) {
   return readXml<vtkXMLUnstructuredGridReader, vtkUnstructuredGrid>(path, "UnstructuredGrid");

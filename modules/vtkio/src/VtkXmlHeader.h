@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -65,5 +68,9 @@ VtkXmlLayout checkVtkXmlHeader(const std::filesystem::path& path, std::string_vi
 // and what it claims against what the file has. It never refuses a file
 // VTK reads completely.
 void checkVtkXmlData(const std::filesystem::path& path, const VtkXmlLayout& layout);
+
+// A .vtp checked and read as readVtp reads one, which may hold no points:
+// a piece of a .pvtp.
+vtkSmartPointer<vtkPolyData> readVtpPiece(const std::filesystem::path& path);
 
 }  // namespace tetskin::detail

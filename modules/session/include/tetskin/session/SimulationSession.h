@@ -82,8 +82,9 @@ class SimulationSession {
   const std::vector<StepLogRow>& stepLog() const { return log_; }
 
   // Records the run as a time series at `pvd` (RunRecorder) from the next
-  // recordFrame() on; replaces a recording in progress.
-  void record(const std::filesystem::path& pvd);
+  // recordFrame() on, the surface's frames in `surfacePieces` pieces;
+  // replaces a recording in progress.
+  void record(const std::filesystem::path& pvd, int surfacePieces = 1);
   bool recording() const { return recorder_ != nullptr; }
   // Ends the recording; the series stays as written.
   void stopRecording() { recorder_.reset(); }

@@ -20,6 +20,7 @@
 
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/core/SurfacePieces.h"
 #include "tetskin/core/TetMesh.h"
 
 class vtkDoubleArray;
@@ -108,7 +109,15 @@ std::string datasetField(const std::filesystem::path& dataset, const std::filesy
 std::string datasetOfField(const std::string& field, const std::filesystem::path& file);
 
 // Writes and reads a binding file, converting its Dataset (datasetField).
+// A .pvtp is written in one piece, and read whole (PartitionedSurface.h).
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound);
+// Writes a binding in `pieces` (from restPieces) to the .pvtp `path`.
+void writeBinding(const std::filesystem::path& path, const BoundSurface& bound,
+                  const std::vector<SurfacePiece>& pieces);
+// `count` compact pieces of the bound surface at rest, so that every frame
+// of a run is cut the same way (a rank reading piece k of each frame
+// follows the same part of the body).
+std::vector<SurfacePiece> restPieces(const BoundSurface& bound, int count);
 BoundSurface readBinding(const std::filesystem::path& path);
 // Reads a binding to use with `dataset`, checked against it: its level
 // exists, every vertex is bound to nodes of that level, with finite

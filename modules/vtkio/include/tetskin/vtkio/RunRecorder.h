@@ -24,8 +24,12 @@ class RunRecorder {
   // removes the frames of an earlier run written there (and its .pvd).
   // The run's `conditions` (its floor, if any, and prescribed nodes) go
   // into every control frame (SimulationFrame.h), so that the run is drawn
-  // with them.
-  explicit RunRecorder(std::filesystem::path pvd, RunConditions conditions = {});
+  // with them. With `surfacePieces` > 1, each surface frame is a .pvtp in
+  // that many pieces (PartitionedSurface.h), cut the same way in every frame
+  // (restPieces of the first); the control mesh, small and needed whole by
+  // every rank, stays one .vtu.
+  explicit RunRecorder(std::filesystem::path pvd, RunConditions conditions = {},
+                       int surfacePieces = 1);
   // The folder the frames of a run written to `pvd` go to (RUN_frames/).
   static std::filesystem::path framesDirectory(const std::filesystem::path& pvd);
   const std::filesystem::path& path() const { return series_.path(); }
@@ -45,10 +49,15 @@ class RunRecorder {
   std::filesystem::path framesDirectory_;  // absolute
   PvdSeries series_;
   RunConditions conditions_;
+  int surfacePieces_ = 1;
+  std::vector<std::vector<SurfacePiece>> piecesOfPart_;  // with surfacePieces_ > 1
   Index frames_ = 0;
 
   // Writes this frame's surface file and adds it to the series (unwritten).
   void addSurface(double time, const BoundSurface& deformedSurface);
+  // Writes `surface` as the frame's file `stem` + .vtp (or .pvtp in pieces)
+  // and adds it to the series as `part`.
+  void writeSurface(double time, int part, const std::string& stem, const BoundSurface& surface);
 };
 
 }  // namespace tetskin

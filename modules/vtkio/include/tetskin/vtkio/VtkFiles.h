@@ -15,6 +15,7 @@ namespace tetskin {
 
 void writeVtp(const std::filesystem::path& path, vtkPolyData* data);
 void writeVtu(const std::filesystem::path& path, vtkUnstructuredGrid* data);
+// A .vtp, or a .pvtp read whole (readPvtp).
 vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& path);
 vtkSmartPointer<vtkUnstructuredGrid> readVtu(const std::filesystem::path& path);
 void writePng(const std::filesystem::path& path, vtkImageData* image);
