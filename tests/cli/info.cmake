@@ -123,7 +123,7 @@ tetskin_cli_test(info_series_with_ampersand REQUIRES ampersand_run
   STDOUT "a&b.pvd: time series, 3 time steps.*a&b_frames/control_00002.vtu, all present"
   ARGS info ${cli_out}/a&b.pvd)
 tetskin_cli_test(info_unknown_kind FAIL STATUS 1
-  STDERR "^error: [^\n]*bunny_texture.png: info reads surfaces \\(.obj .ply .stl .vtp\\), tetrahedral meshes \\(.vtu, Gmsh .msh, MEDIT .mesh\\), time series \\(.pvd\\) and datasets \\(.json .node .ele\\), not '.png' files\n$"
+  STDERR "^error: [^\n]*bunny_texture.png: info reads surfaces \\(.obj .ply .stl .vtp .pvtp\\), tetrahedral meshes \\(.vtu, Gmsh .msh, MEDIT .mesh\\), time series \\(.pvd\\) and datasets \\(.json .node .ele\\), not '.png' files\n$"
   ARGS info ${data}/bunny_texture.png)
 tetskin_cli_test(info_drop_run_floor REQUIRES drop_run
   STDOUT "  level      0 \\(of the control-mesh frames\\)\n  floor      y = 0.0129493\n$"

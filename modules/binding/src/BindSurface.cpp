@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Error.h"
@@ -149,46 +151,85 @@ SurfaceBinding emptyBinding(const SurfaceMesh& surface, const BindingOptions& op
   return b;
 }
 
+// The chosen face among `faces` within `limit2` (squared) of p: the
+// tie-break's best.
+template <typename Faces>
+Choice choose(const ControlSurface& cs, const Faces& faces, double limit2, const Eigen::Vector3d& p,
+              const Eigen::Vector3d& np) {
+  Choice chosen;
+  for (const auto& [f, d2] : faces)
+    if (d2 <= limit2) {
+      const Choice c = evaluate(cs, f, p, np);
+      if (chosen.face < 0 || better(c, chosen)) chosen = c;
+    }
+  return chosen;
+}
+
+double squared(double x) {
+  return x * x;
+}
+
 SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
                            const BindingOptions& options, int level, bool bruteForce) {
   SurfaceBinding out = emptyBinding(surface, options, level);
   const Points3 normals = vertexNormals(surface.positions, surface.triangles);
   const double tolerance = options.tieTolerance * cs.diagonal;
+  const auto distance2 = [&](int f, const Eigen::Vector3d& p) {
+    return closestPointOnTriangle(p, cs.corner(f, 0), cs.corner(f, 1), cs.corner(f, 2))
+        .squaredDistance;
+  };
+  if (bruteForce) {  // (the reference the tree's search is tested against)
+    forEachVertex(surface.vertexCount(), [&](Index v) {
+      const Eigen::Vector3d p = surface.positions.row(v).transpose();
+      std::vector<std::pair<int, double>> faces;
+      double best2 = kInf;
+      for (int f = 0; f < cs.faces.rows(); ++f) {
+        faces.emplace_back(f, distance2(f, p));
+        best2 = std::min(best2, faces.back().second);
+      }
+      store(cs,
+            choose(cs, faces, squared(std::sqrt(best2) + tolerance), p, normals.row(v).transpose()),
+            v, out);
+    });
+    return out;
+  }
   std::vector<Aabb> boxes(static_cast<std::size_t>(cs.faces.rows()));
   for (Index f = 0; f < cs.faces.rows(); ++f)
     for (int k = 0; k < 3; ++k)
       boxes[static_cast<std::size_t>(f)].extend(cs.corner(static_cast<int>(f), k));
-  const AabbTree tree = bruteForce ? AabbTree() : AabbTree(boxes);
-  forEachVertex(surface.vertexCount(), [&](Index v) {
-    const Eigen::Vector3d p = surface.positions.row(v).transpose();
-    const Eigen::Vector3d np = normals.row(v).transpose();
-    // 1. The smallest true distance.
-    double best2 = kInf;
-    auto nearest = [&](int f, double& radius2) {
-      const double d2 = closestPointOnTriangle(p, cs.corner(f, 0), cs.corner(f, 1), cs.corner(f, 2))
-                            .squaredDistance;
-      if (d2 < radius2) radius2 = d2;
-    };
-    if (bruteForce) {
-      for (int f = 0; f < cs.faces.rows(); ++f) nearest(f, best2);
-    } else {
-      tree.forEachNear(p, best2, nearest);
+  const AabbTree tree(boxes);
+  parallelFor<Index>(0, surface.vertexCount(), 256, [&](const IndexRange<Index>& range) {
+    // One pass of the tree per vertex: the radius shrinks to the nearest
+    // distance so far plus the tie tolerance, and every face within it when
+    // visited is kept, so that the faces within the tolerance of the
+    // nearest (none of which the shrinking radius ever cuts off) are among
+    // them. It starts from the face chosen for the vertex before (the
+    // surface's neighbours are mostly numbered near each other), whose
+    // distance bounds the nearest from the start.
+    std::vector<std::pair<int, double>> faces;  // (face, squared distance), reused
+    int previous = -1;
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Eigen::Vector3d p = surface.positions.row(v).transpose();
+      faces.clear();
+      double best2 = kInf, radius2 = kInf;
+      const auto keep = [&](int f, double& r2) {
+        const double d2 = distance2(f, p);
+        if (d2 > r2) return;
+        faces.emplace_back(f, d2);
+        if (d2 < best2) {
+          best2 = d2;
+          r2 = squared(std::sqrt(d2) + tolerance);
+        }
+      };
+      if (previous >= 0) keep(previous, radius2);
+      tree.forEachNear(p, radius2, [&](int f, double& r2) {
+        if (f != previous) keep(f, r2);
+      });
+      const Choice chosen =
+          choose(cs, faces, squared(std::sqrt(best2) + tolerance), p, normals.row(v).transpose());
+      store(cs, chosen, v, out);
+      previous = chosen.face;
     }
-    // 2. Every face within the tolerance of it; the tie-break decides.
-    const double limit = std::sqrt(best2) + tolerance;
-    const double limit2 = limit * limit;
-    Choice chosen;
-    auto consider = [&](int f, double&) {
-      const Choice c = evaluate(cs, f, p, np);
-      if (c.squaredDistance <= limit2 && (chosen.face < 0 || better(c, chosen))) chosen = c;
-    };
-    double radius2 = limit2;
-    if (bruteForce) {
-      for (int f = 0; f < cs.faces.rows(); ++f) consider(f, radius2);
-    } else {
-      tree.forEachNear(p, radius2, consider);
-    }
-    store(cs, chosen, v, out);
   });
   return out;
 }
