@@ -75,6 +75,7 @@ void addBindCommand(CLI::App& app) {
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   addEnumOption<BindingMethod>(*cmd, "--method", "", a->method);
   addEnumOption<OffsetMode>(*cmd, "--offset", "", a->offset);
+  addCompressOption(*cmd);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 

@@ -244,6 +244,7 @@ void addCompareCommand(CLI::App& app) {
       ->group(kMotionGroup);
   addRunOptions(*cmd, a->run);
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
+  addCompressOption(*cmd);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 

@@ -207,6 +207,7 @@ void addConvertCommand(CLI::App& app) {
       ->required()
       ->expected(-2);
   cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
+  addCompressOption(*cmd);
   cmd->callback([o, cmd] {
     o->output = o->files.back();
     const std::vector<std::filesystem::path> inputs(o->files.begin(), o->files.end() - 1);

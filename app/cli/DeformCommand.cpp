@@ -137,9 +137,8 @@ void addDeformCommand(CLI::App& app) {
                   "deformed surface (.vtp, or .pvtp in pieces); for a recorded run, its series "
                   "(.pvd)")
       ->required();
-  cmd->add_option("--pieces", a->pieces, kPiecesHelp)
-      ->capture_default_str()
-      ->check(wholeNumber(1));
+  cmd->add_option("--pieces", a->pieces, kPiecesHelp)->capture_default_str()->check(wholeNumber(1));
+  addCompressOption(*cmd);
   cmd->callback([a] { run(*a); });
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::cli {
 
@@ -194,6 +195,17 @@ std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string&
   for (const CLI::Option* option : cmd.get_options())
     if (option->get_group() == group && option->count() > 0) return option->get_name();
   return std::nullopt;
+}
+
+}  // namespace tetskin::cli
+
+namespace tetskin::cli {
+
+void addCompressOption(CLI::App& cmd) {
+  auto name = std::make_shared<std::string>(toString(vtkCompression()));
+  addEnumOption<VtkCompression>(cmd, "--compress", "data of the .vtp/.vtu files written: ", *name)
+      ->each(
+          [name](const std::string& given) { setVtkCompression(fromName<VtkCompression>(given)); });
 }
 
 }  // namespace tetskin::cli

@@ -72,6 +72,10 @@ CLI::Option* addEnumOption(CLI::App& cmd, const std::string& flag, const std::st
       ->check(CLI::IsMember(namesOf<E>()));
 }
 
+// --compress for a command that writes .vtp/.vtu files: their data's
+// compression (VtkCompression, setVtkCompression), set as it is parsed.
+void addCompressOption(CLI::App& cmd);
+
 // true or false (also on/off, yes/no, 1/0, any letter case) for a bool
 // option. CLI11 alone reads any whole number as true ("--fur-fins 2") and
 // answers other words with "Could not convert".

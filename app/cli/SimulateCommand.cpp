@@ -219,15 +219,14 @@ void addSimulateCommand(CLI::App& app) {
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--pieces", a->pieces, kPiecesHelp)
-      ->capture_default_str()
-      ->check(wholeNumber(1));
+  cmd->add_option("--pieces", a->pieces, kPiecesHelp)->capture_default_str()->check(wholeNumber(1));
   cmd->add_option("--log", a->log,
                   "also write every step to this table (.csv): time, solver, iterations, "
                   "residual, floor contacts, the step's times by stage, kinetic, elastic and "
                   "gravitational energy")
       ->check(fileEnding(".csv"));
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");
+  addCompressOption(*cmd);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }
 

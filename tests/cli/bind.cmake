@@ -55,3 +55,17 @@ tetskin_cli_test(bind_medit_mesh REQUIRES medit_level STDOUT "bound 4001 vertice
 # for file.
 tetskin_cli_test(bind_for_recorded_run SETUP run_binding
   ARGS bind ${data}/bunny.json ${data}/bunny_8k.obj -o ${cli_out}/run_binding.vtp)
+
+# --compress (issue #56): the .vtp's data in zlib, lz4 (the default, as
+# bind_bunny wrote it) or none; another name is refused before any work.
+tetskin_cli_test(bind_compressed_with_zlib SETUP zlib_binding
+  ARGS bind ${data}/bunny.json ${data}/bunny.obj --compress zlib -o ${cli_out}/bunny_zlib.vtp)
+add_test(NAME cli.bind_compression_in_the_file COMMAND ${CMAKE_COMMAND}
+  -DFILES=${cli_out}/bunny_zlib.vtp|${cli_out}/bunny_binding.vtp
+  -DTEXTS=vtkZLibDataCompressor|vtkLZ4DataCompressor
+  -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckFileHeads.cmake)
+set_tests_properties(cli.bind_compression_in_the_file PROPERTIES LABELS cli
+  FIXTURES_REQUIRED "zlib_binding;binding")
+tetskin_cli_test(bind_unknown_compression FAIL STATUS 1 NOT_EXIST ${cli_out}/bunny_gzip.vtp
+  STDERR "^error: --compress: gzip not in {none,zlib,lz4} .see tetskin bind --help.\n$"
+  ARGS bind ${data}/bunny.json ${data}/bunny.obj --compress gzip -o ${cli_out}/bunny_gzip.vtp)

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <random>
 
 #include "ExpectError.h"
@@ -284,6 +285,37 @@ TEST(SurfaceFile, VtuRoundTrip) {
   const TetMesh back = fromVtkUnstructuredGrid(readVtu(dir / "m.vtu"), "m.vtu");
   EXPECT_EQ(back.nodes, m.nodes);
   EXPECT_EQ(back.elements, m.elements);
+}
+
+// The writers compress with LZ4 unless told otherwise; each compression
+// writes a file that reads back the same, and says which it is.
+TEST(SurfaceFile, EachCompressionWritesAFileThatReadsBackTheSame) {
+  EXPECT_EQ(vtkCompression(), VtkCompression::LZ4);
+  test::ScratchDir dir;
+  const SurfaceMesh m = bunny();
+  for (const auto& [compression, compressor] :
+       {std::pair{VtkCompression::None, ""},
+        std::pair{VtkCompression::ZLib, "vtkZLibDataCompressor"},
+        std::pair{VtkCompression::LZ4, "vtkLZ4DataCompressor"}}) {
+    SCOPED_TRACE(toString(compression));
+    setVtkCompression(compression);
+    const auto path = dir / (std::string(toString(compression)) + ".vtp");
+    writeSurface(path, m);
+    std::ifstream in(path, std::ios::binary);
+    std::string head(400, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    EXPECT_EQ(head.find("compressor="),
+              *compressor ? head.find(compressor) - 12 : std::string::npos)
+        << head;
+    const SurfaceMesh back = readSurface(path);
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.triangles, m.triangles);
+  }
+  setVtkCompression(VtkCompression::LZ4);
+  EXPECT_LT(std::filesystem::file_size(dir / "zlib.vtp"),
+            std::filesystem::file_size(dir / "lz4.vtp"));
+  EXPECT_LT(std::filesystem::file_size(dir / "lz4.vtp"),
+            std::filesystem::file_size(dir / "none.vtp"));
 }
 
 TEST(SurfaceFile, AssimpPlyAndStlCorpus) {

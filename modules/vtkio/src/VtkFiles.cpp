@@ -12,6 +12,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <array>
+#include <atomic>
 #include <fstream>
 #include <string>
 
@@ -25,6 +26,8 @@
 namespace tetskin {
 namespace {
 
+std::atomic<VtkCompression> compression{VtkCompression::LZ4};
+
 template <typename Writer, typename Data>
 void writeXml(const std::filesystem::path& path, Data* data) {
   writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
@@ -33,7 +36,17 @@ void writeXml(const std::filesystem::path& path, Data* data) {
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(data);
     writer->SetDataModeToAppended();
-    writer->SetCompressorTypeToZLib();
+    switch (compression.load()) {
+      case VtkCompression::None:
+        writer->SetCompressorTypeToNone();
+        break;
+      case VtkCompression::ZLib:
+        writer->SetCompressorTypeToZLib();
+        break;
+      case VtkCompression::LZ4:
+        writer->SetCompressorTypeToLZ4();
+        break;
+    }
     if (!writer->Write() || errors.failed())
       throw Error(path.string(), 0, "cannot write: " + errors.message());
   });
@@ -57,6 +70,13 @@ vtkSmartPointer<Data> readXml(const std::filesystem::path& path, std::string_vie
 }
 
 }  // namespace
+
+void setVtkCompression(VtkCompression value) {
+  compression = value;
+}
+VtkCompression vtkCompression() {
+  return compression;
+}
 
 void writeVtp(const std::filesystem::path& path, vtkPolyData* data) {
   writeXml<vtkXMLPolyDataWriter>(path, data);
