@@ -126,6 +126,22 @@ TEST(PartitionedSurface, PiecesReadBackAsTheWholeSurface) {
   EXPECT_NE(read->GetPointData()->GetArray("Displacement"), nullptr);
 }
 
+// A file name XML must escape ('&' is legal on disk): the summary names
+// its pieces well-formed and reads back whole.
+TEST(PartitionedSurface, NamesWithXmlCharactersReadBack) {
+  test::ScratchDir dir;
+  const vtkSmartPointer<vtkPolyData> whole = surfaceWithArrays();
+  writePvtp(dir / "a&b.pvtp", whole, piecesOf(whole, 2));
+  EXPECT_EQ(pvtpPieceFiles(dir / "a&b.pvtp").back(), dir / "a&b_piece1.vtp");
+  const vtkSmartPointer<vtkPolyData> back = readVtp(dir / "a&b.pvtp");
+  EXPECT_EQ(back->GetNumberOfPoints(), whole->GetNumberOfPoints());
+  expectSameArrays(whole->GetPointData(), back->GetPointData());
+  auto reader = vtkSmartPointer<vtkXMLPPolyDataReader>::New();
+  reader->SetFileName((dir / "a&b.pvtp").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(), whole->GetNumberOfPolys());
+}
+
 // A binding in pieces (readBinding, readSurface read .pvtp whole); written
 // again in fewer pieces, the earlier write's further pieces go.
 TEST(PartitionedSurface, BindingsAndSurfacesReadWholeAndRewritesLeaveNoStalePieces) {

@@ -205,20 +205,28 @@ std::string datasetOfField(const std::string& field, const std::filesystem::path
   return (file.parent_path() / field).lexically_normal().generic_string();
 }
 
-void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
-  if (lowerExtension(path) == ".pvtp") return writeBinding(path, bound, restPieces(bound, 1));
+namespace {
+
+// What a binding file at `path` holds: its Dataset named from the file's folder.
+vtkSmartPointer<vtkPolyData> bindingFileData(const std::filesystem::path& path,
+                                             const BoundSurface& bound) {
   const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
   addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
-  writeVtp(path, data);
+  return data;
+}
+
+}  // namespace
+
+void writeBinding(const std::filesystem::path& path, const BoundSurface& bound) {
+  if (lowerExtension(path) == ".pvtp") return writeBinding(path, bound, restPieces(bound, 1));
+  writeVtp(path, bindingFileData(path, bound));
 }
 
 void writeBinding(const std::filesystem::path& path, const BoundSurface& bound,
                   const std::vector<SurfacePiece>& pieces) {
   if (lowerExtension(path) != ".pvtp")
     throw Error(path.string(), 0, "a surface in pieces is written as a .pvtp");
-  const vtkSmartPointer<vtkPolyData> data = bindingToPolyData(bound);
-  addString(data->GetFieldData(), "Dataset", datasetField(bound.dataset, path));  // (replaces)
-  writePvtp(path, data, pieces);
+  writePvtp(path, bindingFileData(path, bound), pieces);
 }
 
 std::vector<SurfacePiece> restPieces(const BoundSurface& bound, int count) {

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "VtkXmlHeader.h"
+#include "XmlText.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/vtkio/VtkErrorCapture.h"
@@ -129,14 +130,14 @@ void writeArrayList(std::ostream& out, const char* element, vtkDataSetAttributes
   out << "    <" << element;
   for (int a = 0; a < vtkDataSetAttributes::NUM_ATTRIBUTES; ++a)
     if (vtkAbstractArray* array = data->GetAbstractAttribute(a); array && array->GetName())
-      out << ' ' << vtkDataSetAttributes::GetAttributeTypeAsString(a) << "=\"" << array->GetName()
-          << '"';
+      out << ' ' << vtkDataSetAttributes::GetAttributeTypeAsString(a) << "=\""
+          << detail::xmlEscaped(array->GetName()) << '"';
   out << ">\n";
   for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
     vtkAbstractArray* array = data->GetAbstractArray(i);
     out << "      <PDataArray type=\"" << xmlType(array) << "\" Name=\""
-        << (array->GetName() ? array->GetName() : "") << "\" NumberOfComponents=\""
-        << array->GetNumberOfComponents() << "\"/>\n";
+        << detail::xmlEscaped(array->GetName() ? array->GetName() : "")
+        << "\" NumberOfComponents=\"" << array->GetNumberOfComponents() << "\"/>\n";
   }
   out << "    </" << element << ">\n";
 }
@@ -152,7 +153,7 @@ void writeSummary(const std::filesystem::path& path, vtkPolyData* firstPiece, in
     out << "    <PPoints>\n      <PDataArray type=\"" << xmlType(firstPiece->GetPoints()->GetData())
         << "\" Name=\"Points\" NumberOfComponents=\"3\"/>\n    </PPoints>\n";
     for (int p = 0; p < pieces; ++p)
-      out << "    <Piece Source=\"" << pvtpPieceName(path, p) << "\"/>\n";
+      out << "    <Piece Source=\"" << detail::xmlEscaped(pvtpPieceName(path, p)) << "\"/>\n";
     out << "  </PPolyData>\n</VTKFile>\n";
   });
 }

@@ -8,36 +8,12 @@
 #include <cmath>
 #include <iomanip>
 
+#include "XmlText.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/vtkio/VtkErrorCapture.h"
 
 namespace tetskin {
-namespace {
-
-// A file name as an XML attribute value ('a&b_frames/...' is legal on disk).
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  return out;
-}
-
-}  // namespace
 
 PvdSeries::PvdSeries(std::filesystem::path pvdPath) : path_(std::move(pvdPath)) {}
 
@@ -102,7 +78,8 @@ void PvdSeries::write() const {
         << "  <Collection>\n";
     for (const Entry& e : entries_)
       out << "    <DataSet timestep=\"" << std::setprecision(17) << e.time
-          << "\" group=\"\" part=\"" << e.part << "\" file=\"" << escaped(e.file) << "\"/>\n";
+          << "\" group=\"\" part=\"" << e.part << "\" file=\"" << detail::xmlEscaped(e.file)
+          << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
   });
 }
