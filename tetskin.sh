@@ -22,7 +22,7 @@ JOBS=${JOBS:-$(nproc)}
 DEPS=(
   cmake ninja-build g++ pkg-config ccache dpkg-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtbb-dev
-  libvtk9-qt-dev qtbase5-dev libglew-dev libpng-dev zlib1g-dev
+  libvtk9-qt-dev qtbase5-dev libglew-dev libpng-dev zlib1g-dev liblz4-dev liblzma-dev
   libtet1.5-dev libnglib-dev libcgal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth assimp-testmodels netgen-doc paraview mpi-default-bin

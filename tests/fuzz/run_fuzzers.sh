@@ -5,11 +5,13 @@
 # grown. A crash or a broken invariant stops it with the input written to
 # BUILD/fuzz-crashes/ (commit it under tests/fuzz/regressions/TARGET/: the
 # regression suite then runs it in every build).
-# The run is reproducible: libFuzzer's seed is FUZZ_SEED (default 1) and a
-# target stops after FUZZ_RUNS inputs (default 200000) or SECONDS, whichever
-# comes first: a slower machine runs a prefix of the same inputs, so CI
-# fails only where a run here with the same settings fails. FUZZ_SEED=0
-# (a random seed) and a long SECONDS explore further.
+# libFuzzer's seed is FUZZ_SEED (default 1) and a target stops after
+# FUZZ_RUNS inputs (default 200000) or SECONDS, whichever comes first. The
+# inputs it tries still differ between machines (it orders seeds of equal
+# size as the file system lists them), so a failure prints what is needed
+# where only its log comes back (CI): the sanitizer's report and the input,
+# base64-encoded (`base64 -d` it into tests/fuzz/regressions/TARGET/).
+# FUZZ_SEED=0 (a random seed) and a long SECONDS explore further.
 # Usage: run_fuzzers.sh BUILD_DIR [SECONDS_PER_TARGET (default 30)]
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -31,7 +33,13 @@ for corpus in "$here"/corpus/*/; do
       -dict="$here/dict/$target.dict" -artifact_prefix="$crashes/$target-" \
       -print_final_stats=1 -rss_limit_mb=2048 -timeout=10 >"$log" 2>&1; then
     echo "fuzz_$target FAILED: see $log and $crashes" >&2
-    tail -30 "$log" >&2
+    grep -A 24 -m 1 -E '^==[0-9]+==.*ERROR|^SUMMARY|INFO: .* (crash|leak|oom|timeout)' "$log" >&2 ||
+      tail -30 "$log" >&2
+    for input in "$crashes/$target"-*; do
+      [ -f "$input" ] || continue
+      echo "input $(basename "$input") ($(stat -c %s "$input") bytes), base64:" >&2
+      base64 -w 100 "$input" >&2
+    done
     status=1
   fi
   executed=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')

@@ -173,6 +173,11 @@ TEST(VtkFiles, MalformedXmlAttributesAreRefusedBeforeVtkReadsThem) {
       {"Name=\"Points\" NumberOfComponents=\"3\"",
        "Name=\"Points\" NumberOfComponents=\"99999999999\"",
        "DataArray 'Points': NumberOfComponents '99999999999' is not a whole number in [1, 4096]"},
+      // (VTK leaked the points array where they were not 3-vectors.)
+      {"Name=\"Points\" NumberOfComponents=\"3\"", "Name=\"Points\" NumberOfComponents=\"2\"",
+       "Points 'Points': NumberOfComponents '2' (points have 3)"},
+      {"Name=\"Points\" NumberOfComponents=\"3\"", "Name=\"Points\"",
+       "Points 'Points': no NumberOfComponents (points have 3)"},
       {"NumberOfPoints=\"1839\"", "NumberOfPoints=\"-1\"",
        "Piece: NumberOfPoints '-1' is not a whole number >= 0"},
       {"Name=\"Level\" NumberOfTuples=\"1\"", "Name=\"Level\" NumberOfTuples=\"x\"",

@@ -151,6 +151,11 @@ class Corrupted {
     if (at != std::string::npos) text_.replace(at, from.size(), to);
     return *this;
   }
+  // Replaces the '_' that opens the appended data.
+  Corrupted& replaceUnderscore(const std::string& to) {
+    text_.replace(text_.find('_', text_.find("<AppendedData")), 1, to);
+    return *this;
+  }
   // Cuts the file `keep` bytes into its appended data.
   Corrupted& cutAppended(std::size_t keep) {
     text_.resize(text_.find('_', text_.find("<AppendedData")) + 1 + keep);
@@ -167,6 +172,15 @@ class Corrupted {
   std::string text_;
   int headerBytes_ = 4;
 };
+
+// Without its '_', appended data read from the first byte after white
+// space, as VTK's reader reads them.
+TEST(VtkXmlData, AppendedDataWithoutTheirUnderscoreRead) {
+  test::ScratchDir dir;
+  const Layout raw{"appended", vtkXMLWriter::NONE, false, false};
+  const auto path = dir.write("plain.vtp", Corrupted(dir, raw).replaceUnderscore("").text());
+  EXPECT_EQ(readVtp(path)->GetNumberOfPoints(), readVtp(dir / "good.vtp")->GetNumberOfPoints());
+}
 
 TEST(VtkXmlData, ACompressionHeaderClaimingMoreThanTheFileIsRefused) {
   test::ScratchDir dir;
@@ -197,6 +211,10 @@ TEST(VtkXmlData, ACompressionHeaderClaimingMoreThanTheFileIsRefused) {
       .expectRefused(level,
                      "array 'Level': its data are appended, but the file's <AppendedData> is "
                      "missing or empty (cut short?)");
+  // VTK's reader takes the first byte after white space for data where it
+  // is not the '_' it writes (the fuzzer's file asked for 2 GB that way).
+  Corrupted(dir, zlib).replaceUnderscore("J   ").expectRefused(
+      level, "array 'Level': its compression header claims 538976330 blocks;");
   Corrupted(dir, zlib)
       .replace("vtkZLibDataCompressor", "vtkZipDataCompressor")
       .expectRefused(1, "compressor 'vtkZipDataCompressor' is not one VTK reads");
@@ -241,6 +259,38 @@ TEST(VtkXmlData, AnArrayAllocatedMoreThanItsDataHoldIsRefused) {
       .replace("NumberOfPoints=\"1522\"", "NumberOfPoints=\"1600\"")
       .expectRefused(Corrupted(dir, ascii).lineOf("Normals"),
                      "array 'Normals': is allocated 4800 values; its text holds 4566");
+}
+
+// VTK's reader stores every string a String array's data hold, into an
+// array of its NumberOfTuples (it wrote past the end): in every layout,
+// each compressor's blocks decoded, more strings than tuples are refused.
+TEST(VtkXmlData, AStringArrayHoldingMoreStringsThanItsTuplesIsRefused) {
+  test::ScratchDir dir;
+  const vtkSmartPointer<vtkPolyData> surface = sphereWithFieldData();
+  auto names = vtkSmartPointer<vtkStringArray>::New();
+  names->SetName("Names");
+  for (const char* name : {"head", "", "tail"}) names->InsertNextValue(name);
+  surface->GetFieldData()->AddArray(names);
+  for (const Layout& l : everyLayout()) {
+    SCOPED_TRACE(describe(l));
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    configure(writer.Get(), l);
+    writer->SetInputData(surface);
+    writer->SetFileName((dir / "good.vtp").c_str());
+    ASSERT_EQ(writer->Write(), 1);
+    EXPECT_EQ(
+        readVtp(dir / "good.vtp")->GetFieldData()->GetAbstractArray("Names")->GetNumberOfTuples(),
+        3);
+    std::string text = test::readText(dir / "good.vtp");
+    const std::string from = "Name=\"Names\" NumberOfTuples=\"3\"";
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, from.size(), "Name=\"Names\" NumberOfTuples=\"2\"");
+    const auto path = dir.write("bad.vtp", text);
+    test::expectErrorAt([&] { readVtp(path); }, path.string(),
+                        1 + static_cast<long>(std::count(text.begin(), text.begin() + at, '\n')),
+                        "array 'Names': its data hold 3 strings; it is allocated 2");
+  }
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // The sizes a VTK XML file's binary data claim, checked against the file
 // before VTK allocates for them (see checkVtkXmlData in VtkXmlHeader.h).
+#include <lz4.h>
+#include <lzma.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -39,6 +41,38 @@ std::optional<Size> maxExpansion(std::string_view compressor) {
   return std::nullopt;
 }
 constexpr Size kExpansionSlack = 1024;
+
+// One block of `compressor`'s, decoded into `out` (as large as the block's
+// header says it decodes to): the bytes it decoded to, or nullopt where it
+// does not decode (VTK's reader fails there too).
+std::optional<std::size_t> decompress(std::string_view compressor,
+                                      const std::vector<unsigned char>& in,
+                                      std::vector<unsigned char>& out) {
+  if (compressor == "vtkZLibDataCompressor") {
+    uLongf size = static_cast<uLongf>(out.size());
+    if (uncompress(out.data(), &size, in.data(), static_cast<uLong>(in.size())) != Z_OK)
+      return std::nullopt;
+    return size;
+  }
+  if (compressor == "vtkLZ4DataCompressor") {
+    constexpr std::size_t kIntMax = std::numeric_limits<int>::max();
+    if (in.size() > kIntMax || out.size() > kIntMax) return std::nullopt;
+    const int size = LZ4_decompress_safe(reinterpret_cast<const char*>(in.data()),
+                                         reinterpret_cast<char*>(out.data()),
+                                         static_cast<int>(in.size()), static_cast<int>(out.size()));
+    if (size < 0) return std::nullopt;
+    return static_cast<std::size_t>(size);
+  }
+  if (compressor == "vtkLZMADataCompressor") {
+    std::uint64_t memoryLimit = std::uint64_t(1) << 30;
+    std::size_t inAt = 0, outAt = 0;
+    if (lzma_stream_buffer_decode(&memoryLimit, 0, nullptr, in.data(), &inAt, in.size(), out.data(),
+                                  &outAt, out.size()) != LZMA_OK)
+      return std::nullopt;
+    return outAt;
+  }
+  return std::nullopt;
+}
 
 // An unsigned integer of `size` bytes in the file's byte order.
 Size fromBytes(const unsigned char* bytes, Size size, bool bigEndian) {
@@ -188,7 +222,7 @@ class ArrayCheck {
       if (bytes > data.left())
         fail("its data header claims " + std::to_string(bytes) + " bytes; " +
              std::to_string(data.left()) + " are left in the file");
-      return bytes;
+      return bytes_ = bytes;
     }
     const Size blocks = word(data, "compression header");
     blockBytes_ = word(data, "compression header");
@@ -217,12 +251,11 @@ class ArrayCheck {
              std::to_string(compressed_[b]) + " to " + std::to_string(uncompressedBytes(b)) +
              " bytes; " + layout_.compressor + " expands at most " + std::to_string(expansion) +
              " times");
-    return blocks == 0 ? 0 : (blocks - 1) * blockBytes_ + uncompressedBytes(blocks - 1);
+    return bytes_ = blocks == 0 ? 0 : (blocks - 1) * blockBytes_ + uncompressedBytes(blocks - 1);
   }
 
   // Value `index` of the data, just after decodedBytes() read the header;
-  // nullopt where it cannot be read here (LZ4 or LZMA blocks; data VTK
-  // cannot read either).
+  // nullopt where it cannot be read (data VTK cannot read either).
   std::optional<long long> value(BinaryData& data, Size index) {
     const Size size = wordBytes(array_.type);
     const Size at = index * size;
@@ -231,20 +264,43 @@ class ArrayCheck {
       if (!data.skip(at) || !data.read(bytes.data(), size)) return std::nullopt;
       return decode(bytes.data());
     }
-    if (layout_.compressor != "vtkZLibDataCompressor" || blockBytes_ == 0) return std::nullopt;
+    if (blockBytes_ == 0) return std::nullopt;
     const Size block = at / blockBytes_;
     if (block >= compressed_.size()) return std::nullopt;
     Size before = 0;
     for (Size b = 0; b != block; ++b) before += compressed_[b];
-    std::vector<unsigned char> packed(static_cast<std::size_t>(compressed_[block]));
-    std::vector<unsigned char> unpacked(static_cast<std::size_t>(uncompressedBytes(block)));
-    uLongf unpackedSize = static_cast<uLongf>(unpacked.size());
-    if (!data.skip(before) || !data.read(packed.data(), packed.size()) ||
-        uncompress(unpacked.data(), &unpackedSize, packed.data(),
-                   static_cast<uLong>(packed.size())) != Z_OK ||
-        at % blockBytes_ + size > unpackedSize)
-      return std::nullopt;
-    return decode(unpacked.data() + at % blockBytes_);
+    if (!data.skip(before)) return std::nullopt;
+    const std::optional<std::vector<unsigned char>> unpacked = nextBlock(data, block);
+    if (!unpacked || at % blockBytes_ + size > unpacked->size()) return std::nullopt;
+    return decode(unpacked->data() + at % blockBytes_);
+  }
+
+  // How many strings the data of a String array hold (each ends in a 0
+  // byte; a last one may not), just after decodedBytes() read the header;
+  // where a block does not decode, those before it.
+  Size strings(BinaryData& data) {
+    Size count = 0;
+    bool open = false;  // the last byte seen ends no string
+    const auto countIn = [&](const unsigned char* bytes, std::size_t n) {
+      count += static_cast<Size>(std::count(bytes, bytes + n, 0));
+      if (n > 0) open = bytes[n - 1] != 0;
+    };
+    if (layout_.compressor.empty()) {
+      std::vector<unsigned char> chunk;
+      for (Size left = bytes_; left > 0;) {
+        chunk.resize(static_cast<std::size_t>(std::min<Size>(left, 1 << 16)));
+        if (!data.read(chunk.data(), chunk.size())) break;
+        countIn(chunk.data(), chunk.size());
+        left -= chunk.size();
+      }
+    } else {
+      for (std::size_t b = 0; b != compressed_.size(); ++b) {
+        const std::optional<std::vector<unsigned char>> unpacked = nextBlock(data, b);
+        if (!unpacked) break;
+        countIn(unpacked->data(), unpacked->size());
+      }
+    }
+    return count + (open ? 1 : 0);
   }
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -257,6 +313,17 @@ class ArrayCheck {
     const auto size = static_cast<Size>(layout_.headerBytes);
     if (!data.read(bytes.data(), size)) fail(std::string("the file ends inside its ") + header);
     return fromBytes(bytes.data(), size, layout_.bigEndian);
+  }
+  // Block `block`, read from where the data stand, decoded; nullopt where
+  // it does not decode.
+  std::optional<std::vector<unsigned char>> nextBlock(BinaryData& data, std::size_t block) {
+    std::vector<unsigned char> packed(static_cast<std::size_t>(compressed_[block]));
+    std::vector<unsigned char> unpacked(static_cast<std::size_t>(uncompressedBytes(block)));
+    if (!data.read(packed.data(), packed.size())) return std::nullopt;
+    const std::optional<std::size_t> size = decompress(layout_.compressor, packed, unpacked);
+    if (!size) return std::nullopt;
+    unpacked.resize(*size);
+    return unpacked;
   }
   Size uncompressedBytes(std::size_t block) const {
     return block + 1 == compressed_.size() && lastBlockBytes_ != 0 ? lastBlockBytes_ : blockBytes_;
@@ -273,26 +340,32 @@ class ArrayCheck {
   const std::string& file_;
   const VtkXmlLayout& layout_;
   const VtkXmlArray& array_;
+  Size bytes_ = 0;  // the data's decoded bytes
   Size blockBytes_ = 0, lastBlockBytes_ = 0;
   std::vector<Size> compressed_;
 };
 
 // An inline ascii array's text: how many values it holds at most (values
-// are separated by white space), and value `index` where asked.
+// are separated by white space), value `index` where asked, and the
+// strings its values spell (a String array's characters, each string ended
+// by a 0; a last one may not be).
 struct AsciiText {
   Size values = 0;
   std::optional<long long> wanted;
+  Size strings = 0;
 };
 AsciiText readAscii(std::ifstream& in, const VtkXmlArray& array, std::optional<Size> index) {
   AsciiText text;
   std::string token;
+  bool open = false;  // the last value ends no string
   const auto endToken = [&] {
     if (token.empty()) return;
-    if (index && text.values == *index) {
-      long long value = 0;
-      const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-      if (ec == std::errc() && end == token.data() + token.size()) text.wanted = value;
-    }
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    const bool number = ec == std::errc() && end == token.data() + token.size();
+    if (index && text.values == *index && number) text.wanted = value;
+    open = !(number && value == 0);
+    text.strings += open ? 0 : 1;
     ++text.values;
     token.clear();
   };
@@ -313,6 +386,7 @@ AsciiText readAscii(std::ifstream& in, const VtkXmlArray& array, std::optional<S
     }
   }
   endToken();
+  text.strings += open ? 1 : 0;
   return text;
 }
 
@@ -327,6 +401,14 @@ std::optional<Size> allocatedValues(const VtkXmlArray& array,
     if (found != connectivity.end() && found->second > 0) return static_cast<Size>(found->second);
   }
   return std::nullopt;
+}
+
+// VTK's reader stores every string a String array's data hold, into an
+// array allocated as its header says (it wrote past its end).
+void checkStrings(const ArrayCheck& check, Size strings, Size values) {
+  if (strings > values)
+    check.fail("its data hold " + std::to_string(strings) + " strings; it is allocated " +
+               std::to_string(values));
 }
 
 }  // namespace
@@ -359,6 +441,7 @@ void checkVtkXmlData(const std::filesystem::path& path, const VtkXmlLayout& layo
           check.fail("is allocated " + std::to_string(*values) + " values; its text holds " +
                      std::to_string(text.values));
         if (offsets && text.wanted) connectivityValues[array.cellSection] = *text.wanted;
+        if (array.type == "String" && values) checkStrings(check, text.strings, *values);
         continue;
       }
       if (array.format != "binary" && array.format != "appended") continue;  // VTK refuses it
@@ -381,6 +464,7 @@ void checkVtkXmlData(const std::filesystem::path& path, const VtkXmlLayout& layo
       if (offsets)
         if (const auto last = check.value(data, *lastOffset))
           connectivityValues[array.cellSection] = *last;
+      if (array.type == "String" && values) checkStrings(check, check.strings(data), *values);
     }
   }
 }

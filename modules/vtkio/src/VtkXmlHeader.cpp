@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <fstream>
 #include <istream>
@@ -77,8 +78,14 @@ class XmlTags {
   bool appended() const { return appended_; }
   // The offset of the next byte not yet read past.
   std::uint64_t position() const { return chunkBegin_ + at_; }
-  // Reads up to the next `c`, left unread; false at the end of the file.
-  bool skipTo(char c) { return readUntil(c, nullptr); }
+  // Reads past white space: the next other byte (left unread), nullopt at
+  // the end of the file.
+  std::optional<char> skipSpace() {
+    for (;; ++at_) {
+      if (at_ == chunk_.size() && !refill()) return std::nullopt;
+      if (!std::isspace(static_cast<unsigned char>(chunk_[at_]))) return chunk_[at_];
+    }
+  }
 
  private:
   bool refill() {
@@ -219,6 +226,13 @@ VtkXmlLayout checkVtkXmlHeader(const std::filesystem::path& path, std::string_vi
                     std::string(name) + " '" + arrayName + "': NumberOfComponents '" +
                         std::string(*components) + "' is not a whole number in [1, " +
                         std::to_string(kMaxComponents) + "]");
+      // VTK leaked the points it had allocated where they were not 3-vectors.
+      if (dataSection == "Points" && components != "3")
+        throw Error(file, line,
+                    "Points '" + arrayName + "': " +
+                        (components ? "NumberOfComponents '" + std::string(*components) + "'"
+                                    : std::string("no NumberOfComponents")) +
+                        " (points have 3)");
       const auto tuples = attribute(tag, "NumberOfTuples");
       if (tuples && !isWholeNumber(*tuples, 0))
         throw Error(file, line,
@@ -273,9 +287,12 @@ VtkXmlLayout checkVtkXmlHeader(const std::filesystem::path& path, std::string_vi
   }
   if (!rootSeen) throw Error(file, 0, "is not a VTK XML file (no <VTKFile> root element)");
   if (tags.appended()) {
-    // The data start after the first '_' (the tag's attributes are in tagText).
+    // The data start after the '_' that VTK writes after white space; as
+    // VTK's reader has it, where another byte stands there the data start
+    // with it (the tag's attributes are in tagText).
     layout.appendedBase64 = attribute(tagText, "encoding") == "base64";
-    if (tags.skipTo('_')) layout.appendedBegin = tags.position() + 1;
+    if (const std::optional<char> first = tags.skipSpace())
+      layout.appendedBegin = tags.position() + (*first == '_' ? 1 : 0);
   }
   return layout;
 }

@@ -40,7 +40,7 @@ struct VtkXmlLayout {
   bool bigEndian = false;
   std::string compressor;  // empty: the binary data is not compressed
   std::vector<VtkXmlArray> arrays;
-  std::optional<std::uint64_t> appendedBegin;  // the byte after <AppendedData ...>'s '_'
+  std::optional<std::uint64_t> appendedBegin;  // where <AppendedData ...>'s data start
   bool appendedBase64 = false;
 };
 
