@@ -31,3 +31,23 @@ if(TARGET tetskin-gui)
             -P ${CMAKE_CURRENT_SOURCE_DIR}/CliReference.cmake)
   set_tests_properties(cli.reference PROPERTIES LABELS cli)
 endif()
+
+# The command line starts without the GUI's, Python's and MPI's libraries
+# (nor Netgen's, which brings the last two): by the loader's account, for
+# --help and for info on a small file. Building with Netgen loads its module
+# (the check sees a library loaded later, by dlopen).
+set(heavy_libraries "libQt5|libpython|libmpi|libopen-pal|libnglib|libtetskin_netgen|libTK")
+add_test(NAME cli.help_loads_no_gui_python_mpi COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin>
+  -DARGS=--help "-DFORBIDDEN=${heavy_libraries}" -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckLoadedLibraries.cmake)
+add_test(NAME cli.info_loads_no_gui_python_mpi COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin>
+  "-DARGS=info|${data}/bunny.obj" "-DFORBIDDEN=${heavy_libraries}"
+  -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckLoadedLibraries.cmake)
+set_tests_properties(cli.help_loads_no_gui_python_mpi cli.info_loads_no_gui_python_mpi
+  PROPERTIES LABELS cli)
+if(TETSKIN_WITH_NETGEN)
+  add_test(NAME cli.netgen_build_loads_its_module COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin>
+    "-DARGS=build|${tdata}/cube_0.obj|-o|${cli_out}/netgen_cube|--mesher|netgen|--levels|1|-q"
+    -DFORBIDDEN=libQt5 "-DREQUIRED=libtetskin_netgen[.]so|libnglib"
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckLoadedLibraries.cmake)
+  set_tests_properties(cli.netgen_build_loads_its_module PROPERTIES LABELS cli)
+endif()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the Debian packages as a user would (cpack -G DEB) and checks what
-# is in them: tetskin has the executables, the data and the desktop entry and
-# does not depend on ParaView, and (where the Python module was built) has
+# is in them: tetskin has the executables, the data, the desktop entry and
+# Netgen's module (found from the packaged tetskin) and does not depend on
+# ParaView, and (where the Python module was built) has
 # it where Debian's python3 imports it from; where the ParaView plugin was built,
 # tetskin-paraview-plugin has it beside ParaView's own plugins, depends on
 # paraview 5.11, and ParaView loads it from there on its own (PV_PLUGIN_PATH,
@@ -37,6 +38,19 @@ depends=$(dpkg-deb -f "$main" Depends)
 # (The listing is kept: grep -q on a pipe would end dpkg-deb early, which
 # pipefail counts as a failure.)
 listing=$(dpkg-deb -c "$main")
+# (Unpacked outside the build folder: what runs from there takes the
+# build's own module.)
+unpackedMain=$(mktemp -d)
+trap 'rm -rf "$unpackedMain"' EXIT
+dpkg-deb -x "$main" "$unpackedMain"
+# Netgen's module (loaded when first used), and that the packaged tetskin
+# finds it where the package puts it: a Netgen build runs.
+if [[ -f $build/modules/meshing/libtetskin_netgen.so ]]; then
+  has "$main" usr/lib/tetskin/libtetskin_netgen.so
+  "$unpackedMain/usr/bin/tetskin" build "$(dirname "$0")/../data/cube_0.obj" \
+    -o "$out/netgen_cube" --mesher netgen --levels 1 -q >/dev/null ||
+    fail "the packaged tetskin does not mesh with Netgen"
+fi
 if [[ $python == 1 ]]; then
   has "$main" usr/lib/python3/dist-packages/tetskin/__init__.py
   # The module, its VTK filters, and that Debian's python3 imports them from
@@ -47,8 +61,6 @@ if [[ $python == 1 ]]; then
     fail "tetskin lacks the VTK filters' Python module"
   [[ $depends == *python3-numpy* ]] || fail "tetskin does not depend on python3-numpy: $depends"
   ! grep -q "\.a$" <<<"$listing" || fail "tetskin holds a static library"
-  unpackedMain=$out/unpacked-main
-  dpkg-deb -x "$main" "$unpackedMain"
   PYTHONPATH=$unpackedMain/usr/lib/python3/dist-packages /usr/bin/python3 -c \
     "import tetskin, tetskin.vtk; tetskin.vtk.vtkTetSkinBindSurface()" ||
     fail "the packaged Python module does not import"

@@ -90,6 +90,7 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
                      specs[*j].label + " (" + std::to_string(meshedCount[*j]) + " elements)"
                : std::string();
     };
+  if (options.mesher == MesherKind::Netgen) loadNetgen();  // once, before the jobs fork
   std::size_t done = 0;
   if (events.progress) events.progress(stage, 0, specs.size());
   const auto start = std::chrono::steady_clock::now();

@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/meshing/Meshers.h"
 
 #ifdef TETSKIN_HAVE_NETGEN
-namespace nglib {
-#include <nglib.h>
-}
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+
+#include "NetgenModuleApi.h"
 #endif
 
 namespace tetskin {
@@ -21,13 +27,78 @@ const char* netgenFinenessName(NetgenFineness fineness) {
 
 #ifdef TETSKIN_HAVE_NETGEN
 
+namespace {
+
+// The Netgen module's functions, loaded once (NetgenModuleApi.h says why
+// it is a module of its own).
+struct NetgenModule {
+  decltype(&tetskin_netgen_mesh) mesh = nullptr;
+  decltype(&tetskin_netgen_free) free = nullptr;
+};
+
+// The file of the code running this: the executable, or the library (the
+// Python module) that holds it.
+std::filesystem::path runningObject() {
+  Dl_info info{};
+  std::error_code error;
+  if (dladdr(reinterpret_cast<void*>(&runningObject), &info) && info.dli_fname &&
+      info.dli_fname[0] == '/')  // (the executable's own name may be relative)
+    if (auto path = std::filesystem::canonical(info.dli_fname, error); !error) return path;
+  return std::filesystem::canonical("/proc/self/exe", error);
+}
+
+// Where the module is: TETSKIN_NETGEN_MODULE if set; beside the build's
+// targets for what runs from the build folder; else installed, at
+// lib/tetskin/ under the prefix the running file is installed in (bin/tetskin,
+// or the Python package's folder: the first folder above it that has it).
+std::filesystem::path netgenModulePath() {
+  if (const char* given = std::getenv("TETSKIN_NETGEN_MODULE"); given && *given) return given;
+  const std::filesystem::path object = runningObject();
+  const std::filesystem::path built = TETSKIN_NETGEN_MODULE_BUILT;
+  const std::string buildDir = TETSKIN_BUILD_DIR;
+  if (object.string().rfind(buildDir + "/", 0) == 0) return built;
+  for (std::filesystem::path folder = object.parent_path(); folder.has_relative_path();
+       folder = folder.parent_path())
+    if (std::filesystem::exists(folder / TETSKIN_NETGEN_MODULE_INSTALLED))
+      return folder / TETSKIN_NETGEN_MODULE_INSTALLED;
+  return built;
+}
+
+const NetgenModule& netgenModule() {
+  static NetgenModule module;
+  static std::string error;
+  static std::once_flag loaded;
+  std::call_once(loaded, [] {
+    const std::filesystem::path path = netgenModulePath();
+    // (Kept loaded: nglib's static state lives as long as the process.)
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* why = dlerror();
+      error = "cannot load the Netgen module " + path.string() + ": " + (why ? why : "?") +
+              " (TETSKIN_NETGEN_MODULE gives its path)";
+      return;
+    }
+    module.mesh = reinterpret_cast<decltype(module.mesh)>(dlsym(handle, TETSKIN_NETGEN_MESH));
+    module.free = reinterpret_cast<decltype(module.free)>(dlsym(handle, TETSKIN_NETGEN_FREE));
+    if (!module.mesh || !module.free)
+      error = "the Netgen module " + path.string() + " lacks " + TETSKIN_NETGEN_MESH;
+  });
+  if (!error.empty()) throw Error(error);
+  return module;
+}
+
+}  // namespace
+
 bool netgenAvailable() {
   return true;
 }
 
+void loadNetgen() {
+  netgenModule();
+}
+
 TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fineness,
                                  double maxEdge) {
-  using namespace nglib;
   if (!(maxEdge >= 0.0) || !std::isfinite(maxEdge))
     throw Error("the Netgen element size bound must be a finite number >= 0, got " +
                 formatNumber(maxEdge));
@@ -44,50 +115,27 @@ TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fine
                                                      {0.75, 3.0, 2.0, 0.2, 0.06},
                                                      {1.0, 5.0, 3.0, 0.1, 0.04}}};
   const Preset& preset = presets[static_cast<std::size_t>(fineness)];
-  Ng_Init();
-  struct Exit {
-    ~Exit() { Ng_Exit(); }
-  } exitGuard;
-  Ng_STL_Geometry* geometry = Ng_STL_NewGeometry();
-  for (Index t = 0; t < surface.triangleCount(); ++t) {
-    std::array<std::array<double, 3>, 3> corners;
+  const TetskinNetgenParameters parameters{
+      maxEdge > 0.0 ? maxEdge : preset.maxhFraction * boundingBox(surface).diagonal(),
+      preset.fineness, preset.grading, preset.segments, preset.curvature};
+  std::vector<double> corners(9 * static_cast<std::size_t>(surface.triangleCount()));
+  for (Index t = 0; t < surface.triangleCount(); ++t)
     for (int k = 0; k < 3; ++k)
-      for (int c = 0; c < 3; ++c) corners[k][c] = surface.positions(surface.triangles(t, k), c);
-    Ng_STL_AddTriangle(geometry, corners[0].data(), corners[1].data(), corners[2].data());
-  }
-  if (Ng_STL_InitSTLGeometry(geometry) != NG_OK) throw Error("Netgen rejected the STL geometry");
-  Ng_Meshing_Parameters mp;
-  mp.maxh = maxEdge > 0.0 ? maxEdge : preset.maxhFraction * boundingBox(surface).diagonal();
-  mp.fineness = preset.fineness;
-  mp.grading = preset.grading;
-  mp.elementsperedge = preset.segments;
-  mp.elementspercurve = preset.curvature;
-  mp.second_order = 0;
-  Ng_Mesh* mesh = Ng_NewMesh();
-  struct Delete {
-    Ng_Mesh* m;
-    ~Delete() { Ng_DeleteMesh(m); }
-  } deleteGuard{mesh};
-  if (Ng_STL_MakeEdges(geometry, mesh, &mp) != NG_OK) throw Error("Netgen could not find edges");
-  if (Ng_STL_GenerateSurfaceMesh(geometry, mesh, &mp) != NG_OK)
-    throw Error("Netgen could not mesh the surface");
-  if (Ng_GenerateVolumeMesh(mesh, &mp) != NG_OK) throw Error("Netgen could not mesh the volume");
+      for (int c = 0; c < 3; ++c)
+        corners[static_cast<std::size_t>(9 * t + 3 * k + c)] =
+            surface.positions(surface.triangles(t, k), c);
+  const NetgenModule& netgen = netgenModule();
+  TetskinNetgenMesh result{};
+  netgen.mesh(corners.data(), corners.size() / 9, &parameters, &result);
+  struct Free {
+    const NetgenModule& netgen;
+    TetskinNetgenMesh& result;
+    ~Free() { netgen.free(&result); }
+  } freeGuard{netgen, result};
+  if (result.error) throw Error(result.error);
   TetMesh out;
-  const int np = Ng_GetNP(mesh), ne = Ng_GetNE(mesh);
-  if (ne <= 0) throw Error("Netgen produced no tetrahedra");
-  out.nodes.resize(np, 3);
-  for (int v = 0; v < np; ++v) {
-    double x[3];
-    Ng_GetPoint(mesh, v + 1, x);
-    out.nodes.row(v) << x[0], x[1], x[2];
-  }
-  out.elements.resize(ne, 4);
-  for (int e = 0; e < ne; ++e) {
-    int ids[10];
-    if (Ng_GetVolumeElement(mesh, e + 1, ids) != NG_TET)
-      throw Error("Netgen produced a non-tetrahedral element");
-    for (int k = 0; k < 4; ++k) out.elements(e, k) = ids[k] - 1;
-  }
+  out.nodes = Eigen::Map<const Points3>(result.nodes, result.nodeCount, 3);
+  out.elements = Eigen::Map<const Tetrahedra>(result.elements, result.elementCount, 4);
   orientElementsPositively(out);
   return out;
 }
@@ -97,6 +145,8 @@ TetMesh tetrahedralizeWithNetgen(const SurfaceMesh& surface, NetgenFineness fine
 bool netgenAvailable() {
   return false;
 }
+
+void loadNetgen() {}
 
 TetMesh tetrahedralizeWithNetgen(const SurfaceMesh&, NetgenFineness, double) {
   throw Error("this TetSkin was built without Netgen (TETSKIN_WITH_NETGEN=OFF)");

@@ -31,6 +31,12 @@ const char* netgenFinenessName(NetgenFineness fineness);
 // Whether this build has Netgen (CMake option TETSKIN_WITH_NETGEN).
 bool netgenAvailable();
 
+// Netgen lives in a module of its own (libtetskin_netgen.so; it brings MPI
+// and Python), loaded when first used. This loads it now: before forking
+// jobs that use it, so each does not load it again. Throws where it cannot
+// be loaded.
+void loadNetgen();
+
 // Netgen from the surface as STL geometry (remeshes the surface, then the
 // volume). A positive `maxEdge` replaces the preset's element size bound
 // (Netgen's maxh, an edge length), so it gives coarser meshes as well as
