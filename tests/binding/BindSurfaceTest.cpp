@@ -38,6 +38,29 @@ TEST(BindSurface, ClosestEqualsBruteForceOnTheBunny) {
   }
 }
 
+// A surface on the control surface itself: every vertex is a node, at
+// distance 0 from each face around it, so each is a tie the surface normal
+// helps break (bound after the tree's pass, with the normals of the tied
+// vertices alone): still the brute force's choice, vertex for vertex.
+TEST(BindSurface, ClosestEqualsBruteForceWhereEveryVertexIsATie) {
+  const MultiLevelTetMesh& mesh = sampleDataset().mesh;
+  const int level = 1;
+  const LevelRange& r = mesh.levels[level];
+  SurfaceMesh skin;
+  skin.positions = mesh.nodes.middleRows(r.firstNode, r.nodeCount);
+  skin.triangles = boundaryFaces(extractLevel(mesh, level)).faces;
+  const SurfaceBinding fast = bindSurface(skin, mesh, level);
+  const SurfaceBinding slow = bindClosestBruteForce(skin, mesh, level);
+  EXPECT_EQ(fast.controlIds, slow.controlIds);
+  EXPECT_EQ(fast.weights, slow.weights);
+  EXPECT_EQ(fast.faceId, slow.faceId);
+  // (A node's faces all hold it: the choice among them is the tie-break's.)
+  Index nodes = 0;
+  for (Index v = 0; v < skin.vertexCount(); ++v)
+    nodes += (fast.weights.row(v).head<3>().maxCoeff() > 1 - 1e-9) ? 1 : 0;
+  EXPECT_GT(nodes, skin.vertexCount() / 2);
+}
+
 // FaceId has one numbering for every method: the element the vertex is
 // bound to, in the dataset's numbering as the control ids are; its nodes
 // hold the vertex's control ids (three of them for a boundary face, all

@@ -41,5 +41,25 @@ TEST(VertexNormals, IsolatedVertexGetsZero) {
   EXPECT_EQ(a.offsets, (std::vector<int>{0, 1, 2, 3, 3}));
 }
 
+// The normals of a few vertices alone equal vertexNormals' bit for bit
+// (binding's tie-break compares signs of dot products with them), on a
+// surface with a repeated corner, an isolated vertex and random positions.
+TEST(VertexNormals, TheNormalsOfSomeVerticesAreTheWholeSurfacesBitForBit) {
+  SurfaceMesh s = test::merge(test::sphere({0, 0, 0}, 1.0, 9, 13), test::box({2, 0, 0}, {3, 1, 2}));
+  s.positions += 1e-3 * Points3::Random(s.positions.rows(), 3);
+  s.positions.conservativeResize(s.positions.rows() + 1, 3);  // an isolated vertex
+  s.positions.bottomRows(1) << 9, 9, 9;
+  s.triangles.conservativeResize(s.triangles.rows() + 1, 3);  // a corner twice
+  s.triangles.bottomRows(1) << 0, 0, 5;
+  const Points3 all = vertexNormals(s.positions, s.triangles);
+  const std::vector<Index> some = {0, 3, 5, 77, s.positions.rows() - 1};
+  const Points3 few = vertexNormalsOf(s.positions, s.triangles, some);
+  ASSERT_EQ(few.rows(), 5);
+  for (std::size_t i = 0; i < some.size(); ++i)
+    EXPECT_EQ(few.row(static_cast<Index>(i)), all.row(some[i])) << "vertex " << some[i];
+  EXPECT_EQ(few.row(4), Eigen::RowVector3d::Zero());
+  EXPECT_EQ(vertexNormalsOf(s.positions, s.triangles, {}).rows(), 0);
+}
+
 }  // namespace
 }  // namespace tetskin

@@ -3,9 +3,11 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -66,6 +68,7 @@ struct ControlSurface {
   std::vector<int> elements;  // per usable face: its element, level-local
   Points3 unitNormals;        // per usable face
   double diagonal = 0;
+  double meanEdge = 0;  // of the usable faces
   Index degenerateFaces = 0;
 
   Eigen::Vector3d corner(int face, int k) const {
@@ -100,7 +103,9 @@ ControlSurface controlSurface(BoundLevel bound, int level) {
                           b = cs.corner(static_cast<int>(i), 1),
                           c = cs.corner(static_cast<int>(i), 2);
     cs.unitNormals.row(static_cast<Index>(i)) = triangleNormal(a, b, c).transpose();
+    cs.meanEdge += ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
   }
+  cs.meanEdge /= static_cast<double>(usable.size());
   return cs;
 }
 
@@ -123,6 +128,8 @@ void store(const ControlSurface& cs, const Choice& choice, Index v, SurfaceBindi
     out.controlIds(v, k) = cs.faces(choice.face, k) + cs.level.nodeOffset;
     out.weights(v, k) = choice.bary[k];
   }
+  out.controlIds(v, 3) = -1;  // (a triangle's three)
+  out.weights(v, 3) = 0;
   out.distance[v] = choice.signedDistance;
   // (The element of the face, in the dataset's numbering: FaceId's one
   // numbering, SurfaceBinding.h.)
@@ -147,7 +154,15 @@ SurfaceBinding emptyBinding(const SurfaceMesh& surface, const BindingOptions& op
   b.method = options.method;
   b.offset = options.offset;
   b.level = level;
-  b.resize(surface.vertexCount());
+  // Left uninitialized: every method writes each vertex's every field in
+  // its parallel pass, which so touches the pages first (at 33M vertices
+  // 2.2 GB, which a serial fill took seconds to fault in).
+  const Index n = surface.vertexCount();
+  b.controlIds.resize(n, 4);
+  b.weights.resize(n, 4);
+  b.distance.resize(n);
+  b.faceId.resize(n);
+  b.minBarycentric.resize(n);
   return b;
 }
 
@@ -172,13 +187,13 @@ double squared(double x) {
 SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
                            const BindingOptions& options, int level, bool bruteForce) {
   SurfaceBinding out = emptyBinding(surface, options, level);
-  const Points3 normals = vertexNormals(surface.positions, surface.triangles);
   const double tolerance = options.tieTolerance * cs.diagonal;
   const auto distance2 = [&](int f, const Eigen::Vector3d& p) {
     return closestPointOnTriangle(p, cs.corner(f, 0), cs.corner(f, 1), cs.corner(f, 2))
         .squaredDistance;
   };
   if (bruteForce) {  // (the reference the tree's search is tested against)
+    const Points3 normals = vertexNormals(surface.positions, surface.triangles);
     forEachVertex(surface.vertexCount(), [&](Index v) {
       const Eigen::Vector3d p = surface.positions.row(v).transpose();
       std::vector<std::pair<int, double>> faces;
@@ -198,37 +213,116 @@ SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
     for (int k = 0; k < 3; ++k)
       boxes[static_cast<std::size_t>(f)].extend(cs.corner(static_cast<int>(f), k));
   const AabbTree tree(boxes);
+  // One pass of the tree for vertex v: the faces within the tie tolerance of
+  // the nearest (with their squared distances) into `faces`, their limit
+  // returned. The radius shrinks to the nearest distance so far plus the
+  // tolerance, and every face within it when visited is kept, so the faces
+  // within the tolerance of the nearest (none of which the shrinking radius
+  // ever cuts off) are among them. It starts from `start` (the face chosen
+  // for the vertex before: the surface's neighbours are mostly numbered
+  // near each other), whose distance bounds the nearest from the start.
+  const auto nearFaces = [&](const Eigen::Vector3d& p, int start,
+                             std::vector<std::pair<int, double>>& faces) {
+    faces.clear();
+    double best2 = kInf, radius2 = kInf;
+    const auto keep = [&](int f, double& r2) {
+      const double d2 = distance2(f, p);
+      if (d2 > r2) return;
+      faces.emplace_back(f, d2);
+      if (d2 < best2) {
+        best2 = d2;
+        r2 = squared(std::sqrt(d2) + tolerance);
+      }
+    };
+    if (start >= 0) keep(start, radius2);
+    tree.forEachNear(p, radius2, [&](int f, double& r2) {
+      if (f != start) keep(f, r2);
+    });
+    const double limit2 = squared(std::sqrt(best2) + tolerance);
+    std::erase_if(faces, [&](const std::pair<int, double>& face) { return face.second > limit2; });
+    return limit2;
+  };
+  // A vertex with one face within the tolerance takes it. Where several
+  // are, the tie-break asks the surface's normal there: those vertices
+  // (few) are bound after the pass, with the normals of theirs alone, not
+  // every vertex's (at 33M vertices the adjacency and normals took
+  // gigabytes and seconds).
+  std::vector<Index> tied;
+  std::mutex tiedMutex;
+  // How far past a vertex's tie limit the faces kept for the vertices after
+  // it reach: half a boundary edge (on bunny_64k Loop x3, 97% of the
+  // vertices then found their faces there; a quarter or a whole edge, 91%
+  // and 99%, were slower: fewer hits, or more faces a hit).
+  const double reach = 0.5 * cs.meanEdge;
   parallelFor<Index>(0, surface.vertexCount(), 256, [&](const IndexRange<Index>& range) {
-    // One pass of the tree per vertex: the radius shrinks to the nearest
-    // distance so far plus the tie tolerance, and every face within it when
-    // visited is kept, so that the faces within the tolerance of the
-    // nearest (none of which the shrinking radius ever cuts off) are among
-    // them. It starts from the face chosen for the vertex before (the
-    // surface's neighbours are mostly numbered near each other), whose
-    // distance bounds the nearest from the start.
     std::vector<std::pair<int, double>> faces;  // (face, squared distance), reused
+    std::vector<Index> tiedHere;
     int previous = -1;
+    // The faces within `radius` of `center`, a vertex met before, all of
+    // them: a vertex p whose faces within its tie limit lie inside that
+    // ball (|p - center| + limit <= radius) finds them there, without the
+    // tree. Neighbours on the surface are mostly numbered near each
+    // other, so most vertices do.
+    struct {
+      Eigen::Vector3d center = Eigen::Vector3d::Zero();
+      double radius = -1;
+      std::vector<int> faces;
+    } near;
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Eigen::Vector3d p = surface.positions.row(v).transpose();
-      faces.clear();
-      double best2 = kInf, radius2 = kInf;
-      const auto keep = [&](int f, double& r2) {
-        const double d2 = distance2(f, p);
-        if (d2 > r2) return;
-        faces.emplace_back(f, d2);
-        if (d2 < best2) {
-          best2 = d2;
-          r2 = squared(std::sqrt(d2) + tolerance);
+      double limit2 = kInf;
+      bool found = false;
+      if (near.radius > 0) {
+        faces.clear();
+        double best2 = kInf;
+        for (int f : near.faces) {
+          // (A face whose box lies beyond the limit so far is beyond it.)
+          if (boxes[static_cast<std::size_t>(f)].squaredDistance(p) > limit2) continue;
+          faces.emplace_back(f, distance2(f, p));
+          if (faces.back().second < best2) {
+            best2 = faces.back().second;
+            limit2 = squared(std::sqrt(best2) + tolerance);
+          }
         }
-      };
-      if (previous >= 0) keep(previous, radius2);
-      tree.forEachNear(p, radius2, [&](int f, double& r2) {
-        if (f != previous) keep(f, r2);
-      });
-      const Choice chosen =
-          choose(cs, faces, squared(std::sqrt(best2) + tolerance), p, normals.row(v).transpose());
-      store(cs, chosen, v, out);
-      previous = chosen.face;
+        // (With a margin for the rounding of the three distances.)
+        found = (p - near.center).norm() + std::sqrt(limit2) <= near.radius * (1 - 1e-9);
+        if (found)
+          std::erase_if(faces, [&](const std::pair<int, double>& f) { return f.second > limit2; });
+      }
+      if (!found) {
+        limit2 = nearFaces(p, previous, faces);
+        near.center = p;
+        near.radius = std::sqrt(limit2) + reach;
+        near.faces.clear();
+        double radius2 = squared(near.radius);
+        tree.forEachNear(p, radius2, [&](int f, double& r2) {
+          if (distance2(f, p) <= r2) near.faces.push_back(f);
+        });
+      }
+      if (faces.size() == 1) {
+        const Choice chosen = choose(cs, faces, limit2, p, Eigen::Vector3d::Zero());
+        store(cs, chosen, v, out);
+        previous = chosen.face;
+      } else {
+        tiedHere.push_back(v);
+        previous = std::min_element(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
+                     return a.second < b.second;
+                   })->first;
+      }
+    }
+    if (tiedHere.empty()) return;
+    const std::lock_guard<std::mutex> lock(tiedMutex);
+    tied.insert(tied.end(), tiedHere.begin(), tiedHere.end());
+  });
+  std::sort(tied.begin(), tied.end());
+  const Points3 tiedNormals = vertexNormalsOf(surface.positions, surface.triangles, tied);
+  parallelFor<Index>(0, static_cast<Index>(tied.size()), 64, [&](const IndexRange<Index>& range) {
+    std::vector<std::pair<int, double>> faces;
+    for (Index i = range.begin(); i != range.end(); ++i) {
+      const Index v = tied[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d p = surface.positions.row(v).transpose();
+      const double limit2 = nearFaces(p, -1, faces);
+      store(cs, choose(cs, faces, limit2, p, tiedNormals.row(i).transpose()), v, out);
     }
   });
   return out;

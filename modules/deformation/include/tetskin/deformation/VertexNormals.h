@@ -28,4 +28,11 @@ void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& tri
 // Convenience for one-off use (allocates).
 Points3 vertexNormals(const Points3& positions, const Triangles& triangles);
 
+// The normals of `vertices` alone (ascending, no repeats), row i for
+// vertices[i], bit for bit as vertexNormals gives them: one pass over the
+// triangles, no adjacency and no per-vertex arrays, for a few vertices of a
+// large surface (binding's ties).
+Points3 vertexNormalsOf(const ConstPoints3Ref& positions, const Triangles& triangles,
+                        const std::vector<Index>& vertices);
+
 }  // namespace tetskin
