@@ -227,7 +227,7 @@ VtkXmlLayout checkVtkXmlHeader(const std::filesystem::path& path, std::string_vi
                         std::string(*components) + "' is not a whole number in [1, " +
                         std::to_string(kMaxComponents) + "]");
       // VTK leaked the points it had allocated where they were not 3-vectors.
-      if (dataSection == "Points" && components != "3")
+      if (dataSection == "Points" && (!components || pieceCount(tag, "NumberOfComponents") != 3))
         throw Error(file, line,
                     "Points '" + arrayName + "': " +
                         (components ? "NumberOfComponents '" + std::string(*components) + "'"
