@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <vector>
-
 #include "Shapes.h"
 #include "tetskin/deformation/VertexNormals.h"
 
@@ -62,27 +59,6 @@ TEST(VertexNormals, TheNormalsOfSomeVerticesAreTheWholeSurfacesBitForBit) {
     EXPECT_EQ(few.row(static_cast<Index>(i)), all.row(some[i])) << "vertex " << some[i];
   EXPECT_EQ(few.row(4), Eigen::RowVector3d::Zero());
   EXPECT_EQ(vertexNormalsOf(s.positions, s.triangles, {}).rows(), 0);
-}
-
-// The adjacency is filled on every core; each vertex's triangles still come
-// in ascending order, as a serial fill gives them (the normals' summing
-// order), on a surface large enough to be split among threads.
-TEST(VertexNormals, AdjacencyListsEachVertexsTrianglesInAscendingOrder) {
-  const SurfaceMesh s = test::sphere({0, 0, 0}, 1.0, 300, 400);
-  ASSERT_GT(s.triangles.rows(), 200000);
-  const VertexTriangleAdjacency a = vertexTriangleAdjacency(s.triangles, s.positions.rows());
-  ASSERT_EQ(a.offsets.back(), 3 * s.triangles.rows());
-  std::vector<int> seen(static_cast<std::size_t>(s.triangles.rows()), 0);
-  for (Index v = 0; v < s.positions.rows(); ++v) {
-    const auto first = a.triangles.begin() + a.offsets[static_cast<std::size_t>(v)];
-    const auto last = a.triangles.begin() + a.offsets[static_cast<std::size_t>(v) + 1];
-    ASSERT_TRUE(std::is_sorted(first, last)) << "vertex " << v;
-    for (auto t = first; t != last; ++t) {
-      ASSERT_TRUE((s.triangles.row(*t).array() == static_cast<int>(v)).any()) << "vertex " << v;
-      ++seen[static_cast<std::size_t>(*t)];
-    }
-  }
-  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 3; }));
 }
 
 }  // namespace

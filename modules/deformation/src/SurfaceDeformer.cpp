@@ -17,24 +17,16 @@ SurfaceDeformer::SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBi
       adjacency_(vertexTriangleAdjacency(restSurface.triangles, restSurface.vertexCount())),
       faceScratch_(restSurface.triangleCount(), 3) {
   validateBinding(binding, restSurface.vertexCount(), controlRest.rows(), bindingName);
-  // (Filled on every core, which so touch the pages first: at 33M vertices
-  // 1.8 GB.)
   records_.resize(static_cast<std::size_t>(restSurface.vertexCount()));
-  maxControlId_ = parallelDeterministicReduce<Index>(
-      0, restSurface.vertexCount(), 1 << 14, Index{-1},
-      [&](const IndexRange<Index>& range, Index largest) {
-        for (Index v = range.begin(); v != range.end(); ++v) {
-          Record& r = records_[static_cast<std::size_t>(v)];
-          for (int c = 0; c < 4; ++c) {
-            r.ids[c] = c < controls_ ? binding.controlIds(v, c) : binding.controlIds(v, 0);
-            r.w[c] = c < controls_ ? binding.weights(v, c) : 0.0;
-            largest = std::max<Index>(largest, r.ids[c]);
-          }
-          r.d = binding.distance[v];
-        }
-        return largest;
-      },
-      [](Index a, Index b) { return std::max(a, b); });
+  for (Index v = 0; v < restSurface.vertexCount(); ++v) {
+    Record& r = records_[static_cast<std::size_t>(v)];
+    for (int c = 0; c < 4; ++c) {
+      r.ids[c] = c < controls_ ? binding.controlIds(v, c) : binding.controlIds(v, 0);
+      r.w[c] = c < controls_ ? binding.weights(v, c) : 0.0;
+      maxControlId_ = std::max<Index>(maxControlId_, r.ids[c]);
+    }
+    r.d = binding.distance[v];
+  }
   if (offset_ == OffsetMode::Displacement)
     shifts_ = displacementShifts(binding, restSurface.positions, controlRest);
 }

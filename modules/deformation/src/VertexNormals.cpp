@@ -3,40 +3,23 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <atomic>
 
 #include "tetskin/core/Parallel.h"
 
 namespace tetskin {
 
 VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Index vertexCount) {
-  // Counted and filled on every core with atomic increments, then each
-  // vertex's list sorted, so that it is the same as a serial fill would
-  // give: its triangles in ascending order (the normals' summing order).
-  constexpr Index kGrain = 1 << 16;
   VertexTriangleAdjacency a;
   a.offsets.assign(static_cast<std::size_t>(vertexCount) + 1, 0);
-  const auto slotOf = [](std::vector<int>& counters, Index v) {
-    return std::atomic_ref<int>(counters[static_cast<std::size_t>(v)])
-        .fetch_add(1, std::memory_order_relaxed);
-  };
-  parallelFor<Index>(0, triangles.rows(), kGrain, [&](const auto& r) {
-    for (Index t = r.begin(); t != r.end(); ++t)
-      for (int k = 0; k < 3; ++k) slotOf(a.offsets, triangles(t, k) + 1);
-  });
+  for (Index t = 0; t < triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++a.offsets[static_cast<std::size_t>(triangles(t, k)) + 1];
   for (std::size_t v = 1; v < a.offsets.size(); ++v) a.offsets[v] += a.offsets[v - 1];
   a.triangles.resize(static_cast<std::size_t>(a.offsets.back()));
   std::vector<int> fill(a.offsets.begin(), a.offsets.end() - 1);
-  parallelFor<Index>(0, triangles.rows(), kGrain, [&](const auto& r) {
-    for (Index t = r.begin(); t != r.end(); ++t)
-      for (int k = 0; k < 3; ++k)
-        a.triangles[static_cast<std::size_t>(slotOf(fill, triangles(t, k)))] = static_cast<int>(t);
-  });
-  parallelFor<Index>(0, vertexCount, kGrain, [&](const auto& r) {
-    for (Index v = r.begin(); v != r.end(); ++v)
-      std::sort(a.triangles.begin() + a.offsets[static_cast<std::size_t>(v)],
-                a.triangles.begin() + a.offsets[static_cast<std::size_t>(v) + 1]);
-  });
+  for (Index t = 0; t < triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k)
+      a.triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangles(t, k))]++)] =
+          static_cast<int>(t);
   return a;
 }
 

@@ -43,7 +43,6 @@ class SurfaceDeformer {
 
  private:
   struct Record {
-    Record() {}  // (left unfilled: the constructor fills each on every core)
     int ids[4];
     double w[4];
     double d;
