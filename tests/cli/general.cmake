@@ -46,7 +46,7 @@ set_tests_properties(cli.help_loads_no_gui_python_mpi cli.info_loads_no_gui_pyth
   PROPERTIES LABELS cli)
 if(TETSKIN_WITH_NETGEN)
   add_test(NAME cli.netgen_build_loads_its_module COMMAND ${CMAKE_COMMAND} -DTETSKIN=$<TARGET_FILE:tetskin>
-    "-DARGS=build|${tdata}/cube_0.obj|-o|${cli_out}/netgen_cube|--mesher|netgen|--levels|1|-q"
+    "-DARGS=build|${tdata}/cube_0.obj|-o|${cli_out}/netgen_cube|--mesher|netgen|--levels|1|--min-elements|10|--max-elements|200|-q"
     -DFORBIDDEN=libQt5 "-DREQUIRED=libtetskin_netgen[.]so|libnglib"
     -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckLoadedLibraries.cmake)
   set_tests_properties(cli.netgen_build_loads_its_module PROPERTIES LABELS cli)

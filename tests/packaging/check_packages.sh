@@ -48,7 +48,7 @@ dpkg-deb -x "$main" "$unpackedMain"
 if [[ -f $build/modules/meshing/libtetskin_netgen.so ]]; then
   has "$main" usr/lib/tetskin/libtetskin_netgen.so
   "$unpackedMain/usr/bin/tetskin" build "$(dirname "$0")/../data/cube_0.obj" \
-    -o "$out/netgen_cube" --mesher netgen --levels 1 -q >/dev/null ||
+    -o "$out/netgen_cube" --mesher netgen --levels 1 --min-elements 10 --max-elements 200 -q >/dev/null ||
     fail "the packaged tetskin does not mesh with Netgen"
 fi
 if [[ $python == 1 ]]; then
