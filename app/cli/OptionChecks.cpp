@@ -197,10 +197,6 @@ std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string&
   return std::nullopt;
 }
 
-}  // namespace tetskin::cli
-
-namespace tetskin::cli {
-
 void addCompressOption(CLI::App& cmd) {
   auto name = std::make_shared<std::string>(toString(vtkCompression()));
   addEnumOption<VtkCompression>(cmd, "--compress", "data of the .vtp/.vtu files written: ", *name)

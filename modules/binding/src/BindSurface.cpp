@@ -184,6 +184,35 @@ double squared(double x) {
   return x * x;
 }
 
+// The faces within the tie tolerance of the nearest to a point, gathered
+// one face at a time (from the tree, or from faces kept near a vertex
+// before): `limit2` shrinks to the nearest squared distance so far plus the
+// tolerance, squared, and a face beyond it is not kept; finish() drops the
+// faces kept before the limit shrank past them.
+struct NearestFaces {
+  explicit NearestFaces(double tieTolerance) : tolerance(tieTolerance) {}
+
+  const double tolerance;
+  std::vector<std::pair<int, double>> faces;  // (face, squared distance)
+  double best2 = kInf, limit2 = kInf;
+
+  void clear() {
+    faces.clear();
+    best2 = limit2 = kInf;
+  }
+  void keep(int f, double d2) {
+    if (d2 > limit2) return;
+    faces.emplace_back(f, d2);
+    if (d2 < best2) {
+      best2 = d2;
+      limit2 = squared(std::sqrt(d2) + tolerance);
+    }
+  }
+  void finish() {
+    std::erase_if(faces, [&](const std::pair<int, double>& face) { return face.second > limit2; });
+  }
+};
+
 SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
                            const BindingOptions& options, int level, bool bruteForce) {
   SurfaceBinding out = emptyBinding(surface, options, level);
@@ -213,34 +242,23 @@ SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
     for (int k = 0; k < 3; ++k)
       boxes[static_cast<std::size_t>(f)].extend(cs.corner(static_cast<int>(f), k));
   const AabbTree tree(boxes);
-  // One pass of the tree for vertex v: the faces within the tie tolerance of
-  // the nearest (with their squared distances) into `faces`, their limit
-  // returned. The radius shrinks to the nearest distance so far plus the
-  // tolerance, and every face within it when visited is kept, so the faces
-  // within the tolerance of the nearest (none of which the shrinking radius
-  // ever cuts off) are among them. It starts from `start` (the face chosen
-  // for the vertex before: the surface's neighbours are mostly numbered
-  // near each other), whose distance bounds the nearest from the start.
-  const auto nearFaces = [&](const Eigen::Vector3d& p, int start,
-                             std::vector<std::pair<int, double>>& faces) {
-    faces.clear();
-    double best2 = kInf, radius2 = kInf;
-    const auto keep = [&](int f, double& r2) {
-      const double d2 = distance2(f, p);
-      if (d2 > r2) return;
-      faces.emplace_back(f, d2);
-      if (d2 < best2) {
-        best2 = d2;
-        r2 = squared(std::sqrt(d2) + tolerance);
-      }
-    };
-    if (start >= 0) keep(start, radius2);
+  // One pass of the tree for point p: the faces within the tie tolerance of
+  // the nearest into `near`. Its radius is the shrinking limit, and every
+  // face within it when visited is kept, so the faces within the tolerance
+  // of the nearest (none of which the shrinking radius ever cuts off) are
+  // among them. It starts from `start` (the face chosen for the vertex
+  // before: the surface's neighbours are mostly numbered near each other),
+  // whose distance bounds the nearest from the start.
+  const auto searchTree = [&](const Eigen::Vector3d& p, int start, NearestFaces& near) {
+    near.clear();
+    if (start >= 0) near.keep(start, distance2(start, p));
+    double radius2 = near.limit2;
     tree.forEachNear(p, radius2, [&](int f, double& r2) {
-      if (f != start) keep(f, r2);
+      if (f == start) return;
+      near.keep(f, distance2(f, p));
+      r2 = near.limit2;
     });
-    const double limit2 = squared(std::sqrt(best2) + tolerance);
-    std::erase_if(faces, [&](const std::pair<int, double>& face) { return face.second > limit2; });
-    return limit2;
+    near.finish();
   };
   // A vertex with one face within the tolerance takes it. Where several
   // are, the tie-break asks the surface's normal there: those vertices
@@ -255,7 +273,7 @@ SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
   // and 99%, were slower: fewer hits, or more faces a hit).
   const double reach = 0.5 * cs.meanEdge;
   parallelFor<Index>(0, surface.vertexCount(), 256, [&](const IndexRange<Index>& range) {
-    std::vector<std::pair<int, double>> faces;  // (face, squared distance), reused
+    NearestFaces near(tolerance);  // reused
     std::vector<Index> tiedHere;
     int previous = -1;
     // The faces within `radius` of `center`, a vertex met before, all of
@@ -267,47 +285,40 @@ SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
       Eigen::Vector3d center = Eigen::Vector3d::Zero();
       double radius = -1;
       std::vector<int> faces;
-    } near;
+    } ball;
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Eigen::Vector3d p = surface.positions.row(v).transpose();
-      double limit2 = kInf;
       bool found = false;
-      if (near.radius > 0) {
-        faces.clear();
-        double best2 = kInf;
-        for (int f : near.faces) {
+      if (ball.radius > 0) {
+        near.clear();
+        for (int f : ball.faces)
           // (A face whose box lies beyond the limit so far is beyond it.)
-          if (boxes[static_cast<std::size_t>(f)].squaredDistance(p) > limit2) continue;
-          faces.emplace_back(f, distance2(f, p));
-          if (faces.back().second < best2) {
-            best2 = faces.back().second;
-            limit2 = squared(std::sqrt(best2) + tolerance);
-          }
-        }
+          if (boxes[static_cast<std::size_t>(f)].squaredDistance(p) <= near.limit2)
+            near.keep(f, distance2(f, p));
         // (With a margin for the rounding of the three distances.)
-        found = (p - near.center).norm() + std::sqrt(limit2) <= near.radius * (1 - 1e-9);
-        if (found)
-          std::erase_if(faces, [&](const std::pair<int, double>& f) { return f.second > limit2; });
+        found = (p - ball.center).norm() + std::sqrt(near.limit2) <= ball.radius * (1 - 1e-9);
+        if (found) near.finish();
       }
       if (!found) {
-        limit2 = nearFaces(p, previous, faces);
-        near.center = p;
-        near.radius = std::sqrt(limit2) + reach;
-        near.faces.clear();
-        double radius2 = squared(near.radius);
+        searchTree(p, previous, near);
+        ball.center = p;
+        ball.radius = std::sqrt(near.limit2) + reach;
+        ball.faces.clear();
+        double radius2 = squared(ball.radius);
         tree.forEachNear(p, radius2, [&](int f, double& r2) {
-          if (distance2(f, p) <= r2) near.faces.push_back(f);
+          if (distance2(f, p) <= r2) ball.faces.push_back(f);
         });
       }
-      if (faces.size() == 1) {
-        const Choice chosen = choose(cs, faces, limit2, p, Eigen::Vector3d::Zero());
+      if (near.faces.size() == 1) {
+        const Choice chosen = choose(cs, near.faces, near.limit2, p, Eigen::Vector3d::Zero());
         store(cs, chosen, v, out);
         previous = chosen.face;
       } else {
         tiedHere.push_back(v);
-        previous = std::min_element(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
-                     return a.second < b.second;
-                   })->first;
+        previous =
+            std::min_element(near.faces.begin(), near.faces.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; })
+                ->first;
       }
     }
     if (tiedHere.empty()) return;
@@ -317,12 +328,12 @@ SurfaceBinding bindClosest(const SurfaceMesh& surface, const ControlSurface& cs,
   std::sort(tied.begin(), tied.end());
   const Points3 tiedNormals = vertexNormalsOf(surface.positions, surface.triangles, tied);
   parallelFor<Index>(0, static_cast<Index>(tied.size()), 64, [&](const IndexRange<Index>& range) {
-    std::vector<std::pair<int, double>> faces;
+    NearestFaces near(tolerance);
     for (Index i = range.begin(); i != range.end(); ++i) {
       const Index v = tied[static_cast<std::size_t>(i)];
       const Eigen::Vector3d p = surface.positions.row(v).transpose();
-      const double limit2 = nearFaces(p, -1, faces);
-      store(cs, choose(cs, faces, limit2, p, tiedNormals.row(i).transpose()), v, out);
+      searchTree(p, -1, near);
+      store(cs, choose(cs, near.faces, near.limit2, p, tiedNormals.row(i).transpose()), v, out);
     }
   });
   return out;

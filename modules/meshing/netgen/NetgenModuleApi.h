@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The C interface of the Netgen module (libtetskin_netgen.so), which alone
-// links nglib. Netgen brings MPI, Python and OpenCASCADE with it: about 90
-// shared libraries and 0.2 s of CPU to load. TetSkin loads the module when
+// links nglib. Netgen brings MPI, Python and OpenCASCADE with it: 64 more
+// shared libraries and 0.15 to 0.2 s of CPU to load. TetSkin loads the module when
 // a mesh is first asked of Netgen (NetgenMesher.cpp), so every other
 // command starts without them.
 #include <cstddef>
