@@ -4,6 +4,8 @@
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -313,10 +315,28 @@ TEST(Solvers, NodeBlockMatrixProductEqualsTheSparseProduct) {
       ASSERT_EQ(blocks.diagonalBlock(node), diagonal) << "node " << node;
       ASSERT_EQ(single.diagonalBlock(node), diagonal.cast<float>()) << "node " << node;
     }
-    // Padding entries are zero, so a non-finite x touches only its own dofs'
-    // products through real entries.
-    for (std::size_t k = 0; k < blocks.values().size(); k += 4)
-      EXPECT_EQ(blocks.values()[k + 3], 0.0);
+    // A column is loaded with the entry after it (the fourth lane, left out
+    // of the sums): a non-finite x reaches only the rows whose blocks hold
+    // its column, through their real entries.
+    EXPECT_EQ(blocks.values().size(), 9 * static_cast<std::size_t>(blocks.blockCount()) + 1);
+    const Index poisoned = blocks.nodeCount() / 3;
+    Eigen::VectorXd withNan = v;
+    withNan(3 * poisoned + 1) = std::numeric_limits<double>::quiet_NaN();
+    Eigen::VectorXd fromNan, fromNanBaseline;
+    multiply(blocks, withNan, fromNan);
+    multiply(blocks, withNan, fromNanBaseline, SimdKernel::Baseline);
+    Eigen::VectorXf fromNanSingle;
+    multiply(single, withNan.cast<float>(), fromNanSingle);
+    for (Index node = 0; node < blocks.nodeCount(); ++node) {
+      const bool coupled = A.coeff(3 * node, 3 * poisoned + 1) != 0 ||
+                           A.coeff(3 * node + 1, 3 * poisoned + 1) != 0 ||
+                           A.coeff(3 * node + 2, 3 * poisoned + 1) != 0;
+      if (coupled) continue;
+      EXPECT_EQ(fromNan.segment<3>(3 * node), y.segment<3>(3 * node)) << "node " << node;
+      EXPECT_EQ(fromNanBaseline.segment<3>(3 * node), baseline.segment<3>(3 * node)) << node;
+      EXPECT_EQ(fromNanSingle.segment<3>(3 * node), singleY.segment<3>(3 * node)) << node;
+    }
+    EXPECT_TRUE(std::isnan(fromNan(3 * poisoned)));
     EXPECT_THROW(multiply(blocks, Eigen::VectorXd::Ones(A.rows() + 3), y), Error);
   }
   SparseMatrix scalar(6, 6);

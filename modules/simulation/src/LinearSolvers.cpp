@@ -175,7 +175,8 @@ template <typename Scalar>
 [[gnu::always_inline]] inline void prefetchBlockRow(const BasicNodeBlockMatrix<Scalar>& A, int u) {
   const auto row = [&](int node) {
     return reinterpret_cast<const char*>(A.values().data() +
-                                         12 * static_cast<std::ptrdiff_t>(A.blockStarts()[node]));
+                                         BasicNodeBlockMatrix<Scalar>::kBlockEntries *
+                                             static_cast<std::ptrdiff_t>(A.blockStarts()[node]));
   };
   for (const char *line = row(u), *end = row(u + 1); line < end; line += 64)
     __builtin_prefetch(line);
@@ -305,7 +306,7 @@ void invertDiagonalBlocks(const Matrix& A, std::vector<Eigen::Matrix<Scalar, 3, 
 }
 
 // The per-level data of a V-cycle in Scalar: the level matrices copied into
-// padded 3x3 blocks (NodeBlockMatrix.h; in float by default, which also
+// 3x3 blocks (NodeBlockMatrix.h; in float by default, which also
 // halves the memory traffic of the sweeps and products that bound the
 // cycle) and their inverse diagonal blocks.
 template <typename Scalar>

@@ -43,24 +43,23 @@ void BasicNodeBlockMatrix<Scalar>::allocate(const SparseMatrix& A) {
         blockStarts_[static_cast<std::size_t>(v)] + (outer[3 * v + 1] - outer[3 * v]) / 3;
   const auto blocks = static_cast<std::size_t>(blockStarts_.back());
   columns_.resize(blocks);
-  values_.resize(12 * blocks);
+  values_.resize(kBlockEntries * blocks + 1);  // (the zero after the last block)
+  values_.back() = 0;
 }
 
 namespace {
 
 // Block b of node v's rows of A into slot `slot` of the copy: its first
-// column and its entries column by column, each column padded to four.
+// column and its entries column by column.
 template <typename Scalar>
 [[gnu::always_inline]] inline void copyBlock(const SparseMatrix& A, Index v, int b, int* columns,
                                              Scalar* values, std::size_t slot) {
   const int* outer = A.outerIndexPtr();
   columns[slot] = A.innerIndexPtr()[outer[3 * v] + 3 * b];
-  Scalar* block = values + 12 * slot;
-  for (int c = 0; c < 3; ++c) {
+  Scalar* block = values + BasicNodeBlockMatrix<Scalar>::kBlockEntries * slot;
+  for (int c = 0; c < 3; ++c)
     for (int a = 0; a < 3; ++a)
-      block[4 * c + a] = static_cast<Scalar>(A.valuePtr()[outer[3 * v + a] + 3 * b + c]);
-    block[4 * c + 3] = 0;
-  }
+      block[3 * c + a] = static_cast<Scalar>(A.valuePtr()[outer[3 * v + a] + 3 * b + c]);
 }
 
 }  // namespace
@@ -133,9 +132,9 @@ Eigen::Matrix<Scalar, 3, 3> BasicNodeBlockMatrix<Scalar>::diagonalBlock(Index v)
                                           : columns_.begin() + (laterStarts_[node] - 1);
   Eigen::Matrix<Scalar, 3, 3> block = Eigen::Matrix<Scalar, 3, 3>::Zero();
   if (found < begin || found == end || *found != 3 * v) return block;
-  const Scalar* entries = values_.data() + 12 * (found - columns_.begin());
+  const Scalar* entries = values_.data() + kBlockEntries * (found - columns_.begin());
   for (int c = 0; c < 3; ++c)
-    for (int a = 0; a < 3; ++a) block(a, c) = entries[4 * c + a];
+    for (int a = 0; a < 3; ++a) block(a, c) = entries[3 * c + a];
   return block;
 }
 

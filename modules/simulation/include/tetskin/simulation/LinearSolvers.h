@@ -75,7 +75,7 @@ class BlockJacobi : public Preconditioner {
 // after it read each block once between them); an exact Cholesky solve on
 // the coarsest level. Fixed
 // nodes (Dirichlet) receive no coarse correction. The sweeps and residuals
-// run on copies of the level matrices in padded 3x3 blocks
+// run on copies of the level matrices in 3x3 blocks
 // (NodeBlockMatrix.h), in single precision by default (half the memory
 // traffic, and a block column is one 4-wide SSE operation).
 class MultigridPreconditioner : public Preconditioner {

@@ -3,10 +3,13 @@
 // A system in the node-block layout (LinearSolvers.h) copied into its 3x3
 // blocks for CG's product, its hot loop. In the row-major SparseMatrix the
 // nine entries of a block lie in three rows and its product is scalar code;
-// here each block is stored column by column, every column padded to four
-// entries, so a block times a 3-vector is three 4-wide multiply-adds: one
-// AVX2 instruction each where the CPU has AVX2 and FMA (that kernel is
-// chosen at run time), two SSE2 ones in the baseline kernel. On the
+// here each block is stored column by column, nine entries, and a block
+// times a 3-vector is three 4-wide multiply-adds of a column loaded with the
+// entry after it (the fourth lane, left out of the sums): one AVX2
+// instruction each where the CPU has AVX2 and FMA (that kernel is chosen at
+// run time), two SSE2 ones in the baseline kernel. Unpadded, a block is 9
+// entries where a padded one was 12: the products and sweeps that bound
+// the solvers stream their matrices from memory, so a quarter fewer bytes. On the
 // 12.7k-element level the AVX2 product takes about 0.6 of the SparseMatrix
 // one and the copy, once per step, about 1.5 products (simulation_bench
 // prints both in one run). The multigrid's V-cycle keeps float copies in the
@@ -53,8 +56,11 @@ class BasicNodeBlockMatrix {
 
   // Storage, for the kernels: node v's blocks are
   // blockStarts()[v] .. blockStarts()[v+1]-1; block k's first column is
-  // columns()[k] and its entries are values()[12 k + 4 c + a] = A(3v+a, columns()[k]+c)
-  // for a, c < 3 (entry 4 c + 3 is zero).
+  // columns()[k] and its entries are
+  // values()[kBlockEntries k + 3 c + a] = A(3v+a, columns()[k]+c) for a, c < 3;
+  // values() holds one zero after the last block, so that every column can
+  // be loaded four entries wide.
+  static constexpr int kBlockEntries = 9;
   const std::vector<int>& blockStarts() const { return blockStarts_; }
   const std::vector<int>& columns() const { return columns_; }
   const std::vector<Scalar>& values() const { return values_; }
@@ -101,14 +107,16 @@ constexpr int kMaxProductColumns = 16;
 void multiply(const NodeBlockMatrix& A, const DenseRows& X, DenseRows& Y,
               SimdKernel kernel = SimdKernel::Fastest);
 
-// Block k's three columns as `Lanes` vectors of four Scalar (the fourth
-// lane zero), loaded unaligned (memcpy); always inlined, so that in a caller
-// compiled for AVX2 they are AVX2 loads.
+// Block k's three columns as `Lanes` vectors of four Scalar, loaded
+// unaligned (memcpy); the fourth lane holds the entry after the column (the
+// next column's or block's first), which the kernels' sums leave out.
+// Always inlined, so that in a caller compiled for AVX2 they are AVX2 loads.
 template <typename Lanes, typename Scalar>
 [[gnu::always_inline]] inline void loadBlockColumns(const BasicNodeBlockMatrix<Scalar>& A, int k,
                                                     Lanes columns[3]) {
-  const Scalar* block = A.values().data() + 12 * static_cast<std::ptrdiff_t>(k);
-  for (int c = 0; c < 3; ++c) __builtin_memcpy(&columns[c], block + 4 * c, sizeof(Lanes));
+  const Scalar* block = A.values().data() + BasicNodeBlockMatrix<Scalar>::kBlockEntries *
+                                                static_cast<std::ptrdiff_t>(k);
+  for (int c = 0; c < 3; ++c) __builtin_memcpy(&columns[c], block + 3 * c, sizeof(Lanes));
 }
 
 // sums = sum of A_vu x_u over blocks first .. last-1 of A (some or all of
@@ -157,15 +165,15 @@ inline void blockRangeSum(const FloatNodeBlockMatrix& A, int first, int last, co
 // AVX2 product uses blockRowSumLanes with one AVX register).
 inline void blockRangeSum(const NodeBlockMatrix& A, int first, int last, const double* x,
                           int skipColumn, double sums[3]) {
-  double total[4] = {0, 0, 0, 0};
+  double total[3] = {0, 0, 0};
   const int* columns = A.columns().data();
   const double* values = A.values().data();
   for (int k = first; k < last; ++k) {
     if (columns[k] == skipColumn) continue;
-    const double* block = values + 12 * static_cast<std::ptrdiff_t>(k);
+    const double* block = values + NodeBlockMatrix::kBlockEntries * static_cast<std::ptrdiff_t>(k);
     const double* xc = x + columns[k];
-    for (int a = 0; a < 4; ++a)
-      total[a] += block[a] * xc[0] + block[4 + a] * xc[1] + block[8 + a] * xc[2];
+    for (int a = 0; a < 3; ++a)
+      total[a] += block[a] * xc[0] + block[3 + a] * xc[1] + block[6 + a] * xc[2];
   }
   for (int a = 0; a < 3; ++a) sums[a] = total[a];
 }
