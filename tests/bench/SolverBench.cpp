@@ -60,6 +60,7 @@ struct Solver {
   SolverKind kind = SolverKind::ConjugateGradient;
   std::function<std::unique_ptr<Preconditioner>()> preconditioner;
   CoarseLevels coarseLevels = SimulationOptions{}.coarseLevels;
+  MultigridSmoother smoother = SimulationOptions{}.smoother;
 };
 
 constexpr int kCholmodKeptSteps = 10, kAmgSetupEvery = 4;
@@ -71,6 +72,13 @@ std::vector<Solver> allSolvers() {
           // The multigrid over the dataset's own coarser levels (before
           // issue #51 its only hierarchy): what the solver's grids gain.
           {"mg-dataset", SolverKind::Multigrid, {}, CoarseLevels::Dataset},
+          // The multigrid with the block Gauss-Seidel smoother (before, its
+          // only one) instead of Chebyshev's.
+          {"mg-gauss-seidel",
+           SolverKind::Multigrid,
+           {},
+           SimulationOptions{}.coarseLevels,
+           MultigridSmoother::GaussSeidel},
           {"cholmod", SolverKind::ConjugateGradient, [] { return bench::cholmodFactor(1); }},
           {"cholmod-pcg/" + std::to_string(kCholmodKeptSteps), SolverKind::ConjugateGradient,
            [] { return bench::cholmodFactor(kCholmodKeptSteps); }},
@@ -99,6 +107,7 @@ Run run(const Level& level, const MaterialRow& material, const Solver& solver, i
   options.solver = solver.kind;
   options.preconditioner = solver.preconditioner;
   options.coarseLevels = solver.coarseLevels;
+  options.smoother = solver.smoother;
   options.tolerance = 1e-6;
   Run r;
   try {

@@ -6,7 +6,7 @@ import json
 import sys
 
 MATERIALS = ["E 2e5", "E 2e6", "E 2e7", "E 2e6, nu 0.45"]
-SOLVERS = ["cg", "multigrid", "auto", "cholmod", "cholmod-pcg/10", "amg-pcg/4"]
+SOLVERS = ["cg", "multigrid", "mg-gauss-seidel", "auto", "cholmod", "cholmod-pcg/10", "amg-pcg/4"]
 
 data = json.load(open(sys.argv[1]))
 repetitions = int(sys.argv[2])

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <string>
 
 #include "SampleData.h"
 #include "tetskin/core/Error.h"
@@ -90,6 +91,19 @@ TEST(Solvers, CgAndMultigridAgreeWithADirectSolve) {
   EXPECT_LT((xGrids - reference).norm() / reference.norm(), 1e-8);
   EXPECT_LT(mgStats.iterations, cg.iterations);
   EXPECT_LT(gridStats.iterations * 2, cg.iterations);
+  // Every smoother (Chebyshev, the default, above) solves it too.
+  for (int degree : {1, 3})
+    for (MultigridSmoother smoother :
+         {MultigridSmoother::GaussSeidel, MultigridSmoother::Chebyshev}) {
+      MultigridPreconditioner other(prolongations);
+      other.setSmoother(smoother, degree);
+      other.setup(A);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+      const SolveStats stats = conjugateGradient(A, b, x, other, 1e-10, 5000);
+      EXPECT_LT((x - reference).norm() / reference.norm(), 1e-8) << degree;
+      EXPECT_LT(stats.iterations, cg.iterations) << degree;
+    }
+  EXPECT_THROW(mg.setSmoother(MultigridSmoother::Chebyshev, 0), Error);
 
   // Coarse operators reused from an earlier system: still the exact solution
   // of this one, with a few iterations more at most.
@@ -466,26 +480,71 @@ TEST(Solvers, MultigridCycleIsSymmetric) {
   }
   const Eigen::VectorXd u = Eigen::VectorXd::Random(A.rows());
   const Eigen::VectorXd v = Eigen::VectorXd::Random(A.rows());
-  // One sweep each way (the first from zero, fused with its residual) and
-  // two (the second a full sweep, the residual a product).
-  for (int sweeps : {1, 2}) {
+  // Gauss-Seidel: one sweep each way (the first from zero, fused with its
+  // residual) and two (the second a full sweep, the residual a product);
+  // Chebyshev of degrees 1 to 3 (the same polynomial before and after).
+  struct Smoothing {
+    MultigridSmoother smoother;
+    int count;  // sweeps or degree
+  };
+  for (const Smoothing smoothing :
+       {Smoothing{MultigridSmoother::GaussSeidel, 1}, Smoothing{MultigridSmoother::GaussSeidel, 2},
+        Smoothing{MultigridSmoother::Chebyshev, 1}, Smoothing{MultigridSmoother::Chebyshev, 2},
+        Smoothing{MultigridSmoother::Chebyshev, 3}}) {
+    const bool chebyshev = smoothing.smoother == MultigridSmoother::Chebyshev;
+    const std::string name =
+        (chebyshev ? "Chebyshev " : "Gauss-Seidel ") + std::to_string(smoothing.count);
     std::vector<Eigen::VectorXd> results;
     for (bool single : {false, true}) {
-      MultigridPreconditioner mg(prolongations, sweeps);
+      MultigridPreconditioner mg(prolongations, chebyshev ? 1 : smoothing.count);
+      mg.setSmoother(smoothing.smoother, chebyshev ? smoothing.count : 2);
       mg.setSinglePrecision(single);
       mg.setup(A);
       Eigen::VectorXd Mu, Mv;
       mg.apply(u, Mu);
       mg.apply(v, Mv);
       // Symmetric in double up to rounding; in float up to its rounding.
-      EXPECT_NEAR(u.dot(Mv), v.dot(Mu), (single ? 1e-5 : 1e-10) * std::abs(u.dot(Mv)))
-          << sweeps << " sweeps";
-      EXPECT_GT(u.dot(Mu), 0);  // and positive
+      EXPECT_NEAR(u.dot(Mv), v.dot(Mu), (single ? 1e-5 : 1e-10) * std::abs(u.dot(Mv))) << name;
+      EXPECT_GT(u.dot(Mu), 0) << name;  // and positive
+      EXPECT_GT(v.dot(Mv), 0) << name;
       results.push_back(Mu);
     }
     // The float cycle is the double one up to rounding.
-    EXPECT_LT((results[1] - results[0]).norm(), 1e-5 * results[0].norm()) << sweeps << " sweeps";
+    EXPECT_LT((results[1] - results[0]).norm(), 1e-5 * results[0].norm()) << name;
   }
+}
+
+// The Chebyshev smoother relaxes every node from its neighbours' old values
+// alone: one thread or two give the same bits, and the cycle damps the
+// error of a smooth and of a rough right-hand side alike.
+TEST(Solvers, ChebyshevCycleIsTheSameOnAnyNumberOfThreads) {
+  const Dataset& d = sampleDataset();
+  SimulationOptions options;
+  Simulation sim(d.mesh, 2, options);
+  CorotatedFem fem(sim.restMesh(), options.material);
+  Eigen::VectorXd f;
+  SparseMatrix A = fem.pattern();
+  fem.update(fem.restPositions(), f, A);
+  A *= options.timeStep * options.timeStep;
+  for (Index i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += fem.lumpedMass()[i];
+  const std::vector<SparseMatrix> prolongations = enclosingGrids(sim.restMesh()).prolongations();
+  const Eigen::VectorXd r = Eigen::VectorXd::Random(A.rows());
+  std::vector<Eigen::VectorXd> results;
+  for (int threads : {1, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    MultigridPreconditioner mg(prolongations);
+    mg.setup(A);
+    Eigen::VectorXd z;
+    mg.apply(r, z);
+    results.push_back(z);
+  }
+  EXPECT_EQ(results[0], results[1]);
+  // One application reduces the error of A x = r: |x - M r|_A < |x|_A.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct((Eigen::SparseMatrix<double>(A)));
+  const Eigen::VectorXd x = direct.solve(r);
+  const Eigen::VectorXd error = x - results[0];
+  EXPECT_LT(error.dot(A * error), 0.5 * x.dot(A * x));
 }
 
 // A caller's preconditioner (SimulationOptions::preconditioner) is CG's:

@@ -315,6 +315,10 @@ struct Cycle {
   std::vector<BasicNodeBlockMatrix<Scalar>> blocks;                        // per level
   std::vector<std::vector<Eigen::Matrix<Scalar, 3, 3>>> inverseDiagonals;  // per level
   std::vector<Vector> b, x, r;  // scratch per level: right-hand side, solution, residual
+  // Chebyshev smoothing: per level the search direction and its successor,
+  // and the largest eigenvalue of D^-1 A with its eigenvector estimate.
+  std::vector<Vector> d, nextD, eigenvector;
+  std::vector<double> largestEigenvalue;
 
   void resize(std::size_t levels) {
     blocks.resize(levels);
@@ -322,16 +326,163 @@ struct Cycle {
     b.resize(levels);
     x.resize(levels);
     r.resize(levels);
+    d.resize(levels);
+    nextD.resize(levels);
+    eigenvector.resize(levels);
+    largestEigenvalue.assign(levels, 0.0);
   }
   // After level l's matrix changed. (The diagonal blocks are read from
   // the copy: on the 109k-element level 1.7-1.8 ms against 2.6-3.5 ms from
   // A's rows. In float the inverse is that of the rounded blocks, the ones
   // the sweeps use.)
-  void prepare(const SparseMatrix& A, std::size_t l, const SweepOrder& order) {
-    blocks[l].assignInSweepOrder(A, order.rank);
+  // (Chebyshev smoothing reads whole rows in any order: the plain copy, a
+  // third faster than the one in sweep order.)
+  void prepare(const SparseMatrix& A, std::size_t l, const SweepOrder& order, bool inSweepOrder) {
+    if (inSweepOrder)
+      blocks[l].assignInSweepOrder(A, order.rank);
+    else
+      blocks[l].assign(A);
     invertDiagonalBlocks(blocks[l], inverseDiagonals[l]);
   }
 };
+
+// z_v = D_v^-1 r_v over nodes [first, last).
+template <typename Scalar>
+[[gnu::always_inline]] inline Eigen::Matrix<Scalar, 3, 1> inverseDiagonalTimes(
+    const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal, Index v, const Scalar* r) {
+  return inverseDiagonal[static_cast<std::size_t>(v)] *
+         Eigen::Map<const Eigen::Matrix<Scalar, 3, 1>>(r + 3 * v);
+}
+
+// The largest eigenvalue of D^-1 A on level l, by power steps from the last
+// estimate's eigenvector (ones the first time): the Chebyshev smoother's
+// interval. D^-1 A is similar to the symmetric D^-1/2 A D^-1/2, so its
+// eigenvalues are real and positive, and the norm ratio converges to the
+// largest from below (the smoother's interval reaches 1.1 times it).
+// Power steps: 10 from ones, 2 from the last eigenvector, on every new
+// matrix of the level (the finest each step). Estimated only with the
+// coarse rebuilds, every 4th step, the eigenvalue was stale enough to cost
+// iterations: at 109k 9.6 and 17.1 per step (E 2e5, 2e7) against 7.8 and
+// 14.4 with 2 steps every step, whose cost did not show in the setup.
+constexpr int kColdPowerSteps = 10, kWarmPowerSteps = 2;
+
+template <typename Scalar>
+void estimateLargestEigenvalue(Cycle<Scalar>& s, std::size_t l) {
+  using Vector = typename Cycle<Scalar>::Vector;
+  const Index rows = s.blocks[l].rows();
+  Vector& v = s.eigenvector[l];
+  int powerSteps = kWarmPowerSteps;
+  if (v.size() != rows || !v.allFinite() || v.norm() == 0) {
+    v = Vector::Ones(rows);
+    powerSteps = kColdPowerSteps;
+  }
+  Vector& product = s.nextD[l];
+  double lambda = 0;
+  for (int step = 0; step < powerSteps; ++step) {
+    multiply(s.blocks[l], v, product);
+    parallelFor<Index>(0, rows / 3, 512, [&](const auto& range) {
+      for (Index u = range.begin(); u != range.end(); ++u)
+        v.template segment<3>(3 * u) =
+            inverseDiagonalTimes(s.inverseDiagonals[l], u, product.data());
+    });
+    const double norm = v.template cast<double>().norm();
+    if (!(norm > 0) || !std::isfinite(norm)) break;
+    lambda = norm / std::sqrt(static_cast<double>(rows));
+    v /= static_cast<Scalar>(lambda);  // (norm sqrt(rows): entries about 1)
+  }
+  s.largestEigenvalue[l] = lambda;
+}
+
+// The Chebyshev smoother's recurrence (Saad, Iterative Methods, alg. 12.1,
+// preconditioned by D): over [a, b] = [0.15, 1.1] lambda_max, theta = (a + b) / 2,
+// delta = (b - a) / 2, sigma = theta / delta; the first direction is
+// D^-1 r / theta, then with rho_0 = 1 / sigma and rho_k = 1 / (2 sigma -
+// rho_{k-1}), d_k = rho_k rho_{k-1} d_{k-1} + (2 rho_k / delta) D^-1 r_k.
+// The interval's bottom: 0.15 took 10 / 12 / 13 iterations at 109k (E 2e5,
+// 2e6, 2e7, a system at rest), 0.25 took 10 / 13 / 14 and 0.35 11 / - / 15;
+// block Gauss-Seidel 11 / 14 / 15.
+struct ChebyshevInterval {
+  double theta = 1, delta = 1, sigma = 1;
+  explicit ChebyshevInterval(double largestEigenvalue) {
+    const double top = 1.1 * largestEigenvalue, bottom = 0.15 * largestEigenvalue;
+    theta = 0.5 * (top + bottom);
+    delta = 0.5 * (top - bottom);
+    sigma = theta / delta;
+  }
+};
+
+// One Chebyshev degree on level l, one pass over the nodes: r -= A d, then
+// d' = previousWeight d + residualWeight D^-1 r and x += d' (d' into
+// nextD, then swapped with d: the products read d of every neighbour).
+// Each node's values from its own and its neighbours' old ones alone: no
+// order between nodes.
+template <typename Scalar>
+void chebyshevDegree(Cycle<Scalar>& s, std::size_t l, double previousWeight,
+                     double residualWeight) {
+  const auto& A = s.blocks[l];
+  const Scalar* d = s.d[l].data();
+  Scalar *r = s.r[l].data(), *x = s.x[l].data(), *next = s.nextD[l].data();
+  const auto previous = static_cast<Scalar>(previousWeight);
+  const auto weight = static_cast<Scalar>(residualWeight);
+  parallelFor<Index>(0, A.nodeCount(), 256, [&](const auto& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      Scalar product[3];
+      blockRowSum(A, v, d, -1, product);
+      for (int a = 0; a < 3; ++a) r[3 * v + a] -= product[a];
+      const Eigen::Matrix<Scalar, 3, 1> step =
+          previous * Eigen::Map<const Eigen::Matrix<Scalar, 3, 1>>(d + 3 * v) +
+          weight * inverseDiagonalTimes(s.inverseDiagonals[l], v, r);
+      Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(next + 3 * v) = step;
+      Eigen::Map<Eigen::Matrix<Scalar, 3, 1>>(x + 3 * v) += step;
+    }
+  });
+  s.d[l].swap(s.nextD[l]);
+}
+
+// The degrees after the first: r and x kept current.
+template <typename Scalar>
+void chebyshevDegrees(Cycle<Scalar>& s, std::size_t l, const ChebyshevInterval& interval,
+                      int degree) {
+  double rho = 1 / interval.sigma;
+  for (int k = 1; k < degree; ++k) {
+    const double next = 1 / (2 * interval.sigma - rho);
+    chebyshevDegree(s, l, next * rho, 2 * next / interval.delta);
+    rho = next;
+  }
+}
+
+// Pre-smoothing from x = 0 (b in s.b[l]): the polynomial, then the residual
+// b - A x in s.r[l] (one more product, of the last direction).
+template <typename Scalar>
+void chebyshevFromZero(Cycle<Scalar>& s, std::size_t l, int degree) {
+  const ChebyshevInterval interval(s.largestEigenvalue[l]);
+  const Index rows = s.b[l].size();
+  s.r[l] = s.b[l];
+  s.x[l].resize(rows);
+  s.d[l].resize(rows);
+  s.nextD[l].resize(rows);
+  const auto first = static_cast<Scalar>(1 / interval.theta);
+  parallelFor<Index>(0, rows / 3, 512, [&](const auto& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Eigen::Matrix<Scalar, 3, 1> step =
+          first * inverseDiagonalTimes(s.inverseDiagonals[l], v, s.r[l].data());
+      s.d[l].template segment<3>(3 * v) = step;
+      s.x[l].template segment<3>(3 * v) = step;
+    }
+  });
+  chebyshevDegrees(s, l, interval, degree);
+  chebyshevDegree(s, l, 0, 0);  // r -= A d (the new direction, zero, unused)
+}
+
+// Post-smoothing after the coarse correction, the correction given in
+// s.d[l] and already added to x: r (the pre-smoothing's residual) less A
+// times it, then the same polynomial as before the correction.
+template <typename Scalar>
+void chebyshevAfterCorrection(Cycle<Scalar>& s, std::size_t l, int degree) {
+  const ChebyshevInterval interval(s.largestEigenvalue[l]);
+  chebyshevDegree(s, l, 0, 1 / interval.theta);
+  chebyshevDegrees(s, l, interval, degree);
+}
 
 }  // namespace
 
@@ -376,18 +527,32 @@ struct MultigridPreconditioner::Impl {
 namespace {
 
 // One V-cycle z = M^-1 r in Scalar (see the class comment).
+struct Smoothing {
+  MultigridSmoother smoother;
+  int degree;      // Chebyshev
+  int sweepCount;  // Gauss-Seidel
+};
+
 template <typename Scalar>
 void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
             const std::vector<SparseMatrix>& restrictions, const std::vector<SweepOrder>& sweeps,
-            int sweepCount, const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& coarsest,
+            const Smoothing& smoothing,
+            const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& coarsest,
             const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   const std::size_t last = s.blocks.size() - 1;
+  const int sweepCount = smoothing.sweepCount;
+  const bool chebyshev = smoothing.smoother == MultigridSmoother::Chebyshev;
   s.b[0] = r.cast<Scalar>();
   // Down: pre-smooth from zero, restrict the residual.
   for (std::size_t l = 0; l < last; ++l) {
+    s.b[l + 1].resize(3 * restrictions[l].rows());
+    if (chebyshev) {
+      chebyshevFromZero(s, l, smoothing.degree);
+      multiplyNodalBlocks(restrictions[l], s.r[l].data(), s.b[l + 1].data());
+      continue;
+    }
     s.x[l].resize(s.b[l].size());
     s.r[l].resize(s.b[l].size());
-    s.b[l + 1].resize(3 * restrictions[l].rows());
     forwardSweepFromZero(s.blocks[l], s.inverseDiagonals[l], sweeps[l], s.b[l].data(),
                          s.x[l].data());
     for (int i = 1; i < sweepCount; ++i)
@@ -404,6 +569,12 @@ void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
   s.x[last] = coarsest.solve(s.b[last].template cast<double>()).template cast<Scalar>();
   // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
   for (std::size_t l = last; l-- > 0;) {
+    if (chebyshev) {
+      multiplyNodalBlocks(nodal[l], s.x[l + 1].data(), s.d[l].data());
+      s.x[l] += s.d[l];
+      chebyshevAfterCorrection(s, l, smoothing.degree);
+      continue;
+    }
     multiplyNodalBlocks(nodal[l], s.x[l + 1].data(), s.r[l].data());
     s.x[l] += s.r[l];
     for (int i = 0; i < sweepCount; ++i)
@@ -490,6 +661,13 @@ void MultigridPreconditioner::setup(const SparseMatrix& A,
   prepareLevels(takeCoarseTurn() ? 1 : levels_.size());
 }
 
+void MultigridPreconditioner::setSmoother(MultigridSmoother smoother, int degree) {
+  if (degree < 1) throw Error("multigrid: the Chebyshev smoother's degree must be at least 1");
+  smoother_ = smoother;
+  degree_ = degree;
+  impl_->sweeps.clear();  // the next setup prepares every level (and its eigenvalue) anew
+}
+
 void MultigridPreconditioner::setSinglePrecision(bool single) {
   single_ = single;
   impl_->sweeps.clear();  // the next setup prepares the chosen cycle from scratch
@@ -506,12 +684,17 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
     impl_->single.resize(single_ ? levels_.size() : 0);
     impl_->twin.resize(single_ ? 0 : levels_.size());
   }
+  // (With Chebyshev smoothing, each level's new matrix gets its eigenvalue.)
   auto prepare = [&](std::size_t l) {
     if (l + 1 == levels_.size()) return;  // the coarsest is factorized below instead
-    if (single_)
-      impl_->single.prepare(level(l), l, impl_->sweeps[l]);
-    else
-      impl_->twin.prepare(level(l), l, impl_->sweeps[l]);
+    const bool chebyshev = smoother_ == MultigridSmoother::Chebyshev;
+    if (single_) {
+      impl_->single.prepare(level(l), l, impl_->sweeps[l], !chebyshev);
+      if (chebyshev) estimateLargestEigenvalue(impl_->single, l);
+    } else {
+      impl_->twin.prepare(level(l), l, impl_->sweeps[l], !chebyshev);
+      if (chebyshev) estimateLargestEigenvalue(impl_->twin, l);
+    }
   };
   prepare(0);
   // (With one level the coarsest is the system itself: always new.)
@@ -531,10 +714,11 @@ void MultigridPreconditioner::prepareLevels(std::size_t firstChanged) {
 }
 
 void MultigridPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  const Smoothing smoothing{smoother_, degree_, sweeps_};
   if (single_)
-    vCycle(impl_->single, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
+    vCycle(impl_->single, nodal_, restrictions_, impl_->sweeps, smoothing, impl_->coarsest, r, z);
   else
-    vCycle(impl_->twin, nodal_, restrictions_, impl_->sweeps, sweeps_, impl_->coarsest, r, z);
+    vCycle(impl_->twin, nodal_, restrictions_, impl_->sweeps, smoothing, impl_->coarsest, r, z);
 }
 
 }  // namespace tetskin

@@ -63,6 +63,7 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
   multigrid_ = std::make_unique<MultigridPreconditioner>(prolongations_);
   multigrid_->setCoarseReuse(options.coarseReuse);
   multigrid_->setSinglePrecision(options.singlePrecisionCycle);
+  multigrid_->setSmoother(options.smoother);
 }
 
 void SolverStack::datasetLevels(const MultiLevelTetMesh& dataset, int level, const TetMesh& mesh,

@@ -35,6 +35,7 @@
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/SolverChoice.h"
 
 namespace tetskin {
@@ -155,6 +156,10 @@ struct SimulationOptions {
   CoarseOperators coarseOperators = CoarseOperators::Galerkin;
   CoarseLevels coarseLevels = CoarseLevels::Grid;
   bool singlePrecisionCycle = true;  // multigrid: the V-cycle in float (CG stays double)
+  // Multigrid: the V-cycle's smoother (LinearSolvers.h; Chebyshev of degree
+  // 2 unless Gauss-Seidel is asked for, as the solver benchmark does to
+  // compare them).
+  MultigridSmoother smoother = MultigridSmoother::Chebyshev;
   int maxIterations = static_cast<int>(simulation_option::kMaxIterations.defaultValue);
   // cg: CG preconditioned by what this makes (one per simulation, set up
   // on every step's system) instead of block Jacobi; empty: block Jacobi.
