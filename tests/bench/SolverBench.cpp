@@ -2,7 +2,8 @@
 // The solvers over the materials a researcher simulates (issue #51): the
 // bunny's 12.7k-element level and a ~109k-element dataset built here,
 // wobbling at dt 1/60 s to a relative residual of 1e-6, with TetSkin's
-// solvers (block-Jacobi CG, multigrid CG, the automatic choice) and, on the
+// solvers (block-Jacobi CG, multigrid CG with its Chebyshev or Gauss-Seidel
+// smoother, the automatic choice) and, on the
 // same systems, a sparse direct solve (CHOLMOD, factorized every step),
 // CHOLMOD's factor kept for k steps as CG's preconditioner, and hypre's
 // BoomerAMG as CG's preconditioner (BaselineSolvers.h). Every cell is a
