@@ -346,7 +346,7 @@ struct Cycle {
   }
 };
 
-// z_v = D_v^-1 r_v over nodes [first, last).
+// D_v^-1 r_v for node v.
 template <typename Scalar>
 [[gnu::always_inline]] inline Eigen::Matrix<Scalar, 3, 1> inverseDiagonalTimes(
     const std::vector<Eigen::Matrix<Scalar, 3, 3>>& inverseDiagonal, Index v, const Scalar* r) {
@@ -526,13 +526,13 @@ struct MultigridPreconditioner::Impl {
 
 namespace {
 
-// One V-cycle z = M^-1 r in Scalar (see the class comment).
 struct Smoothing {
   MultigridSmoother smoother;
   int degree;      // Chebyshev
   int sweepCount;  // Gauss-Seidel
 };
 
+// One V-cycle z = M^-1 r in Scalar (see the class comment).
 template <typename Scalar>
 void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
             const std::vector<SparseMatrix>& restrictions, const std::vector<SweepOrder>& sweeps,
@@ -567,7 +567,8 @@ void vCycle(Cycle<Scalar>& s, const std::vector<SparseMatrix>& nodal,
     multiplyNodalBlocks(restrictions[l], s.r[l].data(), s.b[l + 1].data());
   }
   s.x[last] = coarsest.solve(s.b[last].template cast<double>()).template cast<Scalar>();
-  // Up: prolongate the correction, post-smooth backwards (symmetric cycle).
+  // Up: prolongate the correction, post-smooth (Gauss-Seidel backwards:
+  // the cycle stays symmetric).
   for (std::size_t l = last; l-- > 0;) {
     if (chebyshev) {
       multiplyNodalBlocks(nodal[l], s.x[l + 1].data(), s.d[l].data());
