@@ -58,6 +58,9 @@ void run(const BindArgs& a, const CLI::App& cmd) {
         "holes and gaps bind to their closest boundary triangle\n",
         dataset.config.levels[static_cast<std::size_t>(level)].source.input.c_str(),
         describe(*wrap).c_str());
+  if (const std::optional<LevelFidelity>& fidelity =
+          dataset.config.levels[static_cast<std::size_t>(level)].fidelity)
+    std::printf("  level vs its input: %s\n", describe(*fidelity).c_str());
   std::printf("  time:               %.3f s\nwrote %s\n", seconds, a.output.c_str());
 }
 

@@ -53,14 +53,24 @@ void run(BuildArgs& a) {
   const std::filesystem::path& json = build.config;
   progress.log("");
 
-  std::printf("%-5s %9s %8s  %-8s %-16s %8s %8s  %s\n", "level", "elements", "nodes", "mesher",
-              "quality", "min dih", "max r/e", "input");
+  // The fidelity columns: input -> level, mean and max, in % of the input's
+  // bounding-box diagonal (LevelFidelity.h).
+  std::printf("%-5s %9s %8s  %-8s %-16s %8s %8s %8s %8s  %s\n", "level", "elements", "nodes",
+              "mesher", "quality", "min dih", "max r/e", "mean %", "max %", "input");
   for (std::size_t k = 0; k < result.chosen.size(); ++k) {
     const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
-    std::printf("%-5zu %9lld %8lld  %-8s %-16s %8.2f %8.3f  %s\n", k,
+    const LevelFidelity f = c.fidelity.value_or(LevelFidelity{});
+    const double d = f.diagonal > 0 ? f.diagonal : 1.0;
+    std::printf("%-5zu %9lld %8lld  %-8s %-16s %8.2f %8.3f %8.3f %8.3f  %s\n", k,
                 static_cast<long long>(c.elements), static_cast<long long>(c.nodes),
                 c.mesher.c_str(), c.label.c_str(), c.statistics.minDihedralDeg,
-                c.statistics.maxRadiusEdge, c.input.c_str());
+                c.statistics.maxRadiusEdge, 100 * f.inputToLevelMean / d,
+                100 * f.inputToLevelMax / d, c.input.c_str());
+  }
+  for (std::size_t k = 0; k < result.chosen.size(); ++k) {
+    const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
+    if (c.fidelity)
+      std::printf("level %zu against the input: %s\n", k, describe(*c.fidelity).c_str());
   }
   for (std::size_t k = 0; k < result.chosen.size(); ++k) {
     const CandidateReport& c = result.candidates[static_cast<std::size_t>(result.chosen[k])];
@@ -113,6 +123,10 @@ void addBuildCommand(CLI::App& app) {
   cmd->add_flag("--size-to-targets", a->options.sizeToTargets,
                 "also mesh under element size bounds aimed at the level targets that no\n"
                 "quality meets (TetGen -a, Netgen maxh): for shapes such as boxes");
+  cmd->add_flag("--accept-unfaithful", a->options.acceptUnfaithful,
+                "write levels that lie off the input beyond their fidelity bound (half their\n"
+                "element size on average, twice it at worst) when no faithful candidate is\n"
+                "near their target; without it, build stops and says which and why");
   addEnumOption<WrapMode>(*cmd, "--wrap", "alpha-wrap inputs in a closed surface first: ", a->wrap);
   cmd->add_option("--wrap-alpha", a->options.wrap.alpha,
                   "the wrap's alpha, a fraction of the input's bounding-box diagonal: gaps and\n"

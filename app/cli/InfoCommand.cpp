@@ -212,6 +212,14 @@ void printDataset(const std::filesystem::path& path) {
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,
                 quality.minDihedralDeg, src.input.c_str(), how.c_str());
     if (src.wrap) wraps += "  level " + std::to_string(k) + " wrap: " + describe(*src.wrap) + "\n";
+    if (const std::optional<LevelFidelity>& f =
+            dataset.config.levels[static_cast<std::size_t>(k)].fidelity) {
+      wraps += "  level " + std::to_string(k) + " against the input: " + describe(*f) + "\n";
+      if (!f->faithful)
+        warnings += "  warning: level " + std::to_string(k) +
+                    " lies off its input beyond its fidelity bound (written with "
+                    "--accept-unfaithful)\n";
+    }
   }
   std::fputs(wraps.c_str(), stdout);
   std::fputs(warnings.c_str(), stdout);

@@ -91,8 +91,14 @@ void BindingDock::refresh() {
   QString comparison = QString::fromStdString(scene_.comparisonText());
   if (scene_.highlightedCount() > 0)
     comparison += QString("\nhighlighted: %1 vertices").arg(scene_.highlightedCount());
+  // How far the bound level lies from the input it was built from (build).
+  QString fidelity;
+  const std::vector<LevelConfig>& levels = scene_.dataset().config.levels;
+  if (scene_.level() >= 0 && static_cast<std::size_t>(scene_.level()) < levels.size())
+    if (const auto& f = levels[static_cast<std::size_t>(scene_.level())].fidelity)
+      fidelity = "level against its input: " + QString::fromStdString(describe(*f)) + "\n";
   comparison_->setText(QString("%1, level %2\n").arg(toString(b.method)).arg(scene_.level()) +
-                       comparison);
+                       fidelity + comparison);
   showPickedVertex();
 }
 

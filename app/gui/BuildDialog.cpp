@@ -81,6 +81,13 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "For each level target that no quality meets, mesh again under an element size bound "
       "(TetGen -a, Netgen maxh): for shapes such as boxes, whose surface needs few elements");
   form->addRow("", sizeToTargets_);
+  acceptUnfaithful_ = new QCheckBox("accept levels that lie off the input beyond their bound");
+  acceptUnfaithful_->setObjectName("acceptUnfaithful");
+  acceptUnfaithful_->setToolTip(
+      "Without it, a level whose candidates near its target all lie off the input by more than "
+      "half their element size on average (twice it at worst) stops the build with the numbers "
+      "and a way out; with it, the nearest is written and the config records its distances");
+  form->addRow("", acceptUnfaithful_);
   const WrapOptions wrapDefaults;
   wrap_ = new QComboBox;
   wrap_->setObjectName("wrap");
@@ -197,6 +204,7 @@ bool BuildDialog::start() {
   options.mesher = fromName<MesherKind>(mesher_->currentText().toStdString());
   options.decimate = decimate_->isChecked();
   options.sizeToTargets = sizeToTargets_->isChecked();
+  options.acceptUnfaithful = acceptUnfaithful_->isChecked();
   options.jobs = jobs_->value();
   options.up = fromName<UpAxis>(up_->currentText().toStdString());
   options.wrap.mode = fromName<WrapMode>(wrap_->currentText().toStdString());
@@ -260,13 +268,20 @@ bool BuildDialog::start() {
       // (The writers make the folder only now: bad input, a failure or a
       // cancel leaves no empty folder.)
       saveDataset(json, result.dataset);
-      // What the wrap cost, per wrapped level (as build prints it).
+      // How far each level lies from the input, and what a wrap cost (as
+      // build prints them).
       QString fidelity;
-      for (std::size_t k = 0; k < result.dataset.config.levels.size(); ++k)
-        if (const auto& wrap = result.dataset.config.levels[k].source.wrap)
+      for (std::size_t k = 0; k < result.dataset.config.levels.size(); ++k) {
+        const LevelConfig& level = result.dataset.config.levels[k];
+        if (level.fidelity)
+          fidelity += QString("Level %1 against the input: %2\n")
+                          .arg(k)
+                          .arg(QString::fromStdString(describe(*level.fidelity)));
+        if (level.source.wrap)
           fidelity += QString("Level %1 was meshed from a wrap: %2\n")
                           .arg(k)
-                          .arg(QString::fromStdString(describe(*wrap)));
+                          .arg(QString::fromStdString(describe(*level.source.wrap)));
+      }
       post([this, fidelity = fidelity.trimmed()] {
         wrapFidelity_->setText(fidelity);
         wrapFidelity_->setVisible(!fidelity.isEmpty());

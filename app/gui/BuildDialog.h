@@ -59,7 +59,7 @@ class BuildDialog : public QDialog {
   QComboBox* mesher_;
   QComboBox* up_;
   QLineEdit* qualities_;
-  QCheckBox *decimate_, *sizeToTargets_;
+  QCheckBox *decimate_, *sizeToTargets_, *acceptUnfaithful_;
   QComboBox* wrap_;
   QDoubleSpinBox *wrapAlpha_, *wrapOffset_;
   QLabel* wrapFidelity_;

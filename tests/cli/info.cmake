@@ -37,10 +37,10 @@ tetskin_cli_test(simulate_blown_up_frames_read_back REQUIRES blown_up_run
   STDOUT "blown_up.pvd: time series, 2 time steps, t 0 .. 0.0166667\n  part 0     2 files, [^\n]*, all present\n  level      0 \\(of the control-mesh frames\\)\n  prescribed 35 nodes \\(held still or driven\\)\n[^\n]*control_00001.vtu: tetrahedral mesh\n  nodes      224\n"
   ARGS info ${cli_out}/blown_up.pvd ${cli_out}/blown_up_frames/control_00001.vtu)
 tetskin_cli_test(info_wrapped_dataset REQUIRES holed_dataset
-  STDOUT "  1 +[0-9]+ +[0-9]+ [^\n]*bunny_holed.obj[^\n]* tetgen q[0-9.]+ .wrapped.\n  level 0 wrap: alpha 4% and offset 0.2% of the diagonal [^\n]*\n  level 1 wrap: alpha "
+  STDOUT "  1 +[0-9]+ +[0-9]+ [^\n]*bunny_holed.obj[^\n]* tetgen q[0-9.]+ .wrapped.\n  level 0 wrap: alpha 4% and offset 0.2% of the diagonal [^\n]*\n  level 0 against the input: input -> level: mean [0-9.e-]+ .[0-9.e-]+% of the diagonal., max [^\n]*. element size [0-9.e-]+\n  level 1 wrap: alpha "
   ARGS info ${cli_out}/holed.json)
 tetskin_cli_test(info_slivers REQUIRES sliver_cylinder
-  STDOUT "  0 +[0-9]+ +[0-9]+ +[0-9.]+ +[0-9.e-]+ +0[.][0-9]+  [^\n]*decimated_cylinder.obj tetgen q[0-9.]+\n  warning: level 0 has slivers \\(smallest dihedral angle 0[.][0-9]+ deg, [^\n]*\\), which slow the solvers\n$"
+  STDOUT "  0 +[0-9]+ +[0-9]+ +[0-9.]+ +[0-9.e-]+ +0[.][0-9]+  [^\n]*decimated_cylinder.obj tetgen q[0-9.]+\n  level 0 against the input: input -> level: mean 0 .0% of the diagonal., max 0 .0%.[^\n]*\n  warning: level 0 has slivers \\(smallest dihedral angle 0[.][0-9]+ deg, [^\n]*\\), which slow the solvers\n$"
   ARGS info ${cli_out}/sliver_cylinder.json)
 tetskin_cli_test(info_cantilever_deflection REQUIRES cantilever_run
   STDOUT "\n  point data Displacement \\(3 components\\): length 0 [.][.] 0[.]2[45][0-9]*\n.*\n  forces     external 0,0,0 N, reaction [-0-9.e]+,304[34][.][0-9]+,[-0-9.e]+ N in all\n$"

@@ -1572,10 +1572,14 @@ TEST_F(Gui, BuildDialogWrapsAHoledScanAndShowsTheWrapsFidelity) {
   ASSERT_TRUE(window_->scene().hasDataset()) << dialog->log().toStdString();
   EXPECT_EQ(window_->scene().datasetPath(), scratch("wrapped_holed.json"));
   EXPECT_TRUE(dialog->log().contains("wrapped ")) << dialog->log().toStdString();
-  EXPECT_TRUE(
-      dialog->wrapFidelity().startsWith("Level 0 was meshed from a wrap: alpha 2% and "
-                                        "offset 0.2% of the diagonal"))
+  EXPECT_TRUE(dialog->wrapFidelity().startsWith("Level 0 against the input: input -> level: mean "))
       << dialog->wrapFidelity().toStdString();
+  EXPECT_TRUE(
+      dialog->wrapFidelity().contains("Level 0 was meshed from a wrap: alpha 2% and "
+                                      "offset 0.2% of the diagonal"))
+      << dialog->wrapFidelity().toStdString();
+  ASSERT_TRUE(window_->scene().dataset().config.levels[0].fidelity.has_value());
+  EXPECT_TRUE(window_->scene().dataset().config.levels[0].fidelity->faithful);
   EXPECT_FALSE(dialog->findChild<QLabel*>("wrapFidelity")->isHidden());
   ASSERT_TRUE(window_->scene().dataset().config.levels[0].source.wrap.has_value());
 }

@@ -26,7 +26,9 @@ const std::string kData = TETSKIN_TEST_DATA_DIR;
 BuildOptions smallLevels(WrapMode mode) {
   BuildOptions options;
   options.levels = 2;
-  options.minElements = 500;
+  // (The holed bunny's faithful levels have 720 elements at the fewest:
+  // its wrap's coarser decimations pinch its ears onto its head.)
+  options.minElements = 800;
   options.maxElements = 3000;
   options.decimate = true;
   options.jobs = 2;

@@ -13,8 +13,8 @@
 #include "KeywordOptions.h"
 #include "Objects.h"
 #include "tetskin/binding/BoundaryFaces.h"
-#include "tetskin/meshing/IsolatedJobs.h"
 #include "tetskin/meshing/DatasetBuild.h"
+#include "tetskin/meshing/IsolatedJobs.h"
 
 namespace tetskin::python {
 namespace {
@@ -86,6 +86,27 @@ void addDatasetApi(py::module_& m) {
             return l.dataset->mesh.levels[static_cast<std::size_t>(l.index)].firstNode;
           },
           "the dataset's number of this level's node 0 (bindings number nodes as the dataset)")
+      .def_property_readonly(
+          "fidelity",
+          [](const LevelObject& l) -> py::object {
+            const std::optional<LevelFidelity>& f =
+                l.dataset->config.levels[static_cast<std::size_t>(l.index)].fidelity;
+            if (!f) return py::none();
+            py::dict d;
+            d["input_to_level_mean"] = f->inputToLevelMean;
+            d["input_to_level_max"] = f->inputToLevelMax;
+            d["level_to_input_mean"] = f->levelToInputMean;
+            d["level_to_input_max"] = f->levelToInputMax;
+            d["element_size"] = f->elementSize;
+            d["diagonal"] = f->diagonal;
+            d["bound_mean"] = f->boundMean;
+            d["bound_max"] = f->boundMax;
+            d["faithful"] = f->faithful;
+            return std::move(d);
+          },
+          "how far the level's boundary lies from the input it was built from (build), in the "
+          "input's units: a dict of input_to_level_mean/max, level_to_input_mean/max, "
+          "element_size, diagonal, bound_mean/max and faithful; None for datasets without it")
       .def("__repr__", [](const LevelObject& l) {
         return "<tetskin.Level " + std::to_string(l.index) + ": " +
                std::to_string(l.mesh.nodeCount()) + " nodes, " +
@@ -158,8 +179,8 @@ void addDatasetApi(py::module_& m) {
       "Model generation, as `tetskin build`: repairs the input surfaces (a path or a list of "
       "levels of detail of one object), tetrahedralizes them, chooses the levels and writes "
       "OUTPUT.json, .node and .ele; returns the Dataset. Keyword options as the command's: "
-      "qualities, size_to_targets, jobs (default: every core), timeout, wrap ('auto', 'always', "
-      "'never'), "
+      "qualities, size_to_targets, accept_unfaithful (write levels beyond their fidelity "
+      "bound), jobs (default: every core), timeout, wrap ('auto', 'always', 'never'), "
       "wrap_alpha, wrap_offset, up. progress(stage, done, total) is called as it goes; "
       "Ctrl-C stops it.");
 }

@@ -148,6 +148,7 @@ void readBuildOptions(Keywords& k, BuildOptions& o) {
     if (o.qualities.empty()) throw Error(k.call() + ": qualities: give at least one");
   }
   if (const auto v = k.take("size_to_targets")) o.sizeToTargets = v->cast<bool>();
+  if (const auto v = k.take("accept_unfaithful")) o.acceptUnfaithful = v->cast<bool>();
   if (const auto v = k.take("jobs")) {
     o.jobs = v->cast<int>();
     if (o.jobs < 1) throw Error(k.call() + ": jobs: must be >= 1");

@@ -71,7 +71,8 @@ SimulationOptions simulationOptions(Keywords& keywords, const DatasetConfig& con
 ScenarioParameters scenarioParameters(Keywords& keywords, const std::string& scenario,
                                       Index levelNodes);
 // A build's options beyond those `build` names itself: qualities,
-// size_to_targets, jobs, timeout, wrap, wrap_alpha, wrap_offset, up.
+// size_to_targets, accept_unfaithful, jobs, timeout, wrap, wrap_alpha,
+// wrap_offset, up.
 void readBuildOptions(Keywords& keywords, BuildOptions& options);
 
 }  // namespace tetskin::python

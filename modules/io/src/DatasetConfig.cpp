@@ -123,6 +123,32 @@ LevelWrap readWrap(const json& value, const std::string& pointer, const std::str
   return out;
 }
 
+LevelFidelity readFidelity(const json& value, const std::string& pointer, const std::string& file) {
+  Fields fidelity(value, pointer, file);
+  LevelFidelity out;
+  out.diagonal = fidelity.number("diagonal", 0, 1e300, true);
+  out.elementSize = fidelity.number("element_size", 0, 1e300, true);
+  std::tie(out.inputToLevelMax, out.inputToLevelMean) =
+      readDistance(fidelity, "input_to_level", file);
+  std::tie(out.levelToInputMax, out.levelToInputMean) =
+      readDistance(fidelity, "level_to_input", file);
+  if (fidelity.has("bound")) {
+    Fields bound(fidelity.get("bound"), fidelity.where("bound"), file);
+    out.boundMax = bound.number("max", 0, 1e300);
+    out.boundMean = bound.number("mean", 0, 1e300);
+    bound.rejectUnknown();
+  }
+  fidelity.optional("bound");
+  if (fidelity.has("faithful")) {
+    const json& f = fidelity.get("faithful");
+    if (!f.is_boolean()) fidelity.fail(fidelity.where("faithful"), "must be true or false");
+    out.faithful = f.get<bool>();
+  }
+  fidelity.optional("faithful");
+  fidelity.rejectUnknown();
+  return out;
+}
+
 LevelConfig readLevel(const json& value, const std::string& pointer, const std::string& file) {
   Fields level(value, pointer, file);
   LevelConfig out;
@@ -152,6 +178,9 @@ LevelConfig readLevel(const json& value, const std::string& pointer, const std::
     }
   }
   level.optional("statistics");
+  if (level.has("fidelity"))
+    out.fidelity = readFidelity(level.get("fidelity"), pointer + "/fidelity", file);
+  level.optional("fidelity");
   level.rejectUnknown();
   return out;
 }
@@ -173,7 +202,27 @@ std::string describe(const LevelWrap& wrap) {
                 100 * wrap.inputToWrapMax / d, wrap.inputToWrapMean, 100 * wrap.inputToWrapMean / d,
                 wrap.wrapToInputMax, 100 * wrap.wrapToInputMax / d, wrap.wrapToInputMean,
                 100 * wrap.wrapToInputMean / d);
-  return text;
+  std::string out = text;
+  if (wrap.shellThickness > 0) {
+    std::snprintf(text, sizeof text, "; a shell %.3g thick (%.2g%%)", wrap.shellThickness,
+                  100 * wrap.shellThickness / d);
+    out += text;
+  }
+  return out;
+}
+
+std::string describe(const LevelFidelity& f) {
+  const double d = f.diagonal > 0 ? f.diagonal : 1.0;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "input -> level: mean %.3g (%.2g%% of the diagonal), max %.3g (%.2g%%); "
+                "level -> input: mean %.3g (%.2g%%), max %.3g (%.2g%%); element size %.3g",
+                f.inputToLevelMean, 100 * f.inputToLevelMean / d, f.inputToLevelMax,
+                100 * f.inputToLevelMax / d, f.levelToInputMean, 100 * f.levelToInputMean / d,
+                f.levelToInputMax, 100 * f.levelToInputMax / d, f.elementSize);
+  std::string out = text;
+  if (!f.faithful) out += " (beyond its bound: accepted by the user)";
+  return out;
 }
 
 DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
@@ -343,6 +392,16 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
       if (w->shellThickness > 0) l["source"]["wrap"]["shell_thickness"] = w->shellThickness;
     }
     if (!level.statistics.empty()) l["statistics"] = level.statistics;
+    if (const std::optional<LevelFidelity>& f = level.fidelity) {
+      l["fidelity"] = {
+          {"diagonal", f->diagonal},
+          {"element_size", f->elementSize},
+          {"input_to_level", {{"max", f->inputToLevelMax}, {"mean", f->inputToLevelMean}}},
+          {"level_to_input", {{"max", f->levelToInputMax}, {"mean", f->levelToInputMean}}},
+          {"faithful", f->faithful}};
+      if (f->boundMax > 0 || f->boundMean > 0)
+        l["fidelity"]["bound"] = {{"max", f->boundMax}, {"mean", f->boundMean}};
+    }
     root["levels"].push_back(l);
   }
   root["scale"] = config.scale;

@@ -5,10 +5,13 @@
 #include <chrono>
 #include <optional>
 
+#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/meshing/IsolatedJobs.h"
+#include "tetskin/meshing/LevelFidelity.h"
 #include "tetskin/meshing/MeshQuality.h"
 #include "tetskin/meshing/Meshers.h"
+#include "tetskin/meshing/SurfaceRepair.h"
 
 namespace tetskin {
 namespace {
@@ -35,14 +38,18 @@ std::vector<double> distinctQualities(const BuildOptions& options) {
   return qualities;
 }
 
+bool faithful(const CandidateReport& candidate) {
+  return candidate.ok && (!candidate.fidelity || candidate.fidelity->faithful);
+}
+
 void say(const BuildEvents& events, const std::string& line) {
   if (events.log) events.log(line);
 }
 
 double meshCandidates(const std::vector<CandidateSpec>& specs,
-                      const std::vector<RepairedInput>& prepared, const BuildOptions& options,
-                      const BuildEvents& events, const std::string& stage, Candidates& found,
-                      double pruneAbove) {
+                      const std::vector<RepairedInput>& prepared, const SurfaceMesh& reference,
+                      const BuildOptions& options, const BuildEvents& events,
+                      const std::string& stage, Candidates& found, double pruneAbove) {
   auto triangles = [&](std::size_t spec) {
     return prepared[specs[spec].input].mesh.triangleCount();
   };
@@ -143,6 +150,16 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
         c.nodes = mesh.nodeCount();
         c.elements = mesh.elementCount();
         c.statistics = measureQuality(mesh);
+        if (const std::string flat = flatElementProblem(c.statistics); !flat.empty())
+          throw Error(prepared[specs[i].input].name + " " + c.label + " " + flat);
+        // A level's boundary carries the bound surface and the contacts: a
+        // pinched edge (two parts of the body touching along it, as a
+        // collapsed decimation leaves) makes it no closed manifold.
+        if (const Index pinched = nonManifoldEdgeCount(boundarySurface(mesh)); pinched > 0)
+          throw Error(prepared[specs[i].input].name + " " + c.label + ": its boundary has " +
+                      std::to_string(pinched) +
+                      " edge(s) of more than two faces (parts touching along an edge)");
+        c.fidelity = measureFidelity(reference, mesh);
       } catch (const Error& e) {
         c.ok = false;
         c.error = e.what();

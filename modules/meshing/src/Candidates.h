@@ -44,6 +44,10 @@ struct Candidates {
   std::size_t skipped = 0;  // left unmeshed: predictably above the largest target
 };
 
+// Whether a candidate was meshed, is well shaped and lies within its
+// fidelity bound (LevelFidelity.h): what the level selection takes.
+bool faithful(const CandidateReport& candidate);
+
 // The TetGen qualities asked for, each once, best (closest to 1) first: the
 // order of the quality candidates and of the sizing's first round.
 std::vector<double> distinctQualities(const BuildOptions& options);
@@ -63,17 +67,22 @@ void say(const BuildEvents& events, const std::string& line);
 // no finer, came out above `pruneAbove` elements: finer bounds and finer
 // inputs give more elements, so it would lie farther still from every target
 // at or below `pruneAbove`.
+//
+// Each candidate meshed is measured against `reference` (the object's
+// finest input as read: measureFidelity, LevelFidelity.h) into its report's
+// `fidelity`; one with flat elements (flatElementProblem, MeshQuality.h) is
+// rejected as a failed run is.
 double meshCandidates(const std::vector<CandidateSpec>& specs,
-                      const std::vector<RepairedInput>& prepared, const BuildOptions& options,
-                      const BuildEvents& events, const std::string& stage, Candidates& found,
-                      double pruneAbove = 0);
+                      const std::vector<RepairedInput>& prepared, const SurfaceMesh& reference,
+                      const BuildOptions& options, const BuildEvents& events,
+                      const std::string& stage, Candidates& found, double pruneAbove = 0);
 
 // `build --size-to-targets`: for each level target that no candidate meets
 // within kSizingTolerance (TargetSizing.h), rounds of candidates under an
 // element size bound aimed at it, appended to `found` after the quality
 // candidates, so that on equal distance those still win. Returns the wall
 // time of the meshing.
-double addSizedCandidates(const std::vector<RepairedInput>& prepared,
+double addSizedCandidates(const std::vector<RepairedInput>& prepared, const SurfaceMesh& reference,
                           const std::vector<double>& targets, const BuildOptions& options,
                           const BuildEvents& events, Candidates& found);
 

@@ -51,11 +51,22 @@ double radiusEdgeRatio(const TetMesh& mesh, Index e) {
   return offset.norm() / shortest;
 }
 
+double relativeVolume(const TetMesh& mesh, Index e) {
+  const auto p = corners(mesh, e);
+  double squares = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) squares += (p[i] - p[j]).squaredNorm();
+  const double rms = std::sqrt(squares / 6.0);
+  if (!(rms > 0)) return 0;
+  return elementVolume(mesh, e) * 6.0 * std::sqrt(2.0) / (rms * rms * rms);
+}
+
 TetQuality measureQuality(const TetMesh& mesh) {
   TetQuality q;
   if (mesh.elementCount() == 0) return q;
   q.minDihedralDeg = 180;
   q.minVolume = std::numeric_limits<double>::infinity();
+  q.minRelativeVolume = std::numeric_limits<double>::infinity();
   double sumRatio = 0;
   for (Index e = 0; e < mesh.elementCount(); ++e) {
     for (double angle : dihedralAnglesDeg(mesh, e)) {
@@ -67,10 +78,19 @@ TetQuality measureQuality(const TetMesh& mesh) {
     sumRatio += ratio;
     const double volume = elementVolume(mesh, e);
     q.minVolume = std::min(q.minVolume, volume);
+    q.minRelativeVolume = std::min(q.minRelativeVolume, relativeVolume(mesh, e));
     q.totalVolume += volume;
   }
   q.meanRadiusEdge = sumRatio / static_cast<double>(mesh.elementCount());
   return q;
+}
+
+std::string flatElementProblem(const TetQuality& quality) {
+  if (!(quality.minRelativeVolume < kFlatRelativeVolume)) return {};
+  char text[120];
+  std::snprintf(text, sizeof text, "has a flat element (relative volume %.2g, at least %g asked)",
+                quality.minRelativeVolume, kFlatRelativeVolume);
+  return text;
 }
 
 std::string sliverProblem(const TetQuality& quality) {
@@ -89,6 +109,7 @@ std::map<std::string, double> TetQuality::asMap() const {
           {"max_radius_edge", maxRadiusEdge},
           {"mean_radius_edge", meanRadiusEdge},
           {"min_volume", minVolume},
+          {"min_relative_volume", minRelativeVolume},
           {"total_volume", totalVolume}};
 }
 

@@ -8,11 +8,13 @@
 #include <limits>
 
 #include "Candidates.h"
+#include "FaithfulSelection.h"
 #include "Wrapping.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/meshing/Decimation.h"
 #include "tetskin/meshing/IsolatedJobs.h"
+#include "tetskin/meshing/LevelFidelity.h"
 #include "tetskin/meshing/LevelSelection.h"
 #include "tetskin/meshing/Meshers.h"
 
@@ -45,12 +47,27 @@ std::string wrapHint(const BuildOptions& options) {
              : "";
 }
 
-// Coarser inputs decimated from the finest one (--decimate); from a wrap,
-// each measured against the wrap's input as the wrap is.
+constexpr double kWrapDecimationFactor = 0.7;
+
+// Coarser inputs derived from the finest one (--decimate): decimated, and
+// for a wrap also wrapped anew at coarser scales (rewrappedInputs). A
+// shell around a sheet only wrapped anew: decimated it collapses where it
+// is thin, and its thickness must grow with the element size. A wrapped
+// body gets both; the fidelity bound rejects the decimations that
+// collapse (a part pinched off, a spike) and the selection takes what is
+// left.
 std::vector<RepairedInput> decimatedInputs(const RepairedInput& finest, const BuildOptions& options,
                                            const BuildEvents& events) {
   std::vector<RepairedInput> derived;
-  for (SurfaceMesh& coarse : decimatedSeries(finest.mesh)) {
+  if (finest.wrap) {
+    derived = rewrappedInputs(finest, options, events);
+    if (finest.wrap->shellThickness > 0) return derived;
+  }
+  // A wrap's decimations in finer steps: the bound rejects some (a
+  // decimation collapsed, parts pinched together), and the others must
+  // still come near every target.
+  for (SurfaceMesh& coarse :
+       decimatedSeries(finest.mesh, finest.wrap ? kWrapDecimationFactor : 0.5)) {
     const std::string suffix =
         " (decimated to " + std::to_string(coarse.triangleCount()) + " triangles)";
     const std::string name = finest.name + suffix;
@@ -59,7 +76,6 @@ std::vector<RepairedInput> decimatedInputs(const RepairedInput& finest, const Bu
       r.repair = repairSurface(r.mesh, r.name, options.repair);
       if (finest.wrap) {
         r.wrap = measureWrap(finest.original, r.mesh, finest.wrap->alpha, finest.wrap->offset);
-        r.wrap->shellThickness = finest.wrap->shellThickness;
       }
       say(events, "derived " + name);
       sayCollapseWarning(events, r.repair, name);
@@ -71,8 +87,13 @@ std::vector<RepairedInput> decimatedInputs(const RepairedInput& finest, const Bu
   return derived;
 }
 
+// The inputs repaired (or wrapped), finest first, with the coarser ones
+// --decimate derives; `reference` gets the finest input as read, what every
+// candidate is measured against (LevelFidelity.h), and `referenceFile` its
+// name in the config.
 std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
-                                         const BuildOptions& options, const BuildEvents& events) {
+                                         const BuildOptions& options, const BuildEvents& events,
+                                         SurfaceMesh& reference, std::string& referenceFile) {
   if (inputs.empty()) throw Error("no input surface given");
   // The same surface twice (one file named twice, or a copy) would only be
   // meshed twice: most likely a slip of the command line.
@@ -90,6 +111,8 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
   std::stable_sort(inputs.begin(), inputs.end(), [](const SurfaceInput& a, const SurfaceInput& b) {
     return a.mesh.triangleCount() > b.mesh.triangleCount();
   });
+  reference = inputs.front().mesh;
+  referenceFile = inputs.front().file.empty() ? inputs.front().name : inputs.front().file;
   // Levels of another object are refused (levelOfDetailMismatch).
   const BoundingBox finestBox = boundingBox(inputs.front().mesh);
   for (std::size_t j = 1; j < inputs.size(); ++j)
@@ -152,6 +175,17 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
     sortFinestFirst(prepared);
   }
   return prepared;
+}
+
+// The finest input's wrap, if it was wrapped: its levels are measured
+// against the input's outer surface (outerSurface), not its insides.
+void trimReference(SurfaceMesh& reference, const std::string& finestFile,
+                   const std::vector<RepairedInput>& prepared) {
+  for (const RepairedInput& r : prepared)
+    if (!r.derived && r.wrap && r.file == finestFile) {
+      reference = outerSurface(reference, r.mesh, *r.wrap);
+      return;
+    }
 }
 
 // --wrap auto's second chance: each original input that repair closed but
@@ -348,35 +382,54 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
     stageStart = now;
   };
   if (events.progress) events.progress("repair", 0, inputs.size());
-  std::vector<RepairedInput> prepared = prepareInputs(std::move(inputs), options, events);
+  // The finest input as read: what every level is measured against.
+  SurfaceMesh reference;
+  std::string finestFile;
+  std::vector<RepairedInput> prepared =
+      prepareInputs(std::move(inputs), options, events, reference, finestFile);
+  trimReference(reference, finestFile, prepared);
   endStage(options.decimate ? "repair + decimation" : "repair");
   if (events.cancelled && events.cancelled()) throw Cancelled();
   const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
 
   Candidates found;
   result.meshingSeconds =
-      meshCandidates(specs, prepared, options, events, "meshing", found, targets.back());
+      meshCandidates(specs, prepared, reference, options, events, "meshing", found, targets.back());
   endStage("meshing + cleanup");
   if (options.wrap.mode == WrapMode::Auto) {
     const std::size_t first = prepared.size();
     if (wrapRefusedInputs(prepared, specs, found, options, events)) {
+      trimReference(reference, finestFile, prepared);
       result.meshingSeconds +=
-          meshCandidates(candidateSpecs(prepared, options, first), prepared, options, events,
-                         "meshing the wraps", found, targets.back());
+          meshCandidates(candidateSpecs(prepared, options, first), prepared, reference, options,
+                         events, "meshing the wraps", found, targets.back());
       endStage("wrap + meshing");
     }
   }
   if (options.sizeToTargets) {
-    result.meshingSeconds += addSizedCandidates(prepared, targets, options, events, found);
+    result.meshingSeconds +=
+        addSizedCandidates(prepared, reference, targets, options, events, found);
     endStage("sizing");
   }
+  if (events.progress) events.progress("selection", 0, 1);
+  const FaithfulSelection selection = selectFaithfulLevels(found, targets, options);
+  if (!selection.unfaithful.empty()) {
+    std::string problems;
+    for (const std::string& problem : selection.unfaithful)
+      problems += (problems.empty() ? "" : "\n") + problem;
+    if (!options.acceptUnfaithful)
+      throw Error(problems + "\n(nothing was written; the bound is " +
+                  formatNumber(kFidelityMeanShare) + " of the element size on average and " +
+                  formatNumber(kFidelityMaxShare) + " at worst)");
+    for (const std::string& problem : selection.unfaithful)
+      say(events, "warning: accepted: " + problem.substr(0, problem.find(". Ways out")));
+  }
+  result.chosen = selection.chosen;
   result.skippedCandidates = found.skipped;
   result.candidates = std::move(found.reports);
   std::vector<TetMesh>& meshes = found.meshes;
   const std::vector<Index>& counts = found.counts;
 
-  if (events.progress) events.progress("selection", 0, 1);
-  result.chosen = selectLevels(counts, targets);
   // Coarsest first, whatever order the targets' picks came in.
   std::stable_sort(result.chosen.begin(), result.chosen.end(), [&](int a, int b) {
     return counts[static_cast<std::size_t>(a)] < counts[static_cast<std::size_t>(b)];
@@ -401,6 +454,11 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
       j["nodes"] = c.nodes;
       j["elements"] = c.elements;
       j["statistics"] = c.statistics.asMap();
+      if (c.fidelity)
+        j["fidelity"] = {{"input_to_level_mean", c.fidelity->inputToLevelMean},
+                         {"input_to_level_max", c.fidelity->inputToLevelMax},
+                         {"element_size", c.fidelity->elementSize},
+                         {"faithful", c.fidelity->faithful}};
     } else {
       j["error"] = c.error;
     }
@@ -416,6 +474,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
     level.source.sizeBound = result.candidates[i].sizeBound;
     level.source.wrap = result.candidates[i].wrap;
     level.statistics = result.candidates[i].statistics.asMap();
+    level.fidelity = result.candidates[i].fidelity;
     level.statistics["target_elements"] =
         targets[std::min(dataset.config.levels.size(), targets.size() - 1)];
     dataset.config.levels.push_back(level);
@@ -446,6 +505,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                                  {"qualities", options.qualities},
                                  {"decimate", options.decimate},
                                  {"size_to_targets", options.sizeToTargets},
+                                 {"accept_unfaithful", options.acceptUnfaithful},
                                  {"wrap", toString(options.wrap.mode)},
                                  {"wrap_alpha", options.wrap.alpha},
                                  {"wrap_offset", options.wrap.offset}}},

@@ -24,8 +24,9 @@ struct SizingTrack {
 };
 
 bool someCandidateClose(const Candidates& found, double target) {
-  for (Index count : found.counts)
-    if (count >= 0 && closeToTarget(static_cast<double>(count), target)) return true;
+  for (std::size_t c = 0; c < found.counts.size(); ++c)
+    if (faithful(found.reports[c]) && closeToTarget(static_cast<double>(found.counts[c]), target))
+      return true;
   return false;
 }
 
@@ -81,7 +82,7 @@ double missRatio(Index count, double target) {
 
 }  // namespace
 
-double addSizedCandidates(const std::vector<RepairedInput>& prepared,
+double addSizedCandidates(const std::vector<RepairedInput>& prepared, const SurfaceMesh& reference,
                           const std::vector<double>& targets, const BuildOptions& options,
                           const BuildEvents& events, Candidates& found) {
   // TetGen: every quality asked for, best first, since the counts jump with
@@ -131,7 +132,7 @@ double addSizedCandidates(const std::vector<RepairedInput>& prepared,
       track.lastCandidate = found.counts.size() + specs.size();
       specs.push_back(sizedSpec(track.input, track.quality, track.bound, options.mesher));
     }
-    seconds += meshCandidates(specs, prepared, options, events,
+    seconds += meshCandidates(specs, prepared, reference, options, events,
                               "sizing, round " + std::to_string(round), found);
     if (round == 1)
       for (std::size_t k = 0; k < tracks.size(); ++k) {

@@ -47,6 +47,28 @@ struct LevelWrap {
 // of a wrap.
 std::string describe(const LevelWrap& wrap);
 
+// How faithfully a level's boundary follows the surface it stands for (the
+// object's finest input as read), in the input's units (a level's
+// `fidelity` object): one-sided distances both ways, sampled at the
+// vertices (input -> level: how far the input's vertices lie from the
+// level's boundary; level -> input: the other way), the level's element
+// size h, and the bounds build held input -> level to (fractions of h,
+// see tetskin/meshing/LevelFidelity.h; 0 when none was applied).
+struct LevelFidelity {
+  double diagonal = 0;     // of the input's bounding box: divide by it for fractions
+  double elementSize = 0;  // h: the edge of the regular tetrahedron of the level's mean volume
+  double inputToLevelMax = 0, inputToLevelMean = 0;
+  double levelToInputMax = 0, levelToInputMean = 0;
+  double boundMax = 0, boundMean = 0;  // on input -> level; 0: not checked
+  // Within both bounds; false only where the user accepted an unfaithful
+  // level (build --accept-unfaithful).
+  bool faithful = true;
+};
+
+// "input -> level: mean X (x% of the diagonal), max Y (y%); level -> input:
+// mean ..., max ...": what build, info, bind and the GUI say of a level.
+std::string describe(const LevelFidelity& fidelity);
+
 struct LevelSource {
   std::string input;   // surface file the level was meshed from
   std::string mesher;  // "tetgen", "netgen", or what else produced it
@@ -61,6 +83,7 @@ struct LevelConfig {
   LevelRange range;
   LevelSource source;
   std::map<std::string, double> statistics;  // e.g. min_dihedral_deg
+  std::optional<LevelFidelity> fidelity{};   // measured by build; absent in older configs
 };
 
 struct DatasetConfig {

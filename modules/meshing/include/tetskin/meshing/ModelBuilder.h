@@ -70,6 +70,11 @@ struct BuildOptions {
   // place of the input; the input stays the dataset's default surface.
   WrapOptions wrap;
   UpAxis up = UpAxis::Y;  // recorded in the config (`up`) for simulation and viewing
+  // Candidates beyond their fidelity bound (LevelFidelity.h) are never
+  // chosen while a faithful one is near the level's target; when none is,
+  // build throws Error naming the level, unless this accepts the nearest
+  // (its config then records faithful: false).
+  bool acceptUnfaithful = false;
 };
 
 struct CandidateReport {
@@ -86,6 +91,9 @@ struct CandidateReport {
   Index nodes = 0, elements = 0;
   Index unreferencedNodesRemoved = 0;
   TetQuality statistics;
+  // Its boundary against the object's finest input as read, with the
+  // bound for its element size (LevelFidelity.h); set when ok.
+  std::optional<LevelFidelity> fidelity;
   double seconds = 0;
 };
 
