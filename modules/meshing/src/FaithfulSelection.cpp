@@ -26,9 +26,12 @@ std::string unfaithfulLevel(std::size_t level, double target, const CandidateRep
     text += "; the nearest faithful candidate has " +
             std::to_string(found.counts[static_cast<std::size_t>(nearestFaithful)]) + " elements";
   text += ". Ways out: ";
-  if (nearestFaithful >= 0 &&
-      found.counts[static_cast<std::size_t>(nearestFaithful)] > static_cast<Index>(target))
-    text += "a larger element target (--min-elements/--max-elements), ";
+  if (nearestFaithful >= 0)
+    text += std::string(found.counts[static_cast<std::size_t>(nearestFaithful)] >
+                                static_cast<Index>(target)
+                            ? "a larger"
+                            : "a smaller") +
+            " element target (--min-elements/--max-elements), ";
   if (nearest.wrap) text += "--wrap-offset (a shell's thickness) or --wrap-alpha, ";
   if (options.mesher == MesherKind::TetGen) text += "--mesher netgen (remeshes the surface), ";
   if (!options.decimate) text += "--decimate (coarser inputs), ";
