@@ -86,6 +86,14 @@ def test_build_makes_the_dataset_the_command_makes(tmp_path, cli):
         np.testing.assert_array_equal(built.level(k).elements, made.level(k).elements)
     assert progress and all(done <= total for _, done, total in progress)
     assert (tmp_path / "py" / "cube.node").exists()
+    # Each level measured against the input, as the config records it.
+    for k in range(2):
+        fidelity = built.level(k).fidelity
+        assert fidelity["faithful"]
+        assert 0 <= fidelity["input_to_level_mean"] <= fidelity["input_to_level_max"]
+        assert fidelity["input_to_level_mean"] <= fidelity["bound_mean"]
+        assert fidelity["element_size"] > 0
+    assert tetskin.load_dataset(TEST_DATA / "gmsh" / "sphere_coarse_v41.msh").level(0).fidelity is None
 
 
 def test_build_refuses_unknown_options_and_bad_values(tmp_path):
