@@ -102,7 +102,7 @@ void addDatasetApi(py::module_& m) {
             d["bound_mean"] = f->boundMean;
             d["bound_max"] = f->boundMax;
             d["faithful"] = f->faithful;
-            return std::move(d);
+            return d;
           },
           "how far the level's boundary lies from the input it was built from (build), in the "
           "input's units: a dict of input_to_level_mean/max, level_to_input_mean/max, "
