@@ -187,7 +187,7 @@ void printDataset(const std::filesystem::path& path) {
   std::printf("  elasticity %s\n", describe(dataset.config.elasticity).c_str());
   std::printf("  %-5s %8s %9s %12s %12s %8s  %s\n", "level", "nodes", "elements", "volume",
               "min volume", "min dih", "source");
-  std::string warnings, wraps;
+  std::string warnings, levelNotes;  // (each level's wrap and fidelity)
   for (int k = 0; k < dataset.mesh.levelCount(); ++k) {
     const TetMesh level = extractLevel(dataset.mesh, k);
     const Volumes v = volumes(level);
@@ -211,17 +211,18 @@ void printDataset(const std::filesystem::path& path) {
                 static_cast<long long>(level.nodeCount()),
                 static_cast<long long>(level.elementCount()), v.total, v.smallest,
                 quality.minDihedralDeg, src.input.c_str(), how.c_str());
-    if (src.wrap) wraps += "  level " + std::to_string(k) + " wrap: " + describe(*src.wrap) + "\n";
+    if (src.wrap)
+      levelNotes += "  level " + std::to_string(k) + " wrap: " + describe(*src.wrap) + "\n";
     if (const std::optional<LevelFidelity>& f =
             dataset.config.levels[static_cast<std::size_t>(k)].fidelity) {
-      wraps += "  level " + std::to_string(k) + " against the input: " + describe(*f) + "\n";
+      levelNotes += "  level " + std::to_string(k) + " against the input: " + describe(*f) + "\n";
       if (!f->faithful)
         warnings += "  warning: level " + std::to_string(k) +
                     " lies off its input beyond its fidelity bound (written with "
                     "--accept-unfaithful)\n";
     }
   }
-  std::fputs(wraps.c_str(), stdout);
+  std::fputs(levelNotes.c_str(), stdout);
   std::fputs(warnings.c_str(), stdout);
 }
 

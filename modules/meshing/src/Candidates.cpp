@@ -155,11 +155,14 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
         // A level's boundary carries the bound surface and the contacts: a
         // pinched edge (two parts of the body touching along it, as a
         // collapsed decimation leaves) makes it no closed manifold.
-        if (const Index pinched = nonManifoldEdgeCount(boundarySurface(mesh)); pinched > 0)
+        const SurfaceMesh boundary = boundarySurface(mesh);
+        if (const Index pinched = nonManifoldEdgeCount(boundary); pinched > 0)
           throw Error(prepared[specs[i].input].name + " " + c.label + ": its boundary has " +
                       std::to_string(pinched) +
                       " edge(s) of more than two faces (parts touching along an edge)");
-        c.fidelity = measureFidelity(reference, mesh);
+        c.fidelity = measureFidelity(
+            reference, boundary,
+            elementSize(c.statistics.totalVolume / static_cast<double>(c.elements)));
       } catch (const Error& e) {
         c.ok = false;
         c.error = e.what();

@@ -70,8 +70,9 @@ void say(const BuildEvents& events, const std::string& line);
 //
 // Each candidate meshed is measured against `reference` (the object's
 // finest input as read: measureFidelity, LevelFidelity.h) into its report's
-// `fidelity`; one with flat elements (flatElementProblem, MeshQuality.h) is
-// rejected as a failed run is.
+// `fidelity`; one with flat elements (flatElementProblem, MeshQuality.h) or
+// a pinched boundary (an edge of more than two faces) is rejected as a
+// failed run is.
 double meshCandidates(const std::vector<CandidateSpec>& specs,
                       const std::vector<RepairedInput>& prepared, const SurfaceMesh& reference,
                       const BuildOptions& options, const BuildEvents& events,

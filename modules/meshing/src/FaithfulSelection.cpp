@@ -9,33 +9,31 @@
 namespace tetskin {
 namespace {
 
-bool nearTarget(Index count, double target) {
-  const double ratio = static_cast<double>(count) / target;
-  return ratio <= kTargetTolerance && ratio >= 1 / kTargetTolerance;
-}
-
-std::string unfaithfulLevel(std::size_t level, double target, const CandidateReport& nearest,
-                            int nearestFaithful, const Candidates& found,
-                            const BuildOptions& options) {
-  std::string text =
-      "level " + std::to_string(level) + " (target " + std::to_string(std::llround(target)) +
-      " elements) has no faithful candidate near its target: the nearest, " + nearest.input + " " +
-      nearest.label + " with " + std::to_string(nearest.elements) + " elements, " +
-      fidelityProblem(*nearest.fidelity);
+UnfaithfulLevel unfaithfulLevel(std::size_t level, double target, const CandidateReport& nearest,
+                                int nearestFaithful, const Candidates& found,
+                                const BuildOptions& options) {
+  UnfaithfulLevel unfaithful;
+  std::string& text = unfaithful.problem;
+  text = "level " + std::to_string(level) + " (target " + std::to_string(std::llround(target)) +
+         " elements) has no faithful candidate near its target: the nearest, " + nearest.input +
+         " " + nearest.label + " with " + std::to_string(nearest.elements) + " elements, " +
+         fidelityProblem(*nearest.fidelity);
   if (nearestFaithful >= 0)
     text += "; the nearest faithful candidate has " +
             std::to_string(found.counts[static_cast<std::size_t>(nearestFaithful)]) + " elements";
-  text += ". Ways out: ";
+  std::string& out = unfaithful.waysOut;
+  out = "Ways out: ";
   if (nearestFaithful >= 0)
-    text += std::string(found.counts[static_cast<std::size_t>(nearestFaithful)] >
-                                static_cast<Index>(target)
-                            ? "a larger"
-                            : "a smaller") +
-            " element target (--min-elements/--max-elements), ";
-  if (nearest.wrap) text += "--wrap-offset (a shell's thickness) or --wrap-alpha, ";
-  if (options.mesher == MesherKind::TetGen) text += "--mesher netgen (remeshes the surface), ";
-  if (!options.decimate) text += "--decimate (coarser inputs), ";
-  return text + "or --accept-unfaithful to write it anyway";
+    out += std::string(found.counts[static_cast<std::size_t>(nearestFaithful)] >
+                               static_cast<Index>(target)
+                           ? "a larger"
+                           : "a smaller") +
+           " element target (--min-elements/--max-elements), ";
+  if (nearest.wrap) out += "--wrap-offset (a shell's thickness) or --wrap-alpha, ";
+  if (options.mesher == MesherKind::TetGen) out += "--mesher netgen (remeshes the surface), ";
+  if (!options.decimate) out += "--decimate (coarser inputs), ";
+  out += "or --accept-unfaithful to write it anyway";
+  return unfaithful;
 }
 
 }  // namespace
@@ -57,8 +55,8 @@ FaithfulSelection selectFaithfulLevels(const Candidates& found, const std::vecto
     const auto n = static_cast<std::size_t>(nearest[k]);
     const int f = nearestFaithful[k];
     const bool faithfulNear =
-        f >= 0 && nearTarget(found.counts[static_cast<std::size_t>(f)], targets[k]);
-    if (f >= 0 && (faithfulNear || !nearTarget(found.counts[n], targets[k]))) {
+        f >= 0 && withinTargetTolerance(found.counts[static_cast<std::size_t>(f)], targets[k]);
+    if (f >= 0 && (faithfulNear || !withinTargetTolerance(found.counts[n], targets[k]))) {
       selection.chosen.push_back(f);
       continue;
     }

@@ -12,12 +12,19 @@
 
 namespace tetskin {
 
+// A level whose nearest candidates are all unfaithful: what is wrong ("level
+// 0 (target 600 elements) has no faithful candidate near its target: ...")
+// and what would change it ("Ways out: ...").
+struct UnfaithfulLevel {
+  std::string problem;
+  std::string waysOut;
+};
+
 struct FaithfulSelection {
   std::vector<int> chosen;  // candidate per target, in target order
-  // Per level whose nearest candidates are all unfaithful: what is wrong
-  // and the way out. Those levels take the nearest candidate of any
-  // fidelity (written only with --accept-unfaithful).
-  std::vector<std::string> unfaithful;
+  // Those levels take the nearest candidate of any fidelity (written only
+  // with --accept-unfaithful).
+  std::vector<UnfaithfulLevel> unfaithful;
 };
 
 // Per target, the faithful candidate nearest to it (selectLevels over the

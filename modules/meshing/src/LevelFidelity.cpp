@@ -4,27 +4,29 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/spatial/SurfaceDistance.h"
 
 namespace tetskin {
 
+double elementSize(double meanElementVolume) {
+  return std::cbrt(6.0 * std::sqrt(2.0) * meanElementVolume);
+}
+
 double elementSize(const TetMesh& mesh) {
   if (mesh.elementCount() == 0) return 0;
   double volume = 0;
   for (Index e = 0; e < mesh.elementCount(); ++e) volume += std::abs(elementVolume(mesh, e));
-  const double mean = volume / static_cast<double>(mesh.elementCount());
-  return std::cbrt(6.0 * std::sqrt(2.0) * mean);
+  return elementSize(volume / static_cast<double>(mesh.elementCount()));
 }
 
-LevelFidelity measureFidelity(const SurfaceMesh& input, const TetMesh& level) {
-  const SurfaceMesh boundary = boundarySurface(level);
+LevelFidelity measureFidelity(const SurfaceMesh& input, const SurfaceMesh& boundary,
+                              double elementSize) {
   const OneSidedDistance in = oneSidedDistance(input, boundary);
   const OneSidedDistance out = oneSidedDistance(boundary, input);
   LevelFidelity f;
   f.diagonal = boundingBox(input).diagonal();
-  f.elementSize = elementSize(level);
+  f.elementSize = elementSize;
   f.inputToLevelMax = in.max;
   f.inputToLevelMean = in.mean;
   f.levelToInputMax = out.max;

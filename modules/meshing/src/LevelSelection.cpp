@@ -44,6 +44,11 @@ std::vector<int> selectLevels(const std::vector<Index>& elementCounts,
   return chosen;
 }
 
+bool withinTargetTolerance(Index elements, double target) {
+  const double ratio = static_cast<double>(elements) / target;
+  return ratio <= kTargetTolerance && ratio >= 1 / kTargetTolerance;
+}
+
 std::vector<std::string> selectionWarnings(const std::vector<Index>& elementCounts,
                                            const std::vector<int>& chosen,
                                            const std::vector<double>& targets) {
@@ -56,8 +61,8 @@ std::vector<std::string> selectionWarnings(const std::vector<Index>& elementCoun
       warnings.push_back("levels " + std::to_string(k - 1) + " and " + std::to_string(k) +
                          " are the same candidate (" + std::to_string(count(k)) + " elements)");
     if (k >= targets.size()) continue;
+    if (withinTargetTolerance(count(k), targets[k])) continue;
     const double ratio = static_cast<double>(count(k)) / targets[k];
-    if (ratio <= kTargetTolerance && ratio >= 1 / kTargetTolerance) continue;
     // "269x" or "4.5x" its target; "1/24" or "1/2.5" of it.
     const double factor = ratio > 1 ? ratio : 1 / ratio;
     std::ostringstream shown;

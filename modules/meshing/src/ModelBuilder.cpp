@@ -177,15 +177,17 @@ std::vector<RepairedInput> prepareInputs(std::vector<SurfaceInput> inputs,
   return prepared;
 }
 
-// The finest input's wrap, if it was wrapped: its levels are measured
-// against the input's outer surface (outerSurface), not its insides.
-void trimReference(SurfaceMesh& reference, const std::string& finestFile,
+// Once the finest input is wrapped (`reference` still as read), its levels
+// are measured against its outer surface (outerSurface), not its insides.
+// Returns whether it was.
+bool trimReference(SurfaceMesh& reference, const std::string& finestFile,
                    const std::vector<RepairedInput>& prepared) {
   for (const RepairedInput& r : prepared)
     if (!r.derived && r.wrap && r.file == finestFile) {
       reference = outerSurface(reference, r.mesh, *r.wrap);
-      return;
+      return true;
     }
+  return false;
 }
 
 // --wrap auto's second chance: each original input that repair closed but
@@ -387,7 +389,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   std::string finestFile;
   std::vector<RepairedInput> prepared =
       prepareInputs(std::move(inputs), options, events, reference, finestFile);
-  trimReference(reference, finestFile, prepared);
+  bool trimmed = trimReference(reference, finestFile, prepared);
   endStage(options.decimate ? "repair + decimation" : "repair");
   if (events.cancelled && events.cancelled()) throw Cancelled();
   const std::vector<CandidateSpec> specs = candidateSpecs(prepared, options);
@@ -399,7 +401,7 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   if (options.wrap.mode == WrapMode::Auto) {
     const std::size_t first = prepared.size();
     if (wrapRefusedInputs(prepared, specs, found, options, events)) {
-      trimReference(reference, finestFile, prepared);
+      if (!trimmed) trimmed = trimReference(reference, finestFile, prepared);
       result.meshingSeconds +=
           meshCandidates(candidateSpecs(prepared, options, first), prepared, reference, options,
                          events, "meshing the wraps", found, targets.back());
@@ -415,14 +417,14 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
   const FaithfulSelection selection = selectFaithfulLevels(found, targets, options);
   if (!selection.unfaithful.empty()) {
     std::string problems;
-    for (const std::string& problem : selection.unfaithful)
-      problems += (problems.empty() ? "" : "\n") + problem;
+    for (const UnfaithfulLevel& level : selection.unfaithful)
+      problems += (problems.empty() ? "" : "\n") + level.problem + ". " + level.waysOut;
     if (!options.acceptUnfaithful)
       throw Error(problems + "\n(nothing was written; the bound is " +
                   formatNumber(kFidelityMeanShare) + " of the element size on average and " +
                   formatNumber(kFidelityMaxShare) + " at worst)");
-    for (const std::string& problem : selection.unfaithful)
-      say(events, "warning: accepted: " + problem.substr(0, problem.find(". Ways out")));
+    for (const UnfaithfulLevel& level : selection.unfaithful)
+      say(events, "warning: accepted: " + level.problem);
   }
   result.chosen = selection.chosen;
   result.skippedCandidates = found.skipped;

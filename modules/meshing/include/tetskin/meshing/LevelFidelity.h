@@ -25,14 +25,17 @@ namespace tetskin {
 inline constexpr double kFidelityMeanShare = 0.5;
 inline constexpr double kFidelityMaxShare = 2.0;
 
-// h: the edge of the regular tetrahedron whose volume is the mesh's mean
-// element volume, (6 sqrt(2) V / N)^(1/3). 0 for an empty mesh.
+// h: the edge of the regular tetrahedron of a given volume (a mesh's mean
+// element volume), (6 sqrt(2) V)^(1/3); of a whole mesh, with its total
+// volume over its elements (0 for an empty mesh).
+double elementSize(double meanElementVolume);
 double elementSize(const TetMesh& mesh);
 
-// `level`'s boundary measured against `input` both ways (oneSidedDistance),
-// with the bounds for its element size and whether it lies within them.
-// `input` needs at least one triangle; `level` positively oriented elements.
-LevelFidelity measureFidelity(const SurfaceMesh& input, const TetMesh& level);
+// A level's `boundary` (boundarySurface) measured against `input` both ways
+// (oneSidedDistance), with the bounds for the level's `elementSize` and
+// whether it lies within them. Both surfaces need at least one triangle.
+LevelFidelity measureFidelity(const SurfaceMesh& input, const SurfaceMesh& boundary,
+                              double elementSize);
 
 // Why a fidelity is beyond its bounds, e.g. "lies off the input by 5.8% of
 // the diagonal on average (at most 1.2% for its element size 2.4%)"; empty

@@ -29,6 +29,8 @@ std::vector<int> selectLevels(const std::vector<Index>& elementCounts,
 // `chosen` is per level, coarsest first, and targets[k] is level k's.
 // Empty when the selection is as asked.
 constexpr double kTargetTolerance = 2.0;
+// Whether `elements` lies within kTargetTolerance of `target`, either way.
+bool withinTargetTolerance(Index elements, double target);
 std::vector<std::string> selectionWarnings(const std::vector<Index>& elementCounts,
                                            const std::vector<int>& chosen,
                                            const std::vector<double>& targets);
