@@ -124,3 +124,18 @@ tetskin_cli_test(build_one_level_pair SETUP one_level_pair
   ARGS build ${tdata}/cube_0.obj --levels 1 --qualities 1.4 -o ${cli_out}/tetgen_pair/cube -q)
 tetskin_cli_test(build_lod_series_missing FAIL STDERR "^error: [^\n]*cube_2.obj: cannot open"
   ARGS build --lod-series ${tdata}/cube --inputs 3 -o ${cli_out}/lod3 -q)
+# Faithful levels (#68): fins no level of 12000 elements can follow are
+# refused with the level, its distance, the bound and the ways out, and
+# nothing is written; --accept-unfaithful writes the level, its config
+# records that it lies beyond its bound, and info warns.
+tetskin_cli_test(build_refuses_an_unfaithful_level FAIL STATUS 1
+  STDERR "^error: level 2 .target 12000 elements. has no faithful candidate near its target: the nearest, [^\n]*nonmanifold_fins.obj [^\n]* lies off the input by [0-9.]+% of the diagonal at worst .at most [0-9.]+% for its element size [0-9.]+%.. the nearest faithful candidate has [0-9]+ elements. Ways out: [^\n]*--accept-unfaithful to write it anyway\n.nothing was written. the bound is 0.5 of the element size on average and 2 at worst.\n$"
+  NOT_EXIST ${cli_out}/fins_refused.json
+  ARGS build ${tdata}/nonmanifold_fins.obj --decimate -q -o ${cli_out}/fins_refused)
+tetskin_cli_test(build_accept_unfaithful SETUP unfaithful_dataset
+  STDOUT "wrote [^\n]*fins_accepted.json"
+  ARGS build ${tdata}/nonmanifold_fins.obj --decimate -q --accept-unfaithful
+       -o ${cli_out}/fins_accepted)
+tetskin_cli_test(info_warns_of_an_unfaithful_level REQUIRES unfaithful_dataset
+  STDOUT "\n  level 2 against the input: input -> level: [^\n]* .beyond its bound: accepted by the user.\n[^\n]*\n?  warning: level 2 lies off its input beyond its fidelity bound .written with --accept-unfaithful.\n"
+  ARGS info ${cli_out}/fins_accepted.json)

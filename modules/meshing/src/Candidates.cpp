@@ -80,8 +80,12 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
                                                  : specs[j].input == specs[i].input) &&
            looseness(specs[j], options.mesher) >= looseness(specs[i], options.mesher);
   };
-  // The element counts of the specs meshed so far (by spec; -1: not yet).
+  // The element counts of the specs meshed so far (by spec; -1: not yet,
+  // or failed or flat: a candidate rejected bounds nothing, else an input
+  // whose coarse candidates are all flat would keep none).
   std::vector<Index> meshedCount(specs.size(), -1);
+  // Each meshed spec's quality, measured as its job ends (by spec).
+  std::vector<std::optional<TetQuality>> quality(specs.size());
   // The spec above the largest target that bounds spec i, if any.
   auto overTarget = [&](std::size_t i) -> std::optional<std::size_t> {
     if (!(pruneAbove > 0)) return std::nullopt;
@@ -107,7 +111,14 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
         const std::size_t i = order[job];
         ++done;
         if (events.progress) events.progress(stage, done, specs.size());
-        if (r.ok) meshedCount[i] = r.mesh.elementCount();
+        if (r.ok) try {
+            // (Validated first: a mesh with a bad index is measured nowhere.)
+            validateTetMesh(r.mesh, "", /*requirePositiveVolume=*/true);
+            quality[i] = measureQuality(r.mesh);
+            if (flatElementProblem(*quality[i]).empty()) meshedCount[i] = r.mesh.elementCount();
+          } catch (const Error&) {
+            // (Said with its name when the candidate is reported below.)
+          }
         if (!r.ok)
           say(events, "candidate " + prepared[specs[i].input].name + " " + specs[i].label +
                           " failed: " + r.error);
@@ -149,7 +160,8 @@ double meshCandidates(const std::vector<CandidateSpec>& specs,
                         /*requirePositiveVolume=*/true);
         c.nodes = mesh.nodeCount();
         c.elements = mesh.elementCount();
-        c.statistics = measureQuality(mesh);
+        // (Measured as its job ended: the nodes removed belong to no element.)
+        c.statistics = *quality[i];
         if (const std::string flat = flatElementProblem(c.statistics); !flat.empty())
           throw Error(prepared[specs[i].input].name + " " + c.label + " " + flat);
         // A level's boundary carries the bound surface and the contacts: a
