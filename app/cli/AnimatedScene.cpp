@@ -24,8 +24,6 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
                              const SceneOptions& o)
     : dataset_(dataset),
       level_(commandLevel(input, dataset.mesh, o.level, false)),
-      material_(o.material.value_or(dataset.config.elasticity)),
-      timeStep_(o.timeStep),
       nodes_(dataset.mesh.nodes) {
   surface_ = std::make_unique<DeformableSurface>(dataset.mesh, input.surface,
                                                  bindingAt(input, dataset.mesh, level_), o.path,
@@ -43,9 +41,10 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
   up_ = o.up;
   frame(restBox_);
   // An unknown scenario or bad parameters fail now, before any frames.
-  makeScenario(o.scenario.name, o.scenario.parameters);
-  scenarioArgs_ = o.scenario;
-  datasetName_ = o.datasetName;
+  RunRequest run = o.run;
+  run.level = level_;
+  spec_ = resolveRun(run, dataset.mesh, dataset.config);
+  makeScenario(spec_.scenario, spec_.parameters);
   {
     // A gpu path that cannot draw here also reports it as a VTK error: the
     // command says it once, as its own error line.
@@ -67,16 +66,7 @@ void AnimatedScene::frame(const BoundingBox& box) {
 }
 
 void AnimatedScene::startSimulation() {
-  RunSpec spec;
-  spec.level = level_;
-  spec.options = uprightAlong(up_, {});
-  spec.options.material = material_;
-  spec.options.timeStep = timeStep_;
-  spec.options = withGravityAndFloor(spec.options, scenarioArgs_);
-  spec.scenario = scenarioArgs_.name;
-  spec.parameters = scenarioArgs_.parameters;
-  spec.datasetName = datasetName_;
-  session_ = std::make_unique<SimulationSession>(dataset_.mesh, spec);
+  session_ = std::make_unique<SimulationSession>(dataset_.mesh, spec_);
   surface_->setFrameSeconds(session_->options().timeStep);
   if (const auto floor = session_->options().floor()) showFloor(*floor);
   // The scenario's start may leave the rest shape's box (drop lifts it).

@@ -20,6 +20,7 @@
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/FloorActor.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/session/RunRequest.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 
@@ -28,17 +29,15 @@ namespace tetskin::cli {
 struct SceneOptions {
   int level = -1;  // (a binding's own level, when the surface input is one)
   RenderPath path = RenderPath::Cpu;
-  ScenarioArgs scenario;  // its parameters with the held nodes read (scenarioParameters())
-  std::optional<ElasticMaterial> material;         // nullopt: the dataset config's elasticity
-  double timeStep = SimulationOptions{}.timeStep;  // seconds per simulated frame
+  // The simulated frames' run (its level: the scene's); a step per frame.
+  RunRequest run;
   int width = 800, height = 600;
   CameraPreset camera = CameraPreset::Iso;
-  UpAxis up = UpAxis::Y;                // of the camera presets and the simulation
-  std::string control = "none";         // none, surface, wireframe, shrink
-  std::filesystem::path texture;        // PNG applied through the surface's texture coordinates
-                                        // (on fur paths: the fur's colour and mask)
-  FurParameters fur;                    // for the fur paths
-  std::string datasetName = "dataset";  // names the dataset in errors (e.g. its path)
+  UpAxis up = UpAxis::Y;          // of the camera presets and the simulation
+  std::string control = "none";   // none, surface, wireframe, shrink
+  std::filesystem::path texture;  // PNG applied through the surface's texture coordinates
+                                  // (on fur paths: the fur's colour and mask)
+  FurParameters fur;              // for the fur paths
 };
 
 struct FrameStats {
@@ -62,9 +61,9 @@ class AnimatedScene {
   // takes the picture); its time is left out of the stats.
   FrameStats run(int frames, const std::function<void()>& afterDraw = {});
   // Seconds a simulated frame stands for (the time step).
-  double frameSeconds() const { return timeStep_; }
+  double frameSeconds() const { return spec_.options.timeStep; }
   // The simulated body's material.
-  const ElasticMaterial& material() const { return material_; }
+  const ElasticMaterial& material() const { return spec_.options.material; }
   // Draws the control level at `positions` (a recorded frame's state),
   // `seconds` after the state drawn before it (for the fur's drag).
   void draw(const Points3& positions, double seconds);
@@ -89,10 +88,7 @@ class AnimatedScene {
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
   std::unique_ptr<FloorActor> floor_;
-  ScenarioArgs scenarioArgs_;
-  ElasticMaterial material_;
-  double timeStep_;
-  std::string datasetName_;
+  RunSpec spec_;  // the simulated frames' run
   UpAxis up_ = UpAxis::Y;
   CameraPreset camera_ = CameraPreset::Iso;
   BoundingBox restBox_;                         // of the control level at rest

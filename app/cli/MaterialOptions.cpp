@@ -10,7 +10,7 @@ namespace tetskin::cli {
 
 void addMaterialOptions(CLI::App& cmd, MaterialArgs& a) {
   // (The range is the material's to check, after the config's values are
-  // taken: materialOf names the option.)
+  // taken: MaterialOverrides::over names the option.)
   auto option = [&](const NumberOption& schema, std::optional<double>& value) {
     cmd.add_option(schema.flag, value,
                    std::string(schema.help) +
@@ -30,19 +30,14 @@ CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep) {
   return addNumberOption(cmd, simulation_option::kTimeStep, timeStep);
 }
 
-ElasticMaterial materialOf(const MaterialArgs& a, const ElasticMaterial& config) {
-  ElasticMaterial m = config;
-  m.youngsModulus = a.young.value_or(m.youngsModulus);
-  m.poissonRatio = a.poisson.value_or(m.poissonRatio);
-  m.density = a.density.value_or(m.density);
-  m.massDamping = a.alpha.value_or(m.massDamping);
-  m.stiffnessDamping = a.beta.value_or(m.stiffnessDamping);
-  // A config's values were checked as it was read: a problem now is an
-  // option's, named as the user typed it.
-  if (const auto problem = materialProblem(m))
-    for (const MaterialField& field : materialFields())
-      if (problem->key == field.option->key)
-        throw Error(std::string(field.option->flag) + ": " + problem->what);
+MaterialOverrides overridesOf(const MaterialArgs& a) {
+  MaterialOverrides m;
+  using namespace material_option;
+  for (auto [option, value] :
+       {std::pair{&kYoungsModulus, a.young}, std::pair{&kPoissonRatio, a.poisson},
+        std::pair{&kDensity, a.density}, std::pair{&kMassDamping, a.alpha},
+        std::pair{&kStiffnessDamping, a.beta}})
+    if (value) m.set(*option, *value);
   return m;
 }
 

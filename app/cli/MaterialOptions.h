@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "tetskin/core/ElasticMaterial.h"
+#include "tetskin/session/RunRequest.h"
 #include "tetskin/simulation/Simulation.h"
 
 namespace tetskin::cli {
@@ -28,9 +29,7 @@ void addMaterialOptions(CLI::App& cmd, MaterialArgs& args);
 // Adds --dt (seconds, > 0) to `cmd`, setting `timeStep`.
 CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep);
 
-// `config` (the dataset's elasticity) with the values given over it.
-// Throws Error naming the option of a value out of its range ("--poisson:
-// Poisson's ratio must lie in (-1, 0.5), got 0.5").
-ElasticMaterial materialOf(const MaterialArgs& args, const ElasticMaterial& config);
+// The values given, over the dataset config's elasticity (RunRequest.h).
+MaterialOverrides overridesOf(const MaterialArgs& args);
 
 }  // namespace tetskin::cli

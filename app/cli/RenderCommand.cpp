@@ -80,11 +80,12 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.path = fromName<RenderPath>(a.path);
   o.camera = fromName<CameraPreset>(a.camera);
   o.level = a.level;
-  o.scenario = a.scenario;
-  o.timeStep = a.timeStep;
   o.control = a.control;
   o.texture = a.texture;
-  o.datasetName = a.dataset.string();
+  o.run.names = OptionNames::Flags;
+  o.run.datasetName = a.dataset.string();
+  o.run.settings.timeStep = a.timeStep;
+  o.run.material = overridesOf(a.material);
   fromName<ControlMeshStyle>(o.control);  // reject typos before any work
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
@@ -103,7 +104,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
   const Dataset dataset = loadDataset(a.dataset);
   // (An option out of range fails now, before any drawing.)
-  o.material = materialOf(a.material, dataset.config.elasticity);
+  o.run.material.over(dataset.config.elasticity, OptionNames::Flags);
   o.fur = furParameters(a, dataset.config);
   o.up = upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
@@ -129,8 +130,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.level = level;
   const SurfaceMesh& surface = input.surface;
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
-  o.scenario.parameters = scenarioParameters(
-      cmd, a.scenario, dataset.mesh.nodes.middleRows(range.firstNode, range.nodeCount));
+  fillScenario(cmd, a.scenario, range.nodeCount, o.run);
   AnimatedScene scene(dataset, input, o);
   if (recorded) {
     const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string();

@@ -27,23 +27,26 @@ void checkRunOptions(const RunArgs& a, const CLI::App& cmd) {
                     ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
 }
 
+RunRequest runRequest(const RunArgs& a, const CLI::App& cmd, const Dataset& dataset, int level,
+                      const std::string& datasetName) {
+  RunRequest request;
+  request.names = OptionNames::Flags;
+  request.datasetName = datasetName;
+  request.level = level;
+  request.settings = a.options;
+  request.settings.solver = fromName<SolverKind>(a.solver);
+  request.settings.tangent = fromName<Tangent>(a.tangent);
+  request.settings.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
+  request.settings.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
+  request.material = overridesOf(a.material);
+  fillScenario(cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount,
+               request);
+  return request;
+}
+
 RunSpec runSpec(const RunArgs& a, const CLI::App& cmd, const Dataset& dataset, int level,
                 const std::string& datasetName) {
-  SimulationOptions options = a.options;
-  options.solver = fromName<SolverKind>(a.solver);
-  options.tangent = fromName<Tangent>(a.tangent);
-  options.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
-  options.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
-  options.material = materialOf(a.material, dataset.config.elasticity);
-  options =
-      withGravityAndFloor(uprightAlong(upAxisOf(a.scenario, dataset.config), options), a.scenario);
-  RunSpec spec;
-  spec.level = level;
-  spec.options = options;
-  spec.scenario = a.scenario.name;
-  spec.parameters = scenarioParameters(cmd, a.scenario, extractLevel(dataset.mesh, level).nodes);
-  spec.datasetName = datasetName;
-  return spec;
+  return resolveRun(runRequest(a, cmd, dataset, level, datasetName), dataset.mesh, dataset.config);
 }
 
 }  // namespace tetskin::cli

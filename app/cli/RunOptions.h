@@ -16,13 +16,13 @@
 namespace tetskin::cli {
 
 struct RunArgs {
-  std::string solver = toString(SolverKind::Automatic),
-              coarseOperators = toString(SimulationOptions{}.coarseOperators),
-              coarseLevels = toString(SimulationOptions{}.coarseLevels),
-              tangent = toString(SimulationOptions{}.tangent);
+  std::string solver = toString(defaultRunSettings().solver),
+              coarseOperators = toString(defaultRunSettings().coarseOperators),
+              coarseLevels = toString(defaultRunSettings().coarseLevels),
+              tangent = toString(defaultRunSettings().tangent);
   ScenarioArgs scenario;
-  SimulationOptions options;
-  MaterialArgs material;  // over the config's elasticity
+  SimulationOptions options = defaultRunSettings();  // the numbers given
+  MaterialArgs material;                             // over the config's elasticity
 };
 
 // Adds --dt, the scenario options, --solver, --tangent, the solver's
@@ -33,8 +33,10 @@ void addRunOptions(CLI::App& cmd, RunArgs& args);
 // before any work, as a typo would be).
 void checkRunOptions(const RunArgs& args, const CLI::App& cmd);
 
-// The run the options describe on `level` of `dataset` (named
-// `datasetName` in errors).
+// The run the options ask for on `level` of `dataset` (named
+// `datasetName` in errors), and the run it is (resolveRun).
+RunRequest runRequest(const RunArgs& args, const CLI::App& cmd, const Dataset& dataset, int level,
+                      const std::string& datasetName);
 RunSpec runSpec(const RunArgs& args, const CLI::App& cmd, const Dataset& dataset, int level,
                 const std::string& datasetName);
 

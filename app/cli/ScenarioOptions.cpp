@@ -80,9 +80,8 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
   return givenOptionOf(cmd, kGroup);
 }
 
-ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a,
-                                      const Points3& restNodes) {
-  const Index nodeCount = restNodes.rows();
+void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
+                  RunRequest& request) {
   for (const ScenarioField& f : scenarioFields())
     if (cmd.count(f.option->flag) > 0 && !scenarioReads(a.name, f.parameter))
       throw Error(std::string(f.option->flag) + ": " + notReadBy(a.name, f.parameter));
@@ -91,27 +90,22 @@ ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& a
       throw Error(std::string(option) + ": applies with --loads, which is not given");
   // (Each number was checked as it was parsed; makeScenario() checks the
   // whole set again for its other callers.)
-  ScenarioParameters p = a.parameters;
+  request.scenario = a.name;
+  ScenarioParameters& p = request.parameters;
+  p = a.parameters;
   if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
   if (a.fixedBox.size() == 6) {
     BoundingBox box;
     box.min = {a.fixedBox[0], a.fixedBox[1], a.fixedBox[2]};
     box.max = {a.fixedBox[3], a.fixedBox[4], a.fixedBox[5]};
-    try {
-      p.heldNodes = heldWithNodesInBox(p.heldNodes, restNodes, box);
-    } catch (const Error& e) {
-      throw Error(std::string("--fixed-box: ") + e.what());
-    }
+    request.heldBox = box;
   }
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
-  return p;
-}
-
-SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& a) {
-  if (a.gravity.size() == 3) options.gravity = {a.gravity[0], a.gravity[1], a.gravity[2]};
-  if (a.floor) options.floorHeight = *a.floor;
-  return options;
+  if (a.gravity.size() == 3)
+    request.gravity = Eigen::Vector3d(a.gravity[0], a.gravity[1], a.gravity[2]);
+  request.floorHeight = a.floor;
+  if (!a.up.empty()) request.up = fromName<UpAxis>(a.up);
 }
 
 }  // namespace tetskin::cli

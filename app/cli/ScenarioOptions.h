@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tetskin/io/DatasetConfig.h"
+#include "tetskin/session/RunRequest.h"
 #include "tetskin/simulation/Scenario.h"
 
 namespace tetskin::cli {
@@ -36,15 +37,12 @@ UpAxis upAxisOf(const ScenarioArgs& args, const DatasetConfig& config);
 // command line, if any.
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
-// The scenario's parameters with the held nodes (--fixed-nodes and
-// --fixed-box together), the loads and their curve read, for a level whose
-// rest positions are `restNodes`. Throws Error for an option of another
-// scenario than the chosen one (e.g. --push with drop): it would change
-// nothing; and for a box that holds no node of the level.
-ScenarioParameters scenarioParameters(const CLI::App& cmd, const ScenarioArgs& args,
-                                      const Points3& restNodes);
-
-// `options` with the given gravity and floor (over uprightAlong()'s).
-SimulationOptions withGravityAndFloor(SimulationOptions options, const ScenarioArgs& args);
+// Fills `request`'s scenario and its parameters (the numbers, the held
+// nodes of --fixed-nodes, the loads and their curve read), the held box
+// (--fixed-box), gravity, the floor and the up axis, for a level of
+// `nodeCount` nodes. Throws Error for an option of another scenario than
+// the chosen one (e.g. --push with drop): it would change nothing.
+void fillScenario(const CLI::App& cmd, const ScenarioArgs& args, Index nodeCount,
+                  RunRequest& request);
 
 }  // namespace tetskin::cli

@@ -139,9 +139,6 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
   if (!a.log.empty())
     std::printf("wrote %s (%d step%s and the start)\n", a.log.c_str(), a.steps,
                 a.steps == 1 ? "" : "s");
-  if (const SolveShortfall shortfall = sim.solveShortfall(); shortfall.steps > 0)
-    std::fprintf(stderr, "warning: %s\n",
-                 describe(shortfall, options, "--solver multigrid").c_str());
 }
 
 void run(SimulateArgs& a, const CLI::App& cmd) {
@@ -155,7 +152,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   const RunSpec spec = runSpec(a.run, cmd, dataset, level, a.dataset.string());
   SimulationSession session(dataset.mesh, spec);
   if (!a.initial.empty()) session.startFromFrame(a.initial);  // (drop's lift too)
-  if (const std::string warning = nodesBelowFloor(session.simulation()); !warning.empty())
+  for (const std::string& warning : session.takeWarnings(OptionNames::Flags))
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   // The bound surface, if any, follows every frame (frame 0 too: the
   // scenario's start, not always the rest).
@@ -171,29 +168,29 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   Progress progress(a.quiet);
   session.recordFrame();
   RunTotals totals;
-  for (int i = 0; i < a.steps; ++i) {
-    StepStats stats;
-    try {
-      stats = session.step();
-    } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
-      std::string kept = std::string(e.what()) + "; " + session.recorder()->path().string() +
-                         " keeps the " + std::to_string(session.recorder()->frames()) +
-                         " frame(s) written before it";
-      if (!a.log.empty()) {
-        writeStepLog(a.log, session.stepLog());
-        kept += ", " + a.log.string() + " the " + std::to_string(i) + " step(s)";
-      }
-      throw Error(kept);
+  try {
+    session.run(a.steps, a.every, [&](int i, const StepStats& stats) {
+      totals.stepSeconds += session.lastStepSeconds();
+      totals.iterations += stats.iterations;
+      totals.multigridSteps += stats.solver == SolverKind::Multigrid;
+      progress.update("simulate", static_cast<std::size_t>(i + 1),
+                      static_cast<std::size_t>(a.steps));
+    });
+  } catch (const Error& e) {  // e.g. diverged: say what the run leaves behind
+    std::string kept = std::string(e.what()) + "; " + session.recorder()->path().string() +
+                       " keeps the " + std::to_string(session.recorder()->frames()) +
+                       " frame(s) written before it";
+    if (!a.log.empty()) {
+      writeStepLog(a.log, session.stepLog());
+      kept += ", " + a.log.string() + " the " + std::to_string(session.simulation().steps()) +
+              " step(s)";
     }
-    totals.stepSeconds += session.lastStepSeconds();
-    totals.iterations += stats.iterations;
-    totals.multigridSteps += stats.solver == SolverKind::Multigrid;
-    // Every k-th step, and the last one: a run ends with its end state written.
-    if ((i + 1) % a.every == 0 || i + 1 == a.steps) session.recordFrame();
-    progress.update("simulate", static_cast<std::size_t>(i + 1), static_cast<std::size_t>(a.steps));
+    throw Error(kept);
   }
   if (!a.log.empty()) writeStepLog(a.log, session.stepLog());
   report(a, session, spec, totals);
+  for (const std::string& warning : session.takeWarnings(OptionNames::Flags))
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
 }
 
 }  // namespace

@@ -384,7 +384,6 @@ void MainWindow::resetSimulation() {
   simulationDock_->clearSupports();
   plottedSteps_ = -1;
   shownSteps_ = -1;
-  shownShortfallSteps_ = 0;
   showPlaying(false);
   if (!scene_->hasDataset()) return;
   SimulationOptions options;
@@ -408,8 +407,8 @@ void MainWindow::resetSimulation() {
   const BoundingBox rest = boundingBox(runner_->simulation().restMesh().nodes);
   if ((start.min.array() < rest.min.array()).any() || (start.max.array() > rest.max.array()).any())
     scene_->keepInView(start);
-  if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
-    statusBar()->showMessage("warning: " + QString::fromStdString(warning));
+  if (const QString warnings = takeRunWarnings(); !warnings.isEmpty())
+    statusBar()->showMessage(warnings);
   showLatestState();
 }
 
@@ -436,8 +435,7 @@ bool MainWindow::startFromFrame(const QString& qpath) {
   plottedSteps_ = -1;
   showLatestState();
   QString message = "started from " + qpath;
-  if (const std::string warning = nodesBelowFloor(runner_->simulation()); !warning.empty())
-    message += "; warning: " + QString::fromStdString(warning);
+  if (const QString warnings = takeRunWarnings(); !warnings.isEmpty()) message += "; " + warnings;
   statusBar()->showMessage(message);
   return true;
 }
@@ -671,13 +669,15 @@ void MainWindow::reportSimulationProblems() {
   }
   // Solves cut off at the iteration limit: in the status bar, as simulate
   // warns, when their count grows.
-  Simulation& simulation = runner_->simulation();
-  const SolveShortfall shortfall = simulation.solveShortfall();
-  if (shortfall.steps == shownShortfallSteps_) return;
-  shownShortfallSteps_ = shortfall.steps;
-  statusBar()->showMessage(
-      "warning: " +
-      QString::fromStdString(describe(shortfall, simulation.options(), "the multigrid solver")));
+  if (const QString warnings = takeRunWarnings(); !warnings.isEmpty())
+    statusBar()->showMessage(warnings);
+}
+
+QString MainWindow::takeRunWarnings() {
+  QString text;
+  for (const std::string& warning : runner_->session().takeWarnings(OptionNames::Words))
+    text += (text.isEmpty() ? "warning: " : "; warning: ") + QString::fromStdString(warning);
+  return text;
 }
 
 void MainWindow::tick() {

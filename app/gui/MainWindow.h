@@ -144,6 +144,8 @@ class MainWindow : public QMainWindow {
   // message is shown (lastError()). Or more of its solves stopped at the
   // iteration limit: a warning in the status bar.
   void reportSimulationProblems();
+  // The run's warnings not shown yet ("warning: ...; warning: ..."), or "".
+  QString takeRunWarnings();
   // The stress or strain of the frame shown (per element of the simulated
   // level; empty: none) on the skin, where the scene is coloured by it.
   void showOnSkin(const Eigen::VectorXd& stress, const Eigen::VectorXd& strain);
@@ -175,7 +177,6 @@ class MainWindow : public QMainWindow {
   bool replaying_ = false;
   // Frame bookkeeping.
   Index shownSteps_ = -1;
-  Index shownShortfallSteps_ = 0;  // solveShortfall().steps last reported
   int framesSinceOverlay_ = 0;
   std::chrono::steady_clock::time_point overlayStart_;
   double drawSeconds_ = 0;

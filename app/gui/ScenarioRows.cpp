@@ -161,9 +161,9 @@ std::string ScenarioRows::scenario() const {
   return scenario_->currentText().toStdString();
 }
 
-ScenarioParameters ScenarioRows::parameters(const Points3& restNodes) const {
-  const Index nodeCount = restNodes.rows();
-  ScenarioParameters p;
+void ScenarioRows::fill(Index nodeCount, RunRequest& request) const {
+  request.scenario = scenario();
+  ScenarioParameters& p = request.parameters;
   p.baseShare = baseShare_->value();
   p.pushAcceleration = push_->value();
   p.pushFrequency = pushFrequency_->value();
@@ -178,29 +178,29 @@ ScenarioParameters ScenarioRows::parameters(const Points3& restNodes) const {
       box.min[i] = boxMin_[i]->value();
       box.max[i] = boxMax_[i]->value();
     }
-    try {
-      p.heldNodes = heldWithNodesInBox(p.heldNodes, restNodes, box);
-    } catch (const Error& e) {
-      throw Error(std::string("the fixed box: ") + e.what());
-    }
+    request.heldBox = box;
   }
   if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
   if (!loadCurve_->text().isEmpty()) p.loadCurve = readLoadCurve(loadCurve_->text().toStdString());
   if (loadSeconds_->value() > 0) p.loadSeconds = loadSeconds_->value();
-  return p;
+  request.up = up_;
+  // Gravity as the user left it is the standard pull down the up axis: left
+  // to the request's default, as the other front ends leave it.
+  if (!standardGravity())
+    request.gravity =
+        Eigen::Vector3d(gravity_[0]->value(), gravity_[1]->value(), gravity_[2]->value());
+  if (floor_->isChecked()) request.floorHeight = floorHeight_->value();
 }
 
-SimulationOptions ScenarioRows::withGravityAndFloor(SimulationOptions options) const {
-  options.up = up_;
-  options.gravity = {gravity_[0]->value(), gravity_[1]->value(), gravity_[2]->value()};
-  if (floor_->isChecked()) options.floorHeight = floorHeight_->value();
-  return options;
+bool ScenarioRows::standardGravity() const {
+  const Eigen::Vector3d standard = uprightAlong(up_, {}).gravity;
+  for (int i = 0; i < 3; ++i)
+    if (gravity_[i]->value() != standard[i]) return false;
+  return true;
 }
 
 void ScenarioRows::setUpAxis(UpAxis up) {
-  const Eigen::Vector3d standard = uprightAlong(up_, {}).gravity;
-  bool untouched = true;
-  for (int i = 0; i < 3; ++i) untouched = untouched && gravity_[i]->value() == standard[i];
+  const bool untouched = standardGravity();
   up_ = up;
   if (untouched) {
     const Eigen::Vector3d pull = uprightAlong(up, {}).gravity;

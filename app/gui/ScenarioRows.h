@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/session/RunRequest.h"
 #include "tetskin/simulation/Scenario.h"
 
 class QCheckBox;
@@ -30,14 +31,11 @@ class ScenarioRows : public QObject {
   ScenarioRows(QFormLayout* form, bool interactive);
 
   std::string scenario() const;
-  // The parameters, the held nodes (from the file and the box), the loads
-  // and their curve read from their files, for a level whose rest positions
-  // are `restNodes`; throws Error naming the file and line, or the box
-  // (one around no node, or inside out).
-  ScenarioParameters parameters(const Points3& restNodes) const;
-  // `options` upright along the dataset's up axis, with the panel's gravity
-  // and floor.
-  SimulationOptions withGravityAndFloor(SimulationOptions options) const;
+  // Fills `request`'s scenario, its parameters, the held nodes of the file,
+  // the loads and their curve read from their files (for a level of
+  // `nodeCount` nodes), the held box, gravity and the floor; throws Error
+  // naming the file and line.
+  void fill(Index nodeCount, RunRequest& request) const;
   // The dataset's up axis: the floor's height is along it, and gravity
   // left at the standard pull down the last axis follows it.
   void setUpAxis(UpAxis up);
@@ -50,6 +48,8 @@ class ScenarioRows : public QObject {
 
  private:
   void showRowsOfScenario();
+  // Whether the gravity fields hold the standard pull down the up axis.
+  bool standardGravity() const;
 
   struct ParameterRow {
     QLabel* label;

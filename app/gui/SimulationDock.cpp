@@ -65,13 +65,14 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
   scenarioRows_ = new ScenarioRows(form, interactive);
-  const SimulationOptions defaults;
-  solver_ = enumCombo("solver", SolverKind::Automatic);
+  const SimulationOptions defaults = defaultRunSettings();
+  solver_ = enumCombo("solver", defaults.solver);
   tangent_ = enumCombo("tangent", defaults.tangent);
   // The relative residual each solve reaches: a looser one is much cheaper
   // for interactive use (doc/benchmarks.md: the tolerance table).
   tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
-  tolerance_->setCurrentText("1e-6");
+  for (int i = 0; i < tolerance_->count(); ++i)
+    if (tolerance_->itemText(i).toDouble() == defaults.tolerance) tolerance_->setCurrentIndex(i);
   tolerance_->setToolTip(QString(simulation_option::kTolerance.help) + " (simulate " +
                          simulation_option::kTolerance.flag + ")");
   // The ranges and defaults are those of the options' schema (OptionSchema.h).
@@ -96,32 +97,39 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   layout->addStretch();
 }
 
-RunSpec SimulationDock::runSpec(int levelNumber) {
+RunRequest SimulationDock::runRequest(int levelNumber) {
   const MultiLevelTetMesh& mesh = scene_.dataset().mesh;
   const LevelRange& level = mesh.levels[static_cast<std::size_t>(levelNumber)];
   const UpAxis up = scene_.dataset().config.up;
   scenarioRows_->setUpAxis(up);
-  const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
-  const BoundingBox restBox = boundingBox(restNodes);
+  const BoundingBox restBox = boundingBox(mesh.nodes.middleRows(level.firstNode, level.nodeCount));
   scenarioRows_->setBodyBottom(restBox.min[axisIndex(up)]);
   scenarioRows_->setBodyBox(restBox);
-  SimulationOptions options = scenarioRows_->withGravityAndFloor(SimulationOptions{});
-  options.timeStep = timeStep_->value();
-  options.material.youngsModulus = young_->value();
-  options.material.poissonRatio = poisson_->value();
-  options.material.density = density_->value();
-  options.material.massDamping = massDamping_->value();
-  options.material.stiffnessDamping = stiffnessDamping_->value();
-  options.solver = chosen<SolverKind>(solver_);
-  options.tolerance = tolerance_->currentText().toDouble();
-  options.tangent = chosen<Tangent>(tangent_);
-  RunSpec spec;
-  spec.level = levelNumber;
-  spec.options = options;
-  spec.scenario = scenarioRows_->scenario();
-  spec.parameters = scenarioRows_->parameters(restNodes);
-  spec.datasetName = scene_.datasetPath().string();
-  return spec;
+  RunRequest request;
+  request.names = OptionNames::Words;
+  request.level = levelNumber;
+  request.datasetName = scene_.datasetPath().string();
+  scenarioRows_->fill(level.nodeCount, request);
+  request.settings.timeStep = timeStep_->value();
+  request.settings.solver = chosen<SolverKind>(solver_);
+  request.settings.tolerance = tolerance_->currentText().toDouble();
+  request.settings.tangent = chosen<Tangent>(tangent_);
+  // (The fields show the dataset's material after showMaterial: a value
+  // left as shown is the config's.)
+  const ElasticMaterial& config = scene_.dataset().config.elasticity;
+  using namespace material_option;
+  for (auto [option, box] :
+       {std::pair{&kYoungsModulus, young_}, std::pair{&kPoissonRatio, poisson_},
+        std::pair{&kDensity, density_}, std::pair{&kMassDamping, massDamping_},
+        std::pair{&kStiffnessDamping, stiffnessDamping_}})
+    for (const MaterialField& field : materialFields())
+      if (field.option == option && box->value() != config.*field.field)
+        request.material.set(*option, box->value());
+  return request;
+}
+
+RunSpec SimulationDock::runSpec(int levelNumber) {
+  return resolveRun(runRequest(levelNumber), scene_.dataset().mesh, scene_.dataset().config);
 }
 
 void SimulationDock::showMaterial(const ElasticMaterial& material) {

@@ -9,7 +9,7 @@
 #include <QWidget>
 
 #include "Scene.h"
-#include "tetskin/session/SimulationSession.h"
+#include "tetskin/session/RunRequest.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -28,11 +28,12 @@ class SimulationDock : public QWidget {
   // `interactive`: the scenario rows may ask the user (ScenarioRows).
   SimulationDock(Scene& scene, bool interactive, QWidget* parent = nullptr);
 
-  // The run the dock's fields describe, on the scene's level (the scenario
-  // rows set to its body and up axis first). Throws Error for a value the
-  // scenario refuses.
+  // The run the dock's fields ask for on `level` (the scenario rows set to
+  // its body and up axis first), and the run it is (resolveRun): on the
+  // scene's level, or another (the Compare dock's levels). Throws Error
+  // for a file that cannot be read, or a value the run refuses.
+  RunRequest runRequest(int level);
   RunSpec runSpec() { return runSpec(scene_.level()); }
-  // The same on `level` (the Compare dock's levels).
   RunSpec runSpec(int level);
   // A dataset's body in the material fields (what the next Reset uses).
   void showMaterial(const ElasticMaterial& material);

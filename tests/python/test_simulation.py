@@ -43,7 +43,8 @@ def test_python_matches_the_command_step_for_step(tmp_path, cli, bunny, solver, 
 
 def test_a_free_body_falls_and_fixed_nodes_stay(bunny):
     level = bunny.level(0)
-    sim = tetskin.Simulation(bunny, level=0)  # no scenario: nothing held, gravity only
+    # sag without a base: nothing held, gravity only
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag", base_share=0)
     assert sim.fixed_nodes == []
     sim.fix_nodes([0, 5])
     sim.step(10)
@@ -54,10 +55,30 @@ def test_a_free_body_falls_and_fixed_nodes_stay(bunny):
     assert sim.fixed_nodes == [0, 5]
 
 
-def test_a_free_body_may_still_hold_its_base(bunny):
-    sim = tetskin.Simulation(bunny, level=0, base_share=0.2)
-    sag = tetskin.Simulation(bunny, level=0, scenario="sag", base_share=0.2)
-    assert len(sim.fixed_nodes) > 0 and sim.fixed_nodes == sag.fixed_nodes
+def test_the_default_run_is_every_front_ends(bunny):
+    # No scenario and no solver: the run request's defaults, those of
+    # `tetskin simulate` and the GUI: wobble (its base held), solver auto.
+    sim = tetskin.Simulation(bunny, level=0)
+    wobble = tetskin.Simulation(bunny, level=0, scenario="wobble")
+    assert len(sim.fixed_nodes) > 0 and sim.fixed_nodes == wobble.fixed_nodes
+    assert sim.solver == "auto"
+
+
+def test_a_fixed_box_and_a_load_curve(bunny):
+    level = bunny.level(0)
+    low = level.nodes[:, 1].min()
+    box = [[-100, low - 1, -100], [100, low + 0.5, 100]]
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag", base_share=0, fixed_box=box)
+    inside = np.flatnonzero(level.nodes[:, 1] <= low + 0.5)
+    assert sim.fixed_nodes == sorted(inside.tolist())
+    with pytest.raises(tetskin.Error, match="fixed_box: no node of the level lies in"):
+        tetskin.Simulation(bunny, level=0, fixed_box=[[0, 100, 0], [1, 101, 1]])
+    loads = np.zeros((len(level.nodes), 3))
+    with pytest.raises(tetskin.Error, match="load_curve: applies with loads"):
+        tetskin.Simulation(bunny, level=0, load_curve=[[0, 0], [1, 1]])
+    with pytest.raises(tetskin.Error, match="load_curve: "):
+        tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[[1, 0], [0, 1]])
+    tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[[0, 0], [1, 1]]).step(2)
 
 
 def test_forces_push_and_state_can_be_set(bunny):

@@ -7,6 +7,7 @@
 #include "ArrayConversion.h"
 #include "tetskin/core/ElasticMaterial.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/core/LoadCurve.h"
 #include "tetskin/core/NumberText.h"
 
 namespace tetskin::python {
@@ -76,13 +77,13 @@ void Keywords::finish() const {
   throw Error(call_ + ": unknown option '" + unknown + "' (known: " + listed(known) + ")");
 }
 
-SimulationOptions simulationOptions(Keywords& k, const DatasetConfig& config) {
-  SimulationOptions o;
-  o.material = config.elasticity;
+RunRequest runRequest(Keywords& k) {
+  RunRequest r;
+  r.names = OptionNames::Keys;
   for (const MaterialField& field : materialFields())
-    if (const auto value = k.number(*field.option)) o.material.*field.field = *value;
-  validateMaterial(o.material);  // (each value was in range; the set must be too)
+    if (const auto value = k.number(*field.option)) r.material.set(*field.option, *value);
   using namespace simulation_option;
+  SimulationOptions& o = r.settings;
   if (const auto v = k.number(kTimeStep)) o.timeStep = *v;
   if (const auto v = k.number(kTolerance)) o.tolerance = *v;
   if (const auto v = k.count(kGuessSolutions)) o.guessSolutions = *v;
@@ -90,50 +91,75 @@ SimulationOptions simulationOptions(Keywords& k, const DatasetConfig& config) {
   if (const auto v = k.count(kMaxIterations)) o.maxIterations = *v;
   if (const auto v = k.number(kFriction)) o.friction = *v;
   if (const auto v = k.number(kFloorStiffness)) o.floorStiffness = *v;
-  // As `tetskin simulate`: the faster solver on the running simulation.
-  o.solver = k.choice<SolverKind>("solver").value_or(SolverKind::Automatic);
+  if (const auto v = k.choice<SolverKind>("solver")) o.solver = *v;
   if (const auto v = k.choice<Tangent>("tangent")) o.tangent = *v;
   if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
   if (const auto v = k.choice<CoarseLevels>("coarse_levels")) o.coarseLevels = *v;
-  o = uprightAlong(k.choice<UpAxis>("up").value_or(config.up), o);
+  r.up = k.choice<UpAxis>("up");
   if (const auto gravity = k.take("gravity")) {
     const py::array given = py::array::ensure(*gravity);
     if (!given) PyErr_Clear();
     if (!given || given.size() != 3)
       throw Error(k.call() + ": gravity: expected 3 numbers (x, y, z)");
-    o.gravity = points3(given.attr("reshape")(1, 3), "gravity").row(0).transpose();
+    r.gravity = points3(given.attr("reshape")(1, 3), "gravity").row(0).transpose();
   }
   if (const auto floor = k.take("floor_height")) {
     const double height = floor->cast<double>();
     if (!std::isfinite(height)) throw Error(k.call() + ": floor_height: must be finite");
-    o.floorHeight = height;
+    r.floorHeight = height;
   }
-  return o;
+  return r;
 }
 
-ScenarioParameters scenarioParameters(Keywords& k, const std::string& scenario, Index levelNodes) {
-  ScenarioParameters p;
+void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
+  ScenarioParameters& p = r.parameters;
   for (const ScenarioField& f : scenarioFields())
     if (const auto value = k.number(*f.option)) {
-      if (!scenarioReads(scenario, f.parameter))
-        throw Error(k.call() + ": " + f.option->key + ": " + notReadBy(scenario, f.parameter));
+      if (!scenarioReads(r.scenario, f.parameter))
+        throw Error(k.call() + ": " + f.option->key + ": " + notReadBy(r.scenario, f.parameter));
       p.*f.field = *value;
     }
   const std::string level = "the level (" + std::to_string(levelNodes) + " nodes)";
   if (const auto held = k.take("held_nodes"))
     p.heldNodes = idList(*held, "held_nodes", levelNodes, level);
+  if (const auto box = k.take("fixed_box")) {
+    const Points3 corners = points3(*box, "fixed_box");
+    if (corners.rows() != 2)
+      throw Error(k.call() + ": fixed_box: expected 2 corners (min, max), got " +
+                  std::to_string(corners.rows()));
+    BoundingBox held;
+    held.min = corners.row(0).transpose();
+    held.max = corners.row(1).transpose();
+    r.heldBox = held;
+  }
   if (const auto loads = k.take("loads")) {
     p.loads = points3(*loads, "loads");
     if (p.loads.rows() != levelNodes)
       throw Error(k.call() + ": loads: expected one row per node of " + level + ", got " +
                   std::to_string(p.loads.rows()));
   }
+  for (const char* key : {"load_seconds", "load_curve"})
+    if (k.given(key) && p.loads.rows() == 0)
+      throw Error(k.call() + ": " + key + ": applies with loads");
   if (const auto seconds = k.take("load_seconds")) {
-    if (p.loads.rows() == 0) throw Error(k.call() + ": load_seconds: applies with loads");
     p.loadSeconds = seconds->cast<double>();
     if (!(p.loadSeconds > 0)) throw Error(k.call() + ": load_seconds: must be > 0");
   }
-  return p;
+  if (const auto curve = k.take("load_curve")) {
+    const py::array given =
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*curve);
+    if (!given) PyErr_Clear();
+    if (!given || given.ndim() != 2 || given.shape(1) != 2)
+      throw Error(k.call() + ": load_curve: expected (k, 2) numbers (time in s, factor)");
+    const auto rows = given.unchecked<double, 2>();
+    std::vector<LoadCurve::Point> points;
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) points.push_back({rows(i, 0), rows(i, 1)});
+    try {
+      p.loadCurve = LoadCurve(std::move(points));
+    } catch (const Error& e) {
+      throw Error(k.call() + ": load_curve: " + e.what());
+    }
+  }
 }
 
 void readBuildOptions(Keywords& k, BuildOptions& o) {

@@ -16,7 +16,7 @@
 #include "tetskin/core/OptionSchema.h"
 #include "tetskin/io/DatasetConfig.h"
 #include "tetskin/meshing/ModelBuilder.h"
-#include "tetskin/session/SimulationSession.h"
+#include "tetskin/session/RunRequest.h"
 
 namespace tetskin::python {
 
@@ -47,6 +47,8 @@ class Keywords {
   }
   // Any other keyword's value, nullopt when not given.
   std::optional<py::object> take(const char* key);
+  // Whether `key` was given (and not taken yet).
+  bool given(const char* key) const { return given_.contains(key); }
   // Error naming the keywords not read: "simulation: unknown option 'yung'
   // (known: ...)".
   void finish() const;
@@ -58,18 +60,18 @@ class Keywords {
   std::set<std::string> known_;
 };
 
-// A simulation's options from keywords over the dataset config's material
-// and up axis, as `tetskin simulate` makes them from its options: the
-// material (youngs_modulus or young, ...), the time step, tolerance, solver
-// (default auto, as on the command line), tangent, coarse_operators and the
-// other numbers of simulation_option, up, gravity (3 numbers) and
-// floor_height.
-SimulationOptions simulationOptions(Keywords& keywords, const DatasetConfig& config);
-// A scenario's parameters: its numbers (base_share or base, ...; refused
-// for a scenario that does not read them, as on the command line),
-// held_nodes, loads ((n, 3) newtons on the level's nodes) and load_seconds.
-ScenarioParameters scenarioParameters(Keywords& keywords, const std::string& scenario,
-                                      Index levelNodes);
+// A run request from keywords, as `tetskin simulate` makes it from its
+// options: the material over the config's (youngs_modulus or young, ...),
+// the time step, tolerance, solver, tangent, coarse_operators and the other
+// numbers of simulation_option, up, gravity (3 numbers) and floor_height;
+// the defaults are the request's (RunRequest.h), as in every front end.
+RunRequest runRequest(Keywords& keywords);
+// The request's scenario parameters (for its scenario, on a level of
+// `levelNodes` nodes): its numbers (base_share or base, ...; refused for a
+// scenario that does not read them, as on the command line), held_nodes,
+// fixed_box ((2, 3): min and max corners), loads ((n, 3) newtons on the
+// level's nodes), load_seconds and load_curve ((k, 2): time in s, factor).
+void readScenarioParameters(Keywords& keywords, Index levelNodes, RunRequest& request);
 // A build's options beyond those `build` names itself: qualities,
 // size_to_targets, accept_unfaithful, jobs, timeout, wrap, wrap_alpha,
 // wrap_offset, up.

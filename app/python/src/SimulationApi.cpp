@@ -20,24 +20,28 @@ namespace {
 
 using Object = SimulationObject;
 
+// The run's warnings not shown yet, as Python UserWarnings.
+void warnOf(Object& s) {
+  for (const std::string& warning : s.session->takeWarnings(OptionNames::Keys))
+    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
                              std::optional<std::string> scenario, const py::kwargs& kwargs) {
   Keywords keywords(kwargs, "Simulation");
-  RunSpec spec;
-  spec.level = resolveLevel(dataset.dataset->mesh, level);
-  spec.datasetName = dataset.path.string();
-  // No scenario: a free body under gravity, nothing held (sag without a base).
-  spec.scenario = scenario.value_or("sag");
+  const Dataset& data = *dataset.dataset;
+  RunRequest request = runRequest(keywords);
+  request.level = resolveLevel(data.mesh, level);
+  request.datasetName = dataset.path.string();
+  if (scenario) request.scenario = *scenario;
   const auto names = scenarioNames();
-  if (std::find(names.begin(), names.end(), spec.scenario) == names.end())
-    throw Error("Simulation: scenario: unknown scenario '" + spec.scenario +
-                "' (known: " + listed(names) + ", or None)");
-  spec.options = simulationOptions(keywords, dataset.dataset->config);
-  const Index nodes = dataset.dataset->mesh.levels[static_cast<std::size_t>(spec.level)].nodeCount;
-  spec.parameters = scenarioParameters(keywords, spec.scenario, nodes);
-  if (!scenario && !kwargs.contains("base_share") && !kwargs.contains("base"))
-    spec.parameters.baseShare = 0;
+  if (std::find(names.begin(), names.end(), request.scenario) == names.end())
+    throw Error("Simulation: scenario: unknown scenario '" + request.scenario +
+                "' (known: " + listed(names) + ")");
+  const Index nodes = data.mesh.levels[static_cast<std::size_t>(request.level)].nodeCount;
+  readScenarioParameters(keywords, nodes, request);
   keywords.finish();
+  const RunSpec spec = resolveRun(request, data.mesh, data.config);
   auto object = std::make_shared<Object>();
   object->dataset = dataset.dataset;
   {
@@ -45,6 +49,7 @@ std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
     object->session = std::make_unique<SimulationSession>(dataset.dataset->mesh, spec);
   }
   object->forces = Points3::Zero(nodes, 3);
+  warnOf(*object);
   return object;
 }
 
@@ -74,6 +79,7 @@ py::object step(Object& s, int n) {
     }
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between steps
   }
+  warnOf(s);
   if (n == 0) return py::none();
   return statsDict(stats, s.session->lastStepSeconds());
 }
@@ -99,8 +105,10 @@ void addSimulationApi(py::module_& m) {
       "A run of the corotated FEM on a dataset level, as `tetskin simulate` runs it.")
       .def(py::init(&make), py::arg("dataset"), py::arg("level") = -1,
            py::arg("scenario") = py::none(),
-           "Simulates `level` of `dataset` (negative: from the finest). scenario: 'wobble', "
-           "'drop', 'twist', 'sag', or None for a free body under gravity with nothing held. "
+           "Simulates `level` of `dataset` (negative: from the finest). scenario: 'wobble' "
+           "(None: the default, as in every front end), 'drop', 'twist' or 'sag' (a free body: "
+           "sag with base_share=0). Warnings of the run (nodes starting below the floor, solves "
+           "stopped at the iteration limit) come as Python UserWarnings. "
            "Keyword options as `tetskin simulate`'s, by config key or flag name: the material "
            "(youngs_modulus/young, poisson_ratio/poisson, density, mass_damping/alpha, "
            "stiffness_damping/beta; default the dataset config's), time_step/dt, solver "
@@ -108,7 +116,8 @@ void addSimulationApi(py::module_& m) {
            "coarse_reuse, guess_solutions, max_iterations, friction, floor_stiffness, up, "
            "gravity, floor_height, the scenario's numbers (base_share/base, "
            "push_acceleration/push, push_frequency, drop_height, twist_degrees, twist_seconds), "
-           "held_nodes, loads, load_seconds.")
+           "held_nodes, fixed_box ((2, 3): min and max corners), loads, load_seconds, load_curve "
+           "((k, 2): time, factor).")
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "
            "(solver, iterations, residual, contacts, seconds by stage).")

@@ -25,6 +25,7 @@ SimulationSession::~SimulationSession() = default;
 void SimulationSession::startFrom(const FrameState& start) {
   simulation_->setPositions(start.positions);
   simulation_->setVelocities(start.velocities);
+  startToWarn_ = true;
   // A log kept from the scenario's start begins again at this one.
   if (keepLog_) {
     log_.clear();
@@ -67,6 +68,34 @@ StepStats SimulationSession::step(const Points3* extraForces) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (keepLog_) logRow(simulation_->steps(), &stats, lastStepSeconds_);
   return stats;
+}
+
+void SimulationSession::run(int steps, int every,
+                            const std::function<void(int, const StepStats&)>& afterStep) {
+  for (int i = 0; i < steps; ++i) {
+    const StepStats stats = step();
+    // Every k-th step, and the last one: a run ends with its end state written.
+    if (recording() && ((i + 1) % every == 0 || i + 1 == steps)) recordFrame();
+    if (afterStep) afterStep(i, stats);
+  }
+}
+
+std::vector<std::string> SimulationSession::takeWarnings(OptionNames names) {
+  std::vector<std::string> warnings;
+  if (startToWarn_) {
+    startToWarn_ = false;
+    if (std::string below = nodesBelowFloor(*simulation_); !below.empty())
+      warnings.push_back(std::move(below));
+  }
+  const SolveShortfall shortfall = simulation_->solveShortfall();
+  if (shortfall.steps > shortfallWarnedSteps_) {
+    shortfallWarnedSteps_ = shortfall.steps;
+    const char* multigrid = names == OptionNames::Flags  ? "--solver multigrid"
+                            : names == OptionNames::Keys ? "solver='multigrid'"
+                                                         : "the multigrid solver";
+    warnings.push_back(describe(shortfall, simulation_->options(), multigrid));
+  }
+  return warnings;
 }
 
 void SimulationSession::keepStepLog() {

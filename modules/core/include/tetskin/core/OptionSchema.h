@@ -148,6 +148,12 @@ constexpr NumberRange between(double min, double max, bool minIncluded = true,
   return {min, max, minIncluded, maxIncluded};
 }
 
+// How a front end's user names an option, in its errors and warnings: the
+// command line's flags ("--poisson", "--fixed-box"), Python's and the
+// files' keys ("poisson_ratio", "fixed_box"), or the GUI's words
+// ("Poisson's ratio", "the fixed box").
+enum class OptionNames { Flags, Keys, Words };
+
 // A number option of a run: its key (snake_case: a config's, Python's), its
 // command-line flag ("" where the command line has none), its name in
 // messages, its help (--help, tool tips), its range and its default.

@@ -13,11 +13,13 @@
 // are touched by one thread each).
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
@@ -76,6 +78,19 @@ class SimulationSession {
   // Wall-clock seconds of the last step (0 before the first).
   double lastStepSeconds() const { return lastStepSeconds_; }
 
+  // `steps` steps (step()), recording every `every`-th and the last one
+  // while recording; `afterStep(i, stats)` after step i (from 0). A step
+  // that fails throws its Error, the frames before it recorded.
+  void run(int steps, int every, const std::function<void(int, const StepStats&)>& afterStep = {});
+
+  // The run's warnings not taken yet, each once, in the words of a front
+  // end whose user names options by `names` (OptionSchema.h): nodes that
+  // start below the floor (after the start and each startFrom), and the
+  // steps whose solve stopped at the iteration limit (again when their
+  // count grows). The one channel every front end shows them through. To
+  // be called by one thread.
+  std::vector<std::string> takeWarnings(OptionNames names);
+
   // The step log: a row for the start (when keeping begins) and one per
   // step from then on.
   void keepStepLog();
@@ -122,6 +137,8 @@ class SimulationSession {
   std::unique_ptr<SurfaceDeformer> deformer_;
   Points3 allNodes_;  // the dataset's nodes with the level's moved (the deformer's input)
   std::unique_ptr<RunRecorder> recorder_;
+  bool startToWarn_ = true;         // a start not yet looked at for nodes below the floor
+  Index shortfallWarnedSteps_ = 0;  // the shortfall's step count last warned of
   bool keepLog_ = false;
   std::vector<StepLogRow> log_;
   double lastStepSeconds_ = 0;

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/session/RunRequest.h"
+
+#include <algorithm>
+
+#include "tetskin/core/Error.h"
+
+namespace tetskin {
+namespace {
+
+std::string nameOf(const NumberOption& option, OptionNames names) {
+  switch (names) {
+    case OptionNames::Flags:
+      return option.flag;
+    case OptionNames::Keys:
+      return option.key;
+    case OptionNames::Words:
+      break;
+  }
+  return option.what;
+}
+
+std::string heldBoxName(OptionNames names) {
+  switch (names) {
+    case OptionNames::Flags:
+      return "--fixed-box";
+    case OptionNames::Keys:
+      return "fixed_box";
+    case OptionNames::Words:
+      break;
+  }
+  return "the fixed box";
+}
+
+}  // namespace
+
+void MaterialOverrides::set(const NumberOption& option, double value) {
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (fields[i].option == &option) {
+      values[i] = value;
+      return;
+    }
+  throw Error(std::string(option.key) + ": is no material value");
+}
+
+ElasticMaterial MaterialOverrides::over(const ElasticMaterial& config, OptionNames names) const {
+  ElasticMaterial material = config;
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (values[i]) material.*fields[i].field = *values[i];
+  // A config's values were checked as it was read: a problem now is a
+  // given value's, named as its user wrote it.
+  if (const auto problem = materialProblem(material))
+    for (const MaterialField& field : fields)
+      if (problem->key == field.option->key)
+        throw Error(nameOf(*field.option, names) + ": " + problem->what);
+  return material;
+}
+
+SimulationOptions defaultRunSettings() {
+  SimulationOptions settings;
+  settings.solver = kDefaultRunSolver;
+  return settings;
+}
+
+RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
+                   const DatasetConfig& config) {
+  if (request.level < 0 || request.level >= static_cast<int>(mesh.levels.size()))
+    throw Error(request.datasetName + ": has no level " + std::to_string(request.level) +
+                " (it has " + std::to_string(mesh.levels.size()) + ")");
+  const std::vector<std::string> names = scenarioNames();
+  if (std::find(names.begin(), names.end(), request.scenario) == names.end())
+    throw Error("unknown scenario '" + request.scenario + "' (known: " + listed(names) + ")");
+  RunSpec spec;
+  spec.level = request.level;
+  spec.datasetName = request.datasetName;
+  spec.scenario = request.scenario;
+  spec.options = uprightAlong(request.up.value_or(config.up), request.settings);
+  spec.options.material = request.material.over(config.elasticity, request.names);
+  if (request.gravity) spec.options.gravity = *request.gravity;
+  spec.options.floorHeight = request.floorHeight;
+  spec.parameters = request.parameters;
+  if (request.heldBox) {
+    const LevelRange& level = mesh.levels[static_cast<std::size_t>(request.level)];
+    const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
+    try {
+      spec.parameters.heldNodes =
+          heldWithNodesInBox(spec.parameters.heldNodes, restNodes, *request.heldBox);
+    } catch (const Error& e) {
+      throw Error(heldBoxName(request.names) + ": " + e.what());
+    }
+  }
+  return spec;
+}
+
+}  // namespace tetskin

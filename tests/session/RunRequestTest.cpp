@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// The run request (RunRequest.h): its defaults, the dataset config applied
+// under the values given, the held box, errors named as each front end's
+// user names options, and the session's one channel of warnings.
+#include <gtest/gtest.h>
+
+#include "BlockRun.h"
+#include "ExpectError.h"
+#include "tetskin/session/RunRequest.h"
+
+namespace tetskin::test {
+namespace {
+
+DatasetConfig zUpStiffConfig() {
+  DatasetConfig config;
+  config.up = UpAxis::Z;
+  config.elasticity.youngsModulus = 3e5;
+  config.elasticity.density = 500;
+  return config;
+}
+
+TEST(RunRequest, DefaultsAreOneSetForEveryFrontEnd) {
+  const RunSpec spec = resolveRun(RunRequest{}, uprightBlock(), DatasetConfig{});
+  EXPECT_EQ(spec.scenario, "wobble");
+  EXPECT_EQ(spec.options.solver, SolverKind::Automatic);
+  // The library's own default stays cg: the request's is a choice of its own.
+  EXPECT_EQ(SimulationOptions{}.solver, SolverKind::ConjugateGradient);
+  EXPECT_EQ(spec.options.timeStep, simulation_option::kTimeStep.defaultValue);
+  EXPECT_EQ(spec.options.tolerance, simulation_option::kTolerance.defaultValue);
+  EXPECT_EQ(spec.options.gravity, Eigen::Vector3d(0, -kStandardGravity, 0));
+  EXPECT_FALSE(spec.options.floorHeight);
+}
+
+TEST(RunRequest, TheConfigAppliesUnderTheValuesGiven) {
+  RunRequest request;
+  request.material.set(material_option::kPoissonRatio, 0.45);
+  const RunSpec spec = resolveRun(request, uprightBlock(), zUpStiffConfig());
+  EXPECT_EQ(spec.options.material.youngsModulus, 3e5);  // the config's
+  EXPECT_EQ(spec.options.material.density, 500);
+  EXPECT_EQ(spec.options.material.poissonRatio, 0.45);  // given
+  EXPECT_EQ(spec.options.up, UpAxis::Z);                // the config's up, gravity down it
+  EXPECT_EQ(spec.options.gravity, Eigen::Vector3d(0, 0, -kStandardGravity));
+  request.up = UpAxis::X;
+  request.gravity = Eigen::Vector3d(1, 2, 3);
+  const RunSpec given = resolveRun(request, uprightBlock(), zUpStiffConfig());
+  EXPECT_EQ(given.options.up, UpAxis::X);
+  EXPECT_EQ(given.options.gravity, Eigen::Vector3d(1, 2, 3));
+}
+
+TEST(RunRequest, ErrorsNameTheOptionAsTheFrontEndsUserDoes) {
+  RunRequest request;
+  request.material.set(material_option::kPoissonRatio, 0.5);
+  request.names = OptionNames::Flags;
+  EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("--poisson: "),
+            std::string::npos);
+  request.names = OptionNames::Keys;
+  EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("poisson_ratio: "),
+            std::string::npos);
+  RunRequest box;
+  box.heldBox = BoundingBox{};
+  box.heldBox->min = {5, 5, 5};
+  box.heldBox->max = {6, 6, 6};
+  box.names = OptionNames::Words;
+  EXPECT_EQ(errorText([&] { resolveRun(box, uprightBlock(), {}); }).rfind("the fixed box: ", 0),
+            0u);
+  box.names = OptionNames::Flags;
+  EXPECT_EQ(errorText([&] { resolveRun(box, uprightBlock(), {}); }).rfind("--fixed-box: ", 0), 0u);
+  RunRequest unknown;
+  unknown.scenario = "spin";
+  EXPECT_EQ(errorText([&] { resolveRun(unknown, uprightBlock(), {}); }),
+            "unknown scenario 'spin' (known: " + listed(scenarioNames()) + ")");
+}
+
+TEST(RunRequest, AHeldBoxAddsTheNodesInside) {
+  RunRequest request;
+  request.scenario = "sag";
+  request.parameters.baseShare = 0;
+  request.parameters.heldNodes = {0};
+  request.heldBox = BoundingBox{};
+  request.heldBox->min = {-1, 0.35, -1};  // the block's top layer (y = 0.4)
+  request.heldBox->max = {1, 1, 1};
+  const MultiLevelTetMesh mesh = uprightBlock();
+  const RunSpec spec = resolveRun(request, mesh, {});
+  std::vector<int> expected = {0};
+  for (Index i = 0; i < mesh.nodes.rows(); ++i)
+    if (mesh.nodes(i, 1) >= 0.35) expected.push_back(static_cast<int>(i));
+  EXPECT_EQ(spec.parameters.heldNodes, expected);
+}
+
+TEST(RunRequest, WarningsComeOnceThroughTheSession) {
+  RunRequest request;
+  request.floorHeight = 0.1;  // through the block (0 .. 0.4 up)
+  request.settings.timeStep = 0.01;
+  const MultiLevelTetMesh mesh = uprightBlock();
+  SimulationSession session(mesh, resolveRun(request, mesh, {}));
+  const std::vector<std::string> first = session.takeWarnings(OptionNames::Flags);
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_NE(first[0].find("start below the floor"), std::string::npos);
+  EXPECT_TRUE(session.takeWarnings(OptionNames::Flags).empty());  // once
+  // A solve held to one iteration stops short of the tolerance: said when
+  // the count of such steps grows, naming the solver as the user would.
+  RunRequest limited;
+  limited.settings.maxIterations = 1;
+  limited.settings.solver = SolverKind::ConjugateGradient;
+  limited.settings.timeStep = 0.01;
+  SimulationSession capped(mesh, resolveRun(limited, mesh, {}));
+  EXPECT_TRUE(capped.takeWarnings(OptionNames::Keys).empty());
+  capped.run(2, 1);
+  const std::vector<std::string> shortfall = capped.takeWarnings(OptionNames::Keys);
+  ASSERT_EQ(shortfall.size(), 1u);
+  EXPECT_NE(shortfall[0].find("2 steps stopped at the iteration limit (1)"), std::string::npos);
+  EXPECT_NE(shortfall[0].find("solver='multigrid'"), std::string::npos);
+  EXPECT_TRUE(capped.takeWarnings(OptionNames::Keys).empty());
+}
+
+}  // namespace
+}  // namespace tetskin::test
