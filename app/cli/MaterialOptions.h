@@ -23,7 +23,7 @@ struct MaterialArgs {
 
 // Adds --young, --poisson, --density, --alpha and --beta (the group
 // kMaterialGroup) to `cmd`. Their ranges are materialProblem's, checked by
-// materialOf.
+// MaterialOverrides::over.
 void addMaterialOptions(CLI::App& cmd, MaterialArgs& args);
 
 // Adds --dt (seconds, > 0) to `cmd`, setting `timeStep`.
