@@ -8,37 +8,22 @@
 
 namespace tetskin::cli {
 
-void addMaterialOptions(CLI::App& cmd, MaterialArgs& a) {
+void addMaterialOptions(CLI::App& cmd, MaterialOverrides& material) {
   // (The range is the material's to check, after the config's values are
   // taken: MaterialOverrides::over names the option.)
-  auto option = [&](const NumberOption& schema, std::optional<double>& value) {
-    cmd.add_option(schema.flag, value,
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const NumberOption& schema = *fields[i].option;
+    cmd.add_option(schema.flag, material.values[i],
                    std::string(schema.help) +
                        " (without a config value: " + formatNumber(schema.defaultValue) + ")")
         ->check(finiteNumber())
         ->group(kMaterialGroup);
-  };
-  using namespace material_option;
-  option(kYoungsModulus, a.young);
-  option(kPoissonRatio, a.poisson);
-  option(kDensity, a.density);
-  option(kMassDamping, a.alpha);
-  option(kStiffnessDamping, a.beta);
+  }
 }
 
 CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep) {
   return addNumberOption(cmd, simulation_option::kTimeStep, timeStep);
-}
-
-MaterialOverrides overridesOf(const MaterialArgs& a) {
-  MaterialOverrides m;
-  using namespace material_option;
-  for (auto [option, value] :
-       {std::pair{&kYoungsModulus, a.young}, std::pair{&kPoissonRatio, a.poisson},
-        std::pair{&kDensity, a.density}, std::pair{&kMassDamping, a.alpha},
-        std::pair{&kStiffnessDamping, a.beta}})
-    if (value) m.set(*option, *value);
-  return m;
 }
 
 }  // namespace tetskin::cli

@@ -17,19 +17,13 @@ namespace tetskin::cli {
 inline constexpr const char* kMaterialGroup =
     "Material (default: the dataset config's elasticity section)";
 
-struct MaterialArgs {
-  std::optional<double> young, poisson, density, alpha, beta;
-};
-
 // Adds --young, --poisson, --density, --alpha and --beta (the group
-// kMaterialGroup) to `cmd`. Their ranges are materialProblem's, checked by
+// kMaterialGroup) to `cmd`, each setting its value of `material` (in
+// materialFields()'s order). Their ranges are materialProblem's, checked by
 // MaterialOverrides::over.
-void addMaterialOptions(CLI::App& cmd, MaterialArgs& args);
+void addMaterialOptions(CLI::App& cmd, MaterialOverrides& material);
 
 // Adds --dt (seconds, > 0) to `cmd`, setting `timeStep`.
 CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep);
-
-// The values given, over the dataset config's elasticity (RunRequest.h).
-MaterialOverrides overridesOf(const MaterialArgs& args);
 
 }  // namespace tetskin::cli

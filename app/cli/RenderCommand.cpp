@@ -34,7 +34,7 @@ struct RenderArgs {
   std::string path = toString(RenderPath::Cpu), camera = toString(CameraPreset::Iso),
               control = toString(ControlMeshStyle::None), size = "800x600";
   ScenarioArgs scenario;
-  MaterialArgs material;
+  MaterialOverrides material;  // over the config's elasticity
   double timeStep = SimulationOptions{}.timeStep;
   int level = -1, frames = 0;
   // Fur: overrides of the dataset config's `fur` section.
@@ -85,7 +85,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.run.names = OptionNames::Flags;
   o.run.datasetName = a.dataset.string();
   o.run.settings.timeStep = a.timeStep;
-  o.run.material = overridesOf(a.material);
+  o.run.material = a.material;
   fromName<ControlMeshStyle>(o.control);  // reject typos before any work
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);

@@ -38,7 +38,7 @@ RunRequest runRequest(const RunArgs& a, const CLI::App& cmd, const Dataset& data
   request.settings.tangent = fromName<Tangent>(a.tangent);
   request.settings.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
   request.settings.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
-  request.material = overridesOf(a.material);
+  request.material = a.material;
   fillScenario(cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount,
                request);
   return request;

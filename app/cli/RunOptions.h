@@ -22,7 +22,7 @@ struct RunArgs {
               tangent = toString(defaultRunSettings().tangent);
   ScenarioArgs scenario;
   SimulationOptions options = defaultRunSettings();  // the numbers given
-  MaterialArgs material;                             // over the config's elasticity
+  MaterialOverrides material;                        // over the config's elasticity
 };
 
 // Adds --dt, the scenario options, --solver, --tangent, the solver's

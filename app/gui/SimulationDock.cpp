@@ -116,15 +116,16 @@ RunRequest SimulationDock::runRequest(int levelNumber) {
   request.settings.tangent = chosen<Tangent>(tangent_);
   // (The fields show the dataset's material after showMaterial: a value
   // left as shown is the config's.)
+  ElasticMaterial shown;
+  shown.youngsModulus = young_->value();
+  shown.poissonRatio = poisson_->value();
+  shown.density = density_->value();
+  shown.massDamping = massDamping_->value();
+  shown.stiffnessDamping = stiffnessDamping_->value();
   const ElasticMaterial& config = scene_.dataset().config.elasticity;
-  using namespace material_option;
-  for (auto [option, box] :
-       {std::pair{&kYoungsModulus, young_}, std::pair{&kPoissonRatio, poisson_},
-        std::pair{&kDensity, density_}, std::pair{&kMassDamping, massDamping_},
-        std::pair{&kStiffnessDamping, stiffnessDamping_}})
-    for (const MaterialField& field : materialFields())
-      if (field.option == option && box->value() != config.*field.field)
-        request.material.set(*option, box->value());
+  for (const MaterialField& field : materialFields())
+    if (shown.*field.field != config.*field.field)
+      request.material.set(*field.option, shown.*field.field);
   return request;
 }
 

@@ -78,6 +78,8 @@ def test_a_fixed_box_and_a_load_curve(bunny):
         tetskin.Simulation(bunny, level=0, load_curve=[[0, 0], [1, 1]])
     with pytest.raises(tetskin.Error, match="load_curve: "):
         tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[[1, 0], [0, 1]])
+    with pytest.raises(tetskin.Error, match="load_curve"):
+        tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[0, 1, 2])
     tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[[0, 0], [1, 1]]).step(2)
 
 

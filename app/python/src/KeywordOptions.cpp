@@ -146,12 +146,8 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
     if (!(p.loadSeconds > 0)) throw Error(k.call() + ": load_seconds: must be > 0");
   }
   if (const auto curve = k.take("load_curve")) {
-    const py::array given =
-        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*curve);
-    if (!given) PyErr_Clear();
-    if (!given || given.ndim() != 2 || given.shape(1) != 2)
-      throw Error(k.call() + ": load_curve: expected (k, 2) numbers (time in s, factor)");
-    const auto rows = given.unchecked<double, 2>();
+    // (Finite or not, each point is LoadCurve's to check, naming it.)
+    const auto rows = realRows(*curve, "load_curve", 2, /*finite=*/false).unchecked<2>();
     std::vector<LoadCurve::Point> points;
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) points.push_back({rows(i, 0), rows(i, 1)});
     try {
