@@ -34,6 +34,28 @@ DEPS=(
 
 log() { printf '\n==> %s\n' "$*" >&2; }
 
+# stage NAME COMMAND...: runs COMMAND and keeps its wall time; the times are
+# printed when the script ends (print_stage_times), failed or not, so that
+# every CI log shows where its minutes went. (COMMAND runs as a plain
+# statement: in an `||` list, set -e would be off inside it.)
+STAGE_TIMES=() STAGE_NOW="" STAGE_START=0
+minutes() { awk -v s="$1" 'BEGIN { printf "%.1f", s / 60 }'; }
+stage() {
+  STAGE_NOW=$1 STAGE_START=$SECONDS
+  shift
+  "$@"
+  STAGE_TIMES+=("$(printf '%-26s %5s min' "$STAGE_NOW" "$(minutes $((SECONDS - STAGE_START)))")")
+  STAGE_NOW=""
+}
+print_stage_times() {
+  [ -n "$STAGE_NOW" ] &&
+    STAGE_TIMES+=("$(printf '%-26s %5s min  (failed)' "$STAGE_NOW" "$(minutes $((SECONDS - STAGE_START)))")")
+  [ ${#STAGE_TIMES[@]} -eq 0 ] && return 0
+  printf '\n==> stage times (%s min in all)\n' "$(minutes $SECONDS)" >&2
+  printf '    %s\n' "${STAGE_TIMES[@]}" >&2
+}
+trap print_stage_times EXIT
+
 install_deps() {
   local missing=()
   for p in "${DEPS[@]}"; do
@@ -204,16 +226,21 @@ build_with_paraview() {
   build -DTETSKIN_PARAVIEW_ROOT="$(paraview_python)"
 }
 
-run_tests() {
-  build_with_paraview
-  sanitized_tests
-  thread_tests
-  fuzz_tests
+whole_suite() {
   log "the whole test suite"
   # --repeat until-pass:3: a test that fails is run again, up to 3 times in all
   # (a real failure fails all three times).
   (cd "$BUILD_DIR" && with_display ctest -j "$JOBS" --output-on-failure --no-tests=error \
     --repeat until-pass:3)
+}
+
+run_tests() {
+  stage "packages" install_deps
+  stage "build" build_with_paraview
+  stage "sanitized tests (ASan)" sanitized_tests
+  stage "threaded tests (TSan)" thread_tests
+  stage "fuzzers" fuzz_tests
+  stage "whole suite" whole_suite
 }
 
 case "${1:-}" in
