@@ -14,12 +14,14 @@
 #include "MaterialOptions.h"
 #include "OptionChecks.h"
 #include "RunFilms.h"
+#include "RunOptions.h"
 #include "ScenarioOptions.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/rendering/MovieFile.h"
+#include "tetskin/session/RunSpecJson.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -37,6 +39,7 @@ struct RenderArgs {
   MaterialOverrides material;  // over the config's elasticity
   double timeStep = SimulationOptions{}.timeStep;
   int level = -1, frames = 0;
+  bool printRun = false;
   // Fur: overrides of the dataset config's `fur` section.
   std::optional<int> furShells, furMinShells, furTextureSize;
   std::optional<double> furLength, furDensity, furDrag, furVelvet, furRepeats;
@@ -87,19 +90,23 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   o.run.settings.timeStep = a.timeStep;
   o.run.material = a.material;
   fromName<ControlMeshStyle>(o.control);  // reject typos before any work
+  if (a.printRun && !a.run.empty())
+    throw Error(
+        "--print-run: prints the run --frames simulates (--run draws a recorded one as it was)");
+  if (a.output.empty() && !a.printRun) throw Error("--output is required (or --print-run)");
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
   if (!a.run.empty() && a.frames > 0)
     throw Error("--frames: simulates a new run; --run draws the recorded one: give one of them");
   const bool film = lowerExtension(a.output) == ".ogv";
-  if (film && a.run.empty() && a.frames == 0)
+  if (film && a.run.empty() && a.frames == 0 && !a.printRun)
     throw Error("-o " + a.output.string() +
                 ": a movie is filmed of a run: give --frames N (simulated now) or --run RUN.pvd "
                 "(recorded)");
   std::optional<std::string> simulationOption = givenScenarioOption(cmd);
   if (!simulationOption) simulationOption = givenOptionOf(cmd, kMaterialGroup);
   if (!simulationOption && cmd.count("--dt") > 0) simulationOption = "--dt";
-  if (simulationOption && a.frames == 0)
+  if (simulationOption && a.frames == 0 && !a.printRun)
     throw Error(*simulationOption + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
   const Dataset dataset = loadDataset(a.dataset);
@@ -131,6 +138,12 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   const SurfaceMesh& surface = input.surface;
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
   fillScenario(cmd, a.scenario, range.nodeCount, o.run);
+  if (a.printRun) {
+    RunRequest request = o.run;
+    request.level = level;
+    std::printf("%s\n", runSpecJson(resolveRun(request, dataset.mesh, dataset.config)).c_str());
+    return;
+  }
   AnimatedScene scene(dataset, input, o);
   if (recorded) {
     const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string();
@@ -196,8 +209,8 @@ void addRenderCommand(CLI::App& app) {
   // --control, --fur-lighting.)
   cmd->add_option("--path", a->path, oneOf(namesOf<RenderPath>()))->capture_default_str();
   cmd->add_option("-o,--output", a->output,
-                  "image (.png); with --run, the images OUT_00000.png, ... or one movie (.ogv)")
-      ->required()
+                  "image (.png); with --run, the images OUT_00000.png, ... or one movie (.ogv); "
+                  "required unless --print-run")
       ->check(fileEnding(std::vector<std::string>{".png", ".ogv"}));
   cmd->add_option("--texture", a->texture,
                   "colour texture (PNG) for a surface with texture coordinates; on fur paths it "
@@ -253,6 +266,7 @@ void addRenderCommand(CLI::App& app) {
                   "frame to its own image, OUT_00000.png, OUT_00001.png, ... on the frames' level")
       ->check(CLI::ExistingFile)
       ->check(fileEnding(".pvd"));
+  addPrintRunFlag(*cmd, a->printRun);
   addScenarioOptions(*cmd, a->scenario);
   addTimeStepOption(*cmd, a->timeStep)
       ->description(

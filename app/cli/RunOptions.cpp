@@ -19,6 +19,12 @@ void addRunOptions(CLI::App& cmd, RunArgs& a) {
   addMaterialOptions(cmd, a.material);
 }
 
+void addPrintRunFlag(CLI::App& cmd, bool& printRun) {
+  cmd.add_flag("--print-run", printRun,
+               "print the run these options describe (JSON: every setting, after the dataset's "
+               "config and the defaults) and exit without running it");
+}
+
 void checkRunOptions(const RunArgs& a, const CLI::App& cmd) {
   if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
     for (const char* option : {"--coarse-reuse", "--coarse-operators", "--coarse-levels"})

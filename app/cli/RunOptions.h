@@ -29,6 +29,10 @@ struct RunArgs {
 // settings and the material options to `cmd`.
 void addRunOptions(CLI::App& cmd, RunArgs& args);
 
+// Adds --print-run: print the run the options describe (runSpecJson) and
+// exit without running it.
+void addPrintRunFlag(CLI::App& cmd, bool& printRun);
+
 // Throws Error for a multigrid setting given with --solver cg (checked
 // before any work, as a typo would be).
 void checkRunOptions(const RunArgs& args, const CLI::App& cmd);

@@ -20,6 +20,7 @@
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/StepLogFile.h"
+#include "tetskin/session/RunSpecJson.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -34,12 +35,13 @@ struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
   int steps = 120, level = -1, every = 1, pieces = 1;
   RunArgs run;
-  bool quiet = false;
+  bool quiet = false, printRun = false;
 };
 
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   checkRunOptions(a.run, cmd);
+  if (a.output.empty() && !a.printRun) throw Error("--output is required (or --print-run)");
   if (a.pieces > 1 && a.surface.empty())
     throw Error("--pieces " + std::to_string(a.pieces) +
                 " splits the surface's frames: give the surface (--surface)");
@@ -150,6 +152,10 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
                           : resolveLevel(dataset.mesh, a.level);
   const RunSpec spec = runSpec(a.run, cmd, dataset, level, a.dataset.string());
+  if (a.printRun) {
+    std::printf("%s\n", runSpecJson(spec).c_str());
+    return;
+  }
   SimulationSession session(dataset.mesh, spec);
   if (!a.initial.empty()) session.startFromFrame(a.initial);  // (drop's lift too)
   for (const std::string& warning : session.takeWarnings(OptionNames::Flags))
@@ -200,8 +206,8 @@ void addSimulateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the corotated FEM on a dataset level; writes a ParaView time series (.pvd)");
   cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", a->output, "time series RUN.pvd (frames go to RUN_frames/)")
-      ->required();
+  cmd->add_option("-o,--output", a->output,
+                  "time series RUN.pvd (frames go to RUN_frames/); required unless --print-run");
   cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));
   cmd->add_option("--every", a->every, "write every k-th step (and the last)")
       ->capture_default_str()
@@ -212,6 +218,7 @@ void addSimulateCommand(CLI::App& app) {
                   "positions and velocities replace the scenario's start; time starts at 0")
       ->check(CLI::ExistingFile);
   addRunOptions(*cmd, a->run);
+  addPrintRunFlag(*cmd, a->printRun);
   cmd->add_option("--surface", a->surface,
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")

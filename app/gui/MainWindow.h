@@ -112,6 +112,7 @@ class MainWindow : public QMainWindow {
   // the Compare dock. False on error (see lastError()), or when cancelled.
   bool compareLevels(int reference, int inspected, int steps);
   CompareDock* compareDock() { return compareDock_; }
+  SimulationDock* simulationDock() { return simulationDock_; }
   // The FPS and timing overlay (off for reproducible screenshots); View >
   // Frame statistics, --no-overlay.
   void setOverlayVisible(bool visible);

@@ -2,7 +2,7 @@
 // tetskin-gui [DATASET.json] [SURFACE] [--screenshot FILE [--window]] [--path PATH]
 //             [--size WxH] [--camera PRESET] [--control STYLE] [--color-by ARRAY]
 //             [--highlight] [--prescribed] [--pick] [--scenario NAME] [--steps N]
-//             [--no-overlay]
+//             [--no-overlay] [--compare LEVEL] [--print-run]
 //             [--help] [--version]
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -22,12 +22,14 @@
 
 #include "MainWindow.h"
 #include "Scene.h"
+#include "SimulationDock.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/ImageSize.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/RenderPath.h"
 #include "tetskin/rendering/XDisplay.h"
+#include "tetskin/session/RunSpecJson.h"
 #include "tetskin/simulation/Scenario.h"
 
 namespace {
@@ -69,6 +71,9 @@ struct GuiArguments {
                              "compare LEVEL with the finest over --steps steps instead of "
                              "simulating them (the Compare dock), showing the last frame",
                              "LEVEL"};
+  QCommandLineOption printRun{"print-run",
+                              "print the run the Simulation dock describes (JSON, as tetskin "
+                              "simulate --print-run) and exit"};
   // Checked values.
   int width = 0, height = 0, stepCount = 0, compareLevel = 0;
 
@@ -81,7 +86,7 @@ struct GuiArguments {
         "DATASET", "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)", "[DATASET]");
     parser.addPositionalArgument("SURFACE", "surface to bind (.obj .ply .stl .vtp)", "[SURFACE]");
     parser.addOptions({screenshot, whole, path, size, camera, control, colorBy, highlight,
-                       prescribed, pick, scenario, steps, noOverlay, compare});
+                       prescribed, pick, scenario, steps, noOverlay, compare, printRun});
   }
 
   // Parses the application's arguments; prints help or the version and
@@ -214,6 +219,19 @@ int main(int argc, char** argv) {
     if (!choose("scenario", "--scenario", parser.value(args.scenario))) return 1;
     window.findChild<QPushButton*>("reset")->click();  // as the dock applies it
     if (oneShot && !window.lastError().isEmpty()) return fail();
+  }
+  if (parser.isSet(args.printRun)) {
+    if (!window.scene().hasDataset()) {
+      std::fprintf(stderr, "error: --print-run: open a dataset\n");
+      return 1;
+    }
+    try {
+      std::printf("%s\n", tetskin::runSpecJson(window.simulationDock()->runSpec()).c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: --print-run: %s\n", e.what());
+      return 1;
+    }
   }
   if (parser.isSet(args.compare)) {
     if (!window.scene().hasDataset()) {

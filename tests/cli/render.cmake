@@ -217,3 +217,8 @@ tetskin_cli_test(render_recorded_run_broken_frame FAIL STATUS 1 REQUIRES broken_
   STDERR "^error: [^\n]*recorded_broken/run_frames/control_00002.vtu: is not a VTK XML file"
   ARGS render ${data}/bunny.json --run ${cli_out}/recorded_broken/run.pvd
        -o ${cli_out}/drawn_broken/deeper/f.png)
+# --print-run: the run --frames would simulate (python.run_parity compares
+# it with simulate's); a recorded run (--run) is drawn as it was.
+tetskin_cli_test(render_print_run_of_a_recording FAIL STATUS 1
+  STDERR "^error: --print-run: prints the run --frames simulates \\(--run draws a recorded one as it was\\)\n$"
+  ARGS render ${data}/bunny.json --run ${tdata}/missing_frame_run.pvd --print-run)

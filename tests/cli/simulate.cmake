@@ -361,3 +361,13 @@ tetskin_cli_test(simulate_pieces_without_surface FAIL STATUS 1
   NOT_EXIST ${cli_out}/pieces_nothing.pvd
   STDERR "^error: --pieces 3 splits the surface's frames: give the surface \\(--surface\\)\n$"
   ARGS simulate ${data}/bunny.json --steps 1 --pieces 3 -o ${cli_out}/pieces_nothing.pvd)
+# --print-run: the run the options describe, as JSON, and nothing run or
+# written (the front ends' parity test, python.run_parity, compares it with
+# render's, the GUI's and Python's); without it, -o is required.
+tetskin_cli_test(simulate_print_run
+  STDOUT "\"solver\": \"auto\".*\"scenario\": \"drop\"\n}\n$"
+  NOT_EXIST ${cli_out}/print_run.pvd
+  ARGS simulate ${data}/bunny.json --scenario drop --print-run)
+tetskin_cli_test(simulate_without_output FAIL STATUS 1
+  STDERR "^error: --output is required \\(or --print-run\\)\n$"
+  ARGS simulate ${data}/bunny.json --steps 1)

@@ -50,6 +50,7 @@ struct BindingObject {
 struct SimulationObject {
   std::shared_ptr<const Dataset> dataset;
   std::unique_ptr<SimulationSession> session;
+  RunSpec spec;    // what the session was made from (run_spec)
   Points3 forces;  // apply_forces(): per level node, added to the scenario's each step
   bool forcesGiven = false;
   int recordEvery = 1;

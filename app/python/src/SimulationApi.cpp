@@ -14,6 +14,7 @@
 #include "KeywordOptions.h"
 #include "Objects.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/session/RunSpecJson.h"
 
 namespace tetskin::python {
 namespace {
@@ -44,6 +45,7 @@ std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
   const RunSpec spec = resolveRun(request, data.mesh, data.config);
   auto object = std::make_shared<Object>();
   object->dataset = dataset.dataset;
+  object->spec = spec;
   {
     py::gil_scoped_release unlocked;
     object->session = std::make_unique<SimulationSession>(dataset.dataset->mesh, spec);
@@ -132,6 +134,13 @@ void addSimulationApi(py::module_& m) {
           "solver",
           [](const Object& s) { return std::string(toString(s.session->options().solver)); },
           "the solver option: 'auto', 'cg' or 'multigrid'")
+      .def_property_readonly(
+          "run_spec",
+          [](const Object& s) {
+            return py::module_::import("json").attr("loads")(runSpecJson(s.spec));
+          },
+          "the run as resolved from the keywords, the dataset config and the defaults: a dict "
+          "field by field, as `tetskin simulate --print-run` prints it")
       .def_property_readonly(
           "positions", [](const Object& s) { return owning(s.session->state().positions); },
           "node positions now, float64 (n, 3), the level's numbering (a copy)")

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/simulation/NodeBlockMatrix.h"
 
@@ -77,6 +78,13 @@ class BlockJacobi : public Preconditioner {
 //   comes from power steps on each new matrix of a level, started from the
 //   last estimate's eigenvector.
 enum class MultigridSmoother { GaussSeidel, Chebyshev };
+template <>
+struct EnumSchema<MultigridSmoother> {
+  static constexpr const char* what = "multigrid smoother";
+  static constexpr EnumValue<MultigridSmoother> values[] = {
+      {MultigridSmoother::GaussSeidel, "gauss-seidel", "block Gauss-Seidel over coloured chunks"},
+      {MultigridSmoother::Chebyshev, "chebyshev", "a Chebyshev polynomial in D^-1 A"}};
+};
 
 // Multigrid V-cycle on non-nested levels: `nodalProlongations[l]` maps the
 // nodes of level l+1 (coarser) to those of level l (level 0 is the system's

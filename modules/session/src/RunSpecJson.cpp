@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tetskin/session/RunSpecJson.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "tetskin/simulation/LinearSolvers.h"
+
+namespace tetskin {
+namespace {
+
+// A number, or null where JSON has none (infinity: "for ever").
+nlohmann::json number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json rows(const Points3& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    out.push_back({points(i, 0), points(i, 1), points(i, 2)});
+  return out;
+}
+
+nlohmann::json parametersJson(const ScenarioParameters& p) {
+  nlohmann::json out;
+  for (const ScenarioField& f : scenarioFields()) out[f.option->key] = p.*f.field;
+  out["held_nodes"] = p.heldNodes;
+  out["loads"] = rows(p.loads);
+  nlohmann::json curve = nlohmann::json::array();
+  for (const LoadCurve::Point& point : p.loadCurve.points())
+    curve.push_back({point.time, point.factor});
+  out["load_curve"] = {
+      {"points", curve},
+      {"after", p.loadCurve.after() == LoadCurve::After::Repeat ? "repeat" : "hold"}};
+  out["load_seconds"] = number(p.loadSeconds);
+  return out;
+}
+
+nlohmann::json optionsJson(const SimulationOptions& o) {
+  namespace so = simulation_option;
+  nlohmann::json material;
+  for (const MaterialField& f : materialFields()) material[f.option->key] = o.material.*f.field;
+  return {{"material", material},
+          {so::kTimeStep.key, o.timeStep},
+          {"gravity", {o.gravity.x(), o.gravity.y(), o.gravity.z()}},
+          {"up", toString(o.up)},
+          {"floor_height", o.floorHeight ? nlohmann::json(*o.floorHeight) : nullptr},
+          {so::kFloorStiffness.key, o.floorStiffness},
+          {so::kFriction.key, o.friction},
+          {"tangent", toString(o.tangent)},
+          {"solver", toString(o.solver)},
+          {so::kTolerance.key, o.tolerance},
+          {so::kGuessSolutions.key, o.guessSolutions},
+          {so::kCoarseReuse.key, o.coarseReuse},
+          {"coarse_operators", toString(o.coarseOperators)},
+          {"coarse_levels", toString(o.coarseLevels)},
+          {"single_precision_cycle", o.singlePrecisionCycle},
+          {"smoother", toString(o.smoother)},
+          {so::kMaxIterations.key, o.maxIterations},
+          {"custom_preconditioner", static_cast<bool>(o.preconditioner)}};
+}
+
+}  // namespace
+
+std::string runSpecJson(const RunSpec& spec) {
+  const nlohmann::json out = {{"dataset", spec.datasetName},
+                              {"level", spec.level},
+                              {"scenario", spec.scenario},
+                              {"parameters", parametersJson(spec.parameters)},
+                              {"options", optionsJson(spec.options)}};
+  return out.dump(2);
+}
+
+}  // namespace tetskin
