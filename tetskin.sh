@@ -87,7 +87,7 @@ build() {
 
 # ParaView's Python packages conflict with the VTK development packages, so
 # they are unpacked into the build folder, never installed
-# (shared/design/VTK-NOTES.md); the tests run Debian's pvpython with them, and
+# (doc/dev/platform-notes.md); the tests run Debian's pvpython with them, and
 # the ParaView plugin's build reads ParaView's class hierarchies from them.
 paraview_python() {
   local root=$ROOT/$BUILD_DIR/paraview-python

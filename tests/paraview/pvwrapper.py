@@ -1,6 +1,6 @@
 # Runs a script under Debian's pvpython with ParaView's own Python packages
 # (unpacked from python3-paraview into a build-local folder, see
-# shared/design/VTK-NOTES.md) instead of the system VTK modules, which would
+# doc/dev/platform-notes.md) instead of the system VTK modules, which would
 # make pvpython crash. Usage: pvpython pvwrapper.py ROOT SCRIPT ARGS...
 import os
 import runpy

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The names of the arrays TetSkin's files carry (PRODUCT.md, Files), in one
+// The names of the arrays TetSkin's files carry (doc/user/file-formats.md), in one
 // place: the writers, the readers, the VTK filters, the mappers and the
 // front ends all name them through these, so none can drift from another.
 // ParaView users, scripts and tests read them as they are here.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Corotated linear elasticity on linear tetrahedra (Georgii & Westermann; see
-// shared FEM notes): per element a rest stiffness K_e = V B^T C B, a rotation R
+// Corotated linear elasticity on linear tetrahedra (Georgii & Westermann;
+// doc/dev/numerics.md): per element a rest stiffness K_e = V B^T C B, a rotation R
 // from the polar decomposition of the deformation gradient, the elastic force
 // f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T. Everything that
 // depends only on the rest shape (shape gradients, lumped mass, the sparsity

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Transfer between non-nested tetrahedral levels (see shared FEM notes, 3):
+// Transfer between non-nested tetrahedral levels (doc/dev/numerics.md, "Multigrid"):
 // every fine node is located in a coarse element in rest coordinates and
 // interpolated with its 4 barycentric weights. Nodes outside the coarse mesh
 // take the nearest element with unclamped weights, so linear fields (and rigid
