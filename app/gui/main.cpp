@@ -23,6 +23,7 @@
 #include "MainWindow.h"
 #include "Scene.h"
 #include "SimulationDock.h"
+#include "ViewCapture.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/ImageSize.h"
@@ -112,8 +113,7 @@ struct GuiArguments {
     if (!compareOk)
       return usageError("--compare: '" + parser.value(compare).toStdString() +
                         "' is not a level (a whole number; negative from the finest)");
-    if (const QString problem =
-            tetskin::gui::MainWindow::screenshotNameProblem(parser.value(screenshot));
+    if (const QString problem = tetskin::gui::screenshotNameProblem(parser.value(screenshot));
         parser.isSet(screenshot) && !problem.isEmpty())
       return usageError(parser.value(screenshot).toStdString() + ": " + problem.toStdString());
     return true;
