@@ -52,11 +52,11 @@ void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
                     "recorded runs (the first the reference) frame by frame");
     if (const std::optional<std::string> given = givenScenarioOption(cmd))
       throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
-    for (const char* option : {"--solver", "--tangent", "--dt", "--young", "--poisson", "--density",
-                               "--alpha", "--beta", "--gravity", "--floor", "--up"})
-      if (cmd.count(option) > 0)
-        throw Error(std::string(option) + ": compares simulated levels; --runs compares " +
-                    "recorded runs");
+    std::optional<std::string> given = givenOptionOf(cmd, kMaterialGroup);
+    if (!given) given = givenName(cmd, simulation_option::kTimeStep);
+    for (const char* option : {"--solver", "--tangent", "--gravity", "--floor", "--up"})
+      if (!given && cmd.count(option) > 0) given = option;
+    if (given) throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
   }
   // A node list names nodes of one level; the levels compared have others.
   if (!a.run.scenario.fixedNodes.empty())

@@ -2,7 +2,7 @@
 #pragma once
 // The material options of the commands that simulate (`simulate`, `render
 // --frames`): each overrides one value of the dataset config's elasticity
-// section, and --dt the time step.
+// section, and --time-step the time step.
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -17,13 +17,12 @@ namespace tetskin::cli {
 inline constexpr const char* kMaterialGroup =
     "Material (default: the dataset config's elasticity section)";
 
-// Adds --young, --poisson, --density, --alpha and --beta (the group
-// kMaterialGroup) to `cmd`, each setting its value of `material` (in
-// materialFields()'s order). Their ranges are materialProblem's, checked by
-// MaterialOverrides::over.
+// Adds --youngs-modulus, --poisson-ratio, --density, --mass-damping and --stiffness-damping (the
+// group kMaterialGroup) to `cmd`, each setting its value of `material` (in materialFields()'s
+// order). Their ranges are materialProblem's, checked by MaterialOverrides::over.
 void addMaterialOptions(CLI::App& cmd, MaterialOverrides& material);
 
-// Adds --dt (seconds, > 0) to `cmd`, setting `timeStep`.
+// Adds --time-step (seconds, > 0) to `cmd`, setting `timeStep`.
 CLI::Option* addTimeStepOption(CLI::App& cmd, double& timeStep);
 
 }  // namespace tetskin::cli

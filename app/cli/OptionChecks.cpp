@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -143,15 +144,19 @@ CLI::Validator wholeNumberIn(const NumberRange& range) {
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
-  return cmd.add_option(option.flag, value, option.help)
-      ->capture_default_str()
-      ->check(numberIn(option.range));
+  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
+                           ->capture_default_str()
+                           ->check(numberIn(option.range));
+  addOldFlag(cmd, option, value, added, numberIn(option.range));
+  return added;
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
-  return cmd.add_option(option.flag, value, option.help)
-      ->capture_default_str()
-      ->check(wholeNumberIn(option.range));
+  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
+                           ->capture_default_str()
+                           ->check(wholeNumberIn(option.range));
+  addOldFlag(cmd, option, value, added, wholeNumberIn(option.range));
+  return added;
 }
 
 CLI::Validator fileEnding(const std::string& extension) {
@@ -192,9 +197,29 @@ void requireNotAnInput(const std::filesystem::path& output,
 }
 
 std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string& group) {
-  for (const CLI::Option* option : cmd.get_options())
-    if (option->get_group() == group && option->count() > 0) return option->get_name();
+  for (const CLI::Option* option : cmd.get_options()) {
+    if (option->count() == 0) continue;
+    if (option->get_group() == group) return option->get_name();
+  }
+  // An old flag (hidden, addOldFlag) stands in for its option.
+  for (const CLI::Option* old : cmd.get_options()) {
+    const std::string& about = old->get_description();
+    if (old->count() == 0 || about.rfind(kOldNameOf, 0) != 0) continue;
+    if (const CLI::Option* current = cmd.get_option_no_throw(about.substr(kOldNameOf.size()));
+        current && current->get_group() == group)
+      return old->get_name();
+  }
   return std::nullopt;
+}
+
+std::optional<std::string> givenName(const CLI::App& cmd, const NumberOption& option) {
+  if (*option.flag && cmd.count(option.flag) > 0) return option.flag;
+  if (*option.oldFlag && cmd.count(option.oldFlag) > 0) return option.oldFlag;
+  return std::nullopt;
+}
+
+void warnOfOldName(const std::string& warning) {
+  std::fprintf(stderr, "warning: %s\n", warning.c_str());
 }
 
 void addCompressOption(CLI::App& cmd) {

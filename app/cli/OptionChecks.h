@@ -59,6 +59,32 @@ CLI::Validator wholeNumberIn(const NumberRange& range);
 
 // A schema option (OptionSchema.h) on `cmd`: its flag, its help, its
 // default shown, its range checked.
+// The description of an old flag's hidden option: this and the flag's name.
+inline const std::string kOldNameOf = "old name of ";
+
+// Prints "warning: WARNING" on stderr.
+void warnOfOldName(const std::string& warning);
+
+// `option`'s old flag (NumberOption::oldFlag), if it has one, beside the
+// option `current` its flag added: the same value, hidden from --help,
+// checked by `check`, a warning when it is used, an error beside the new
+// flag.
+template <class T>
+void addOldFlag(CLI::App& cmd, const NumberOption& option, T& value, CLI::Option* current,
+                const CLI::Validator& check) {
+  if (!*option.oldFlag) return;
+  const std::string warning = deprecatedName(option.oldFlag, option.flag);
+  const std::string old = option.oldFlag;
+  const std::string both = "is the same option as " + std::string(option.flag) + ": give one";
+  cmd.add_option(option.oldFlag, value, kOldNameOf + option.flag)
+      ->check(check)
+      ->group("")
+      ->each([warning, old, both, current](const std::string&) {
+        if (current->count() > 0) throw Error(old + ": " + both);
+        warnOfOldName(warning);
+      });
+}
+
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value);
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value);
 
@@ -104,5 +130,8 @@ void requireNotAnInput(const std::filesystem::path& output,
 // `cmd`'s command line, if any: for options that would change nothing in
 // the run asked for, which are errors rather than silently ignored.
 std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string& group);
+// The name `option` was given by on `cmd` (its flag, or its old flag), or
+// nullopt.
+std::optional<std::string> givenName(const CLI::App& cmd, const NumberOption& option);
 
 }  // namespace tetskin::cli

@@ -105,7 +105,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
                 "(recorded)");
   std::optional<std::string> simulationOption = givenScenarioOption(cmd);
   if (!simulationOption) simulationOption = givenOptionOf(cmd, kMaterialGroup);
-  if (!simulationOption && cmd.count("--dt") > 0) simulationOption = "--dt";
+  if (!simulationOption) simulationOption = givenName(cmd, simulation_option::kTimeStep);
   if (simulationOption && a.frames == 0 && !a.printRun)
     throw Error(*simulationOption + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
@@ -238,9 +238,11 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option(kTextureSize.flag, a->furTextureSize, kTextureSize.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
-  cmd->add_option(kTextureRepeats.flag, a->furRepeats, kTextureRepeats.help)
-      ->check(finiteNumber())
-      ->group(kFurGroup);
+  addOldFlag(*cmd, kTextureRepeats, a->furRepeats,
+             cmd->add_option(kTextureRepeats.flag, a->furRepeats, kTextureRepeats.help)
+                 ->check(finiteNumber())
+                 ->group(kFurGroup),
+             finiteNumber());
   cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
       ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
       ->group(kFurGroup);

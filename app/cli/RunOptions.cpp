@@ -14,6 +14,9 @@ void addRunOptions(CLI::App& cmd, RunArgs& a) {
   addNumberOption(cmd, simulation_option::kTolerance, a.options.tolerance);
   addNumberOption(cmd, simulation_option::kGuessSolutions, a.options.guessSolutions);
   addNumberOption(cmd, simulation_option::kCoarseReuse, a.options.coarseReuse);
+  addNumberOption(cmd, simulation_option::kMaxIterations, a.options.maxIterations);
+  addNumberOption(cmd, simulation_option::kFriction, a.options.friction);
+  addNumberOption(cmd, simulation_option::kFloorStiffness, a.options.floorStiffness);
   addEnumOption<CoarseOperators>(cmd, "--coarse-operators", "multigrid: ", a.coarseOperators);
   addEnumOption<CoarseLevels>(cmd, "--coarse-levels", "multigrid: ", a.coarseLevels);
   addMaterialOptions(cmd, a.material);

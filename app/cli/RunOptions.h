@@ -25,7 +25,7 @@ struct RunArgs {
   MaterialOverrides material;                        // over the config's elasticity
 };
 
-// Adds --dt, the scenario options, --solver, --tangent, the solver's
+// Adds --time-step, the scenario options, --solver, --tangent, the solver's
 // settings and the material options to `cmd`.
 void addRunOptions(CLI::App& cmd, RunArgs& args);
 

@@ -83,8 +83,8 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
 void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
                   RunRequest& request) {
   for (const ScenarioField& f : scenarioFields())
-    if (cmd.count(f.option->flag) > 0 && !scenarioReads(a.name, f.parameter))
-      throw Error(std::string(f.option->flag) + ": " + notReadBy(a.name, f.parameter));
+    if (const auto given = givenName(cmd, *f.option); given && !scenarioReads(a.name, f.parameter))
+      throw Error(*given + ": " + notReadBy(a.name, f.parameter));
   for (const char* option : {"--load-curve", "--loads-seconds"})
     if (cmd.count(option) > 0 && a.loads.empty())
       throw Error(std::string(option) + ": applies with --loads, which is not given");

@@ -41,7 +41,7 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 // nodes of --fixed-nodes, the loads and their curve read), the held box
 // (--fixed-box), gravity, the floor and the up axis, for a level of
 // `nodeCount` nodes. Throws Error for an option of another scenario than
-// the chosen one (e.g. --push with drop): it would change nothing.
+// the chosen one (e.g. --push-acceleration with drop): it would change nothing.
 void fillScenario(const CLI::App& cmd, const ScenarioArgs& args, Index nodeCount,
                   RunRequest& request);
 

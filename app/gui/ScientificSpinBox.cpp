@@ -84,4 +84,11 @@ ScientificSpinBox* numberBox(const char* name, const NumberOption& option) {
   return numberBox(name, min, max, option.defaultValue, option.help);
 }
 
+QString labelOf(const NumberOption& option) {
+  QString label = option.what;
+  if (label.startsWith("the ")) label.remove(0, 4);
+  if (!label.isEmpty()) label[0] = label[0].toUpper();
+  return label;
+}
+
 }  // namespace tetskin::gui

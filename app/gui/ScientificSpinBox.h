@@ -9,6 +9,7 @@
 // 1.5E-7, 0.0166667).
 
 #include <QDoubleSpinBox>
+#include <QString>
 #include <limits>
 
 #include "tetskin/core/OptionSchema.h"
@@ -38,5 +39,8 @@ ScientificSpinBox* numberBox(const char* name, double min, double max, double va
 // A box over the option's range (an excluded bound: the nearest number
 // inside it), set to its default, its help as tip.
 ScientificSpinBox* numberBox(const char* name, const NumberOption& option);
+// The option's label in a form: its name in messages, capitalized ("the
+// time step" -> "Time step"); its help (with the unit) is the box's tip.
+QString labelOf(const NumberOption& option);
 
 }  // namespace tetskin::gui

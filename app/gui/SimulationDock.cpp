@@ -68,31 +68,26 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   const SimulationOptions defaults = defaultRunSettings();
   solver_ = enumCombo("solver", defaults.solver);
   tangent_ = enumCombo("tangent", defaults.tangent);
-  // The relative residual each solve reaches: a looser one is much cheaper
-  // for interactive use (doc/benchmarks.md: the tolerance table).
-  tolerance_ = combo("tolerance", {"1e-2", "1e-3", "1e-4", "1e-5", "1e-6", "1e-8"});
-  for (int i = 0; i < tolerance_->count(); ++i)
-    if (tolerance_->itemText(i).toDouble() == defaults.tolerance) tolerance_->setCurrentIndex(i);
-  tolerance_->setToolTip(QString(simulation_option::kTolerance.help) + " (simulate " +
-                         simulation_option::kTolerance.flag + ")");
-  // The ranges and defaults are those of the options' schema (OptionSchema.h).
-  timeStep_ = numberBox("timeStep", simulation_option::kTimeStep);
-  young_ = numberBox("young", material_option::kYoungsModulus);
-  poisson_ = numberBox("poisson", material_option::kPoissonRatio);
-  poisson_->setSingleStep(0.01);
-  poisson_->setStepType(QAbstractSpinBox::DefaultStepType);
-  density_ = numberBox("density", material_option::kDensity);
-  massDamping_ = numberBox("massDamping", material_option::kMassDamping);
-  stiffnessDamping_ = numberBox("stiffnessDamping", material_option::kStiffnessDamping);
+  // The ranges, defaults, labels and tips are those of the options' schema
+  // (OptionSchema.h). (The relative residual each solve reaches: a looser
+  // one is much cheaper for interactive use, doc/benchmarks.md.)
+  tolerance_ = numberBox("tolerance", simulation_option::kTolerance);
+  timeStep_ = numberBox(simulation_option::kTimeStep.key, simulation_option::kTimeStep);
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    material_[i] = numberBox(fields[i].option->key, *fields[i].option);
+    if (fields[i].option == &material_option::kPoissonRatio) {
+      // (Poisson's ratio steps by hundredths, not by a share of its value.)
+      material_[i]->setSingleStep(0.01);
+      material_[i]->setStepType(QAbstractSpinBox::DefaultStepType);
+    }
+  }
   form->addRow("Solver", solver_);
   form->addRow("Tangent", tangent_);
-  form->addRow("Tolerance", tolerance_);
-  form->addRow("Time step (s)", timeStep_);
-  form->addRow("Young's modulus (Pa)", young_);
-  form->addRow("Poisson's ratio", poisson_);
-  form->addRow("Density (kg/m^3)", density_);
-  form->addRow("Mass damping (1/s)", massDamping_);
-  form->addRow("Stiffness damping (s)", stiffnessDamping_);
+  form->addRow(labelOf(simulation_option::kTolerance), tolerance_);
+  form->addRow(labelOf(simulation_option::kTimeStep), timeStep_);
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    form->addRow(labelOf(*fields[i].option), material_[i]);
   layout->addWidget(new QLabel("Changes apply on Reset."));
   layout->addStretch();
 }
@@ -112,20 +107,15 @@ RunRequest SimulationDock::runRequest(int levelNumber) {
   scenarioRows_->fill(level.nodeCount, request);
   request.settings.timeStep = timeStep_->value();
   request.settings.solver = chosen<SolverKind>(solver_);
-  request.settings.tolerance = tolerance_->currentText().toDouble();
+  request.settings.tolerance = tolerance_->value();
   request.settings.tangent = chosen<Tangent>(tangent_);
   // (The fields show the dataset's material after showMaterial: a value
   // left as shown is the config's.)
-  ElasticMaterial shown;
-  shown.youngsModulus = young_->value();
-  shown.poissonRatio = poisson_->value();
-  shown.density = density_->value();
-  shown.massDamping = massDamping_->value();
-  shown.stiffnessDamping = stiffnessDamping_->value();
   const ElasticMaterial& config = scene_.dataset().config.elasticity;
-  for (const MaterialField& field : materialFields())
-    if (shown.*field.field != config.*field.field)
-      request.material.set(*field.option, shown.*field.field);
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (material_[i]->value() != config.*fields[i].field)
+      request.material.set(*fields[i].option, material_[i]->value());
   return request;
 }
 
@@ -134,11 +124,8 @@ RunSpec SimulationDock::runSpec(int levelNumber) {
 }
 
 void SimulationDock::showMaterial(const ElasticMaterial& material) {
-  young_->setValue(material.youngsModulus);
-  poisson_->setValue(material.poissonRatio);
-  density_->setValue(material.density);
-  massDamping_->setValue(material.massDamping);
-  stiffnessDamping_->setValue(material.stiffnessDamping);
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i) material_[i]->setValue(material.*fields[i].field);
 }
 
 void SimulationDock::showPlaying(bool playing) {

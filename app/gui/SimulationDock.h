@@ -7,6 +7,7 @@
 
 #include <QString>
 #include <QWidget>
+#include <array>
 
 #include "Scene.h"
 #include "tetskin/session/RunRequest.h"
@@ -62,8 +63,9 @@ class SimulationDock : public QWidget {
   EnergyPlot* energyPlot_;
   QLabel* supports_;
   ScenarioRows* scenarioRows_;
-  QDoubleSpinBox *timeStep_, *young_, *poisson_, *density_, *massDamping_, *stiffnessDamping_;
-  QComboBox *solver_, *tolerance_, *tangent_;
+  QDoubleSpinBox *timeStep_, *tolerance_;
+  std::array<QDoubleSpinBox*, 5> material_;  // materialFields()' order, named by key
+  QComboBox *solver_, *tangent_;
 };
 
 }  // namespace tetskin::gui

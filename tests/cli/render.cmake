@@ -17,8 +17,8 @@ tetskin_cli_test(render_bad_fur_shells FAIL STATUS 1
   STDERR "^error: --fur-shells: must lie in \\[1, 256\\], found 0\n$"
   ARGS render ${data}/bunny.json --path fur-gpu --fur-shells 0 -o ${cli_out}/badfur.png)
 tetskin_cli_test(render_bad_fur_repeats FAIL STATUS 1
-  STDERR "^error: --fur-repeats: must lie in \\(0, 1000., found 0\n$"  # (. for ']': an unpaired bracket splits CMake lists)
-  ARGS render ${data}/bunny.json --path fur-gpu --fur-repeats 0 -o ${cli_out}/badfur.png)
+  STDERR "^error: --fur-texture-repeats: must lie in \\(0, 1000., found 0\n$"  # (. for ']': an unpaired bracket splits CMake lists)
+  ARGS render ${data}/bunny.json --path fur-gpu --fur-texture-repeats 0 -o ${cli_out}/badfur.png)
 # Values of the wrong type name the option (CLI11 alone: "Could not convert: --fur-fins = 2",
 # and any whole number read as true).
 tetskin_cli_test(render_bad_bool FAIL STATUS 1
@@ -47,7 +47,7 @@ set_tests_properties(cli.render_frames_gpu PROPERTIES LABELS "cli;rendering" RES
 # The scenario options of simulate also shape render's frames, and only those.
 tetskin_cli_test(render_scenario_options STDOUT "3 frames, path cpu.*wrote"
   ARGS render ${data}/bunny.json --surface ${data}/bunny.obj --level 0 --frames 3 --size 160x120
-       --scenario twist --twist-degrees 45 --base 0.2 --fixed-nodes ${tdata}/held_nodes.txt
+       --scenario twist --twist-degrees 45 --base-share 0.2 --fixed-nodes ${tdata}/held_nodes.txt
        -o ${cli_out}/twist45.png)
 set_tests_properties(cli.render_scenario_options PROPERTIES LABELS "cli;rendering" RESOURCE_LOCK x_display)
 # A binding from bind is drawn as it is: an embed binding by gpu-2pass and by
@@ -69,10 +69,10 @@ set_tests_properties(cli.render_embed_binding cli.render_embed_gpu1pass PROPERTI
 # softer body's frames differ from the default one's, the film's rate is 1/dt.
 tetskin_cli_test(render_live_material FRESH ${cli_out}/live_soft
   STDOUT "^5 frames, path cpu, [^\n]*level 0 [^\n]*\n  scenario wobble, 0.02 s per frame, material: E 20000 Pa, nu 0.3, density 100 kg/m\\^3, alpha 0.1, beta 0.01\n.*wrote [^\n]*soft.ogv \\(5 frames at 50 frames/s\\)\n$"
-  ARGS render ${data}/bunny.json --level 0 --frames 5 --young 2e4 --dt 0.02 --size 160x120
+  ARGS render ${data}/bunny.json --level 0 --frames 5 --youngs-modulus 2e4 --time-step 0.02 --size 160x120
        -o ${cli_out}/live_soft/soft.ogv)
 tetskin_cli_test(render_live_soft_image SETUP live_soft_image
-  ARGS render ${data}/bunny.json --level 0 --frames 5 --young 2e4 --size 160x120
+  ARGS render ${data}/bunny.json --level 0 --frames 5 --youngs-modulus 2e4 --size 160x120
        -o ${cli_out}/live_soft.png)
 tetskin_cli_test(render_live_default_image SETUP live_default_image
   STDOUT "material: E 200000 Pa, nu 0.3, density 100"
@@ -86,16 +86,16 @@ set_tests_properties(cli.render_live_material cli.render_live_soft_image
   cli.render_live_default_image cli.render_live_material_shapes_frames PROPERTIES
   LABELS "cli;rendering" RESOURCE_LOCK x_display)
 tetskin_cli_test(render_material_without_frames FAIL STATUS 1
-  STDERR "^error: --young: applies to simulated frames. give --frames N\n$"
+  STDERR "^error: --youngs-modulus: applies to simulated frames. give --frames N\n$"
   NOT_EXIST ${cli_out}/still_soft.png
-  ARGS render ${data}/bunny.json --young 2e4 -o ${cli_out}/still_soft.png)
+  ARGS render ${data}/bunny.json --youngs-modulus 2e4 -o ${cli_out}/still_soft.png)
 tetskin_cli_test(render_time_step_without_frames FAIL STATUS 1
-  STDERR "^error: --dt: applies to simulated frames. give --frames N\n$"
-  ARGS render ${data}/bunny.json --dt 0.01 -o ${cli_out}/still_soft.png)
+  STDERR "^error: --time-step: applies to simulated frames. give --frames N\n$"
+  ARGS render ${data}/bunny.json --time-step 0.01 -o ${cli_out}/still_soft.png)
 tetskin_cli_test(render_bad_material FAIL STATUS 1
-  STDERR "^error: --poisson: Poisson's ratio must lie in \\(-1, 0.5\\), got 0.5\n$"
+  STDERR "^error: --poisson-ratio: Poisson's ratio must lie in \\(-1, 0.5\\), got 0.5\n$"
   NOT_EXIST ${cli_out}/bad_material.ogv
-  ARGS render ${data}/bunny.json --frames 3 --poisson 0.5 -o ${cli_out}/bad_material.ogv)
+  ARGS render ${data}/bunny.json --frames 3 --poisson-ratio 0.5 -o ${cli_out}/bad_material.ogv)
 tetskin_cli_test(render_scenario_without_frames FAIL STATUS 1
   STDERR "^error: --twist-degrees: applies to simulated frames. give --frames N\n$"
   NOT_EXIST ${cli_out}/still45.png
@@ -187,8 +187,8 @@ tetskin_cli_test(render_recorded_run_and_frames FAIL STATUS 1 REQUIRES recorded_
   ARGS render ${data}/bunny.json --run ${cli_out}/recorded/run.pvd --frames 3
        -o ${cli_out}/drawn_other/f.png)
 tetskin_cli_test(render_recorded_run_scenario_option FAIL STATUS 1 REQUIRES recorded_run
-  STDERR "^error: --push: applies to simulated frames. give --frames N \\(--run draws a recorded run as it was simulated\\)\n$"
-  ARGS render ${data}/bunny.json --run ${cli_out}/recorded/run.pvd --push 3
+  STDERR "^error: --push-acceleration: applies to simulated frames. give --frames N \\(--run draws a recorded run as it was simulated\\)\n$"
+  ARGS render ${data}/bunny.json --run ${cli_out}/recorded/run.pvd --push-acceleration 3
        -o ${cli_out}/drawn_other/f.png)
 tetskin_cli_test(render_recorded_run_other_binding FAIL STATUS 1 REQUIRES "recorded_run;embed_binding"
   STDERR "^error: [^\n]*bunny_embed.vtp: is bound to level 0, the run's frames are of level 2: bind the surface to level 2 or give the plain surface\n$"

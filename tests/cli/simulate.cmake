@@ -19,8 +19,8 @@ tetskin_cli_test(too_large_option_value FAIL STATUS 1
   NOT_EXIST ${cli_out}/badsteps.pvd
   ARGS simulate ${data}/bunny.json --steps 3000000000 -o ${cli_out}/badsteps.pvd)
 tetskin_cli_test(nan_time_step FAIL STATUS 1
-  STDERR "^error: --dt: 'nan' is not a finite number \\(see tetskin simulate --help\\)\n$"
-  ARGS simulate ${data}/bunny.json --dt nan -o ${cli_out}/badsteps.pvd)
+  STDERR "^error: --time-step: 'nan' is not a finite number \\(see tetskin simulate --help\\)\n$"
+  ARGS simulate ${data}/bunny.json --time-step nan -o ${cli_out}/badsteps.pvd)
 tetskin_cli_test(unknown_option FAIL STATUS 1
   STDERR "^error: [^\n]*--stepz[^\n]*\\(see tetskin simulate --help\\)\n$"
   ARGS simulate ${data}/bunny.json --stepz 3 -o ${cli_out}/badsteps.pvd)
@@ -28,18 +28,18 @@ tetskin_cli_test(simulate_zero_area_triangle
   STDERR "^warning: [^\n]*zero_area_triangle.obj: 1 triangle of zero area [^\n]*.first: vertex 3.\n$"
   ARGS simulate ${data}/bunny.json --level 0 --surface ${tdata}/zero_area_triangle.obj --steps 1 -q -o ${cli_out}/zero_area_run.pvd)
 tetskin_cli_test(simulate_bad_young FAIL STATUS 1
-  STDERR "^error: --young: '2e5Pa' is not a finite number \\(see tetskin simulate --help\\)\n$"
+  STDERR "^error: --youngs-modulus: '2e5Pa' is not a finite number \\(see tetskin simulate --help\\)\n$"
   NOT_EXIST ${cli_out}/bad_young.pvd
-  ARGS simulate ${data}/bunny.json --young 2e5Pa -o ${cli_out}/bad_young.pvd)
+  ARGS simulate ${data}/bunny.json --youngs-modulus 2e5Pa -o ${cli_out}/bad_young.pvd)
 tetskin_cli_test(simulate_bad_damping FAIL STATUS 1
-  STDERR "^error: --beta: Rayleigh stiffness damping \\(beta\\) must be finite and >= 0, got -0.01\n$"
+  STDERR "^error: --stiffness-damping: Rayleigh stiffness damping \\(beta\\) must be finite and >= 0, got -0.01\n$"
   NOT_EXIST ${cli_out}/bad_damping.pvd
-  ARGS simulate ${data}/bunny.json --beta -0.01 -o ${cli_out}/bad_damping.pvd)
-# Scenario options: held nodes join the scenario's (none here: --base 0),
+  ARGS simulate ${data}/bunny.json --stiffness-damping -0.01 -o ${cli_out}/bad_damping.pvd)
+# Scenario options: held nodes join the scenario's (none here: --base-share 0),
 # gravity and a floor as given.
 tetskin_cli_test(simulate_held_nodes
   STDOUT "scenario sag.*\n  3 of 224 nodes fixed, gravity 0,0,-9.81 m/s\\^2, floor at y = -2\n"
-  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base 0 --fixed-nodes ${tdata}/held_nodes.txt
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base-share 0 --fixed-nodes ${tdata}/held_nodes.txt
        --gravity 0,0,-9.81 --floor -2 --steps 3 -o ${cli_out}/held.pvd -q)
 # A run started from another run's last frame.
 tetskin_cli_test(simulate_first_run SETUP first_run
@@ -94,37 +94,37 @@ tetskin_cli_test(simulate_bad_held_nodes FAIL STATUS 1
   NOT_EXIST ${cli_out}/bad_held.pvd
   ARGS simulate ${data}/bunny.json --level 0 --fixed-nodes ${tdata}/bad_held_nodes.txt -o ${cli_out}/bad_held.pvd)
 tetskin_cli_test(simulate_option_of_another_scenario FAIL STATUS 1
-  STDERR "^error: --push: applies to the wobble scenario, not to drop\n$"
+  STDERR "^error: --push-acceleration: applies to the wobble scenario, not to drop\n$"
   NOT_EXIST ${cli_out}/other.pvd
-  ARGS simulate ${data}/bunny.json --scenario drop --push 3 -o ${cli_out}/other.pvd)
+  ARGS simulate ${data}/bunny.json --scenario drop --push-acceleration 3 -o ${cli_out}/other.pvd)
 tetskin_cli_test(simulate_bad_base FAIL STATUS 1
-  STDERR "^error: --base: 1 is not in .0, 1\\) \\(see tetskin simulate --help\\)\n$"
-  ARGS simulate ${data}/bunny.json --base 1 -o ${cli_out}/bad_base.pvd)
+  STDERR "^error: --base-share: 1 is not in .0, 1\\) \\(see tetskin simulate --help\\)\n$"
+  ARGS simulate ${data}/bunny.json --base-share 1 -o ${cli_out}/bad_base.pvd)
 
 # Solves cut off at the iteration limit are warned of (the run goes on).
 tetskin_cli_test(simulate_iteration_limit
   STDERR "^warning: 2 steps stopped at the iteration limit .2000. with the relative residual above the tolerance 1e-06 .at most [0-9.e+-]+, in step [12].. --solver multigrid needs far fewer iterations on stiff bodies\n$"
   STDOUT "wrote [^\n]*iteration_limit.pvd .3 frames.\n$"
-  ARGS simulate ${data}/bunny.json --level 1 --young 1e13 --poisson 0.499 --solver cg --steps 2 -o ${cli_out}/iteration_limit.pvd)
+  ARGS simulate ${data}/bunny.json --level 1 --youngs-modulus 1e13 --poisson-ratio 0.499 --solver cg --steps 2 -o ${cli_out}/iteration_limit.pvd)
 
 # A run that blows up stops with the step and a node, exit 1, and leaves a
 # .pvd of the frames before it that reads back.
 tetskin_cli_test(simulate_blows_up FAIL STATUS 1 SETUP blown_up_run
   STDERR "^error: the simulation diverged in step 2 \\(t = 0.0333333 s\\): node [0-9]+ would get a position component of [^\n]* m, beyond 1e.30 m. smaller loads or time steps, or a stiffer material, may keep it stable. [^\n]*blown_up.pvd keeps the 2 frame.s. written before it\n$"
-  ARGS simulate ${data}/bunny.json --level 0 --push 1e300 --steps 5 -o ${cli_out}/blown_up.pvd -q)
+  ARGS simulate ${data}/bunny.json --level 0 --push-acceleration 1e300 --steps 5 -o ${cli_out}/blown_up.pvd -q)
 tetskin_cli_test(simulate_output_under_a_file FAIL STATUS 1
   STDERR "^error: [^\n]*triangle.obj/run_frames: Not a directory\n$"
   ARGS simulate ${data}/bunny.json --steps 1 -o ${tdata}/triangle.obj/run.pvd -q)
 tetskin_cli_test(simulate_cantilever REQUIRES cantilever SETUP cantilever_run
   STDOUT "\n  body: [^\n]*, mass 310.231 kg\n  88 of 2471 nodes fixed, gravity 0,-9.81,0 m/s\\^2\n.*\n  supports: reaction [-0-9.e]+,304[34][.][0-9]+,[-0-9.e]+ N in all at the end, on the 88 fixed nodes\n"
-  ARGS simulate ${cli_out}/cantilever.json --scenario sag --base 0 --fixed-box -1,-1,-1,0.04,1,1
-       --young 2e6 --alpha 2 --steps 240 --every 240 -o ${cli_out}/cantilever_run.pvd)
+  ARGS simulate ${cli_out}/cantilever.json --scenario sag --base-share 0 --fixed-box -1,-1,-1,0.04,1,1
+       --youngs-modulus 2e6 --mass-damping 2 --steps 240 --every 240 -o ${cli_out}/cantilever_run.pvd)
 # --fixed-box joins --fixed-nodes (the box holds 20 nodes, two of the
 # file's 3 among them: 21 in all); a box without nodes, or turned inside
 # out, is an error.
 tetskin_cli_test(simulate_fixed_box_and_nodes
   STDOUT "\n  21 of 224 nodes fixed, "
-  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base 0 --fixed-nodes ${tdata}/held_nodes.txt
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base-share 0 --fixed-nodes ${tdata}/held_nodes.txt
        --fixed-box -10,-1,-10,10,0.2,10 --steps 1 -o ${cli_out}/fixed_box.pvd -q)
 tetskin_cli_test(simulate_fixed_box_empty FAIL STATUS 1
   STDERR "^error: --fixed-box: no node of the level lies in 20,0,0 .. 30,1,1 \\(the level spans -4.89157,0.0129493,-3.82186 .. 5.05561,9.49403,3.88938\\)\n$"
@@ -175,7 +175,7 @@ tetskin_cli_test(simulate_auto
 # short of the tolerance loses whatever its time).
 tetskin_cli_test(simulate_auto_incompressible
   STDOUT "auto: multigrid solved ([0-9]|1[0-2]) of 12 steps, cg the rest. [2-5] sample steps of the other solver \\([0-5] cut off at their budget\\), [0-3] changes. preferred at the end: (cg|multigrid)"
-  ARGS simulate ${data}/bunny.json --level 1 --poisson 0.4999 --steps 12 --every 12
+  ARGS simulate ${data}/bunny.json --level 1 --poisson-ratio 0.4999 --steps 12 --every 12
        -o ${cli_out}/auto_incompressible.pvd -q)
 # --log: every step in a table (the start too), for plots of energy,
 # iterations and step times; a run that blows up keeps its steps so far.
@@ -203,7 +203,7 @@ set_tests_properties(cli.simulate_continued_step_log_energies PROPERTIES LABELS 
   FIXTURES_REQUIRED "drop_step_log;continued_step_log")
 tetskin_cli_test(simulate_step_log_blown_up FAIL STATUS 1
   STDERR "blown_up.pvd keeps the 2 frame.s. written before it, [^\n]*blown_up.csv the 1 step.s.\n$"
-  ARGS simulate ${data}/bunny.json --level 0 --push 1e300 --steps 5 --solver cg
+  ARGS simulate ${data}/bunny.json --level 0 --push-acceleration 1e300 --steps 5 --solver cg
        --log ${cli_out}/blown_up.csv -o ${cli_out}/blown_up.pvd -q)
 add_test(NAME cli.simulate_step_log_blown_up_table COMMAND ${CMAKE_COMMAND}
   -DLOG=${cli_out}/blown_up.csv -DSTEPS=1 -P ${CMAKE_CURRENT_SOURCE_DIR}/CheckStepLog.cmake)
@@ -216,16 +216,16 @@ tetskin_cli_test(simulate_step_log_in_a_file FAIL STATUS 1
   STDERR "^error: [^\n]*bunny.obj/steps.csv: cannot be written: [^\n]*bunny.obj is not a folder\n$"
   NOT_EXIST ${cli_out}/log_run.pvd
   ARGS simulate ${data}/bunny.json --log ${data}/bunny.obj/steps.csv -o ${cli_out}/log_run.pvd)
-tetskin_cli_test(simulate_bad_material FAIL STDERR "^error: --poisson: Poisson's ratio must lie in \\(-1, 0.5\\), got 0.5\n$"
+tetskin_cli_test(simulate_bad_material FAIL STDERR "^error: --poisson-ratio: Poisson's ratio must lie in \\(-1, 0.5\\), got 0.5\n$"
   NOT_EXIST ${cli_out}/bad_material.pvd
-  ARGS simulate ${data}/bunny.json --poisson 0.5 -o ${cli_out}/bad_material.pvd)
+  ARGS simulate ${data}/bunny.json --poisson-ratio 0.5 -o ${cli_out}/bad_material.pvd)
 # The material comes from the dataset config's elasticity section; options override it key by key.
 tetskin_cli_test(simulate_config_material
   STDOUT "\n  material: E 2e\\+06 Pa, nu 0.3, density 50 kg/m\\^3, alpha 0.1, beta 0.01\n"
   ARGS simulate ${tdata}/stiff_bunny.json --level 0 --steps 2 -o ${cli_out}/stiff.pvd -q)
 tetskin_cli_test(simulate_option_over_config_material
   STDOUT "\n  material: E 300000 Pa, nu 0.3, density 50 kg/m\\^3, alpha 0, beta 0.01\n"
-  ARGS simulate ${tdata}/stiff_bunny.json --level 0 --young 3e5 --alpha 0 --steps 2
+  ARGS simulate ${tdata}/stiff_bunny.json --level 0 --youngs-modulus 3e5 --mass-damping 0 --steps 2
        -o ${cli_out}/stiff_override.pvd -q)
 tetskin_cli_test(simulate_coarse_reuse STDOUT "simulated 4 steps .*solver multigrid"
   ARGS simulate ${data}/bunny.json --level 1 --solver multigrid --steps 4 --every 4 --coarse-reuse 3
@@ -371,3 +371,12 @@ tetskin_cli_test(simulate_print_run
 tetskin_cli_test(simulate_without_output FAIL STATUS 1
   STDERR "^error: --output is required \\(or --print-run\\)\n$"
   ARGS simulate ${data}/bunny.json --steps 1)
+# One name per option: the flag is the key in kebab case; the old flag is
+# still read, with a warning, and refused beside the new one.
+tetskin_cli_test(simulate_old_flag_warns
+  STDERR "^warning: --alpha: is deprecated, use --mass-damping \\(the same option\\)\n$"
+  STDOUT "\"mass_damping\": 0.25"
+  ARGS simulate ${data}/bunny.json --alpha 0.25 --print-run)
+tetskin_cli_test(simulate_old_and_new_flag FAIL STATUS 1
+  STDERR "^error: --alpha: is the same option as --mass-damping: give one\n$"
+  ARGS simulate ${data}/bunny.json --mass-damping 0.3 --alpha 0.25 --print-run)

@@ -102,7 +102,7 @@ TEST(OptionSchema, MaterialOptionsAreTheMaterialsDefaultsKeysAndChecks) {
 }
 
 TEST(OptionSchema, AnOptionMaySayItsRangeInItsOwnWords) {
-  constexpr NumberOption share{"share", "--share",  "the share", "", between(0, 1, true, false),
+  constexpr NumberOption share{"share", "--share", "", "the share", "", between(0, 1, true, false),
                                0.5,     "in [0, 1)"};
   EXPECT_EQ(*share.problem(1), "the share must be in [0, 1), got 1");
   EXPECT_FALSE(share.problem(0));

@@ -59,8 +59,8 @@ TEST_F(Gui, ABlownUpStepPausesTheSimulationWithItsMessage) {
 // converges there and nothing is said.
 TEST_F(Gui, SolvesStoppedAtTheIterationLimitAreWarnedOf) {
   openSample();
-  child<QDoubleSpinBox>("young")->setValue(1e13);
-  child<QDoubleSpinBox>("poisson")->setValue(0.499);
+  child<QDoubleSpinBox>("youngs_modulus")->setValue(1e13);
+  child<QDoubleSpinBox>("poisson_ratio")->setValue(0.499);
   child<QComboBox>("solver")->setCurrentText("cg");
   QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();

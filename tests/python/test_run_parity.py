@@ -79,8 +79,8 @@ def test_every_front_end_resolves_the_same_run(front_ends, scenario):
 
 
 def test_a_level_and_material_given_resolve_the_same_run(cli):
-    from_cli = json.loads(cli("simulate", DATASET, "--print-run", "--level", "0", "--young",
-                              "1e5", "--dt", "0.01", "--solver", "multigrid", "--base", "0.2"))
+    from_cli = json.loads(cli("simulate", DATASET, "--print-run", "--level", "0", "--youngs-modulus",
+                              "1e5", "--time-step", "0.01", "--solver", "multigrid", "--base-share", "0.2"))
     from_python = tetskin.Simulation(tetskin.load_dataset(DATASET), level=0, youngs_modulus=1e5,
                                      time_step=0.01, solver="multigrid", base_share=0.2).run_spec
     assert differences(from_cli, from_python) == []

@@ -27,10 +27,10 @@ def test_python_matches_the_command_step_for_step(tmp_path, cli, bunny, solver, 
     chosen = {} if levels is None else {"coarse_levels": levels}
     cli("simulate", DATA / "bunny.json", "--level", 1, "--steps", steps, "--solver", solver,
         *([] if levels is None else ["--coarse-levels", levels]),
-        "--young", 4e5, "-o", tmp_path / "run.pvd", "--log", tmp_path / "log.csv", "-q")
+        "--youngs-modulus", 4e5, "-o", tmp_path / "run.pvd", "--log", tmp_path / "log.csv", "-q")
     with open(tmp_path / "log.csv") as f:
         logged = list(csv.DictReader(f))
-    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver=solver, young=4e5, **chosen)
+    sim = tetskin.Simulation(bunny, level=1, scenario="wobble", solver=solver, youngs_modulus=4e5, **chosen)
     np.testing.assert_array_equal(sim.positions, frame_points(tmp_path / "run_frames" / "control_00000.vtu"))
     for k in range(1, steps + 1):
         stats = sim.step()
@@ -186,3 +186,14 @@ def test_ctrl_c_stops_a_long_step_between_steps(bunny):
         sim.step(100000)
     assert 0 < sim.steps < 100000
     sim.step()  # the run goes on from where it stopped
+
+
+def test_an_old_option_name_is_read_with_a_deprecation_warning(bunny):
+    with pytest.warns(DeprecationWarning, match="young: is deprecated, use youngs_modulus"):
+        old = tetskin.Simulation(bunny, level=0, young=1e5).run_spec
+    assert old == tetskin.Simulation(bunny, level=0, youngs_modulus=1e5).run_spec
+    with pytest.raises(tetskin.Error, match="are the same option"):
+        tetskin.Simulation(bunny, level=0, young=1e5, youngs_modulus=1e5)
+    with pytest.raises(tetskin.Error) as error:
+        tetskin.Simulation(bunny, level=0, yung=1e5)
+    assert "young," not in str(error.value) and "youngs_modulus" in str(error.value)

@@ -4,8 +4,14 @@
 // user names options, and the session's one channel of warnings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "BlockRun.h"
 #include "ExpectError.h"
+#include "tetskin/core/Appearance.h"
 #include "tetskin/session/RunRequest.h"
 
 namespace tetskin::test {
@@ -17,6 +23,32 @@ DatasetConfig zUpStiffConfig() {
   config.elasticity.youngsModulus = 3e5;
   config.elasticity.density = 500;
   return config;
+}
+
+// One name per option: a flag is its key in kebab case (after the fur
+// section's prefix), so a config's key, Python's keyword and the command
+// line's flag are one name; an old flag differs from the new one.
+TEST(RunRequest, EveryOptionsFlagIsItsKey) {
+  std::vector<std::pair<const NumberOption*, std::string>> options;
+  for (const MaterialField& f : materialFields()) options.emplace_back(f.option, "--");
+  for (const ScenarioField& f : scenarioFields()) options.emplace_back(f.option, "--");
+  for (const NumberOption* o :
+       {&simulation_option::kTimeStep, &simulation_option::kTolerance,
+        &simulation_option::kGuessSolutions, &simulation_option::kCoarseReuse,
+        &simulation_option::kMaxIterations, &simulation_option::kFriction,
+        &simulation_option::kFloorStiffness})
+    options.emplace_back(o, "--");
+  for (const NumberOption* o :
+       {&fur_option::kShells, &fur_option::kMinShells, &fur_option::kLength, &fur_option::kDensity,
+        &fur_option::kTextureSize, &fur_option::kTextureRepeats, &fur_option::kDrag,
+        &fur_option::kVelvet})
+    options.emplace_back(o, "--fur-");
+  for (const auto& [option, prefix] : options) {
+    std::string kebab = option->key;
+    std::replace(kebab.begin(), kebab.end(), '_', '-');
+    EXPECT_EQ(option->flag, prefix + kebab) << option->key;
+    EXPECT_NE(std::string(option->oldFlag), option->flag) << option->key;
+  }
 }
 
 TEST(RunRequest, DefaultsAreOneSetForEveryFrontEnd) {
@@ -51,7 +83,7 @@ TEST(RunRequest, ErrorsNameTheOptionAsTheFrontEndsUserDoes) {
   RunRequest request;
   request.material.set(material_option::kPoissonRatio, 0.5);
   request.names = OptionNames::Flags;
-  EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("--poisson: "),
+  EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("--poisson-ratio: "),
             std::string::npos);
   request.names = OptionNames::Keys;
   EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("poisson_ratio: "),

@@ -11,25 +11,13 @@
 #include "tetskin/core/NumberText.h"
 
 namespace tetskin::python {
-namespace {
-
-// "--push-frequency" -> "push_frequency"; "" for an option without a flag.
-std::string flagName(const char* flag) {
-  std::string name(flag);
-  while (!name.empty() && name.front() == '-') name.erase(name.begin());
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
-}
-
-}  // namespace
 
 // (A copy: reading a keyword removes it, and the caller may ask what it was given.)
 Keywords::Keywords(const py::kwargs& kwargs, std::string call)
     : given_(kwargs.attr("copy")()), call_(std::move(call)) {}
 
-std::optional<py::object> Keywords::take(const char* key) {
-  known_.insert(key);
+std::optional<py::object> Keywords::take(const char* key, bool listedAsKnown) {
+  if (listedAsKnown) known_.insert(key);
   if (!given_.contains(key)) return std::nullopt;
   py::object value = given_[key];
   PyDict_DelItemString(given_.ptr(), key);
@@ -38,16 +26,21 @@ std::optional<py::object> Keywords::take(const char* key) {
 
 std::optional<double> Keywords::number(const NumberOption& option) {
   std::optional<py::object> value = take(option.key);
-  const std::string flag = flagName(option.flag);
   std::string name = option.key;
-  if (!flag.empty() && flag != option.key) {
-    std::optional<py::object> byFlag = take(flag.c_str());
-    if (value && byFlag)
-      throw Error(call_ + ": " + option.key + " and " + flag + " are the same option: give one");
-    if (byFlag) {
-      value = byFlag;
-      name = flag;
-    }
+  // The flag's name where it is not the key (fur_length for the fur
+  // section's length), and the old flag's, with a warning.
+  for (const std::string& other : {keywordOf(option.flag), keywordOf(option.oldFlag)}) {
+    if (other.empty() || other == option.key) continue;
+    const bool old = other == keywordOf(option.oldFlag);
+    std::optional<py::object> byOther = take(other.c_str(), !old);
+    if (value && byOther)
+      throw Error(call_ + ": " + name + " and " + other + " are the same option: give one");
+    if (!byOther) continue;
+    value = byOther;
+    name = other;
+    if (old &&
+        PyErr_WarnEx(PyExc_DeprecationWarning, deprecatedName(other, option.key).c_str(), 1) != 0)
+      throw py::error_already_set();
   }
   if (!value) return std::nullopt;
   if (py::isinstance<py::bool_>(*value) ||

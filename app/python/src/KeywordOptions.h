@@ -45,8 +45,9 @@ class Keywords {
       throw Error(call_ + ": " + key + ": " + e.what());
     }
   }
-  // Any other keyword's value, nullopt when not given.
-  std::optional<py::object> take(const char* key);
+  // Any other keyword's value, nullopt when not given. (`listedAsKnown`:
+  // whether an unknown keyword's error offers it: an old name is not.)
+  std::optional<py::object> take(const char* key, bool listedAsKnown = true);
   // Whether `key` was given (and not taken yet).
   bool given(const char* key) const { return given_.contains(key); }
   // Error naming the keywords not read: "simulation: unknown option 'yung'

@@ -111,13 +111,13 @@ void addSimulationApi(py::module_& m) {
            "(None: the default, as in every front end), 'drop', 'twist' or 'sag' (a free body: "
            "sag with base_share=0). Warnings of the run (nodes starting below the floor, solves "
            "stopped at the iteration limit) come as Python UserWarnings. "
-           "Keyword options as `tetskin simulate`'s, by config key or flag name: the material "
-           "(youngs_modulus/young, poisson_ratio/poisson, density, mass_damping/alpha, "
-           "stiffness_damping/beta; default the dataset config's), time_step/dt, solver "
+           "Keyword options as `tetskin simulate`'s, by config key (the flag, - as _): the "
+           "material (youngs_modulus, poisson_ratio, density, mass_damping, stiffness_damping; "
+           "default the dataset config's), time_step, solver "
            "('auto', 'cg', 'multigrid'), tolerance, tangent, coarse_operators, coarse_levels, "
            "coarse_reuse, guess_solutions, max_iterations, friction, floor_stiffness, up, "
-           "gravity, floor_height, the scenario's numbers (base_share/base, "
-           "push_acceleration/push, push_frequency, drop_height, twist_degrees, twist_seconds), "
+           "gravity, floor_height, the scenario's numbers (base_share, "
+           "push_acceleration, push_frequency, drop_height, twist_degrees, twist_seconds), "
            "held_nodes, fixed_box ((2, 3): min and max corners), loads, load_seconds, load_curve "
            "((k, 2): time, factor).")
       .def("step", &step, py::arg("n") = 1,

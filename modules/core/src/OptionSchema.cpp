@@ -32,4 +32,16 @@ std::optional<std::string> NumberOption::problem(double value) const {
   return std::string(what) + " " + words + ", got " + formatNumber(value);
 }
 
+std::string deprecatedName(const std::string& oldName, const std::string& name) {
+  return oldName + ": is deprecated, use " + name + " (the same option)";
+}
+
+std::string keywordOf(std::string_view flag) {
+  std::string name(flag);
+  while (!name.empty() && name.front() == '-') name.erase(name.begin());
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
 }  // namespace tetskin

@@ -36,42 +36,61 @@ struct EnumSchema<FurLighting> {
 // GUI's View dock.
 namespace fur_option {
 inline constexpr NumberOption kShells{
-    "shells", "--fur-shells", "fur shells", "most shells drawn", between(1, 256), 16};
+    "shells", "--fur-shells", "", "fur shells", "most shells drawn", between(1, 256), 16};
 inline constexpr NumberOption kLength{"length",
                                       "--fur-length",
+                                      "",
                                       "fur length",
                                       "fur length / bounding-box diagonal",
                                       between(0, 1, false, true),
                                       0.03};
 inline constexpr NumberOption kDensity{
-    "density", "--fur-density", "fur density", "share of texels with a hair", between(0, 1), 0.6};
-inline constexpr NumberOption kTextureSize{"texture_size",     "--fur-texture-size",
-                                           "fur texture size", "fur texture edge in texels",
-                                           between(8, 4096),   128};
+    "density", "--fur-density", "", "fur density", "share of texels with a hair", between(0, 1),
+    0.6};
+inline constexpr NumberOption kTextureSize{"texture_size",
+                                           "--fur-texture-size",
+                                           "",
+                                           "fur texture size",
+                                           "fur texture edge in texels",
+                                           between(8, 4096),
+                                           128};
 inline constexpr NumberOption kTextureRepeats{"texture_repeats",
+                                              "--fur-texture-repeats",
                                               "--fur-repeats",
                                               "fur texture repeats",
                                               "fur texture tiles across the diagonal",
                                               between(0, 1000, false, true),
                                               6};
 inline constexpr NumberOption kRootShade{
-    "root_shade",  "",  "fur root shade", "brightness at the root (self-shadowing)",
+    "root_shade",  "",  "", "fur root shade", "brightness at the root (self-shadowing)",
     between(0, 1), 0.35};
-inline constexpr NumberOption kDrag{
-    "drag",         "--fur-drag", "fur drag", "seconds of velocity the tips trail by (0: static)",
-    between(0, 10), 0.04};
+inline constexpr NumberOption kDrag{"drag",
+                                    "--fur-drag",
+                                    "",
+                                    "fur drag",
+                                    "seconds of velocity the tips trail by (0: static)",
+                                    between(0, 10),
+                                    0.04};
 inline constexpr NumberOption kMaxBend{
-    "max_bend", "", "fur bend", "largest tip shift, in fur lengths", between(0, 1), 0.6};
-inline constexpr NumberOption kVelvet{"velvet",      "--fur-velvet",
-                                      "velvet",      "highlight offset off the mirror direction",
-                                      between(0, 1), 0.5};
+    "max_bend", "", "", "fur bend", "largest tip shift, in fur lengths", between(0, 1), 0.6};
+inline constexpr NumberOption kVelvet{"velvet",
+                                      "--fur-velvet",
+                                      "",
+                                      "velvet",
+                                      "highlight offset off the mirror direction",
+                                      between(0, 1),
+                                      0.5};
 inline constexpr NumberOption kBaseDarkening{
-    "base_darkening", "",  "base darkening", "brightness of the skin under the fur",
+    "base_darkening", "",  "", "base darkening", "brightness of the skin under the fur",
     between(0, 1),    0.55};
 // At most `shells` (furParameterProblem checks [1, shells]).
-inline constexpr NumberOption kMinShells{"min_shells",        "--fur-min-shells",
-                                         "fewest fur shells", "fewest shells when adaptive",
-                                         between(1, 256),     4};
+inline constexpr NumberOption kMinShells{"min_shells",
+                                         "--fur-min-shells",
+                                         "",
+                                         "fewest fur shells",
+                                         "fewest shells when adaptive",
+                                         between(1, 256),
+                                         4};
 }  // namespace fur_option
 
 // The `fur` section; JSON keys in snake_case. Only `enabled`, `shells`,

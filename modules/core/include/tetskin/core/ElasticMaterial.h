@@ -16,22 +16,29 @@ namespace tetskin {
 // ranges and defaults.
 namespace material_option {
 // The default: the bunny (10 m, 100 kg/m^3) sags about 5% under gravity.
-inline constexpr NumberOption kYoungsModulus{"youngs_modulus",      "--young", "Young's modulus",
-                                             "Young's modulus, Pa", above(0),  2.0e5};
+inline constexpr NumberOption kYoungsModulus{
+    "youngs_modulus",      "--youngs-modulus", "--young", "Young's modulus",
+    "Young's modulus, Pa", above(0),           2.0e5};
 // (-1, 0.5): where isotropic linear elasticity is positive definite;
 // negative ratios are auxetic materials.
 inline constexpr NumberOption kPoissonRatio{"poisson_ratio",
+                                            "--poisson-ratio",
                                             "--poisson",
                                             "Poisson's ratio",
                                             "Poisson's ratio, in (-1, 0.5)",
                                             between(-1, 0.5, false, false),
                                             0.3};
-inline constexpr NumberOption kDensity{"density",         "--density", "density",
+inline constexpr NumberOption kDensity{"density",         "--density", "",   "density",
                                        "density, kg/m^3", above(0),    100.0};
-inline constexpr NumberOption kMassDamping{
-    "mass_damping", "--alpha", "Rayleigh mass damping (alpha)", "Rayleigh mass damping, 1/s",
-    atLeast(0),     0.1};
+inline constexpr NumberOption kMassDamping{"mass_damping",
+                                           "--mass-damping",
+                                           "--alpha",
+                                           "Rayleigh mass damping (alpha)",
+                                           "Rayleigh mass damping, 1/s",
+                                           atLeast(0),
+                                           0.1};
 inline constexpr NumberOption kStiffnessDamping{"stiffness_damping",
+                                                "--stiffness-damping",
                                                 "--beta",
                                                 "Rayleigh stiffness damping (beta)",
                                                 "Rayleigh stiffness damping, s",

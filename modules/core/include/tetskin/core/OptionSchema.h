@@ -155,13 +155,18 @@ constexpr NumberRange between(double min, double max, bool minIncluded = true,
 enum class OptionNames { Flags, Keys, Words };
 
 // A number option of a run: its key (snake_case: a config's, Python's), its
-// command-line flag ("" where the command line has none), its name in
-// messages, its help (--help, tool tips), its range and its default.
+// command-line flag (the key in kebab case, after a section's prefix:
+// --poisson-ratio, --fur-length; "" where the command line has none), the
+// flag it had before flag and key agreed ("" for none: the command line and
+// Python still read it, with a warning, as F3D marks deprecated options),
+// its name in messages, its help (--help, tool tips), its range and its
+// default.
 struct NumberOption {
   const char* key;
   const char* flag;
-  const char* what;  // "Poisson's ratio"
-  const char* help;  // "Poisson's ratio, in (-1, 0.5)"
+  const char* oldFlag;  // "--poisson": read, with a warning
+  const char* what;     // "Poisson's ratio"
+  const char* help;     // "Poisson's ratio, in (-1, 0.5)"
   NumberRange range;
   double defaultValue;
   // What an error says of the range, where it is not range.words():
@@ -172,5 +177,14 @@ struct NumberOption {
   // is in the range.
   std::optional<std::string> problem(double value) const;
 };
+
+// "--old: is deprecated, use --new (the same option)": the warning an old
+// name's use gets, `oldName` and `name` as the front end's user writes
+// them.
+std::string deprecatedName(const std::string& oldName, const std::string& name);
+
+// "--push-frequency" -> "push_frequency": a flag as Python's keyword (""
+// for "").
+std::string keywordOf(std::string_view flag);
 
 }  // namespace tetskin

@@ -27,6 +27,7 @@ namespace tetskin {
 namespace scenario_option {
 inline constexpr NumberOption kBaseShare{
     "base_share",
+    "--base-share",
     "--base",
     "the base share",
     "wobble, twist, sag: hold the nodes in this lowest share of the height still (0: none)",
@@ -34,27 +35,43 @@ inline constexpr NumberOption kBaseShare{
     0.1,
     "in [0, 1)"};
 inline constexpr NumberOption kPushAcceleration{
-    "push_acceleration",     "--push",
-    "the push acceleration", "wobble: peak sideways acceleration of the push, m/s^2",
-    NumberRange{},           15};
+    "push_acceleration",
+    "--push-acceleration",
+    "--push",
+    "the push acceleration",
+    "wobble: peak sideways acceleration of the push, m/s^2",
+    NumberRange{},
+    15};
 inline constexpr NumberOption kPushFrequency{"push_frequency",
                                              "--push-frequency",
+                                             "",
                                              "the push frequency",
                                              "wobble: push frequency, Hz",
                                              above(0),
                                              1.0,
                                              "finite and > 0"};
 inline constexpr NumberOption kDropHeight{
-    "drop_height",     "--drop-height",
-    "the drop height", "drop: start this share of the body's height above the floor",
-    atLeast(0),        0.3};
-inline constexpr NumberOption kTwistDegrees{
-    "twist_degrees",   "--twist-degrees",
-    "the twist angle", "twist: final angle of the top, degrees",
-    NumberRange{},     90};
-inline constexpr NumberOption kTwistSeconds{"twist_seconds",  "--twist-seconds",
-                                            "the twist time", "twist: seconds to reach it",
-                                            above(0),         1.0,
+    "drop_height",
+    "--drop-height",
+    "",
+    "the drop height",
+    "drop: start this share of the body's height above the floor",
+    atLeast(0),
+    0.3};
+inline constexpr NumberOption kTwistDegrees{"twist_degrees",
+                                            "--twist-degrees",
+                                            "",
+                                            "the twist angle",
+                                            "twist: final angle of the top, degrees",
+                                            NumberRange{},
+                                            90};
+inline constexpr NumberOption kTwistSeconds{"twist_seconds",
+                                            "--twist-seconds",
+                                            "",
+                                            "the twist time",
+                                            "twist: seconds to reach it",
+                                            above(0),
+                                            1.0,
                                             "finite and > 0"};
 }  // namespace scenario_option
 

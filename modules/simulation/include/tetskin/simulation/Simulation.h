@@ -94,9 +94,11 @@ inline constexpr double kStandardGravity = 9.81;  // m/s^2
 // command line and the GUI.
 namespace simulation_option {
 inline constexpr NumberOption kTimeStep{
-    "time_step", "--dt", "the time step", "seconds per implicit step", above(0), 1.0 / 60.0};
+    "time_step", "--time-step", "--dt", "the time step", "seconds per implicit step",
+    above(0),    1.0 / 60.0};
 inline constexpr NumberOption kTolerance{"tolerance",
                                          "--tolerance",
+                                         "",
                                          "the solver tolerance (a relative residual)",
                                          "relative residual of each solve",
                                          between(0, 1, false, false),
@@ -105,6 +107,7 @@ inline constexpr NumberOption kTolerance{"tolerance",
 inline constexpr NumberOption kGuessSolutions{
     "guess_solutions",
     "--guess-solutions",
+    "",
     "the initial guess's solutions",
     "start each solve from the best combination of the last N solutions (0: from the last one "
     "as it is)",
@@ -113,18 +116,28 @@ inline constexpr NumberOption kGuessSolutions{
 inline constexpr NumberOption kCoarseReuse{
     "coarse_reuse",
     "--coarse-reuse",
+    "",
     "the coarse-operator reuse",
     "multigrid: rebuild the coarse operators every N steps (solves stay exact)",
     atLeast(1),
     4};
-inline constexpr NumberOption kMaxIterations{
-    "max_iterations", "",  "the solver's iteration limit", "CG iterations per solve at most",
-    atLeast(1),       2000};
-inline constexpr NumberOption kFriction{
-    "friction",    "", "friction", "share of tangential velocity lost in floor contact",
-    between(0, 1), 0.3};
+inline constexpr NumberOption kMaxIterations{"max_iterations",
+                                             "--max-iterations",
+                                             "",
+                                             "the solver's iteration limit",
+                                             "CG iterations per solve at most",
+                                             atLeast(1),
+                                             2000};
+inline constexpr NumberOption kFriction{"friction",
+                                        "--friction",
+                                        "",
+                                        "friction",
+                                        "share of tangential velocity lost in floor contact",
+                                        between(0, 1),
+                                        0.3};
 inline constexpr NumberOption kFloorStiffness{
     "floor_stiffness",
+    "--floor-stiffness",
     "",
     "the floor stiffness (0: automatic)",
     "floor penalty stiffness, N/m; 0: stiff enough for the mesh",
