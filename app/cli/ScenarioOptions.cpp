@@ -93,12 +93,12 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
   request.scenario = a.name;
   ScenarioParameters& p = request.parameters;
   p = a.parameters;
-  if (!a.fixedNodes.empty()) p.heldNodes = readNodeList(a.fixedNodes, nodeCount);
+  if (!a.fixedNodes.empty()) p.fixedNodes = readNodeList(a.fixedNodes, nodeCount);
   if (a.fixedBox.size() == 6) {
     BoundingBox box;
     box.min = {a.fixedBox[0], a.fixedBox[1], a.fixedBox[2]};
     box.max = {a.fixedBox[3], a.fixedBox[4], a.fixedBox[5]};
-    request.heldBox = box;
+    request.fixedBox = box;
   }
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);

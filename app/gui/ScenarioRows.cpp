@@ -171,14 +171,14 @@ void ScenarioRows::fill(Index nodeCount, RunRequest& request) const {
   p.twistDegrees = twistDegrees_->value();
   p.twistSeconds = twistSeconds_->value();
   if (!fixedNodes_->text().isEmpty())
-    p.heldNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
+    p.fixedNodes = readNodeList(fixedNodes_->text().toStdString(), nodeCount);
   if (fixedBox_->isChecked()) {
     BoundingBox box;
     for (int i = 0; i < 3; ++i) {
       box.min[i] = boxMin_[i]->value();
       box.max[i] = boxMax_[i]->value();
     }
-    request.heldBox = box;
+    request.fixedBox = box;
   }
   if (!loads_->text().isEmpty()) p.loads = readNodeForces(loads_->text().toStdString(), nodeCount);
   if (!loadCurve_->text().isEmpty()) p.loadCurve = readLoadCurve(loadCurve_->text().toStdString());

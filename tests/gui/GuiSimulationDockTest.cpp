@@ -161,7 +161,8 @@ TEST_F(Gui, SimulationHoldsTheNodesInTheFixedBox) {
   ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
   const std::vector<int> inBox = pointsInBox(rest, box);
   ASSERT_GT(inBox.size(), 3u);
-  EXPECT_EQ(window_->runner()->simulation().fixedNodes(), heldWithNodesInBox({0, 1, 2}, rest, box));
+  EXPECT_EQ(window_->runner()->simulation().fixedNodes(),
+            fixedWithNodesInBox({0, 1, 2}, rest, box));
   EXPECT_EQ(child<QDoubleSpinBox>("fixedBoxMaxx")->value(), box.max.x());  // kept on Reset
 
   child<QDoubleSpinBox>("fixedBoxMinx")->setValue(extent.max.x() + 1);

@@ -154,7 +154,7 @@ def test_a_step_runs_while_another_thread_reads(bunny):
         ({"drop_height": 0.5}, "drop_height: applies to the drop scenario, not to wobble"),
         ({"dt": -1}, "dt: the time step must be"),
         ({"guess_solutions": 2.5}, "guess_solutions: expected a whole number"),
-        ({"held_nodes": [10**6]}, "held_nodes: 1000000 is no node of"),
+        ({"fixed_nodes": [10**6]}, "fixed_nodes: 1000000 is no node of"),
         ({"loads": np.zeros((3, 3))}, "loads: expected one row per node"),
         ({"young": "soft"}, "young: expected a number, got str"),
         ({"coarse_levels": "octree"}, "coarse_levels: unknown coarse levels 'octree' (known: grid, dataset)"),
@@ -197,3 +197,6 @@ def test_an_old_option_name_is_read_with_a_deprecation_warning(bunny):
     with pytest.raises(tetskin.Error) as error:
         tetskin.Simulation(bunny, level=0, yung=1e5)
     assert "young," not in str(error.value) and "youngs_modulus" in str(error.value)
+    with pytest.warns(DeprecationWarning, match="held_nodes: is deprecated, use fixed_nodes"):
+        held = tetskin.Simulation(bunny, level=0, held_nodes=[0, 1]).run_spec
+    assert held["parameters"]["fixed_nodes"] == [0, 1]

@@ -89,9 +89,9 @@ TEST(RunRequest, ErrorsNameTheOptionAsTheFrontEndsUserDoes) {
   EXPECT_NE(errorText([&] { resolveRun(request, uprightBlock(), {}); }).find("poisson_ratio: "),
             std::string::npos);
   RunRequest box;
-  box.heldBox = BoundingBox{};
-  box.heldBox->min = {5, 5, 5};
-  box.heldBox->max = {6, 6, 6};
+  box.fixedBox = BoundingBox{};
+  box.fixedBox->min = {5, 5, 5};
+  box.fixedBox->max = {6, 6, 6};
   box.names = OptionNames::Words;
   EXPECT_EQ(errorText([&] { resolveRun(box, uprightBlock(), {}); }).rfind("the fixed box: ", 0),
             0u);
@@ -107,16 +107,16 @@ TEST(RunRequest, AHeldBoxAddsTheNodesInside) {
   RunRequest request;
   request.scenario = "sag";
   request.parameters.baseShare = 0;
-  request.parameters.heldNodes = {0};
-  request.heldBox = BoundingBox{};
-  request.heldBox->min = {-1, 0.35, -1};  // the block's top layer (y = 0.4)
-  request.heldBox->max = {1, 1, 1};
+  request.parameters.fixedNodes = {0};
+  request.fixedBox = BoundingBox{};
+  request.fixedBox->min = {-1, 0.35, -1};  // the block's top layer (y = 0.4)
+  request.fixedBox->max = {1, 1, 1};
   const MultiLevelTetMesh mesh = uprightBlock();
   const RunSpec spec = resolveRun(request, mesh, {});
   std::vector<int> expected = {0};
   for (Index i = 0; i < mesh.nodes.rows(); ++i)
     if (mesh.nodes(i, 1) >= 0.35) expected.push_back(static_cast<int>(i));
-  EXPECT_EQ(spec.parameters.heldNodes, expected);
+  EXPECT_EQ(spec.parameters.fixedNodes, expected);
 }
 
 TEST(RunRequest, WarningsComeOnceThroughTheSession) {

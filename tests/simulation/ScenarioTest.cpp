@@ -105,7 +105,7 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
   rest.nodes.col(1).maxCoeff(&top);
   rest.nodes.col(1).minCoeff(&bottom);
   ScenarioParameters held;
-  held.heldNodes = {static_cast<int>(top)};
+  held.fixedNodes = {static_cast<int>(top)};
   for (const std::string& name : scenarioNames()) {
     Simulation sim(d.mesh, 0, scenarioOptions(name, SimulationOptions{}, rest));
     auto scenario = makeScenario(name, held);
@@ -183,7 +183,7 @@ TEST(Simulation, ScenarioParametersHoldNodesAndScaleThePush) {
     EXPECT_THROW(makeScenario("wobble", p), Error);
   }
   ScenarioParameters missing;
-  missing.heldNodes = {static_cast<int>(rest.nodeCount())};
+  missing.fixedNodes = {static_cast<int>(rest.nodeCount())};
   Simulation sim(d.mesh, 0, SimulationOptions{});
   EXPECT_THROW(makeScenario("sag", missing)->setUp(sim), Error);
 }
@@ -261,24 +261,24 @@ TEST(Simulation, HeldNodesInABoxJoinTheHeldOnes) {
   BoundingBox end;
   end.min = {-1, -1, -1};
   end.max = {0, 5, 5};  // the face x = 0: 4 nodes
-  const std::vector<int> box = heldWithNodesInBox({}, block.nodes, end);
+  const std::vector<int> box = fixedWithNodesInBox({}, block.nodes, end);
   ASSERT_EQ(box.size(), 4u);
   for (int node : box) EXPECT_EQ(block.nodes(node, 0), 0.0);
   EXPECT_TRUE(std::is_sorted(box.begin(), box.end()));
   const int other = static_cast<int>(block.nodeCount()) - 1;  // at x = 2
   std::vector<int> withOther = box;
   withOther.push_back(other);
-  EXPECT_EQ(heldWithNodesInBox({box[1], other}, block.nodes, end), withOther);
+  EXPECT_EQ(fixedWithNodesInBox({box[1], other}, block.nodes, end), withOther);
 
   BoundingBox outside;
   outside.min = {3, 0, 0};
   outside.max = {4, 1, 1};
-  EXPECT_EQ(test::errorText([&] { heldWithNodesInBox({}, block.nodes, outside); }),
+  EXPECT_EQ(test::errorText([&] { fixedWithNodesInBox({}, block.nodes, outside); }),
             "no node of the level lies in 3,0,0 .. 4,1,1 (the level spans 0,0,0 .. 2,1,1)");
   BoundingBox insideOut;
   insideOut.min = {1, 0, 0};
   insideOut.max = {0, 1, 1};
-  EXPECT_EQ(test::errorText([&] { heldWithNodesInBox({}, block.nodes, insideOut); }),
+  EXPECT_EQ(test::errorText([&] { fixedWithNodesInBox({}, block.nodes, insideOut); }),
             "its minimum 1,0,0 exceeds its maximum 0,1,1 along an axis");
 }
 

@@ -60,7 +60,7 @@ inline std::vector<Index> freeEnd(const TetMesh& beam) {
 inline ScenarioParameters tipLoaded(const TetMesh& beam, double P) {
   ScenarioParameters p;
   p.baseShare = 0;
-  p.heldNodes = nodesWithXBelow(beam, 1e-9);
+  p.fixedNodes = nodesWithXBelow(beam, 1e-9);
   p.loads = Points3::Zero(beam.nodeCount(), 3);
   const std::vector<Index> end = freeEnd(beam);
   for (Index v : end) p.loads(v, 1) = -P / static_cast<double>(end.size());

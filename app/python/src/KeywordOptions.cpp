@@ -113,8 +113,17 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
       p.*f.field = *value;
     }
   const std::string level = "the level (" + std::to_string(levelNodes) + " nodes)";
-  if (const auto held = k.take("held_nodes"))
-    p.heldNodes = idList(*held, "held_nodes", levelNodes, level);
+  // (held_nodes: the old name, as --fixed-nodes named them on the command
+  // line all along; read with a warning.)
+  std::optional<py::object> fixed = k.take("fixed_nodes");
+  if (const auto old = k.take("held_nodes", false)) {
+    if (fixed) throw Error(k.call() + ": fixed_nodes and held_nodes are the same option: give one");
+    if (PyErr_WarnEx(PyExc_DeprecationWarning, deprecatedName("held_nodes", "fixed_nodes").c_str(),
+                     1) != 0)
+      throw py::error_already_set();
+    fixed = old;
+  }
+  if (fixed) p.fixedNodes = idList(*fixed, "fixed_nodes", levelNodes, level);
   if (const auto box = k.take("fixed_box")) {
     const Points3 corners = points3(*box, "fixed_box");
     if (corners.rows() != 2)
@@ -123,7 +132,7 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
     BoundingBox held;
     held.min = corners.row(0).transpose();
     held.max = corners.row(1).transpose();
-    r.heldBox = held;
+    r.fixedBox = held;
   }
   if (const auto loads = k.take("loads")) {
     p.loads = points3(*loads, "loads");

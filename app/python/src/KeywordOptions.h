@@ -69,7 +69,7 @@ class Keywords {
 RunRequest runRequest(Keywords& keywords);
 // The request's scenario parameters (for its scenario, on a level of
 // `levelNodes` nodes): its numbers (base_share or base, ...; refused for a
-// scenario that does not read them, as on the command line), held_nodes,
+// scenario that does not read them, as on the command line), fixed_nodes,
 // fixed_box ((2, 3): min and max corners), loads ((n, 3) newtons on the
 // level's nodes), load_seconds and load_curve ((k, 2): time in s, factor).
 void readScenarioParameters(Keywords& keywords, Index levelNodes, RunRequest& request);

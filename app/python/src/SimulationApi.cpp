@@ -118,7 +118,7 @@ void addSimulationApi(py::module_& m) {
            "coarse_reuse, guess_solutions, max_iterations, friction, floor_stiffness, up, "
            "gravity, floor_height, the scenario's numbers (base_share, "
            "push_acceleration, push_frequency, drop_height, twist_degrees, twist_seconds), "
-           "held_nodes, fixed_box ((2, 3): min and max corners), loads, load_seconds, load_curve "
+           "fixed_nodes, fixed_box ((2, 3): min and max corners), loads, load_seconds, load_curve "
            "((k, 2): time, factor).")
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "

@@ -20,7 +20,7 @@ std::string nameOf(const NumberOption& option, OptionNames names) {
   return option.what;
 }
 
-std::string heldBoxName(OptionNames names) {
+std::string fixedBoxName(OptionNames names) {
   switch (names) {
     case OptionNames::Flags:
       return "--fixed-box";
@@ -81,14 +81,14 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
   if (request.gravity) spec.options.gravity = *request.gravity;
   spec.options.floorHeight = request.floorHeight;
   spec.parameters = request.parameters;
-  if (request.heldBox) {
+  if (request.fixedBox) {
     const LevelRange& level = mesh.levels[static_cast<std::size_t>(request.level)];
     const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);
     try {
-      spec.parameters.heldNodes =
-          heldWithNodesInBox(spec.parameters.heldNodes, restNodes, *request.heldBox);
+      spec.parameters.fixedNodes =
+          fixedWithNodesInBox(spec.parameters.fixedNodes, restNodes, *request.fixedBox);
     } catch (const Error& e) {
-      throw Error(heldBoxName(request.names) + ": " + e.what());
+      throw Error(fixedBoxName(request.names) + ": " + e.what());
     }
   }
   return spec;

@@ -24,7 +24,7 @@ nlohmann::json rows(const Points3& points) {
 nlohmann::json parametersJson(const ScenarioParameters& p) {
   nlohmann::json out;
   for (const ScenarioField& f : scenarioFields()) out[f.option->key] = p.*f.field;
-  out["held_nodes"] = p.heldNodes;
+  out["fixed_nodes"] = p.fixedNodes;
   out["loads"] = rows(p.loads);
   nlohmann::json curve = nlohmann::json::array();
   for (const LoadCurve::Point& point : p.loadCurve.points())

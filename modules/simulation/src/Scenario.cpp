@@ -145,7 +145,7 @@ void Scenario::setUp(Simulation& sim) {
     throw Error("the loads are for " + std::to_string(p_.loads.rows()) +
                 " nodes, but the level has " + std::to_string(sim.restMesh().nodeCount()));
   std::vector<int> fixed = prepare(sim);
-  fixed.insert(fixed.end(), p_.heldNodes.begin(), p_.heldNodes.end());
+  fixed.insert(fixed.end(), p_.fixedNodes.begin(), p_.fixedNodes.end());
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   sim.setFixedNodes(fixed);
@@ -161,8 +161,8 @@ void Scenario::beforeStep(Simulation& sim, double time) {
   sim.setExternalForces(forces_);
 }
 
-std::vector<int> heldWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
-                                    const BoundingBox& box) {
+std::vector<int> fixedWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
+                                     const BoundingBox& box) {
   if (box.empty())
     throw Error("its minimum " + commaSeparated(box.min) + " exceeds its maximum " +
                 commaSeparated(box.max) + " along an axis");

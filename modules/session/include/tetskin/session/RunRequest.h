@@ -52,9 +52,9 @@ struct RunRequest {
   int level = 0;                        // a resolved level of the dataset
   std::string scenario = kDefaultScenario;
   // The scenario's numbers, the held node ids, the loads, their curve and
-  // seconds (Scenario.h); the nodes in heldBox are held too.
+  // seconds (Scenario.h); the nodes in fixedBox are held too.
   ScenarioParameters parameters;
-  std::optional<BoundingBox> heldBox;
+  std::optional<BoundingBox> fixedBox;
   OptionNames names = OptionNames::Keys;  // how errors name the options
   MaterialOverrides material;
   std::optional<UpAxis> up;                // nullopt: the dataset config's

@@ -10,7 +10,7 @@
 // "poisson_ratio", ...), enums their schema names ("auto", "full"). Output
 // (one JSON object, keys sorted, 2-space indent):
 //   dataset, level, scenario
-//   parameters: the scenario's numbers by key, held_nodes (ids), loads
+//   parameters: the scenario's numbers by key, fixed_nodes (ids), loads
 //     (nodeCount x 3 rows, N; [] for none), load_curve ({points: [[t, f]],
 //     after: "hold"|"repeat"}), load_seconds (null: for ever)
 //   options: material (by key), time_step, gravity [x, y, z] (m/s^2), up,

@@ -86,10 +86,10 @@ struct ScenarioParameters {
   // twist: final angle of the top (degrees) and the time to reach it (s)
   double twistDegrees = scenario_option::kTwistDegrees.defaultValue;
   double twistSeconds = scenario_option::kTwistSeconds.defaultValue;
-  std::vector<int> heldNodes;  // every scenario: also fixed (the level's node ids)
-  Points3 loads;               // every scenario: a force on each node of the level
-                               // (N; nodeCount rows), or empty for none
-  LoadCurve loadCurve;         // scales the loads over time (empty: by 1)
+  std::vector<int> fixedNodes;  // every scenario: also fixed (the level's node ids)
+  Points3 loads;                // every scenario: a force on each node of the level
+                                // (N; nodeCount rows), or empty for none
+  LoadCurve loadCurve;          // scales the loads over time (empty: by 1)
   double loadSeconds =
       std::numeric_limits<double>::infinity();  // the loads act in the
                                                 // steps that start before this time, then let go
@@ -99,10 +99,10 @@ struct ScenarioParameters {
 // faces included) added: the union, sorted, each once. Throws Error for a
 // box turned inside out, and for one that holds no node (naming the
 // level's extent): either would hold nothing, without a word.
-std::vector<int> heldWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
-                                    const BoundingBox& box);
+std::vector<int> fixedWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,
+                                     const BoundingBox& box);
 
-// The parameters that only some scenarios read (heldNodes: every one).
+// The parameters that only some scenarios read (fixedNodes: every one).
 enum class ScenarioParameter {
   BaseShare,
   PushAcceleration,
