@@ -108,6 +108,24 @@ TEST(SimulationSession, StartsFromAFrameAndLogsFromThere) {
   EXPECT_GT(session.stepLog()[2].iterations, 0);
 }
 
+// "Run N steps, recording every k-th": the session's, for the command line
+// (run: every k-th and the last) and for Python (stepRecordingEvery: every
+// k-th of the whole run, however it is stepped).
+TEST(SimulationSession, RecordsEveryKthStep) {
+  const test::ScratchDir dir;
+  const MultiLevelTetMesh mesh = uprightBlock();
+  SimulationSession session(mesh, blockWobble());
+  session.record(dir / "run.pvd");
+  session.run(7, 3);  // steps 3, 6 and the last, 7
+  EXPECT_EQ(session.recorder()->frames(), 3);
+  SimulationSession stepped(mesh, blockWobble());
+  stepped.record(dir / "stepped.pvd");
+  for (int call = 0; call < 4; ++call)  // 4 calls of 2 steps: steps 3 and 6
+    for (int i = 0; i < 2; ++i) stepped.stepRecordingEvery(3);
+  EXPECT_EQ(stepped.recorder()->frames(), 2);
+  EXPECT_EQ(stepped.simulation().steps(), 8);
+}
+
 TEST(SimulationSession, RecordsTheRunWithItsBoundSurface) {
   const test::ScratchDir dir;
   const MultiLevelTetMesh mesh = uprightBlock();

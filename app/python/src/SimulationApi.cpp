@@ -75,9 +75,7 @@ py::object step(Object& s, int n) {
     {
       py::gil_scoped_release unlocked;
       std::lock_guard lock(s.changing);
-      stats = s.session->step(s.forcesGiven ? &s.forces : nullptr);
-      if (s.session->recording() && s.session->simulation().steps() % s.recordEvery == 0)
-        s.session->recordFrame();
+      stats = s.session->stepRecordingEvery(s.recordEvery, s.forcesGiven ? &s.forces : nullptr);
     }
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between steps
   }

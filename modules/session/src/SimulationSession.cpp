@@ -70,6 +70,12 @@ StepStats SimulationSession::step(const Points3* extraForces) {
   return stats;
 }
 
+StepStats SimulationSession::stepRecordingEvery(int every, const Points3* extraForces) {
+  const StepStats stats = step(extraForces);
+  if (recording() && simulation_->steps() % every == 0) recordFrame();
+  return stats;
+}
+
 void SimulationSession::run(int steps, int every,
                             const std::function<void(int, const StepStats&)>& afterStep) {
   for (int i = 0; i < steps; ++i) {

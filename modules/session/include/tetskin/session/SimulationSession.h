@@ -82,6 +82,10 @@ class SimulationSession {
   // while recording; `afterStep(i, stats)` after step i (from 0). A step
   // that fails throws its Error, the frames before it recorded.
   void run(int steps, int every, const std::function<void(int, const StepStats&)>& afterStep = {});
+  // One step (step()), its state recorded while recording when the run's
+  // step count is a multiple of `every`: a run stepped a few steps at a time
+  // (Python's step(n)) records every `every`-th step of the whole run.
+  StepStats stepRecordingEvery(int every, const Points3* extraForces = nullptr);
 
   // The run's warnings not taken yet, each once, in the words of a front
   // end whose user names options by `names` (OptionSchema.h): nodes that
