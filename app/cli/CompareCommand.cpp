@@ -54,19 +54,20 @@ void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
       throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
     std::optional<std::string> given = givenOptionOf(cmd, kMaterialGroup);
     if (!given) given = givenName(cmd, simulation_option::kTimeStep);
-    for (const char* option : {"--solver", "--tangent", "--gravity", "--floor", "--up"})
+    if (!given) given = givenName(cmd, scenario_option::kFloorHeight);
+    for (const char* option : {"--solver", "--tangent", "--gravity", "--up"})
       if (!given && cmd.count(option) > 0) given = option;
     if (given) throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
   }
   // A node list names nodes of one level; the levels compared have others.
   if (!a.run.scenario.fixedNodes.empty())
-    throw Error(
-        "--fixed-nodes: names nodes of one level, and compare runs several: hold nodes "
-        "by --fixed-box, which takes each level's nodes in the box");
+    throw Error(std::string(scenario_option::kFixedNodes.flag) +
+                ": names nodes of one level, and compare runs several: hold nodes by " +
+                scenario_option::kFixedBox.flag + ", which takes each level's nodes in the box");
   if (!a.run.scenario.loads.empty())
-    throw Error(
-        "--loads: names nodes of one level, and compare runs several: compare recorded "
-        "runs (--runs) whose loads were given per level");
+    throw Error(std::string(scenario_option::kLoads.flag) +
+                ": names nodes of one level, and compare runs several: compare recorded runs "
+                "(--runs) whose loads were given per level");
   checkRunOptions(a.run, cmd);
   const std::filesystem::path table = tableOf(a);
   requireNotAnInput(a.output, {a.dataset, a.surface});

@@ -25,45 +25,43 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
   ScenarioParameters& p = a.parameters;
   for (const ScenarioField& f : scenarioFields())
     addNumberOption(cmd, *f.option, p.*f.field)->group(kGroup);
-  cmd.add_option("--fixed-nodes", a.fixedNodes,
-                 "also hold these nodes still: a text file of node numbers of the level, from 0 "
-                 "(the point ids of its .vtu), separated by spaces or lines, # comments")
+  // The schema's names and meaning (scenario_option), and the form each
+  // takes here.
+  using namespace scenario_option;
+  cmd.add_option(kFixedNodes.flag, a.fixedNodes,
+                 std::string(kFixedNodes.help) +
+                     ": a text file of node numbers separated by spaces or lines, # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
-  cmd.add_option("--fixed-box", a.fixedBox,
-                 "also hold still the nodes of the level inside this box: XMIN,YMIN,ZMIN,XMAX,YMAX,"
-                 "ZMAX in the dataset's coordinates, faces included (a beam's end, say)")
+  cmd.add_option(kFixedBox.flag, a.fixedBox,
+                 std::string(kFixedBox.help) + ": XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX")
       ->expected(6)
       ->delimiter(',')
       ->check(finiteNumber())
       ->group(kGroup);
-  cmd.add_option("--loads", a.loads,
-                 "forces on nodes of the level: a text file of lines NODE FX FY FZ "
-                 "(newtons), # comments")
+  cmd.add_option(kLoads.flag, a.loads,
+                 std::string(kLoads.help) + ": a text file of lines NODE FX FY FZ, # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
-  cmd.add_option("--load-curve", a.loadCurve,
-                 "with --loads: scale them over time by a text file of lines TIME FACTOR "
-                 "(seconds, increasing; linear between, held before the first and after the "
-                 "last, or repeated after it with a last line 'repeat'), # comments")
+  cmd.add_option(kLoadCurve.flag, a.loadCurve,
+                 std::string(kLoadCurve.help) +
+                     ": a text file of lines TIME FACTOR, and a last line 'repeat' to repeat it, "
+                     "# comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
-  cmd.add_option("--loads-seconds", p.loadSeconds,
-                 "with --loads: they act for this many seconds, then let go (default: the whole "
-                 "run)")
-      ->check(positiveNumber())
-      ->group(kGroup);
-  cmd.add_option("--gravity", a.gravity,
-                 "gravity X,Y,Z in m/s^2 (default 9.81 down the up axis: 0,-9.81,0 for y)")
+  CLI::Option* loadSeconds = cmd.add_option(kLoadSeconds.flag, p.loadSeconds, kLoadSeconds.help)
+                                 ->check(positiveNumber())
+                                 ->group(kGroup);
+  addOldFlag(cmd, kLoadSeconds, p.loadSeconds, loadSeconds, positiveNumber());
+  cmd.add_option(kGravity.flag, a.gravity, std::string(kGravity.help) + ": X,Y,Z")
       ->expected(3)
       ->delimiter(',')
       ->check(finiteNumber())
       ->group(kGroup);
-  cmd.add_option("--floor", a.floor,
-                 "a floor plane at this height along the up axis, with contact (drop: at the "
-                 "body's lowest point at rest unless given)")
-      ->check(finiteNumber())
-      ->group(kGroup);
+  CLI::Option* floor = cmd.add_option(kFloorHeight.flag, a.floor, kFloorHeight.help)
+                           ->check(finiteNumber())
+                           ->group(kGroup);
+  addOldFlag(cmd, kFloorHeight, a.floor, floor, finiteNumber());
   // (Not a scenario option: the camera presets follow it too.)
   cmd.add_option("--up", a.up,
                  "the axis that points up: x, y or z (default: the dataset config's up, else y); "
@@ -85,9 +83,10 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
   for (const ScenarioField& f : scenarioFields())
     if (const auto given = givenName(cmd, *f.option); given && !scenarioReads(a.name, f.parameter))
       throw Error(*given + ": " + notReadBy(a.name, f.parameter));
-  for (const char* option : {"--load-curve", "--loads-seconds"})
-    if (cmd.count(option) > 0 && a.loads.empty())
-      throw Error(std::string(option) + ": applies with --loads, which is not given");
+  std::optional<std::string> withLoads = givenName(cmd, scenario_option::kLoadSeconds);
+  if (cmd.count(scenario_option::kLoadCurve.flag) > 0) withLoads = scenario_option::kLoadCurve.flag;
+  if (withLoads && a.loads.empty())
+    throw Error(*withLoads + ": applies with --loads, which is not given");
   // (Each number was checked as it was parsed; makeScenario() checks the
   // whole set again for its other callers.)
   request.scenario = a.name;

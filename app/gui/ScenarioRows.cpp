@@ -42,12 +42,13 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   twistSeconds_->setStepType(QAbstractSpinBox::DefaultStepType);
 
   // A file's name, typed or chosen with "...".
-  auto fileRow = [this, interactive](QLineEdit*& edit, const char* name, const char* title,
-                                     const char* tip) {
+  auto fileRow = [this, interactive](QLineEdit*& edit, const char* name, const ListOption& option,
+                                     const char* takes) {
+    const QString title = labelOf(option);
     edit = new QLineEdit;
     edit->setObjectName(name);
     edit->setPlaceholderText("none");
-    edit->setToolTip(tip);
+    edit->setToolTip(QString(option.help) + ": " + takes);
     auto* choose = new QPushButton("...");
     choose->setObjectName(QString(name) + "Choose");
     auto* row = new QHBoxLayout;
@@ -61,23 +62,17 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
     });
     return row;
   };
-  QHBoxLayout* fixedRow = fileRow(
-      fixedNodes_, "fixedNodes", "Fixed nodes",
-      "a text file of node numbers of the simulated level, from 0, held still in any scenario");
-  QHBoxLayout* loadsRow = fileRow(loads_, "loads", "Loads",
-                                  "a text file of lines NODE FX FY FZ: forces (newtons) "
-                                  "on nodes of the simulated level, in any scenario");
+  QHBoxLayout* fixedRow = fileRow(fixedNodes_, "fixedNodes", kFixedNodes,
+                                  "a text file of node numbers, in any scenario");
+  QHBoxLayout* loadsRow =
+      fileRow(loads_, "loads", kLoads, "a text file of lines NODE FX FY FZ, in any scenario");
   QHBoxLayout* loadCurveRow =
-      fileRow(loadCurve_, "loadCurve", "Load curve",
-              "a text file of lines TIME FACTOR (seconds, increasing) that scales the loads: "
-              "linear between the points, held before the first and after the last (or "
-              "repeated after it, with a last line 'repeat')");
+      fileRow(loadCurve_, "loadCurve", kLoadCurve,
+              "a text file of lines TIME FACTOR, with a last line 'repeat' to repeat it");
 
   fixedBox_ = new QCheckBox("hold the nodes inside");
   fixedBox_->setObjectName("fixedBox");
-  fixedBox_->setToolTip(
-      "also hold still the nodes of the simulated level inside this box, faces included, in "
-      "the dataset's coordinates (a beam's end, say), in any scenario");
+  fixedBox_->setToolTip(QString(kFixedBox.help) + ", in any scenario");
   auto* boxMinRow = new QHBoxLayout;
   auto* boxMaxRow = new QHBoxLayout;
   const char* axes = "xyz";
@@ -95,23 +90,20 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
     boxMaxRow->addWidget(boxMax_[i]);
   }
 
-  loadSeconds_ =
-      numberBox("loadSeconds", 0, kLargest, 0, "the loads act for this many seconds, then let go");
+  loadSeconds_ = numberBox("loadSeconds", 0, kLargest, 0, kLoadSeconds.help);
   loadSeconds_->setSpecialValueText("whole run");  // (at 0)
 
   const SimulationOptions plain;
   auto* gravityRow = new QHBoxLayout;
   const char* gravityNames[3] = {"gravityX", "gravityY", "gravityZ"};
   for (int i = 0; i < 3; ++i) {
-    gravity_[i] =
-        numberBox(gravityNames[i], -kLargest, kLargest, plain.gravity[i], "gravity, m/s^2");
+    gravity_[i] = numberBox(gravityNames[i], -kLargest, kLargest, plain.gravity[i], kGravity.help);
     gravityRow->addWidget(gravity_[i]);
   }
   floor_ = new QCheckBox("at y =");
   floor_->setObjectName("floor");
-  floor_->setToolTip(
-      "a floor plane with contact (drop always has one: at the body's lowest point unless set)");
-  floorHeight_ = numberBox("floorHeight", -kLargest, kLargest, 0, "height of the floor plane");
+  floor_->setToolTip(kFloorHeight.help);
+  floorHeight_ = numberBox("floorHeight", -kLargest, kLargest, 0, kFloorHeight.help);
   floorHeight_->setEnabled(false);
   connect(floor_, &QCheckBox::toggled, floorHeight_, &QWidget::setEnabled);
   auto* floorRow = new QHBoxLayout;
@@ -120,22 +112,22 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
 
   form_->addRow("Scenario", scenario_);
   parameterRows_ = {
-      {new QLabel("Fixed base (share)"), baseShare_, ScenarioParameter::BaseShare},
-      {new QLabel("Push (m/s\u00b2)"), push_, ScenarioParameter::PushAcceleration},
-      {new QLabel("Push frequency (Hz)"), pushFrequency_, ScenarioParameter::PushFrequency},
-      {new QLabel("Drop height (share)"), dropHeight_, ScenarioParameter::DropHeight},
-      {new QLabel("Twist (degrees)"), twistDegrees_, ScenarioParameter::TwistDegrees},
-      {new QLabel("Twist time (s)"), twistSeconds_, ScenarioParameter::TwistSeconds}};
+      {new QLabel(labelOf(kBaseShare)), baseShare_, ScenarioParameter::BaseShare},
+      {new QLabel(labelOf(kPushAcceleration)), push_, ScenarioParameter::PushAcceleration},
+      {new QLabel(labelOf(kPushFrequency)), pushFrequency_, ScenarioParameter::PushFrequency},
+      {new QLabel(labelOf(kDropHeight)), dropHeight_, ScenarioParameter::DropHeight},
+      {new QLabel(labelOf(kTwistDegrees)), twistDegrees_, ScenarioParameter::TwistDegrees},
+      {new QLabel(labelOf(kTwistSeconds)), twistSeconds_, ScenarioParameter::TwistSeconds}};
   for (const ParameterRow& row : parameterRows_) form_->addRow(row.label, row.field);
-  form_->addRow("Fixed nodes", fixedRow);
-  form_->addRow("Fixed box", fixedBox_);
+  form_->addRow(labelOf(kFixedNodes), fixedRow);
+  form_->addRow(labelOf(kFixedBox), fixedBox_);
   form_->addRow("  from (x, y, z)", boxMinRow);
   form_->addRow("  to (x, y, z)", boxMaxRow);
-  form_->addRow("Loads", loadsRow);
-  form_->addRow("Load curve", loadCurveRow);
-  form_->addRow("Loads act for (s)", loadSeconds_);
-  form_->addRow("Gravity (m/s\u00b2)", gravityRow);
-  form_->addRow("Floor", floorRow);
+  form_->addRow(labelOf(kLoads), loadsRow);
+  form_->addRow(labelOf(kLoadCurve), loadCurveRow);
+  form_->addRow(labelOf(kLoadSeconds), loadSeconds_);
+  form_->addRow(labelOf(kGravity), gravityRow);
+  form_->addRow(labelOf(kFloorHeight), floorRow);
   connect(scenario_, &QComboBox::currentTextChanged, this, [this] { showRowsOfScenario(); });
   showRowsOfScenario();
 }

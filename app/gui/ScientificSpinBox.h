@@ -42,5 +42,6 @@ ScientificSpinBox* numberBox(const char* name, const NumberOption& option);
 // The option's label in a form: its name in messages, capitalized ("the
 // time step" -> "Time step"); its help (with the unit) is the box's tip.
 QString labelOf(const NumberOption& option);
+QString labelOf(const ListOption& option);
 
 }  // namespace tetskin::gui

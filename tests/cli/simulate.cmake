@@ -40,7 +40,7 @@ tetskin_cli_test(simulate_bad_damping FAIL STATUS 1
 tetskin_cli_test(simulate_held_nodes
   STDOUT "scenario sag.*\n  3 of 224 nodes fixed, gravity 0,0,-9.81 m/s\\^2, floor at y = -2\n"
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base-share 0 --fixed-nodes ${tdata}/held_nodes.txt
-       --gravity 0,0,-9.81 --floor -2 --steps 3 -o ${cli_out}/held.pvd -q)
+       --gravity 0,0,-9.81 --floor-height -2 --steps 3 -o ${cli_out}/held.pvd -q)
 # A run started from another run's last frame.
 tetskin_cli_test(simulate_first_run SETUP first_run
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --steps 3 -o ${cli_out}/first_run.pvd -q)
@@ -60,11 +60,11 @@ tetskin_cli_test(simulate_initial_own_frames FAIL STATUS 1 REQUIRES first_run
 tetskin_cli_test(simulate_loads
   STDOUT "scenario sag.*\n  35 of 224 nodes fixed, 2 loaded \\(total force 0,-3,0 N for 0.02 s\\), gravity 0,-9.81,0 m/s\\^2\n"
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --loads ${tdata}/loads.txt
-       --loads-seconds 0.02 --steps 3 -o ${cli_out}/loads.pvd -q)
+       --load-seconds 0.02 --steps 3 -o ${cli_out}/loads.pvd -q)
 tetskin_cli_test(simulate_loads_seconds_alone FAIL STATUS 1
-  STDERR "^error: --loads-seconds: applies with --loads, which is not given\n$"
+  STDERR "^error: --load-seconds: applies with --loads, which is not given\n$"
   NOT_EXIST ${cli_out}/alone.pvd
-  ARGS simulate ${data}/bunny.json --loads-seconds 1 -o ${cli_out}/alone.pvd)
+  ARGS simulate ${data}/bunny.json --load-seconds 1 -o ${cli_out}/alone.pvd)
 tetskin_cli_test(simulate_load_curve
   STDOUT "2 loaded \\(total force 0,-3,0 N, scaled by a load curve of 4 points from 0 to 0.06 s, factors 0 to 1\\), gravity"
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --loads ${tdata}/loads.txt
@@ -88,7 +88,7 @@ tetskin_cli_test(simulate_bad_loads FAIL STATUS 1
   ARGS simulate ${data}/bunny.json --level 0 --loads ${tdata}/bad_loads.txt -o ${cli_out}/bad_loads.pvd)
 tetskin_cli_test(simulate_floor_through_the_body
   STDERR "^warning: 126 of 224 nodes start below the floor at y = 5. contact pushes them up at once\n$"
-  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --floor 5 --steps 2 -o ${cli_out}/floor5.pvd -q)
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --floor-height 5 --steps 2 -o ${cli_out}/floor5.pvd -q)
 tetskin_cli_test(simulate_bad_held_nodes FAIL STATUS 1
   STDERR "^error: [^\n]*bad_held_nodes.txt:3: node 224 does not exist \\(the level has 224 nodes, numbered from 0\\)\n$"
   NOT_EXIST ${cli_out}/bad_held.pvd

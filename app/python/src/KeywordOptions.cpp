@@ -89,18 +89,15 @@ RunRequest runRequest(Keywords& k) {
   if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
   if (const auto v = k.choice<CoarseLevels>("coarse_levels")) o.coarseLevels = *v;
   r.up = k.choice<UpAxis>("up");
-  if (const auto gravity = k.take("gravity")) {
+  using scenario_option::kGravity;
+  if (const auto gravity = k.take(kGravity.key)) {
     const py::array given = py::array::ensure(*gravity);
     if (!given) PyErr_Clear();
     if (!given || given.size() != 3)
-      throw Error(k.call() + ": gravity: expected 3 numbers (x, y, z)");
-    r.gravity = points3(given.attr("reshape")(1, 3), "gravity").row(0).transpose();
+      throw Error(k.call() + ": " + kGravity.key + ": expected 3 numbers (x, y, z)");
+    r.gravity = points3(given.attr("reshape")(1, 3), kGravity.key).row(0).transpose();
   }
-  if (const auto floor = k.take("floor_height")) {
-    const double height = floor->cast<double>();
-    if (!std::isfinite(height)) throw Error(k.call() + ": floor_height: must be finite");
-    r.floorHeight = height;
-  }
+  if (const auto height = k.number(scenario_option::kFloorHeight)) r.floorHeight = *height;
   return r;
 }
 
@@ -113,49 +110,48 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
       p.*f.field = *value;
     }
   const std::string level = "the level (" + std::to_string(levelNodes) + " nodes)";
+  using namespace scenario_option;
+  const auto named = [&k](const ListOption& option) { return k.call() + ": " + option.key; };
   // (held_nodes: the old name, as --fixed-nodes named them on the command
   // line all along; read with a warning.)
-  std::optional<py::object> fixed = k.take("fixed_nodes");
+  std::optional<py::object> fixed = k.take(kFixedNodes.key);
   if (const auto old = k.take("held_nodes", false)) {
-    if (fixed) throw Error(k.call() + ": fixed_nodes and held_nodes are the same option: give one");
-    if (PyErr_WarnEx(PyExc_DeprecationWarning, deprecatedName("held_nodes", "fixed_nodes").c_str(),
-                     1) != 0)
+    if (fixed) throw Error(named(kFixedNodes) + " and held_nodes are the same option: give one");
+    if (PyErr_WarnEx(PyExc_DeprecationWarning,
+                     deprecatedName("held_nodes", kFixedNodes.key).c_str(), 1) != 0)
       throw py::error_already_set();
     fixed = old;
   }
-  if (fixed) p.fixedNodes = idList(*fixed, "fixed_nodes", levelNodes, level);
-  if (const auto box = k.take("fixed_box")) {
-    const Points3 corners = points3(*box, "fixed_box");
+  if (fixed) p.fixedNodes = idList(*fixed, kFixedNodes.key, levelNodes, level);
+  if (const auto box = k.take(kFixedBox.key)) {
+    const Points3 corners = points3(*box, kFixedBox.key);
     if (corners.rows() != 2)
-      throw Error(k.call() + ": fixed_box: expected 2 corners (min, max), got " +
+      throw Error(named(kFixedBox) + ": expected 2 corners (min, max), got " +
                   std::to_string(corners.rows()));
-    BoundingBox held;
-    held.min = corners.row(0).transpose();
-    held.max = corners.row(1).transpose();
-    r.fixedBox = held;
+    BoundingBox fixedBox;
+    fixedBox.min = corners.row(0).transpose();
+    fixedBox.max = corners.row(1).transpose();
+    r.fixedBox = fixedBox;
   }
-  if (const auto loads = k.take("loads")) {
-    p.loads = points3(*loads, "loads");
+  if (const auto loads = k.take(kLoads.key)) {
+    p.loads = points3(*loads, kLoads.key);
     if (p.loads.rows() != levelNodes)
-      throw Error(k.call() + ": loads: expected one row per node of " + level + ", got " +
+      throw Error(named(kLoads) + ": expected one row per node of " + level + ", got " +
                   std::to_string(p.loads.rows()));
   }
-  for (const char* key : {"load_seconds", "load_curve"})
+  for (const char* key : {kLoadSeconds.key, kLoadCurve.key})
     if (k.given(key) && p.loads.rows() == 0)
-      throw Error(k.call() + ": " + key + ": applies with loads");
-  if (const auto seconds = k.take("load_seconds")) {
-    p.loadSeconds = seconds->cast<double>();
-    if (!(p.loadSeconds > 0)) throw Error(k.call() + ": load_seconds: must be > 0");
-  }
-  if (const auto curve = k.take("load_curve")) {
+      throw Error(k.call() + ": " + key + ": applies with " + kLoads.key);
+  if (const auto seconds = k.number(kLoadSeconds)) p.loadSeconds = *seconds;
+  if (const auto curve = k.take(kLoadCurve.key)) {
     // (Finite or not, each point is LoadCurve's to check, naming it.)
-    const auto rows = realRows(*curve, "load_curve", 2, /*finite=*/false).unchecked<2>();
+    const auto rows = realRows(*curve, kLoadCurve.key, 2, /*finite=*/false).unchecked<2>();
     std::vector<LoadCurve::Point> points;
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) points.push_back({rows(i, 0), rows(i, 1)});
     try {
       p.loadCurve = LoadCurve(std::move(points));
     } catch (const Error& e) {
-      throw Error(k.call() + ": load_curve: " + e.what());
+      throw Error(named(kLoadCurve) + ": " + e.what());
     }
   }
 }

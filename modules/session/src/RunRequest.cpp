@@ -6,33 +6,6 @@
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
-namespace {
-
-std::string nameOf(const NumberOption& option, OptionNames names) {
-  switch (names) {
-    case OptionNames::Flags:
-      return option.flag;
-    case OptionNames::Keys:
-      return option.key;
-    case OptionNames::Words:
-      break;
-  }
-  return option.what;
-}
-
-std::string fixedBoxName(OptionNames names) {
-  switch (names) {
-    case OptionNames::Flags:
-      return "--fixed-box";
-    case OptionNames::Keys:
-      return "fixed_box";
-    case OptionNames::Words:
-      break;
-  }
-  return "the fixed box";
-}
-
-}  // namespace
 
 void MaterialOverrides::set(const NumberOption& option, double value) {
   const auto fields = materialFields();
@@ -88,7 +61,7 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
       spec.parameters.fixedNodes =
           fixedWithNodesInBox(spec.parameters.fixedNodes, restNodes, *request.fixedBox);
     } catch (const Error& e) {
-      throw Error(fixedBoxName(request.names) + ": " + e.what());
+      throw Error(nameOf(scenario_option::kFixedBox, request.names) + ": " + e.what());
     }
   }
   return spec;

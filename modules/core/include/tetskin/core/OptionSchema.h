@@ -178,6 +178,25 @@ struct NumberOption {
   std::optional<std::string> problem(double value) const;
 };
 
+// An option of a run that is not one number: node ids, a box, loads and
+// their curve, a vector. Its key (a config's, Python's keyword), its
+// command-line flag, the flag it had before ("" for none), its name in
+// messages and the GUI's label ("the fixed box"), and its help: what it
+// means, which each front end follows with the form it takes there (a
+// text file, an array, a field).
+struct ListOption {
+  const char* key;
+  const char* flag;
+  const char* oldFlag;
+  const char* what;
+  const char* help;
+};
+
+// How a front end's user names `option` (OptionNames): "--poisson-ratio",
+// "poisson_ratio" or "Poisson's ratio".
+std::string nameOf(const NumberOption& option, OptionNames names);
+std::string nameOf(const ListOption& option, OptionNames names);
+
 // "--old: is deprecated, use --new (the same option)": the warning an old
 // name's use gets, `oldName` and `name` as the front end's user writes
 // them.

@@ -73,6 +73,42 @@ inline constexpr NumberOption kTwistSeconds{"twist_seconds",
                                             above(0),
                                             1.0,
                                             "finite and > 0"};
+
+// The run's other options, for every scenario (OptionSchema.h: their keys,
+// flags and words; each front end adds the form they take there).
+inline constexpr ListOption kFixedNodes{
+    "fixed_nodes", "--fixed-nodes", "", "the fixed nodes",
+    "also hold these nodes of the level still (ids from 0: the point ids of its .vtu)"};
+inline constexpr ListOption kFixedBox{
+    "fixed_box", "--fixed-box", "", "the fixed box",
+    "also hold still the nodes of the level inside this box, faces included, in the dataset's "
+    "coordinates (a beam's end, say)"};
+inline constexpr ListOption kLoads{"loads", "--loads", "", "the loads",
+                                   "forces (newtons) on nodes of the level"};
+inline constexpr ListOption kLoadCurve{
+    "load_curve", "--load-curve", "", "the load curve",
+    "with loads: scales them over time by points TIME FACTOR (seconds, increasing; linear "
+    "between, held before the first and after the last, or repeated after it)"};
+inline constexpr NumberOption kLoadSeconds{
+    "load_seconds",
+    "--load-seconds",
+    "--loads-seconds",
+    "the loads' duration",
+    "with loads: they act for this many seconds, then let go (default: the whole run)",
+    above(0),
+    std::numeric_limits<double>::infinity()};
+inline constexpr ListOption kGravity{
+    "gravity", "--gravity", "", "gravity",
+    "gravity X, Y, Z in m/s^2 (default 9.81 down the up axis: 0, -9.81, 0 for y)"};
+inline constexpr NumberOption kFloorHeight{
+    "floor_height",
+    "--floor-height",
+    "--floor",
+    "the floor height",
+    "a floor plane at this height along the up axis, with contact (drop: at the body's lowest "
+    "point at rest unless given)",
+    NumberRange{},
+    0};
 }  // namespace scenario_option
 
 struct ScenarioParameters {
