@@ -100,18 +100,11 @@ void addBuildCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output, "output name OUT (writes OUT.node, OUT.ele, OUT.json)")
       ->required();
-  cmd->add_option("--levels", a->options.levels, "number of output levels L")
-      ->capture_default_str()
-      ->check(wholeNumber(1, 16));
-  cmd->add_option("--min-elements", a->options.minElements, "elements of the coarsest level")
-      ->capture_default_str()
-      ->check(wholeNumber(1));
-  cmd->add_option("--max-elements", a->options.maxElements, "elements of the finest level")
-      ->capture_default_str()
-      ->check(wholeNumber(1));
+  addNumberOption(*cmd, build_option::kLevels, a->options.levels);
+  addNumberOption(*cmd, build_option::kMinElements, a->options.minElements);
+  addNumberOption(*cmd, build_option::kMaxElements, a->options.maxElements);
   addEnumOption<MesherKind>(*cmd, "--mesher", "", a->mesher);
-  cmd->add_option("--qualities", a->qualities,
-                  "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer")
+  cmd->add_option(build_option::kQualities.flag, a->qualities, build_option::kQualities.help)
       ->delimiter(',')
       ->capture_default_str()
       ->check(numberAbove(1));
@@ -128,20 +121,11 @@ void addBuildCommand(CLI::App& app) {
                 "element size on average, twice it at worst) when no faithful candidate is\n"
                 "near their target; without it, build stops and says which and why");
   addEnumOption<WrapMode>(*cmd, "--wrap", "alpha-wrap inputs in a closed surface first: ", a->wrap);
-  cmd->add_option("--wrap-alpha", a->options.wrap.alpha,
-                  "the wrap's alpha, a fraction of the input's bounding-box diagonal: gaps and\n"
-                  "cavities narrower than it are closed, and its triangles are about this size")
-      ->capture_default_str()
-      ->check(positiveNumber());
-  cmd->add_option("--wrap-offset", a->options.wrap.offset,
-                  "how far the wrap lies outside the input, a fraction of the diagonal")
-      ->capture_default_str()
-      ->check(positiveNumber());
-  cmd->add_option("--jobs", a->options.jobs, "mesher processes at once (default: all cores)")
-      ->check(wholeNumber(1));
-  cmd->add_option("--timeout", a->options.timeoutSeconds, "seconds before a mesher run is stopped")
-      ->capture_default_str()
-      ->check(positiveNumber());
+  addNumberOption(*cmd, wrap_option::kAlpha, a->options.wrap.alpha);
+  addNumberOption(*cmd, wrap_option::kOffset, a->options.wrap.offset);
+  // (Default: all cores, set before parsing.)
+  addNumberOption(*cmd, build_option::kJobs, a->options.jobs)->default_str("");
+  addNumberOption(*cmd, build_option::kTimeout, a->options.timeoutSeconds);
   cmd->add_option("--up", a->up,
                   "the axis that points up in the inputs: x, y or z (written to the config; "
                   "simulation and cameras follow it)")

@@ -151,6 +151,14 @@ CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& 
   return added;
 }
 
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value) {
+  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
+                           ->capture_default_str()
+                           ->check(wholeNumberIn(option.range));
+  addOldFlag(cmd, option, value, added, wholeNumberIn(option.range));
+  return added;
+}
+
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
   CLI::Option* added = cmd.add_option(option.flag, value, option.help)
                            ->capture_default_str()

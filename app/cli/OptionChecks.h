@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tetskin/core/OptionSchema.h"
+#include "tetskin/core/Types.h"
 #include "tetskin/rendering/ImageSize.h"
 
 namespace tetskin::cli {
@@ -87,6 +88,7 @@ void addOldFlag(CLI::App& cmd, const NumberOption& option, T& value, CLI::Option
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value);
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value);
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value);
 
 // An enum option (OptionSchema.h) on `cmd`: `flag`, `what` and then the
 // names with their help, the default shown, one of the names checked.

@@ -18,6 +18,7 @@
 #include <QVBoxLayout>
 #include <filesystem>
 
+#include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
@@ -26,6 +27,18 @@
 #include "tetskin/vtkio/SurfaceFile.h"
 
 namespace tetskin::gui {
+namespace {
+
+// A box of whole numbers over the option's range, set to its default.
+QSpinBox* countBox(const NumberOption& option) {
+  auto* box = new QSpinBox;
+  box->setRange(static_cast<int>(option.range.min), static_cast<int>(option.range.max));
+  box->setValue(static_cast<int>(option.defaultValue));
+  box->setToolTip(option.help);
+  return box;
+}
+
+}  // namespace
 
 BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   setWindowTitle("Build dataset");
@@ -47,18 +60,14 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   output_->setObjectName("buildOutput");
   output_->setPlaceholderText("out/bunny (writes .node, .ele, .json)");
   form->addRow("Output", output_);
-  levels_ = new QSpinBox;
-  levels_->setRange(1, 16);
-  levels_->setValue(3);
-  minElements_ = new QSpinBox;
-  minElements_->setRange(1, 100000000);
-  minElements_->setValue(600);
-  maxElements_ = new QSpinBox;
-  maxElements_->setRange(1, 100000000);
-  maxElements_->setValue(12000);
-  form->addRow("Levels", levels_);
-  form->addRow("Min elements", minElements_);
-  form->addRow("Max elements", maxElements_);
+  // The ranges, defaults, labels and tips are the schema's (OptionSchema.h).
+  using namespace build_option;
+  levels_ = countBox(kLevels);
+  minElements_ = countBox(kMinElements);
+  maxElements_ = countBox(kMaxElements);
+  form->addRow(labelOf(kLevels), levels_);
+  form->addRow(labelOf(kMinElements), minElements_);
+  form->addRow(labelOf(kMaxElements), maxElements_);
   mesher_ = new QComboBox;
   for (const std::string& name : namesOf<MesherKind>())
     mesher_->addItem(QString::fromStdString(name));
@@ -71,8 +80,11 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "the axis that points up in the inputs (z for most CAD and STL files): "
       "the simulation's scenarios, floor and gravity and the camera follow it");
   form->addRow("Up axis", up_);
-  qualities_ = new QLineEdit("2.0,1.8,1.6,1.4,1.2");
-  form->addRow("TetGen qualities", qualities_);
+  QStringList qualities;
+  for (const double q : BuildOptions{}.qualities) qualities << QString::number(q, 'f', 1);
+  qualities_ = new QLineEdit(qualities.join(","));
+  qualities_->setToolTip(kQualities.help);
+  form->addRow(labelOf(kQualities), qualities_);
   decimate_ = new QCheckBox("derive coarser inputs by decimation");
   form->addRow("", decimate_);
   sizeToTargets_ = new QCheckBox("also mesh under size bounds aimed at the element targets");
@@ -88,7 +100,6 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "half their element size on average (twice it at worst) stops the build with the numbers "
       "and a way out; with it, the nearest is written and the config records its distances");
   form->addRow("", acceptUnfaithful_);
-  const WrapOptions wrapDefaults;
   wrap_ = new QComboBox;
   wrap_->setObjectName("wrap");
   for (const std::string& name : namesOf<WrapMode>()) wrap_->addItem(QString::fromStdString(name));
@@ -96,22 +107,18 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "auto: wrap the inputs that repair cannot close (holes, open sheets, overlapping parts) or "
       "that no mesher accepts in a closed surface (CGAL's alpha wrap) and mesh that; always: "
       "wrap every input; never: refuse them");
-  auto fraction = [](const char* name, double value, const char* tip) {
+  auto fraction = [](const char* name, const NumberOption& option) {
     auto* box = new QDoubleSpinBox;
     box->setObjectName(name);
     box->setDecimals(5);
-    box->setRange(0.00001, 1.0);
+    box->setRange(0.00001, option.range.max);
     box->setSingleStep(0.001);
-    box->setValue(value);
-    box->setToolTip(tip);
+    box->setValue(option.defaultValue);
+    box->setToolTip(option.help);
     return box;
   };
-  wrapAlpha_ =
-      fraction("wrapAlpha", wrapDefaults.alpha,
-               "a fraction of the input's bounding-box diagonal: gaps and cavities "
-               "narrower than it are closed, and the wrap's triangles are about this size");
-  wrapOffset_ = fraction("wrapOffset", wrapDefaults.offset,
-                         "how far the wrap lies outside the input, a fraction of the diagonal");
+  wrapAlpha_ = fraction("wrapAlpha", wrap_option::kAlpha);
+  wrapOffset_ = fraction("wrapOffset", wrap_option::kOffset);
   auto* wrapRow = new QHBoxLayout;
   wrapRow->addWidget(wrap_);
   wrapRow->addWidget(new QLabel("alpha"));
@@ -119,10 +126,9 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   wrapRow->addWidget(new QLabel("offset"));
   wrapRow->addWidget(wrapOffset_);
   form->addRow("Wrap", wrapRow);
-  jobs_ = new QSpinBox;
-  jobs_->setRange(1, 256);
+  jobs_ = countBox(kJobs);
   jobs_->setValue(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
-  form->addRow("Mesher processes", jobs_);
+  form->addRow(labelOf(kJobs), jobs_);
   layout->addLayout(form);
   wrapFidelity_ = new QLabel;
   wrapFidelity_->setObjectName("wrapFidelity");

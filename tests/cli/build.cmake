@@ -55,7 +55,7 @@ tetskin_cli_test(build_no_area FAIL STATUS 1
   NOT_EXIST ${cli_out}/no_area.json
   ARGS build ${tdata}/no_area.obj -o ${cli_out}/no_area)
 tetskin_cli_test(build_wrap_alpha_out_of_range FAIL STATUS 1
-  STDERR "^error: the wrap's alpha 2 must lie in .0, 1.: it is a fraction of the bounding-box diagonal\n$"
+  STDERR "^error: --wrap-alpha: 2 is not in .0, 1. \\(see tetskin build --help\\)\n$"
   ARGS build ${tdata}/bunny_holed.obj --wrap-alpha 2 -o ${cli_out}/bad_alpha -q)
 tetskin_cli_test(build_wrap_bad_mode FAIL STATUS 1 STDERR "^error: --wrap: [^\n]*sometimes"
   ARGS build ${tdata}/bunny_holed.obj --wrap sometimes -o ${cli_out}/bad_wrap -q)

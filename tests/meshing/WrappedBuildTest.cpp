@@ -170,13 +170,13 @@ TEST(ModelBuilder, WrapParametersOutOfRangeAreRefused) {
   options.wrap.alpha = 0;
   EXPECT_NE(test::errorText([&] {
               build("bunny_holed.obj", options);
-            }).find("alpha 0 must lie in (0, 1]"),
+            }).find("the wrap's alpha must lie in (0, 1], got 0"),
             std::string::npos);
   options.wrap.alpha = 0.02;
   options.wrap.offset = 2;
   EXPECT_NE(test::errorText([&] {
               build("bunny_holed.obj", options);
-            }).find("offset 2 must lie in (0, 1]"),
+            }).find("the wrap's offset must lie in (0, 1], got 2"),
             std::string::npos);
 }
 

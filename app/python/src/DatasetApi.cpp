@@ -157,9 +157,13 @@ void addDatasetApi(py::module_& m) {
         options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         readBuildOptions(keywords, options);
         keywords.finish();
-        if (levels < 1 || levels > 16) throw Error("build: levels must be in 1..16");
-        if (minElements < 1 || maxElements < 1)
-          throw Error("build: min_elements and max_elements must be >= 1");
+        using namespace build_option;
+        for (const auto& [option, value] :
+             {std::pair{&kLevels, static_cast<double>(levels)},
+              std::pair{&kMinElements, static_cast<double>(minElements)},
+              std::pair{&kMaxElements, static_cast<double>(maxElements)}})
+          if (const auto problem = option->problem(value))
+            throw Error(std::string("build: ") + option->key + ": " + *problem);
         const std::vector<std::filesystem::path> paths = inputPaths(inputs);
         bool interrupted = false;
         const BuildEvents events = buildEvents(progress, interrupted);
@@ -173,9 +177,11 @@ void addDatasetApi(py::module_& m) {
         }
         return load(config);
       },
-      py::arg("inputs"), py::arg("output"), py::arg("levels") = 3, py::arg("min_elements") = 600,
-      py::arg("max_elements") = 12000, py::arg("decimate") = false, py::arg("mesher") = "tetgen",
-      py::arg("progress") = py::none(),
+      py::arg("inputs"), py::arg("output"),
+      py::arg("levels") = static_cast<int>(build_option::kLevels.defaultValue),
+      py::arg("min_elements") = static_cast<Index>(build_option::kMinElements.defaultValue),
+      py::arg("max_elements") = static_cast<Index>(build_option::kMaxElements.defaultValue),
+      py::arg("decimate") = false, py::arg("mesher") = "tetgen", py::arg("progress") = py::none(),
       "Model generation, as `tetskin build`: repairs the input surfaces (a path or a list of "
       "levels of detail of one object), tetrahedralizes them, chooses the levels and writes "
       "OUTPUT.json, .node and .ele; returns the Dataset. Keyword options as the command's: "

@@ -157,33 +157,25 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
 }
 
 void readBuildOptions(Keywords& k, BuildOptions& o) {
-  if (const auto qualities = k.take("qualities")) {
+  const char* qualitiesKey = build_option::kQualities.key;
+  if (const auto qualities = k.take(qualitiesKey)) {
     o.qualities.clear();
     for (const py::handle q : *qualities) {
       const double value = q.cast<double>();
       if (!(value > 1.0))
-        throw Error(k.call() + ": qualities: each must be > 1.0, got " + formatNumber(value));
+        throw Error(k.call() + ": " + qualitiesKey + ": each must be > 1.0, got " +
+                    formatNumber(value));
       o.qualities.push_back(value);
     }
-    if (o.qualities.empty()) throw Error(k.call() + ": qualities: give at least one");
+    if (o.qualities.empty()) throw Error(k.call() + ": " + qualitiesKey + ": give at least one");
   }
   if (const auto v = k.take("size_to_targets")) o.sizeToTargets = v->cast<bool>();
   if (const auto v = k.take("accept_unfaithful")) o.acceptUnfaithful = v->cast<bool>();
-  if (const auto v = k.take("jobs")) {
-    o.jobs = v->cast<int>();
-    if (o.jobs < 1) throw Error(k.call() + ": jobs: must be >= 1");
-  }
-  if (const auto v = k.take("timeout")) {
-    o.timeoutSeconds = v->cast<double>();
-    if (!(o.timeoutSeconds > 0)) throw Error(k.call() + ": timeout: must be > 0 seconds");
-  }
+  if (const auto v = k.count(build_option::kJobs)) o.jobs = *v;
+  if (const auto v = k.number(build_option::kTimeout)) o.timeoutSeconds = *v;
   if (const auto v = k.choice<WrapMode>("wrap")) o.wrap.mode = *v;
-  for (auto [key, value] :
-       {std::pair{"wrap_alpha", &o.wrap.alpha}, std::pair{"wrap_offset", &o.wrap.offset}})
-    if (const auto given = k.take(key)) {
-      *value = given->cast<double>();
-      if (!(*value > 0)) throw Error(k.call() + ": " + key + ": must be > 0");
-    }
+  if (const auto v = k.number(wrap_option::kAlpha)) o.wrap.alpha = *v;
+  if (const auto v = k.number(wrap_option::kOffset)) o.wrap.offset = *v;
   if (const auto v = k.choice<UpAxis>("up")) o.up = *v;
 }
 

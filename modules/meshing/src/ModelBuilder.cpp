@@ -365,11 +365,12 @@ BuildResult buildDataset(std::vector<SurfaceInput> inputs, const BuildOptions& o
                          const BuildEvents& events) {
   for (double q : options.qualities)
     if (!(q > 1.0)) throw Error("quality " + formatNumber(q) + " must be greater than 1.0");
-  for (const auto& [name, value] :
-       {std::pair{"alpha", options.wrap.alpha}, std::pair{"offset", options.wrap.offset}})
-    if (!(value > 0 && value <= 1))
-      throw Error(std::string("the wrap's ") + name + " " + formatNumber(value) +
-                  " must lie in (0, 1]: it is a fraction of the bounding-box diagonal");
+  // (The schema's ranges: wrap_option, build_option.)
+  for (const auto& [option, value] :
+       {std::pair{&wrap_option::kAlpha, options.wrap.alpha},
+        std::pair{&wrap_option::kOffset, options.wrap.offset},
+        std::pair{&build_option::kLevels, static_cast<double>(options.levels)}})
+    if (const auto problem = option->problem(value)) throw Error(*problem);
   const std::vector<double> targets =
       levelTargets(options.minElements, options.maxElements, options.levels);
   if (options.mesher == MesherKind::Netgen && !netgenAvailable())

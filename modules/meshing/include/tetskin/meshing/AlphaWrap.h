@@ -40,10 +40,32 @@ struct EnumSchema<WrapMode> {
 // defaults were measured on the bundled bunny cut open and on scans (see
 // doc/user/model-generation.md): fine enough for a control mesh of 12000
 // elements, a second or two for 100k triangles.
+// The wrap's number options (OptionSchema.h), read by WrapOptions'
+// defaults, `build`'s flags, the Build dialog and tetskin.build.
+namespace wrap_option {
+inline constexpr NumberOption kAlpha{
+    "wrap_alpha",
+    "--wrap-alpha",
+    "",
+    "the wrap's alpha",
+    "the wrap's alpha, a fraction of the input's bounding-box diagonal: gaps and cavities "
+    "narrower than it are closed, and its triangles are about this size",
+    between(0, 1, false, true),
+    1.0 / 50};
+inline constexpr NumberOption kOffset{
+    "wrap_offset",
+    "--wrap-offset",
+    "",
+    "the wrap's offset",
+    "how far the wrap lies outside the input, a fraction of the diagonal",
+    between(0, 1, false, true),
+    1.0 / 500};
+}  // namespace wrap_option
+
 struct WrapOptions {
   WrapMode mode = WrapMode::Auto;
-  double alpha = 1.0 / 50;
-  double offset = 1.0 / 500;
+  double alpha = wrap_option::kAlpha.defaultValue;
+  double offset = wrap_option::kOffset.defaultValue;
 };
 
 // Whether any triangle of `mesh` has an area: a wrap of nothing is nothing.

@@ -48,10 +48,45 @@ struct SurfaceInput {
   std::string file;  // in the dataset config: the path relative to it (default: name)
 };
 
+// The build's options (OptionSchema.h), read by BuildOptions' defaults,
+// `build`'s flags, the Build dialog and tetskin.build.
+namespace build_option {
+inline constexpr NumberOption kLevels{
+    "levels",       "--levels", "", "the number of levels", "number of output levels L",
+    between(1, 16), 3};
+inline constexpr NumberOption kMinElements{"min_elements",
+                                           "--min-elements",
+                                           "",
+                                           "the coarsest level's elements",
+                                           "elements of the coarsest level (its target)",
+                                           between(1, 1e8),
+                                           600};
+inline constexpr NumberOption kMaxElements{"max_elements",
+                                           "--max-elements",
+                                           "",
+                                           "the finest level's elements",
+                                           "elements of the finest level (its target)",
+                                           between(1, 1e8),
+                                           12000};
+inline constexpr ListOption kQualities{
+    "qualities", "--qualities", "", "the TetGen qualities",
+    "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer"};
+inline constexpr NumberOption kJobs{"jobs",
+                                    "--jobs",
+                                    "",
+                                    "the mesher processes",
+                                    "mesher processes at once (default: all cores)",
+                                    between(1, 256),
+                                    1};
+inline constexpr NumberOption kTimeout{
+    "timeout", "--timeout", "", "the mesher's time limit", "seconds before a mesher run is stopped",
+    above(0),  600};
+}  // namespace build_option
+
 struct BuildOptions {
-  int levels = 3;
-  Index minElements = 600;
-  Index maxElements = 12000;
+  int levels = static_cast<int>(build_option::kLevels.defaultValue);
+  Index minElements = static_cast<Index>(build_option::kMinElements.defaultValue);
+  Index maxElements = static_cast<Index>(build_option::kMaxElements.defaultValue);
   MesherKind mesher = MesherKind::TetGen;
   // TetGen radius-edge ratios, any order (searched best first); for Netgen the
   // five presets are used.
@@ -62,8 +97,8 @@ struct BuildOptions {
   // volume bound at the best quality, Netgen's edge bound with the moderate
   // preset. For shapes whose surface needs few elements, such as a box.
   bool sizeToTargets = false;
-  int jobs = 1;  // mesher processes at once
-  double timeoutSeconds = 600;
+  int jobs = static_cast<int>(build_option::kJobs.defaultValue);  // mesher processes at once
+  double timeoutSeconds = build_option::kTimeout.defaultValue;
   RepairOptions repair;
   // Alpha wrapping (AlphaWrap.h) of the inputs repair cannot close, that no
   // mesher run accepts (auto), or all (always). A wrapped input is meshed in
