@@ -143,28 +143,30 @@ CLI::Validator wholeNumberIn(const NumberRange& range) {
                                                                      : std::ceil(range.max) - 1));
 }
 
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
-  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
-                           ->capture_default_str()
-                           ->check(numberIn(option.range));
-  addOldFlag(cmd, option, value, added, numberIn(option.range));
+namespace {
+
+// The option's flag bound to `value`, checked by `check`, and its old flag.
+template <class T>
+CLI::Option* addChecked(CLI::App& cmd, const NumberOption& option, T& value,
+                        const CLI::Validator& check) {
+  CLI::Option* added =
+      cmd.add_option(option.flag, value, option.help)->capture_default_str()->check(check);
+  addOldFlag(cmd, option, value, added, check);
   return added;
+}
+
+}  // namespace
+
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
+  return addChecked(cmd, option, value, numberIn(option.range));
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value) {
-  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
-                           ->capture_default_str()
-                           ->check(wholeNumberIn(option.range));
-  addOldFlag(cmd, option, value, added, wholeNumberIn(option.range));
-  return added;
+  return addChecked(cmd, option, value, wholeNumberIn(option.range));
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
-  CLI::Option* added = cmd.add_option(option.flag, value, option.help)
-                           ->capture_default_str()
-                           ->check(wholeNumberIn(option.range));
-  addOldFlag(cmd, option, value, added, wholeNumberIn(option.range));
-  return added;
+  return addChecked(cmd, option, value, wholeNumberIn(option.range));
 }
 
 CLI::Validator fileEnding(const std::string& extension) {
