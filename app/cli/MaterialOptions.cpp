@@ -14,12 +14,11 @@ void addMaterialOptions(CLI::App& cmd, MaterialOverrides& material) {
   const auto fields = materialFields();
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const NumberOption& schema = *fields[i].option;
-    CLI::Option* added = cmd.add_option(schema.flag, material.values[i],
-                                        std::string(schema.help) + " (without a config value: " +
-                                            formatNumber(schema.defaultValue) + ")")
-                             ->check(finiteNumber())
-                             ->group(kMaterialGroup);
-    addOldFlag(cmd, schema, material.values[i], added, finiteNumber());
+    addFlagOf(cmd, schema, material.values[i],
+              std::string(schema.help) +
+                  " (without a config value: " + formatNumber(schema.defaultValue) + ")",
+              finiteNumber())
+        ->group(kMaterialGroup);
   }
 }
 

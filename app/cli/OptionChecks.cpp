@@ -143,30 +143,18 @@ CLI::Validator wholeNumberIn(const NumberRange& range) {
                                                                      : std::ceil(range.max) - 1));
 }
 
-namespace {
-
-// The option's flag bound to `value`, checked by `check`, and its old flag.
-template <class T>
-CLI::Option* addChecked(CLI::App& cmd, const NumberOption& option, T& value,
-                        const CLI::Validator& check) {
-  CLI::Option* added =
-      cmd.add_option(option.flag, value, option.help)->capture_default_str()->check(check);
-  addOldFlag(cmd, option, value, added, check);
-  return added;
-}
-
-}  // namespace
-
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
-  return addChecked(cmd, option, value, numberIn(option.range));
+  return addFlagOf(cmd, option, value, option.help, numberIn(option.range))->capture_default_str();
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value) {
-  return addChecked(cmd, option, value, wholeNumberIn(option.range));
+  return addFlagOf(cmd, option, value, option.help, wholeNumberIn(option.range))
+      ->capture_default_str();
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
-  return addChecked(cmd, option, value, wholeNumberIn(option.range));
+  return addFlagOf(cmd, option, value, option.help, wholeNumberIn(option.range))
+      ->capture_default_str();
 }
 
 CLI::Validator fileEnding(const std::string& extension) {
@@ -211,7 +199,7 @@ std::optional<std::string> givenOptionOf(const CLI::App& cmd, const std::string&
     if (option->count() == 0) continue;
     if (option->get_group() == group) return option->get_name();
   }
-  // An old flag (hidden, addOldFlag) stands in for its option.
+  // An old flag (hidden, addFlagOf) stands in for its option.
   for (const CLI::Option* old : cmd.get_options()) {
     const std::string& about = old->get_description();
     if (old->count() == 0 || about.rfind(kOldNameOf, 0) != 0) continue;

@@ -66,14 +66,15 @@ inline const std::string kOldNameOf = "old name of ";
 // Prints "warning: WARNING" on stderr.
 void warnOfOldName(const std::string& warning);
 
-// `option`'s old flag (NumberOption::oldFlag), if it has one, beside the
-// option `current` its flag added: the same value, hidden from --help,
-// checked by `check`, a warning when it is used, an error beside the new
-// flag.
+// `option`'s flag bound to `value`, with `help`, checked by `check`; and
+// its old flag (NumberOption::oldFlag), if it has one: the same value,
+// hidden from --help, checked alike, a warning when it is used, an error
+// beside the new flag. Returns the flag's option.
 template <class T>
-void addOldFlag(CLI::App& cmd, const NumberOption& option, T& value, CLI::Option* current,
-                const CLI::Validator& check) {
-  if (!*option.oldFlag) return;
+CLI::Option* addFlagOf(CLI::App& cmd, const NumberOption& option, T& value, const std::string& help,
+                       const CLI::Validator& check) {
+  CLI::Option* current = cmd.add_option(option.flag, value, help)->check(check);
+  if (!*option.oldFlag) return current;
   const std::string warning = deprecatedName(option.oldFlag, option.flag);
   const std::string old = option.oldFlag;
   const std::string both = "is the same option as " + std::string(option.flag) + ": give one";
@@ -84,6 +85,7 @@ void addOldFlag(CLI::App& cmd, const NumberOption& option, T& value, CLI::Option
         if (current->count() > 0) throw Error(old + ": " + both);
         warnOfOldName(warning);
       });
+  return current;
 }
 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value);

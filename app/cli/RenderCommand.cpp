@@ -93,7 +93,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   if (a.printRun && !a.run.empty())
     throw Error(
         "--print-run: prints the run --frames simulates (--run draws a recorded one as it was)");
-  if (a.output.empty() && !a.printRun) throw Error("--output is required (or --print-run)");
+  requireOutputOrPrintRun(a.output, a.printRun);
   if (const auto option = givenOptionOf(cmd, kFurGroup); option && !hasFur(o.path))
     throw Error(*option + ": applies to the fur paths (fur-cpu, fur-gpu), not to " + a.path);
   if (!a.run.empty() && a.frames > 0)
@@ -238,11 +238,8 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option(kTextureSize.flag, a->furTextureSize, kTextureSize.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
-  addOldFlag(*cmd, kTextureRepeats, a->furRepeats,
-             cmd->add_option(kTextureRepeats.flag, a->furRepeats, kTextureRepeats.help)
-                 ->check(finiteNumber())
-                 ->group(kFurGroup),
-             finiteNumber());
+  addFlagOf(*cmd, kTextureRepeats, a->furRepeats, kTextureRepeats.help, finiteNumber())
+      ->group(kFurGroup);
   cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
       ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
       ->group(kFurGroup);

@@ -28,6 +28,10 @@ void addPrintRunFlag(CLI::App& cmd, bool& printRun) {
                "config and the defaults) and exit without running it");
 }
 
+void requireOutputOrPrintRun(const std::filesystem::path& output, bool printRun) {
+  if (output.empty() && !printRun) throw Error("--output is required (or --print-run)");
+}
+
 void checkRunOptions(const RunArgs& a, const CLI::App& cmd) {
   if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
     for (const char* option : {"--coarse-reuse", "--coarse-operators", "--coarse-levels"})

@@ -5,6 +5,7 @@
 // the run (RunSpec) they describe on a level of a dataset.
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
 
 #include "MaterialOptions.h"
@@ -32,6 +33,8 @@ void addRunOptions(CLI::App& cmd, RunArgs& args);
 // Adds --print-run: print the run the options describe (runSpecJson) and
 // exit without running it.
 void addPrintRunFlag(CLI::App& cmd, bool& printRun);
+// Throws Error for a command given neither -o nor --print-run.
+void requireOutputOrPrintRun(const std::filesystem::path& output, bool printRun);
 
 // Throws Error for a multigrid setting given with --solver cg (checked
 // before any work, as a typo would be).

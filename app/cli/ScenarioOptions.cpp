@@ -49,19 +49,13 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                      "# comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
-  CLI::Option* loadSeconds = cmd.add_option(kLoadSeconds.flag, p.loadSeconds, kLoadSeconds.help)
-                                 ->check(positiveNumber())
-                                 ->group(kGroup);
-  addOldFlag(cmd, kLoadSeconds, p.loadSeconds, loadSeconds, positiveNumber());
+  addFlagOf(cmd, kLoadSeconds, p.loadSeconds, kLoadSeconds.help, positiveNumber())->group(kGroup);
   cmd.add_option(kGravity.flag, a.gravity, std::string(kGravity.help) + ": X,Y,Z")
       ->expected(3)
       ->delimiter(',')
       ->check(finiteNumber())
       ->group(kGroup);
-  CLI::Option* floor = cmd.add_option(kFloorHeight.flag, a.floor, kFloorHeight.help)
-                           ->check(finiteNumber())
-                           ->group(kGroup);
-  addOldFlag(cmd, kFloorHeight, a.floor, floor, finiteNumber());
+  addFlagOf(cmd, kFloorHeight, a.floor, kFloorHeight.help, finiteNumber())->group(kGroup);
   // (Not a scenario option: the camera presets follow it too.)
   cmd.add_option("--up", a.up,
                  "the axis that points up: x, y or z (default: the dataset config's up, else y); "

@@ -41,7 +41,7 @@ struct SimulateArgs {
 // (Checked before any work, as a typo would be.)
 void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   checkRunOptions(a.run, cmd);
-  if (a.output.empty() && !a.printRun) throw Error("--output is required (or --print-run)");
+  requireOutputOrPrintRun(a.output, a.printRun);
   if (a.pieces > 1 && a.surface.empty())
     throw Error("--pieces " + std::to_string(a.pieces) +
                 " splits the surface's frames: give the surface (--surface)");

@@ -24,24 +24,25 @@ std::optional<py::object> Keywords::take(const char* key, bool listedAsKnown) {
   return value;
 }
 
+std::optional<py::object> Keywords::orOtherName(std::optional<py::object> value, std::string& name,
+                                                const std::string& other, bool old) {
+  std::optional<py::object> byOther = take(other.c_str(), !old);
+  if (!byOther) return value;
+  if (value) throw Error(call_ + ": " + name + " and " + other + " are the same option: give one");
+  if (old && PyErr_WarnEx(PyExc_DeprecationWarning, deprecatedName(other, name).c_str(), 1) != 0)
+    throw py::error_already_set();
+  name = other;
+  return byOther;
+}
+
 std::optional<double> Keywords::number(const NumberOption& option) {
-  std::optional<py::object> value = take(option.key);
   std::string name = option.key;
+  std::optional<py::object> value = take(option.key);
   // The flag's name where it is not the key (fur_length for the fur
   // section's length), and the old flag's, with a warning.
-  for (const std::string& other : {keywordOf(option.flag), keywordOf(option.oldFlag)}) {
-    if (other.empty() || other == option.key) continue;
-    const bool old = other == keywordOf(option.oldFlag);
-    std::optional<py::object> byOther = take(other.c_str(), !old);
-    if (value && byOther)
-      throw Error(call_ + ": " + name + " and " + other + " are the same option: give one");
-    if (!byOther) continue;
-    value = byOther;
-    name = other;
-    if (old &&
-        PyErr_WarnEx(PyExc_DeprecationWarning, deprecatedName(other, option.key).c_str(), 1) != 0)
-      throw py::error_already_set();
-  }
+  for (const std::string& other : {keywordOf(option.flag), keywordOf(option.oldFlag)})
+    if (!other.empty() && other != option.key)
+      value = orOtherName(value, name, other, other == keywordOf(option.oldFlag));
   if (!value) return std::nullopt;
   if (py::isinstance<py::bool_>(*value) ||
       !(py::isinstance<py::float_>(*value) || py::isinstance<py::int_>(*value) ||
@@ -114,14 +115,9 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
   const auto named = [&k](const ListOption& option) { return k.call() + ": " + option.key; };
   // (held_nodes: the old name, as --fixed-nodes named them on the command
   // line all along; read with a warning.)
-  std::optional<py::object> fixed = k.take(kFixedNodes.key);
-  if (const auto old = k.take("held_nodes", false)) {
-    if (fixed) throw Error(named(kFixedNodes) + " and held_nodes are the same option: give one");
-    if (PyErr_WarnEx(PyExc_DeprecationWarning,
-                     deprecatedName("held_nodes", kFixedNodes.key).c_str(), 1) != 0)
-      throw py::error_already_set();
-    fixed = old;
-  }
+  std::string fixedName = kFixedNodes.key;
+  const std::optional<py::object> fixed =
+      k.orOtherName(k.take(kFixedNodes.key), fixedName, "held_nodes", true);
   if (fixed) p.fixedNodes = idList(*fixed, kFixedNodes.key, levelNodes, level);
   if (const auto box = k.take(kFixedBox.key)) {
     const Points3 corners = points3(*box, kFixedBox.key);

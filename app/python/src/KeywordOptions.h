@@ -48,6 +48,12 @@ class Keywords {
   // Any other keyword's value, nullopt when not given. (`listedAsKnown`:
   // whether an unknown keyword's error offers it: an old name is not.)
   std::optional<py::object> take(const char* key, bool listedAsKnown = true);
+  // `value` (given as `name`), or the value given by `other`, another name
+  // of the same option (`old`: one it had before, read with a
+  // DeprecationWarning and not offered among the known names), `name` then
+  // becoming `other`; an error when both are given.
+  std::optional<py::object> orOtherName(std::optional<py::object> value, std::string& name,
+                                        const std::string& other, bool old);
   // Whether `key` was given (and not taken yet).
   bool given(const char* key) const { return given_.contains(key); }
   // Error naming the keywords not read: "simulation: unknown option 'yung'

@@ -180,14 +180,13 @@ struct NumberOption {
 
 // An option of a run that is not one number: node ids, a box, loads and
 // their curve, a vector. Its key (a config's, Python's keyword), its
-// command-line flag, the flag it had before ("" for none), its name in
-// messages and the GUI's label ("the fixed box"), and its help: what it
+// command-line flag, its name in messages and the GUI's label ("the fixed
+// box"), and its help: what it
 // means, which each front end follows with the form it takes there (a
 // text file, an array, a field).
 struct ListOption {
   const char* key;
   const char* flag;
-  const char* oldFlag;
   const char* what;
   const char* help;
 };

@@ -69,7 +69,7 @@ inline constexpr NumberOption kMaxElements{"max_elements",
                                            between(1, 1e8),
                                            12000};
 inline constexpr ListOption kQualities{
-    "qualities", "--qualities", "", "the TetGen qualities",
+    "qualities", "--qualities", "the TetGen qualities",
     "TetGen radius-edge bounds (-q), each > 1.0; closer to 1 is finer"};
 inline constexpr NumberOption kJobs{"jobs",
                                     "--jobs",

@@ -77,16 +77,16 @@ inline constexpr NumberOption kTwistSeconds{"twist_seconds",
 // The run's other options, for every scenario (OptionSchema.h: their keys,
 // flags and words; each front end adds the form they take there).
 inline constexpr ListOption kFixedNodes{
-    "fixed_nodes", "--fixed-nodes", "", "the fixed nodes",
+    "fixed_nodes", "--fixed-nodes", "the fixed nodes",
     "also hold these nodes of the level still (ids from 0: the point ids of its .vtu)"};
 inline constexpr ListOption kFixedBox{
-    "fixed_box", "--fixed-box", "", "the fixed box",
+    "fixed_box", "--fixed-box", "the fixed box",
     "also hold still the nodes of the level inside this box, faces included, in the dataset's "
     "coordinates (a beam's end, say)"};
-inline constexpr ListOption kLoads{"loads", "--loads", "", "the loads",
+inline constexpr ListOption kLoads{"loads", "--loads", "the loads",
                                    "forces (newtons) on nodes of the level"};
 inline constexpr ListOption kLoadCurve{
-    "load_curve", "--load-curve", "", "the load curve",
+    "load_curve", "--load-curve", "the load curve",
     "with loads: scales them over time by points TIME FACTOR (seconds, increasing; linear "
     "between, held before the first and after the last, or repeated after it)"};
 inline constexpr NumberOption kLoadSeconds{
@@ -98,7 +98,7 @@ inline constexpr NumberOption kLoadSeconds{
     above(0),
     std::numeric_limits<double>::infinity()};
 inline constexpr ListOption kGravity{
-    "gravity", "--gravity", "", "gravity",
+    "gravity", "--gravity", "gravity",
     "gravity X, Y, Z in m/s^2 (default 9.81 down the up axis: 0, -9.81, 0 for y)"};
 inline constexpr NumberOption kFloorHeight{
     "floor_height",
