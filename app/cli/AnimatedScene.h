@@ -28,13 +28,15 @@ namespace tetskin::cli {
 
 struct SceneOptions {
   int level = -1;  // (a binding's own level, when the surface input is one)
-  RenderPath path = RenderPath::Cpu;
+  RenderPath path = kDefaultRenderPath;
   // The simulated frames' run (its level: the scene's); a step per frame.
   RunRequest run;
+  // The image's size (render --size); the GUI's window starts larger
+  // (1280x800, tetskin-gui --size): a window with docks, not an image.
   int width = 800, height = 600;
-  CameraPreset camera = CameraPreset::Iso;
-  UpAxis up = UpAxis::Y;          // of the camera presets and the simulation
-  std::string control = "none";   // none, surface, wireframe, shrink
+  CameraPreset camera = kDefaultCamera;
+  UpAxis up = UpAxis::Y;  // of the camera presets and the simulation
+  std::string control = toString(ControlMeshStyle::None);  // a ControlMeshStyle's name
   std::filesystem::path texture;  // PNG applied through the surface's texture coordinates
                                   // (on fur paths: the fur's colour and mask)
   FurParameters fur;              // for the fur paths

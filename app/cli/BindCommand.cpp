@@ -21,11 +21,13 @@ namespace {
 struct BindArgs {
   std::filesystem::path dataset, surface, output;
   int level = -1;
-  std::string method = toString(BindingMethod::Closest), offset = toString(OffsetMode::Normal);
+  std::string method = toString(BindingOptions{}.method),
+              offset = toString(BindingOptions{}.offset);
 };
 
 void run(const BindArgs& a, const CLI::App& cmd) {
-  if (fromName<BindingMethod>(a.method) == BindingMethod::Embed && cmd.count("--offset") > 0)
+  if (fromName<BindingMethod>(a.method) == BindingMethod::Embed &&
+      cmd.count(binding_option::kOffset.flag) > 0)
     throw Error(
         "--offset: applies to the closest and seed methods, not to embed (an embedded vertex is "
         "its tetrahedron's barycentric combination, with no offset)");
@@ -76,8 +78,8 @@ void addBindCommand(CLI::App& app) {
       ->required()
       ->check(fileEnding(".vtp"));
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
-  addEnumOption<BindingMethod>(*cmd, "--method", "", a->method);
-  addEnumOption<OffsetMode>(*cmd, "--offset", "", a->offset);
+  addEnumOption(*cmd, binding_option::kMethod, a->method);
+  addEnumOption(*cmd, binding_option::kOffset, a->offset);
   addCompressOption(*cmd);
   cmd->callback([a, cmd] { run(*a, *cmd); });
 }

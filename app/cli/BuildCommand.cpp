@@ -18,10 +18,10 @@ struct BuildArgs {
   std::filesystem::path output;
   std::string lodSeries;
   int lodInputs = 0;
-  std::string mesher = toString(MesherKind::TetGen);
-  std::vector<double> qualities = {2.0, 1.8, 1.6, 1.4, 1.2};
-  std::string up = toString(UpAxis::Y);
-  std::string wrap = toString(WrapMode::Auto);
+  std::string mesher = toString(BuildOptions{}.mesher);
+  std::vector<double> qualities = BuildOptions{}.qualities;
+  std::string up = toString(BuildOptions{}.up);
+  std::string wrap = toString(BuildOptions{}.wrap.mode);
   BuildOptions options;
   bool quiet = false;
 };
@@ -103,7 +103,7 @@ void addBuildCommand(CLI::App& app) {
   addNumberOption(*cmd, build_option::kLevels, a->options.levels);
   addNumberOption(*cmd, build_option::kMinElements, a->options.minElements);
   addNumberOption(*cmd, build_option::kMaxElements, a->options.maxElements);
-  addEnumOption<MesherKind>(*cmd, "--mesher", "", a->mesher);
+  addEnumOption(*cmd, build_option::kMesher, a->mesher);
   cmd->add_option(build_option::kQualities.flag, a->qualities, build_option::kQualities.help)
       ->delimiter(',')
       ->capture_default_str()
@@ -120,17 +120,14 @@ void addBuildCommand(CLI::App& app) {
                 "write levels that lie off the input beyond their fidelity bound (half their\n"
                 "element size on average, twice it at worst) when no faithful candidate is\n"
                 "near their target; without it, build stops and says which and why");
-  addEnumOption<WrapMode>(*cmd, "--wrap", "alpha-wrap inputs in a closed surface first: ", a->wrap);
+  addEnumOption(*cmd, wrap_option::kMode, a->wrap);
   addNumberOption(*cmd, wrap_option::kAlpha, a->options.wrap.alpha);
   addNumberOption(*cmd, wrap_option::kOffset, a->options.wrap.offset);
   // (Default: all cores, set before parsing.)
   addNumberOption(*cmd, build_option::kJobs, a->options.jobs)->default_str("");
   addNumberOption(*cmd, build_option::kTimeout, a->options.timeoutSeconds);
-  cmd->add_option("--up", a->up,
-                  "the axis that points up in the inputs: x, y or z (written to the config; "
-                  "simulation and cameras follow it)")
-      ->check(CLI::IsMember(namesOf<UpAxis>()))
-      ->capture_default_str();  // (its help says more than the names: not addEnumOption)
+  addEnumOption(*cmd, kUpOption, a->up,
+                " in the inputs (written to the config; simulation and cameras follow it)");
   cmd->add_flag("-q,--quiet", a->quiet, "no progress or repair report on stderr");
   cmd->callback([a] { run(*a); });
 }

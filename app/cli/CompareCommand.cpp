@@ -30,7 +30,8 @@ constexpr const char* kMotionGroup = "Motion";
 struct CompareArgs {
   std::filesystem::path dataset, surface, output, table;
   std::vector<int> levels;
-  int reference = -1, steps = 120, every = 1;
+  int reference = -1, steps = static_cast<int>(recording_option::kSteps.defaultValue),
+      every = static_cast<int>(recording_option::kEvery.defaultValue);
   std::vector<std::filesystem::path> runs;
   RunArgs run;
   bool quiet = false;
@@ -44,9 +45,13 @@ std::filesystem::path tableOf(const CompareArgs& a) {
 }
 
 void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
+  if (a.runs.empty() && a.steps == 0)
+    throw Error(std::string(recording_option::kSteps.flag) +
+                ": 0 steps leave the levels at rest, with nothing to compare: give 1 or more");
   if (!a.runs.empty()) {
     // What would be simulated is read from the runs instead.
-    for (const char* option : {"--levels", "--reference", "--steps", "--every"})
+    for (const char* option :
+         {"--levels", "--reference", recording_option::kSteps.flag, recording_option::kEvery.flag})
       if (cmd.count(option) > 0)
         throw Error(std::string(option) + ": compares simulated levels; --runs compares " +
                     "recorded runs (the first the reference) frame by frame");
@@ -55,7 +60,8 @@ void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
     std::optional<std::string> given = givenOptionOf(cmd, kMaterialGroup);
     if (!given) given = givenName(cmd, simulation_option::kTimeStep);
     if (!given) given = givenName(cmd, scenario_option::kFloorHeight);
-    for (const char* option : {"--solver", "--tangent", "--gravity", "--up"})
+    for (const char* option : {simulation_option::kSolver.flag, simulation_option::kTangent.flag,
+                               scenario_option::kGravity.flag, kUpOption.flag})
       if (!given && cmd.count(option) > 0) given = option;
     if (given) throw Error(*given + ": compares simulated levels; --runs compares recorded runs");
   }
@@ -229,13 +235,10 @@ void addCompareCommand(CLI::App& app) {
                   "the level the others are measured against (default -1: the finest)")
       ->check(anyWholeNumber())
       ->group(kMotionGroup);
-  cmd->add_option("--steps", a->steps, "time steps")
+  addNumberOption(*cmd, recording_option::kSteps, a->steps)->group(kMotionGroup);
+  addFlagOf(*cmd, recording_option::kEvery, a->every, "compare every k-th step (and the last)",
+            wholeNumberIn(recording_option::kEvery.range))
       ->capture_default_str()
-      ->check(wholeNumber(1))
-      ->group(kMotionGroup);
-  cmd->add_option("--every", a->every, "compare every k-th step (and the last)")
-      ->capture_default_str()
-      ->check(wholeNumber(1))
       ->group(kMotionGroup);
   cmd->add_option("--runs", a->runs,
                   "compare runs recorded by simulate (RUN.pvd, two or more, the first the "

@@ -27,7 +27,7 @@ namespace {
 
 struct DeformArgs {
   std::filesystem::path dataset, binding, positions, output;
-  int pieces = 1;
+  int pieces = static_cast<int>(kPiecesOption.defaultValue);
 };
 
 Points3 readPositions(const std::filesystem::path& path) {
@@ -137,7 +137,7 @@ void addDeformCommand(CLI::App& app) {
                   "deformed surface (.vtp, or .pvtp in pieces); for a recorded run, its series "
                   "(.pvd)")
       ->required();
-  cmd->add_option("--pieces", a->pieces, kPiecesHelp)->capture_default_str()->check(wholeNumber(1));
+  addNumberOption(*cmd, kPiecesOption, a->pieces);
   addCompressOption(*cmd);
   cmd->callback([a] { run(*a); });
 }

@@ -222,9 +222,9 @@ void warnOfOldName(const std::string& warning) {
 
 void addCompressOption(CLI::App& cmd) {
   auto name = std::make_shared<std::string>(toString(vtkCompression()));
-  addEnumOption<VtkCompression>(cmd, "--compress", "data of the .vtp/.vtu files written: ", *name)
-      ->each(
-          [name](const std::string& given) { setVtkCompression(fromName<VtkCompression>(given)); });
+  addEnumOption(cmd, kCompressOption, *name)->each([name](const std::string& given) {
+    setVtkCompression(fromName<VtkCompression>(given));
+  });
 }
 
 }  // namespace tetskin::cli

@@ -31,12 +31,6 @@ inline constexpr const char* kLevelHelp =
 inline constexpr const char* kDatasetHelp =
     "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)";
 
-// --help of the --pieces options (RunRecorder, PartitionedSurface.h).
-inline constexpr const char* kPiecesHelp =
-    "write the surface (each frame's) as a .pvtp in N compact pieces, cut the same in every "
-    "frame, for ParaView's distributed server (mpiexec pvbatch, pvserver: each rank reads its "
-    "own)";
-
 // A whole number of any sign, e.g. --level (negative counts from the
 // finest) or an option whose range a module checks with its own message.
 CLI::Validator anyWholeNumber();
@@ -92,12 +86,13 @@ CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& 
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value);
 CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value);
 
-// An enum option (OptionSchema.h) on `cmd`: `flag`, `what` and then the
-// names with their help, the default shown, one of the names checked.
+// An enum option (OptionSchema.h) on `cmd`: its flag, its help with the
+// names' and then `note` (what the option means to this command), the
+// default shown, one of the names checked.
 template <SchemaEnum E>
-CLI::Option* addEnumOption(CLI::App& cmd, const std::string& flag, const std::string& what,
-                           std::string& name) {
-  return cmd.add_option(flag, name, what + helpOf<E>())
+CLI::Option* addEnumOption(CLI::App& cmd, const EnumOption<E>& option, std::string& name,
+                           const std::string& note = "") {
+  return cmd.add_option(option.flag, name, option.fullHelp() + note)
       ->capture_default_str()
       ->check(CLI::IsMember(namesOf<E>()));
 }

@@ -33,8 +33,9 @@ constexpr const char* kFurGroup = "Fur (fur paths; default: the dataset config's
 
 struct RenderArgs {
   std::filesystem::path dataset, surface, output, texture, run;
-  std::string path = toString(RenderPath::Cpu), camera = toString(CameraPreset::Iso),
-              control = toString(ControlMeshStyle::None), size = "800x600";
+  std::string path = toString(SceneOptions{}.path), camera = toString(SceneOptions{}.camera),
+              control = SceneOptions{}.control,
+              size = toString(ImageSize{SceneOptions{}.width, SceneOptions{}.height});
   ScenarioArgs scenario;
   MaterialOverrides material;  // over the config's elasticity
   double timeStep = SimulationOptions{}.timeStep;
@@ -207,7 +208,8 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   // (Names checked in run(), whose error lists them: --path, --camera,
   // --control, --fur-lighting.)
-  cmd->add_option("--path", a->path, oneOf(namesOf<RenderPath>()))->capture_default_str();
+  cmd->add_option(kRenderPathOption.flag, a->path, kRenderPathOption.fullHelp())
+      ->capture_default_str();
   cmd->add_option("-o,--output", a->output,
                   "image (.png); with --run, the images OUT_00000.png, ... or one movie (.ogv); "
                   "required unless --print-run")
@@ -244,8 +246,7 @@ void addRenderCommand(CLI::App& app) {
       ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
       ->group(kFurGroup);
   cmd->add_option(kDrag.flag, a->furDrag, kDrag.help)->check(finiteNumber())->group(kFurGroup);
-  cmd->add_option("--fur-lighting", a->furLighting, oneOf(namesOf<FurLighting>()))
-      ->group(kFurGroup);
+  cmd->add_option(kLighting.flag, a->furLighting, kLighting.fullHelp())->group(kFurGroup);
   cmd->add_option(kVelvet.flag, a->furVelvet, kVelvet.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
@@ -254,8 +255,8 @@ void addRenderCommand(CLI::App& app) {
       ->group(kFurGroup);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
-  cmd->add_option("--camera", a->camera, oneOf(namesOf<CameraPreset>()))->capture_default_str();
-  cmd->add_option("--control", a->control, "control mesh: " + oneOf(namesOf<ControlMeshStyle>()))
+  cmd->add_option(kCameraOption.flag, a->camera, kCameraOption.fullHelp())->capture_default_str();
+  cmd->add_option(kControlMeshOption.flag, a->control, kControlMeshOption.fullHelp())
       ->capture_default_str();
   cmd->add_option("--frames", a->frames,
                   "simulate and draw N frames, report frames/s and a breakdown")

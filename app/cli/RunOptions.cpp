@@ -9,16 +9,16 @@ namespace tetskin::cli {
 void addRunOptions(CLI::App& cmd, RunArgs& a) {
   addTimeStepOption(cmd, a.options.timeStep);
   addScenarioOptions(cmd, a.scenario);
-  addEnumOption<SolverKind>(cmd, "--solver", "", a.solver);
-  addEnumOption<Tangent>(cmd, "--tangent", "the implicit step's stiffness: ", a.tangent);
+  addEnumOption(cmd, simulation_option::kSolver, a.solver);
+  addEnumOption(cmd, simulation_option::kTangent, a.tangent);
   addNumberOption(cmd, simulation_option::kTolerance, a.options.tolerance);
   addNumberOption(cmd, simulation_option::kGuessSolutions, a.options.guessSolutions);
   addNumberOption(cmd, simulation_option::kCoarseReuse, a.options.coarseReuse);
   addNumberOption(cmd, simulation_option::kMaxIterations, a.options.maxIterations);
   addNumberOption(cmd, simulation_option::kFriction, a.options.friction);
   addNumberOption(cmd, simulation_option::kFloorStiffness, a.options.floorStiffness);
-  addEnumOption<CoarseOperators>(cmd, "--coarse-operators", "multigrid: ", a.coarseOperators);
-  addEnumOption<CoarseLevels>(cmd, "--coarse-levels", "multigrid: ", a.coarseLevels);
+  addEnumOption(cmd, simulation_option::kCoarseOperators, a.coarseOperators);
+  addEnumOption(cmd, simulation_option::kCoarseLevels, a.coarseLevels);
   addMaterialOptions(cmd, a.material);
 }
 
@@ -33,11 +33,12 @@ void requireOutputOrPrintRun(const std::filesystem::path& output, bool printRun)
 }
 
 void checkRunOptions(const RunArgs& a, const CLI::App& cmd) {
+  using namespace simulation_option;
   if (fromName<SolverKind>(a.solver) == SolverKind::ConjugateGradient)
-    for (const char* option : {"--coarse-reuse", "--coarse-operators", "--coarse-levels"})
+    for (const char* option : {kCoarseReuse.flag, kCoarseOperators.flag, kCoarseLevels.flag})
       if (cmd.count(option) > 0)
-        throw Error(std::string(option) +
-                    ": applies to the multigrid solver (--solver multigrid or auto), not to cg");
+        throw Error(std::string(option) + ": applies to the multigrid solver (" + kSolver.flag +
+                    " multigrid or auto), not to cg");
 }
 
 RunRequest runRequest(const RunArgs& a, const CLI::App& cmd, const Dataset& dataset, int level,

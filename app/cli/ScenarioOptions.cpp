@@ -57,9 +57,11 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
       ->group(kGroup);
   addFlagOf(cmd, kFloorHeight, a.floor, kFloorHeight.help, finiteNumber())->group(kGroup);
   // (Not a scenario option: the camera presets follow it too.)
-  cmd.add_option("--up", a.up,
-                 "the axis that points up: x, y or z (default: the dataset config's up, else y); "
-                 "the scenarios, the floor, the default gravity and the camera follow it")
+  // (No default shown: the dataset config's.)
+  cmd.add_option(kUpOption.flag, a.up,
+                 kUpOption.fullHelp() +
+                     " (default: the dataset config's up, else y); the scenarios, the floor, the "
+                     "default gravity and the camera follow it")
       ->check(CLI::IsMember(namesOf<UpAxis>()));
 }
 

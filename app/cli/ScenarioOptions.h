@@ -16,7 +16,7 @@
 namespace tetskin::cli {
 
 struct ScenarioArgs {
-  std::string name = "wobble";
+  std::string name = kDefaultScenario;
   ScenarioParameters parameters;
   std::filesystem::path fixedNodes;  // a node list (io NodeList.h), or empty
   std::vector<double> fixedBox;      // --fixed-box: min x, y, z, max x, y, z; empty: none

@@ -33,7 +33,9 @@ namespace {
 
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
-  int steps = 120, level = -1, every = 1, pieces = 1;
+  int steps = static_cast<int>(recording_option::kSteps.defaultValue), level = -1,
+      every = static_cast<int>(recording_option::kEvery.defaultValue),
+      pieces = static_cast<int>(kPiecesOption.defaultValue);
   RunArgs run;
   bool quiet = false, printRun = false;
 };
@@ -208,10 +210,8 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output,
                   "time series RUN.pvd (frames go to RUN_frames/); required unless --print-run");
-  cmd->add_option("--steps", a->steps, "time steps")->capture_default_str()->check(wholeNumber(0));
-  cmd->add_option("--every", a->every, "write every k-th step (and the last)")
-      ->capture_default_str()
-      ->check(wholeNumber(1));
+  addNumberOption(*cmd, recording_option::kSteps, a->steps);
+  addNumberOption(*cmd, recording_option::kEvery, a->every);
   cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
   cmd->add_option("--initial", a->initial,
                   "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
@@ -223,7 +223,7 @@ void addSimulateCommand(CLI::App& app) {
                   "also write this surface, bound (closest) and deformed, per frame; a binding "
                   "from bind is used as it is, on its level")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--pieces", a->pieces, kPiecesHelp)->capture_default_str()->check(wholeNumber(1));
+  addNumberOption(*cmd, kPiecesOption, a->pieces);
   cmd->add_option("--log", a->log,
                   "also write every step to this table (.csv): time, solver, iterations, "
                   "residual, floor contacts, the step's times by stage, kinetic, elastic and "

@@ -18,6 +18,7 @@
 #include <QVBoxLayout>
 #include <filesystem>
 
+#include "EnumBox.h"
 #include "ScientificSpinBox.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -68,18 +69,14 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   form->addRow(labelOf(kLevels), levels_);
   form->addRow(labelOf(kMinElements), minElements_);
   form->addRow(labelOf(kMaxElements), maxElements_);
-  mesher_ = new QComboBox;
-  for (const std::string& name : namesOf<MesherKind>())
-    mesher_->addItem(QString::fromStdString(name));
-  form->addRow("Mesher", mesher_);
-  up_ = new QComboBox;
-  up_->setObjectName("up");
-  for (const std::string& name : namesOf<UpAxis>()) up_->addItem(QString::fromStdString(name));
-  up_->setCurrentText(toString(UpAxis::Y));
-  up_->setToolTip(
-      "the axis that points up in the inputs (z for most CAD and STL files): "
-      "the simulation's scenarios, floor and gravity and the camera follow it");
-  form->addRow("Up axis", up_);
+  const BuildOptions defaults;
+  mesher_ = enumCombo("mesher", kMesher, defaults.mesher);
+  form->addRow(labelOf(kMesher), mesher_);
+  up_ = enumCombo("up", kUpOption, defaults.up);
+  up_->setToolTip(QString::fromStdString(kUpOption.fullHelp()) +
+                  " in the inputs (z for most CAD and STL files): the simulation's scenarios, "
+                  "floor and gravity and the camera follow it");
+  form->addRow(labelOf(kUpOption), up_);
   QStringList qualities;
   for (const double q : BuildOptions{}.qualities) qualities << QString::number(q, 'f', 1);
   qualities_ = new QLineEdit(qualities.join(","));
@@ -100,13 +97,7 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
       "half their element size on average (twice it at worst) stops the build with the numbers "
       "and a way out; with it, the nearest is written and the config records its distances");
   form->addRow("", acceptUnfaithful_);
-  wrap_ = new QComboBox;
-  wrap_->setObjectName("wrap");
-  for (const std::string& name : namesOf<WrapMode>()) wrap_->addItem(QString::fromStdString(name));
-  wrap_->setToolTip(
-      "auto: wrap the inputs that repair cannot close (holes, open sheets, overlapping parts) or "
-      "that no mesher accepts in a closed surface (CGAL's alpha wrap) and mesh that; always: "
-      "wrap every input; never: refuse them");
+  wrap_ = enumCombo("wrap", wrap_option::kMode, defaults.wrap.mode);
   auto fraction = [](const char* name, const NumberOption& option) {
     auto* box = new QDoubleSpinBox;
     box->setObjectName(name);
@@ -125,7 +116,7 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   wrapRow->addWidget(wrapAlpha_);
   wrapRow->addWidget(new QLabel("offset"));
   wrapRow->addWidget(wrapOffset_);
-  form->addRow("Wrap", wrapRow);
+  form->addRow(labelOf(wrap_option::kMode), wrapRow);
   jobs_ = countBox(kJobs);
   jobs_->setValue(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   form->addRow(labelOf(kJobs), jobs_);
@@ -207,13 +198,13 @@ bool BuildDialog::start() {
   options.levels = levels_->value();
   options.minElements = minElements_->value();
   options.maxElements = maxElements_->value();
-  options.mesher = fromName<MesherKind>(mesher_->currentText().toStdString());
+  options.mesher = chosen<MesherKind>(mesher_);
   options.decimate = decimate_->isChecked();
   options.sizeToTargets = sizeToTargets_->isChecked();
   options.acceptUnfaithful = acceptUnfaithful_->isChecked();
   options.jobs = jobs_->value();
-  options.up = fromName<UpAxis>(up_->currentText().toStdString());
-  options.wrap.mode = fromName<WrapMode>(wrap_->currentText().toStdString());
+  options.up = chosen<UpAxis>(up_);
+  options.wrap.mode = chosen<WrapMode>(wrap_);
   options.wrap.alpha = wrapAlpha_->value();
   options.wrap.offset = wrapOffset_->value();
   options.qualities.clear();

@@ -21,6 +21,7 @@
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/rendering/RenderPath.h"
+#include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 
 namespace tetskin::gui {
@@ -39,15 +40,18 @@ QString choices() {
 struct GuiArguments {
   QCommandLineParser parser;
   QCommandLineOption screenshot{"screenshot", "render one frame to FILE (PNG) and exit", "FILE"};
-  QCommandLineOption path{"path", choices<tetskin::RenderPath>(), "PATH", "cpu"};
+  QCommandLineOption path{tetskin::kRenderPathOption.key, choices<tetskin::RenderPath>(), "PATH",
+                          tetskin::toString(tetskin::kDefaultRenderPath)};
   QCommandLineOption size{"size",
                           "with --screenshot the image's size (the view's, or with --window "
                           "the window's), else the window's: WIDTHxHEIGHT",
                           "WxH", "1280x800"};
-  QCommandLineOption camera{"camera", choices<tetskin::CameraPreset>(), "PRESET", "iso"};
+  QCommandLineOption camera{tetskin::kCameraOption.key, choices<tetskin::CameraPreset>(), "PRESET",
+                            tetskin::toString(tetskin::kDefaultCamera)};
   QCommandLineOption whole{"window", "with --screenshot: the whole window, docks included"};
-  QCommandLineOption control{"control", "control mesh: " + choices<tetskin::ControlMeshStyle>(),
-                             "STYLE"};
+  QCommandLineOption control{
+      tetskin::kControlMeshOption.key,
+      tetskin::kControlMeshOption.help + choices<tetskin::ControlMeshStyle>(), "STYLE"};
   QCommandLineOption colorBy{"color-by", choices<tetskin::gui::ColorBy>(), "ARRAY"};
   QCommandLineOption highlight{"highlight", "mark vertices with negative weights or far"};
   QCommandLineOption prescribed{"prescribed",
@@ -58,9 +62,10 @@ struct GuiArguments {
       QString::fromStdString(tetskin::oneOf(tetskin::scenarioNames())) + " (the Simulation dock's)",
       "NAME"};
   QCommandLineOption steps{
-      "steps",
-      "simulate N steps first; with --compare, compare over N steps (default: the Compare "
-      "dock's, 120)",
+      tetskin::recording_option::kSteps.key,
+      QString("simulate N steps first; with --compare, compare over N steps (default: the "
+              "Compare dock's, %1)")
+          .arg(tetskin::recording_option::kSteps.defaultValue),
       "N", "0"};
   QCommandLineOption noOverlay{"no-overlay", "hide the frame statistics (View > Frame statistics)"};
   QCommandLineOption compare{"compare",

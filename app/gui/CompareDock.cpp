@@ -16,8 +16,10 @@
 
 #include "EnumBox.h"
 #include "HistogramWidget.h"
+#include "ScientificSpinBox.h"
 #include "SeriesPlot.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/session/SimulationSession.h"
 
 namespace tetskin::gui {
 namespace {
@@ -45,12 +47,13 @@ CompareDock::CompareDock(Scene& scene, QWidget* parent) : QWidget(parent), scene
   inspected_ = levelBox("compareLevel");
   inspected_->setToolTip("the level whose fidelity is shown");
   steps_ = levelBox("compareSteps");
+  // (compare's own lower bound: 0 steps leave nothing to compare.)
   steps_->setRange(1, 100000);
-  steps_->setValue(120);
+  steps_->setValue(static_cast<int>(recording_option::kSteps.defaultValue));
   steps_->setToolTip("steps of the Simulation dock's scenario, run on both levels");
   form->addRow("Reference level", reference_);
   form->addRow("Inspected level", inspected_);
-  form->addRow("Steps", steps_);
+  form->addRow(labelOf(recording_option::kSteps), steps_);
   auto* run = new QPushButton("Compare");
   run->setObjectName("compare");
   run->setToolTip("run the Simulation dock's scenario, material and solver on both levels");

@@ -31,6 +31,14 @@ QComboBox* enumCombo(const char* name, E current) {
   return c;
 }
 
+// The same for an enum option: its help (OptionSchema.h) as the tip.
+template <SchemaEnum E>
+QComboBox* enumCombo(const char* name, const EnumOption<E>& option, E current) {
+  QComboBox* c = enumCombo(name, current);
+  c->setToolTip(QString::fromStdString(option.fullHelp()));
+  return c;
+}
+
 template <SchemaEnum E>
 E chosen(const QComboBox* box) {
   return fromName<E>(box->currentText().toStdString());

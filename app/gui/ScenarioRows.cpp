@@ -24,7 +24,7 @@ ScenarioRows::ScenarioRows(QFormLayout* form, bool interactive)
   scenario_ = new QComboBox;
   scenario_->setObjectName("scenario");
   for (const std::string& name : scenarioNames()) scenario_->addItem(QString::fromStdString(name));
-  scenario_->setCurrentText("wobble");
+  scenario_->setCurrentText(kDefaultScenario);
   using namespace scenario_option;
   baseShare_ = numberBox("baseShare", kBaseShare);
   baseShare_->setSingleStep(0.05);

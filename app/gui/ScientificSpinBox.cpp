@@ -84,21 +84,19 @@ ScientificSpinBox* numberBox(const char* name, const NumberOption& option) {
   return numberBox(name, min, max, option.defaultValue, option.help);
 }
 
-namespace {
-QString capitalized(const char* what) {
+QString labelOf(const char* what) {
   QString label = what;
   if (label.startsWith("the ")) label.remove(0, 4);
   if (!label.isEmpty()) label[0] = label[0].toUpper();
   return label;
 }
-}  // namespace
 
 QString labelOf(const NumberOption& option) {
-  return capitalized(option.what);
+  return labelOf(option.what);
 }
 
 QString labelOf(const ListOption& option) {
-  return capitalized(option.what);
+  return labelOf(option.what);
 }
 
 }  // namespace tetskin::gui

@@ -41,7 +41,12 @@ ScientificSpinBox* numberBox(const char* name, double min, double max, double va
 ScientificSpinBox* numberBox(const char* name, const NumberOption& option);
 // The option's label in a form: its name in messages, capitalized ("the
 // time step" -> "Time step"); its help (with the unit) is the box's tip.
+QString labelOf(const char* what);
 QString labelOf(const NumberOption& option);
 QString labelOf(const ListOption& option);
+template <SchemaEnum E>
+QString labelOf(const EnumOption<E>& option) {
+  return labelOf(option.what);
+}
 
 }  // namespace tetskin::gui

@@ -66,8 +66,8 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   layout->addLayout(form);  // (first: the rows' widgets then belong to the dock)
   scenarioRows_ = new ScenarioRows(form, interactive);
   const SimulationOptions defaults = defaultRunSettings();
-  solver_ = enumCombo("solver", defaults.solver);
-  tangent_ = enumCombo("tangent", defaults.tangent);
+  solver_ = enumCombo("solver", simulation_option::kSolver, defaults.solver);
+  tangent_ = enumCombo("tangent", simulation_option::kTangent, defaults.tangent);
   // The ranges, defaults, labels and tips are those of the options' schema
   // (OptionSchema.h). (The relative residual each solve reaches: a looser
   // one is much cheaper for interactive use, doc/benchmarks.md.)
@@ -82,8 +82,8 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
       material_[i]->setStepType(QAbstractSpinBox::DefaultStepType);
     }
   }
-  form->addRow("Solver", solver_);
-  form->addRow("Tangent", tangent_);
+  form->addRow(labelOf(simulation_option::kSolver), solver_);
+  form->addRow(labelOf(simulation_option::kTangent), tangent_);
   form->addRow(labelOf(simulation_option::kTolerance), tolerance_);
   form->addRow(labelOf(simulation_option::kTimeStep), timeStep_);
   for (std::size_t i = 0; i < fields.size(); ++i)

@@ -16,8 +16,8 @@ namespace tetskin::gui {
 
 ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scene) {
   auto* form = new QFormLayout(this);
-  renderPath_ = enumCombo("renderPath", RenderPath::Cpu);
-  form->addRow("Render path", renderPath_);
+  renderPath_ = enumCombo("renderPath", kRenderPathOption, kDefaultRenderPath);
+  form->addRow(labelOf(kRenderPathOption), renderPath_);
   connect(renderPath_, &QComboBox::currentTextChanged, this,
           [this](const QString& name) { Q_EMIT renderPathChosen(name); });
   auto toggle = [this, form](const char* name, const char* text, const char* label, auto set) {
@@ -41,8 +41,8 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
       ->setToolTip(
           "marks the simulated level's nodes that the scenario, the fixed nodes and the fixed "
           "box hold still or drive (a recorded run's while it is shown)");
-  controlStyle_ = enumCombo("controlStyle", ControlMeshStyle::Wireframe);
-  form->addRow("Control mesh", controlStyle_);
+  controlStyle_ = enumCombo("controlStyle", kControlMeshOption, ControlMeshStyle::Wireframe);
+  form->addRow(labelOf(kControlMeshOption), controlStyle_);
   connect(controlStyle_, &QComboBox::currentTextChanged, this, [this] {
     scene_.setControlStyle(chosen<ControlMeshStyle>(controlStyle_));
     Q_EMIT redraw();
@@ -54,8 +54,8 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
     scene_.setControlLevel(level);
     Q_EMIT redraw();
   });
-  camera_ = enumCombo("camera", CameraPreset::Iso);
-  form->addRow("Camera", camera_);
+  camera_ = enumCombo("camera", kCameraOption, kDefaultCamera);
+  form->addRow(labelOf(kCameraOption), camera_);
   connect(camera_, &QComboBox::currentTextChanged, this, [this] {
     scene_.setCamera(chosen<CameraPreset>(camera_));
     Q_EMIT redraw();
@@ -63,9 +63,10 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
   // The dataset's up axis (its config's, or y): for a z-up model opened
   // as bare .node/.ele, or a config that does not say. The camera and the
   // next run follow it.
-  upAxis_ = enumCombo("up", UpAxis::Y);
-  upAxis_->setToolTip("the axis that points up: camera presets, scenarios, floor and gravity");
-  form->addRow("Up axis", upAxis_);
+  upAxis_ = enumCombo("up", kUpOption, UpAxis::Y);
+  upAxis_->setToolTip(QString::fromStdString(kUpOption.fullHelp()) +
+                      ": camera presets, scenarios, floor and gravity follow it");
+  form->addRow(labelOf(kUpOption), upAxis_);
   connect(upAxis_, &QComboBox::currentTextChanged, this, [this] {
     if (!scene_.hasDataset()) return;
     scene_.setUpAxis(chosen<UpAxis>(upAxis_));
@@ -79,12 +80,12 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
   furShells_->setValue(fur.shells);
   furShells_->setToolTip(fur_option::kShells.help);
   furLength_ = numberBox("furLength", fur_option::kLength);
-  furLighting_ = enumCombo("furLighting", fur.lighting);
+  furLighting_ = enumCombo("furLighting", fur_option::kLighting, fur.lighting);
   furFins_ = new QCheckBox("fins at silhouettes");
   furFins_->setObjectName("furFins");
-  form->addRow("Fur shells", furShells_);
-  form->addRow("Fur length", furLength_);
-  form->addRow("Fur lighting", furLighting_);
+  form->addRow(labelOf(fur_option::kShells), furShells_);
+  form->addRow(labelOf(fur_option::kLength), furLength_);
+  form->addRow(labelOf(fur_option::kLighting), furLighting_);
   form->addRow("", furFins_);
   auto furChanged = [this] {
     if (!scene_.hasDataset()) return;

@@ -35,6 +35,10 @@ tetskin_cli_test(compare_runs_and_steps FAIL STATUS 1 REQUIRES compare_runs
   STDERR "^error: --steps: compares simulated levels. --runs compares recorded runs .the first the reference. frame by frame\n$"
   ARGS compare ${data}/bunny.json ${data}/bunny.obj --runs ${cli_out}/compare_a.pvd ${cli_out}/compare_b.pvd
        --steps 3 -o ${cli_out}/runs_steps.pvd)
+tetskin_cli_test(compare_no_steps FAIL STATUS 1
+  STDERR "^error: --steps: 0 steps leave the levels at rest, with nothing to compare: give 1 or more\n$"
+  NOT_EXIST ${cli_out}/compare_no_steps.pvd
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --steps 0 -o ${cli_out}/compare_no_steps.pvd)
 tetskin_cli_test(compare_not_a_pvd FAIL STATUS 1
   STDERR "^error: [^\n]*out.vtp[^\n]*\n$"
   ARGS compare ${data}/bunny.json ${data}/bunny.obj -o ${cli_out}/out.vtp)

@@ -119,7 +119,7 @@ def test_record_writes_the_surface_in_pieces(tmp_path, bunny, bunny_8k):
     V, F = bunny_8k
     binding = tetskin.bind(bunny, V, F, level=0)
     sim = tetskin.Simulation(bunny, level=0, scenario="wobble", solver="cg")
-    with pytest.raises(tetskin.Error, match="record: pieces must be >= 1"):
+    with pytest.raises(tetskin.Error, match="record: pieces: the surface's pieces must be finite and >= 1, got 0"):
         sim.record(tmp_path / "bad.pvd", surface=binding, pieces=0)
     sim.record(tmp_path / "run.pvd", surface=binding, pieces=3)
     sim.step(2)

@@ -6,13 +6,17 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "BlockRun.h"
 #include "ExpectError.h"
 #include "tetskin/core/Appearance.h"
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfacePieces.h"
 #include "tetskin/session/RunRequest.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::test {
 namespace {
@@ -43,12 +47,42 @@ TEST(RunRequest, EveryOptionsFlagIsItsKey) {
         &fur_option::kTextureSize, &fur_option::kTextureRepeats, &fur_option::kDrag,
         &fur_option::kVelvet})
     options.emplace_back(o, "--fur-");
+  for (const NumberOption* o :
+       {&recording_option::kSteps, &recording_option::kEvery, &kPiecesOption})
+    options.emplace_back(o, "--");
   for (const auto& [option, prefix] : options) {
     std::string kebab = option->key;
     std::replace(kebab.begin(), kebab.end(), '_', '-');
     EXPECT_EQ(option->flag, prefix + kebab) << option->key;
     EXPECT_NE(std::string(option->oldFlag), option->flag) << option->key;
   }
+  // The enum options: (key, flag, prefix).
+  const std::vector<std::tuple<const char*, const char*, std::string>> enums = {
+      {simulation_option::kSolver.key, simulation_option::kSolver.flag, "--"},
+      {simulation_option::kTangent.key, simulation_option::kTangent.flag, "--"},
+      {simulation_option::kCoarseOperators.key, simulation_option::kCoarseOperators.flag, "--"},
+      {simulation_option::kCoarseLevels.key, simulation_option::kCoarseLevels.flag, "--"},
+      {kUpOption.key, kUpOption.flag, "--"},
+      {binding_option::kMethod.key, binding_option::kMethod.flag, "--"},
+      {binding_option::kOffset.key, binding_option::kOffset.flag, "--"},
+      {kCompressOption.key, kCompressOption.flag, "--"},
+      {fur_option::kLighting.key, fur_option::kLighting.flag, "--fur-"}};
+  for (const auto& [key, flag, prefix] : enums) {
+    std::string kebab = key;
+    std::replace(kebab.begin(), kebab.end(), '_', '-');
+    EXPECT_EQ(flag, prefix + kebab) << key;
+  }
+}
+
+TEST(RunRequest, EnumOptionsNameThemselvesAsEachFrontEndDoes) {
+  const EnumOption<SolverKind>& solver = simulation_option::kSolver;
+  EXPECT_EQ(nameOf(solver, OptionNames::Flags), "--solver");
+  EXPECT_EQ(nameOf(solver, OptionNames::Keys), "solver");
+  EXPECT_EQ(nameOf(solver, OptionNames::Words), "the solver");
+  // --help's text: the help before the names, then the names with theirs.
+  EXPECT_EQ(simulation_option::kCoarseOperators.fullHelp(),
+            "multigrid: " + helpOf<CoarseOperators>());
+  EXPECT_EQ(solver.fullHelp(), helpOf<SolverKind>());
 }
 
 TEST(RunRequest, DefaultsAreOneSetForEveryFrontEnd) {

@@ -78,6 +78,18 @@ py::tuple deform(BindingObject& b, py::handle controlPositions, py::object out) 
   return py::make_tuple(owning(std::move(positions)), owning(std::move(normals)));
 }
 
+// bind's docstring, the methods and offsets as the schema has them.
+const char* bindHelp() {
+  static const std::string help =
+      "Binds the surface (V, F) to a level of `dataset` (negative: from the finest), as "
+      "`tetskin bind`: " +
+      std::string(binding_option::kMethod.key) + " " + binding_option::kMethod.fullHelp() +
+      " (default " + toString(BindingOptions{}.method) + "); " + binding_option::kOffset.key + " " +
+      binding_option::kOffset.fullHelp() + " (default " + toString(BindingOptions{}.offset) +
+      "; not for embed).";
+  return help.c_str();
+}
+
 }  // namespace
 
 void addBindingApi(py::module_& m) {
@@ -188,11 +200,9 @@ void addBindingApi(py::module_& m) {
         return bindingWith(dataset.dataset, std::move(bound));
       },
       py::arg("dataset"), py::arg("V"), py::arg("F"), py::arg("level") = -1,
-      py::arg("method") = "closest", py::arg("offset") = py::none(),
-      py::arg("tie_tolerance") = 1e-6,
-      "Binds the surface (V, F) to a level of `dataset` (negative: from the finest), as "
-      "`tetskin bind`: method 'closest' (default), 'seed' (the report's) or 'embed' "
-      "(containing tetrahedron); offset 'normal' (default) or 'displacement'.");
+      py::arg(binding_option::kMethod.key) = std::string(toString(BindingOptions{}.method)),
+      py::arg(binding_option::kOffset.key) = py::none(), py::arg("tie_tolerance") = 1e-6,
+      bindHelp());
 
   m.def(
       "load_binding",

@@ -61,6 +61,22 @@ std::vector<std::filesystem::path> inputPaths(const py::handle inputs) {
   return inputs.cast<std::vector<std::filesystem::path>>();
 }
 
+// build's docstring, its keywords' names as the schema has them.
+const char* buildHelp() {
+  static const std::string help =
+      "Model generation, as `tetskin build`: repairs the input surfaces (a path or a list of "
+      "levels of detail of one object), tetrahedralizes them, chooses the levels and writes "
+      "OUTPUT.json, .node and .ele; returns the Dataset. mesher: " +
+      build_option::kMesher.fullHelp() +
+      ". Keyword options as the command's: " + build_option::kQualities.key +
+      ", size_to_targets, accept_unfaithful (write levels beyond their fidelity bound), " +
+      build_option::kJobs.key + " (default: every core), " + build_option::kTimeout.key + ", " +
+      wrap_option::kMode.key + " (" + oneOf(namesOf<WrapMode>()) + "), " + wrap_option::kAlpha.key +
+      ", " + wrap_option::kOffset.key + ", " + kUpOption.key + " (" + oneOf(namesOf<UpAxis>()) +
+      "). progress(stage, done, total) is called as it goes; Ctrl-C stops it.";
+  return help.c_str();
+}
+
 }  // namespace
 
 void addDatasetApi(py::module_& m) {
@@ -181,14 +197,9 @@ void addDatasetApi(py::module_& m) {
       py::arg("levels") = static_cast<int>(build_option::kLevels.defaultValue),
       py::arg("min_elements") = static_cast<Index>(build_option::kMinElements.defaultValue),
       py::arg("max_elements") = static_cast<Index>(build_option::kMaxElements.defaultValue),
-      py::arg("decimate") = false, py::arg("mesher") = "tetgen", py::arg("progress") = py::none(),
-      "Model generation, as `tetskin build`: repairs the input surfaces (a path or a list of "
-      "levels of detail of one object), tetrahedralizes them, chooses the levels and writes "
-      "OUTPUT.json, .node and .ele; returns the Dataset. Keyword options as the command's: "
-      "qualities, size_to_targets, accept_unfaithful (write levels beyond their fidelity "
-      "bound), jobs (default: every core), timeout, wrap ('auto', 'always', 'never'), "
-      "wrap_alpha, wrap_offset, up. progress(stage, done, total) is called as it goes; "
-      "Ctrl-C stops it.");
+      py::arg("decimate") = false,
+      py::arg(build_option::kMesher.key) = std::string(toString(BuildOptions{}.mesher)),
+      py::arg("progress") = py::none(), buildHelp());
 }
 
 }  // namespace tetskin::python

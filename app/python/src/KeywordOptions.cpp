@@ -85,11 +85,11 @@ RunRequest runRequest(Keywords& k) {
   if (const auto v = k.count(kMaxIterations)) o.maxIterations = *v;
   if (const auto v = k.number(kFriction)) o.friction = *v;
   if (const auto v = k.number(kFloorStiffness)) o.floorStiffness = *v;
-  if (const auto v = k.choice<SolverKind>("solver")) o.solver = *v;
-  if (const auto v = k.choice<Tangent>("tangent")) o.tangent = *v;
-  if (const auto v = k.choice<CoarseOperators>("coarse_operators")) o.coarseOperators = *v;
-  if (const auto v = k.choice<CoarseLevels>("coarse_levels")) o.coarseLevels = *v;
-  r.up = k.choice<UpAxis>("up");
+  if (const auto v = k.choice(kSolver)) o.solver = *v;
+  if (const auto v = k.choice(kTangent)) o.tangent = *v;
+  if (const auto v = k.choice(kCoarseOperators)) o.coarseOperators = *v;
+  if (const auto v = k.choice(kCoarseLevels)) o.coarseLevels = *v;
+  r.up = k.choice(kUpOption);
   using scenario_option::kGravity;
   if (const auto gravity = k.take(kGravity.key)) {
     const py::array given = py::array::ensure(*gravity);
@@ -169,10 +169,51 @@ void readBuildOptions(Keywords& k, BuildOptions& o) {
   if (const auto v = k.take("accept_unfaithful")) o.acceptUnfaithful = v->cast<bool>();
   if (const auto v = k.count(build_option::kJobs)) o.jobs = *v;
   if (const auto v = k.number(build_option::kTimeout)) o.timeoutSeconds = *v;
-  if (const auto v = k.choice<WrapMode>("wrap")) o.wrap.mode = *v;
+  if (const auto v = k.choice(wrap_option::kMode)) o.wrap.mode = *v;
   if (const auto v = k.number(wrap_option::kAlpha)) o.wrap.alpha = *v;
   if (const auto v = k.number(wrap_option::kOffset)) o.wrap.offset = *v;
-  if (const auto v = k.choice<UpAxis>("up")) o.up = *v;
+  if (const auto v = k.choice(kUpOption)) o.up = *v;
+}
+
+namespace {
+// "solver ('auto', 'cg' or 'multigrid')"
+template <SchemaEnum E>
+std::string withNames(const EnumOption<E>& option) {
+  std::vector<std::string> names;
+  for (const std::string& name : namesOf<E>()) names.push_back("'" + name + "'");
+  return std::string(option.key) + " (" + oneOf(names) + ")";
+}
+}  // namespace
+
+std::string runKeywordsHelp() {
+  std::vector<std::string> material, scenario;
+  for (const MaterialField& field : materialFields()) material.emplace_back(field.option->key);
+  for (const ScenarioField& field : scenarioFields()) scenario.emplace_back(field.option->key);
+  using namespace simulation_option;
+  using namespace scenario_option;
+  const std::vector<std::string> keys = {
+      "the material (" + listed(material) + "; default the dataset config's)",
+      kTimeStep.key,
+      withNames(kSolver),
+      kTolerance.key,
+      withNames(kTangent),
+      withNames(kCoarseOperators),
+      withNames(kCoarseLevels),
+      kCoarseReuse.key,
+      kGuessSolutions.key,
+      kMaxIterations.key,
+      kFriction.key,
+      kFloorStiffness.key,
+      withNames(kUpOption),
+      std::string(kGravity.key) + " (3 numbers)",
+      kFloorHeight.key,
+      "the scenario's numbers (" + listed(scenario) + ")",
+      kFixedNodes.key,
+      std::string(kFixedBox.key) + " ((2, 3): min and max corners)",
+      std::string(kLoads.key) + " ((n, 3) newtons on the level's nodes)",
+      kLoadSeconds.key,
+      std::string(kLoadCurve.key) + " ((k, 2): time in s, factor)"};
+  return listed(keys);
 }
 
 }  // namespace tetskin::python

@@ -33,8 +33,10 @@ class Keywords {
   std::optional<double> number(const NumberOption& option);
   // The same for an option that counts (a whole number).
   std::optional<int> count(const NumberOption& option);
+  // The value of an enum option (OptionSchema.h), given by its key.
   template <SchemaEnum E>
-  std::optional<E> choice(const char* key) {
+  std::optional<E> choice(const EnumOption<E>& option) {
+    const char* key = option.key;
     const std::optional<py::object> value = take(key);
     if (!value) return std::nullopt;
     if (!py::isinstance<py::str>(*value))
@@ -83,5 +85,11 @@ void readScenarioParameters(Keywords& keywords, Index levelNodes, RunRequest& re
 // size_to_targets, accept_unfaithful, jobs, timeout, wrap, wrap_alpha,
 // wrap_offset, up.
 void readBuildOptions(Keywords& keywords, BuildOptions& options);
+
+// What runRequest and readScenarioParameters read, for Simulation's
+// docstring: every keyword by its key, with an enum's names, as the schema
+// has them ("the material (youngs_modulus, ...), time_step, ..., solver
+// ('auto', 'cg' or 'multigrid'), ...").
+std::string runKeywordsHelp();
 
 }  // namespace tetskin::python

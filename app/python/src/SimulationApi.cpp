@@ -97,6 +97,28 @@ void setRows(Object& s, py::handle value, const char* name, bool positions) {
     s.session->simulation().setVelocities(rows);
 }
 
+// Simulation's docstring: the scenarios and keywords as the schema has them.
+const char* simulationHelp() {
+  static const std::string help = [] {
+    std::vector<std::string> others;
+    for (const std::string& name : scenarioNames())
+      if (name != kDefaultScenario) others.push_back("'" + name + "'");
+    return "Simulates `level` of `dataset` (negative: from the finest). scenario: '" +
+           std::string(kDefaultScenario) + "' (None: the default, as in every front end), " +
+           oneOf(others) +
+           " ('sag' with base_share=0: a free body). Warnings of the run (nodes starting below "
+           "the floor, solves stopped at the iteration limit) come as Python UserWarnings. "
+           "Keyword options as `tetskin simulate`'s, by config key (the flag, - as _): " +
+           runKeywordsHelp() + ".";
+  }();
+  return help.c_str();
+}
+
+const char* solverHelp() {
+  static const std::string help = "the solver option: " + simulation_option::kSolver.fullHelp();
+  return help.c_str();
+}
+
 }  // namespace
 
 void addSimulationApi(py::module_& m) {
@@ -104,20 +126,7 @@ void addSimulationApi(py::module_& m) {
       m, "Simulation",
       "A run of the corotated FEM on a dataset level, as `tetskin simulate` runs it.")
       .def(py::init(&make), py::arg("dataset"), py::arg("level") = -1,
-           py::arg("scenario") = py::none(),
-           "Simulates `level` of `dataset` (negative: from the finest). scenario: 'wobble' "
-           "(None: the default, as in every front end), 'drop', 'twist' or 'sag' (a free body: "
-           "sag with base_share=0). Warnings of the run (nodes starting below the floor, solves "
-           "stopped at the iteration limit) come as Python UserWarnings. "
-           "Keyword options as `tetskin simulate`'s, by config key (the flag, - as _): the "
-           "material (youngs_modulus, poisson_ratio, density, mass_damping, stiffness_damping; "
-           "default the dataset config's), time_step, solver "
-           "('auto', 'cg', 'multigrid'), tolerance, tangent, coarse_operators, coarse_levels, "
-           "coarse_reuse, guess_solutions, max_iterations, friction, floor_stiffness, up, "
-           "gravity, floor_height, the scenario's numbers (base_share, "
-           "push_acceleration, push_frequency, drop_height, twist_degrees, twist_seconds), "
-           "fixed_nodes, fixed_box ((2, 3): min and max corners), loads, load_seconds, load_curve "
-           "((k, 2): time, factor).")
+           py::arg("scenario") = py::none(), simulationHelp())
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "
            "(solver, iterations, residual, contacts, seconds by stage).")
@@ -131,7 +140,7 @@ void addSimulationApi(py::module_& m) {
       .def_property_readonly(
           "solver",
           [](const Object& s) { return std::string(toString(s.session->options().solver)); },
-          "the solver option: 'auto', 'cg' or 'multigrid'")
+          solverHelp())
       .def_property_readonly(
           "run_spec",
           [](const Object& s) {
@@ -208,8 +217,10 @@ void addSimulationApi(py::module_& m) {
           "record",
           [](Object& s, const std::filesystem::path& path, std::shared_ptr<BindingObject> surface,
              int every, int pieces) {
-            if (every < 1) throw Error("record: every must be >= 1");
-            if (pieces < 1) throw Error("record: pieces must be >= 1");
+            for (const auto& [option, value] :
+                 {std::pair{&recording_option::kEvery, every}, std::pair{&kPiecesOption, pieces}})
+              if (const auto problem = option->problem(value))
+                throw Error(std::string("record: ") + option->key + ": " + *problem);
             if (surface) {
               if (surface->dataset != s.dataset)
                 checkBindingFits(surface->bound, s.dataset->mesh, "surface");
@@ -227,8 +238,9 @@ void addSimulationApi(py::module_& m) {
             s.session->record(path, pieces);
             s.session->recordFrame();
           },
-          py::arg("path"), py::arg("surface") = py::none(), py::arg("every") = 1,
-          py::arg("pieces") = 1,
+          py::arg("path"), py::arg("surface") = py::none(),
+          py::arg("every") = static_cast<int>(recording_option::kEvery.defaultValue),
+          py::arg("pieces") = static_cast<int>(kPiecesOption.defaultValue),
           "Records the run to `path` (.pvd, frames in PATH_frames/) as `tetskin simulate -o` "
           "does: the state now, then every `every`-th step; with `surface` (a Binding of this "
           "level), the surface deformed in each frame too, as a .pvtp in `pieces` pieces "

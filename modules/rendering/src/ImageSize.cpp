@@ -37,4 +37,8 @@ std::string imageSizeProblem(std::string_view text) {
   return problem.append(std::to_string(kMaxImageEdge)).append("]");
 }
 
+std::string toString(ImageSize size) {
+  return std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
 }  // namespace tetskin

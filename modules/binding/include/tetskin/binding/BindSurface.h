@@ -20,8 +20,17 @@ struct BindingOptions {
   double tieTolerance = 1e-6;
 };
 
-// `level` < 0 means the finest. Throws Error for an empty or non-finite
-// surface, or a level without usable (non-degenerate) boundary faces.
+// Inputs:
+//   surface  #V x 3 vertex positions and #F x 3 triangles (model units,
+//            the control mesh's frame)
+//   mesh     the dataset: #N x 3 rest node positions of every level
+//   level    the control level bound to; < 0 counts from the finest
+// Outputs:
+//   per surface vertex (#V rows): 3 control node ids in the dataset's
+//   numbering (4 for embed), their barycentric weights (summing to 1), the
+//   offset along the normal (model units) and the distance to the level's
+//   boundary. Throws Error for an empty or non-finite surface, or a level
+//   without usable (non-degenerate) boundary faces.
 SurfaceBinding bindSurface(const SurfaceMesh& surface, const MultiLevelTetMesh& mesh, int level,
                            const BindingOptions& options = {});
 

@@ -21,6 +21,8 @@ struct BindingSummary {
   std::vector<Index> worstDistance;     // up to 5 vertices, farthest first
 };
 
+// Inputs: a binding of #V vertices; `diagonal`, the length distances are
+// measured against (model units). Output: the summary above.
 BindingSummary summarizeBinding(const SurfaceBinding& binding, double diagonal);
 
 // The 90th percentile of the vertices' distance from the control mesh's

@@ -15,8 +15,13 @@ struct BoundaryFaces {
   std::vector<int> elements;  // the element each face belongs to
 };
 
-// `nodeOffset` is added to every id (to report ids in the dataset's numbering
-// when `mesh` is one extracted level). Elements must be positively oriented.
+// Inputs:
+//   mesh        #N x 3 nodes, #T x 4 positively oriented tetrahedra
+//   nodeOffset  added to every id (the dataset's numbering when `mesh` is
+//               one extracted level)
+// Outputs:
+//   #B x 3 faces wound counter-clockwise seen from outside, and the element
+//   of each (#B).
 BoundaryFaces boundaryFaces(const TetMesh& mesh, int nodeOffset = 0);
 
 // The boundary as a surface of its own: the boundary faces over the nodes

@@ -91,6 +91,8 @@ inline constexpr NumberOption kMinShells{"min_shells",
                                          "fewest shells when adaptive",
                                          between(1, 256),
                                          4};
+inline constexpr EnumOption<FurLighting> kLighting{"lighting", "--fur-lighting",
+                                                   "the fur lighting"};
 }  // namespace fur_option
 
 // The `fur` section; JSON keys in snake_case. Only `enabled`, `shells`,

@@ -23,7 +23,7 @@ struct BoundingBox {
   void extend(const Eigen::Vector3d& p);
 };
 
-// Axis-aligned bounding box of the given rows; empty for no rows.
+// Axis-aligned bounding box of #P x 3 points; empty for no rows.
 BoundingBox boundingBox(const Points3& points);
 
 // The volume two boxes share over the volume they span together (their

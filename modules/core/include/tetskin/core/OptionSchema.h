@@ -191,10 +191,34 @@ struct ListOption {
   const char* help;
 };
 
+// An option whose value is one of an enum's names (the solver, the up
+// axis, the render path): its key, its command-line flag (the key in kebab
+// case), its name in messages and the GUI's label ("the solver"), and what
+// its help says before the names and theirs ("multigrid: "; helpOf). Its
+// default is the field's in the settings it sets (SimulationOptions,
+// BindingOptions, ...): one place, which every front end reads.
+template <SchemaEnum E>
+struct EnumOption {
+  const char* key;
+  const char* flag;
+  const char* what;
+  const char* help = "";
+
+  // "multigrid: galerkin (P^T A P) or rediscretized (...)": --help's text
+  // and the GUI's tool tip.
+  std::string fullHelp() const { return help + helpOf<E>(); }
+};
+
 // How a front end's user names `option` (OptionNames): "--poisson-ratio",
 // "poisson_ratio" or "Poisson's ratio".
 std::string nameOf(const NumberOption& option, OptionNames names);
 std::string nameOf(const ListOption& option, OptionNames names);
+template <SchemaEnum E>
+std::string nameOf(const EnumOption<E>& option, OptionNames names) {
+  return names == OptionNames::Flags  ? option.flag
+         : names == OptionNames::Keys ? option.key
+                                      : option.what;
+}
 
 // "--old: is deprecated, use --new (the same option)": the warning an old
 // name's use gets, `oldName` and `name` as the front end's user writes

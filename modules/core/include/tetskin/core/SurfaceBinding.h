@@ -32,12 +32,12 @@ struct SurfaceBinding {
   OffsetMode offset = OffsetMode::Normal;
   int level = -1;  // dataset level the surface is bound to
 
-  // Per surface vertex. Control ids are in the dataset's node numbering; for
-  // triangle methods the 4th id is -1 and the 4th weight 0.
-  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> controlIds;
-  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> weights;  // each row sums to 1
-  // Signed distance to the triangle's plane; for Embed the distance to the
-  // nearest element (0 inside the volume).
+  // Per surface vertex (#V rows). Control ids are in the dataset's node
+  // numbering; for triangle methods the 4th id is -1 and the 4th weight 0.
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> controlIds;  // #V x 4
+  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> weights;  // #V x 4, rows sum to 1
+  // #V: signed distance to the triangle's plane (model units); for Embed the
+  // distance to the nearest element (0 inside the volume).
   Eigen::VectorXd distance;
   // The element the vertex is bound to, in the dataset's numbering (as the
   // control ids), for every method: the element of its boundary face
@@ -66,6 +66,11 @@ struct EnumSchema<OffsetMode> {
       {OffsetMode::Normal, "normal", "offset along the deformed triangle's normal"},
       {OffsetMode::Displacement, "displacement", "the report's formula 4.1"}};
 };
+// The binding's enum options (their defaults: BindingOptions').
+namespace binding_option {
+inline constexpr EnumOption<BindingMethod> kMethod{"method", "--method", "the binding method"};
+inline constexpr EnumOption<OffsetMode> kOffset{"offset", "--offset", "the offset mode"};
+}  // namespace binding_option
 
 // Throws Error naming `name` and the vertex when sizes disagree, an id is
 // outside [0, nodeCount), or weights are not finite or do not sum to 1.

@@ -11,10 +11,10 @@
 namespace tetskin {
 
 struct SurfaceMesh {
-  Points3 positions;    // one row per vertex
-  Triangles triangles;  // vertex indices, counter-clockwise seen from outside
-  Points3 normals;      // per vertex; empty (0 rows) when absent
-  Points2 texcoords;    // per vertex; empty (0 rows) when absent
+  Points3 positions;    // #V x 3, model units
+  Triangles triangles;  // #F x 3 vertex indices, counter-clockwise seen from outside
+  Points3 normals;      // #V x 3 unit normals; empty (0 rows) when absent
+  Points2 texcoords;    // #V x 2 (u, v); empty (0 rows) when absent
 
   Index vertexCount() const { return positions.rows(); }
   Index triangleCount() const { return triangles.rows(); }

@@ -10,9 +10,23 @@
 
 #include <vector>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/Types.h"
 
 namespace tetskin {
+
+// The number of pieces a surface is written in (`simulate`, `deform
+// --pieces`, Simulation.record's `pieces`).
+inline constexpr NumberOption kPiecesOption{
+    "pieces",
+    "--pieces",
+    "",
+    "the surface's pieces",
+    "write the surface (each frame's) as a .pvtp in N compact pieces, cut the same in every "
+    "frame, for ParaView's distributed server (mpiexec pvbatch, pvserver: each rank reads its "
+    "own)",
+    atLeast(1),
+    1};
 
 // The piece of each triangle, in [0, pieces). `pieces` is clamped to
 // [1, triangles] (no piece is empty); deterministic for given input.

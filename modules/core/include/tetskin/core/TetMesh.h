@@ -12,9 +12,12 @@
 
 namespace tetskin {
 
+// Units: TetSkin has none of its own. Positions are in the model's units
+// (the dataset's; metres where a material is given in pascals and kg/m^3),
+// times in seconds.
 struct TetMesh {
-  Points3 nodes;
-  Tetrahedra elements;  // node indices into `nodes`
+  Points3 nodes;        // #N x 3 positions
+  Tetrahedra elements;  // #T x 4 node indices into `nodes`, positively oriented
 
   Index nodeCount() const { return nodes.rows(); }
   Index elementCount() const { return elements.rows(); }
@@ -33,8 +36,8 @@ struct LevelRange {
 // All levels of a dataset. Element rows hold dataset-wide node indices; the
 // elements of a level refer only to the nodes of the same level.
 struct MultiLevelTetMesh {
-  Points3 nodes;
-  Tetrahedra elements;
+  Points3 nodes;                   // #N x 3: every level's nodes, level after level
+  Tetrahedra elements;             // #T x 4: every level's elements, dataset-wide node ids
   std::vector<LevelRange> levels;  // 0 = coarsest
 
   int levelCount() const { return static_cast<int>(levels.size()); }

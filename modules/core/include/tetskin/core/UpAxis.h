@@ -22,6 +22,10 @@ struct EnumSchema<UpAxis> {
       {UpAxis::X, "x", ""}, {UpAxis::Y, "y", ""}, {UpAxis::Z, "z", ""}};
   static constexpr bool anyCase = true;
 };
+// The option (build's: the inputs' up, written to the config; a run's: the
+// config's up replaced). Its default: the config's, else y.
+inline constexpr EnumOption<UpAxis> kUpOption{"up", "--up", "the up axis",
+                                              "the axis that points up: "};
 
 // The coordinate index (0, 1, 2).
 inline int axisIndex(UpAxis up) {

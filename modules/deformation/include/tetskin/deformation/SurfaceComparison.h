@@ -16,9 +16,11 @@ struct SurfaceErrors {
   Eigen::VectorXd normalAngle;  // degrees, in [0, 180]; 0 where either normal is zero
 };
 
-// Per vertex, between (`positions`, `normals`) and the reference
-// (`referencePositions`, `referenceNormals`); `errors` resized when its
-// size differs. Throws Error when the four do not have the same rows.
+// Inputs: #V x 3 positions and normals, and the reference's #V x 3
+// positions and normals (model units; normals of any length).
+// Outputs: `errors`, #V distances (model units) and #V angles (degrees),
+// resized when its size differs. Throws Error when the four do not have
+// the same rows.
 void surfaceErrors(ConstPoints3Ref positions, ConstPoints3Ref normals,
                    ConstPoints3Ref referencePositions, ConstPoints3Ref referenceNormals,
                    SurfaceErrors& errors);

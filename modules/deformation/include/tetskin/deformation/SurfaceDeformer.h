@@ -24,9 +24,13 @@ class SurfaceDeformer {
   SurfaceDeformer(const SurfaceMesh& restSurface, const SurfaceBinding& binding,
                   const Points3& controlRest, const std::string& bindingName = "binding");
 
-  // `control`: deformed node positions in dataset numbering (read where
-  // they lie: a NumPy array's rows too). Writes the deformed positions and
-  // unit normals (resized only if their size differs).
+  // Inputs:
+  //   control    #N x 3 deformed node positions in the dataset's numbering
+  //              (model units; read where they lie: a NumPy array's rows too)
+  // Outputs:
+  //   positions  #V x 3 deformed surface positions (model units)
+  //   normals    #V x 3 unit vertex normals
+  // (resized only if their size differs).
   void deform(ConstPoints3Ref control, Points3& positions, Points3& normals);
   // The same into rows owned elsewhere (a VTK array's buffer): each must have
   // vertexCount() rows, else Error.

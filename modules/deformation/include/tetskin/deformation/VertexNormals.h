@@ -19,8 +19,14 @@ struct VertexTriangleAdjacency {
 
 VertexTriangleAdjacency vertexTriangleAdjacency(const Triangles& triangles, Index vertexCount);
 
-// `faceScratch` must have triangles.rows() rows and `normals` positions.rows();
-// nothing is allocated. A vertex with no area around it gets the zero vector.
+// Inputs:
+//   positions    #V x 3 vertex positions
+//   triangles    #F x 3 vertex ids
+//   adjacency    vertexTriangleAdjacency(triangles, #V)
+//   faceScratch  #F x 3, overwritten (the area-weighted face normals)
+// Outputs:
+//   normals      #V x 3 unit normals; the zero vector for a vertex with no
+//                area around it. Nothing is allocated.
 void computeVertexNormals(const ConstPoints3Ref& positions, const Triangles& triangles,
                           const VertexTriangleAdjacency& adjacency, Points3& faceScratch,
                           Points3Ref normals);

@@ -60,6 +60,8 @@ inline constexpr NumberOption kOffset{
     "how far the wrap lies outside the input, a fraction of the diagonal",
     between(0, 1, false, true),
     1.0 / 500};
+inline constexpr EnumOption<WrapMode> kMode{"wrap", "--wrap", "the wrapping",
+                                            "alpha-wrap inputs in a closed surface first: "};
 }  // namespace wrap_option
 
 struct WrapOptions {

@@ -81,6 +81,7 @@ inline constexpr NumberOption kJobs{"jobs",
 inline constexpr NumberOption kTimeout{
     "timeout", "--timeout", "", "the mesher's time limit", "seconds before a mesher run is stopped",
     above(0),  600};
+inline constexpr EnumOption<MesherKind> kMesher{"mesher", "--mesher", "the mesher"};
 }  // namespace build_option
 
 struct BuildOptions {

@@ -28,6 +28,11 @@ struct EnumSchema<ControlMeshStyle> {
       {ControlMeshStyle::Wireframe, "wireframe", ""},
       {ControlMeshStyle::ShrunkenTets, "shrink", "shrunken tetrahedra"}};
 };
+// (Its default differs on purpose: `render` draws none, an image of the
+// skin; the GUI's View dock starts on wireframe, to show the cage it
+// inspects.)
+inline constexpr EnumOption<ControlMeshStyle> kControlMeshOption{
+    "control", "--control", "the control mesh", "control mesh: "};
 
 class ControlMeshActor {
  public:

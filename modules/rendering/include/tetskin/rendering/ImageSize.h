@@ -26,4 +26,7 @@ std::optional<ImageSize> parseImageSize(std::string_view text);
 // "'0x0' is not WIDTHxHEIGHT with both in [16, 8192]". Empty when it is one.
 std::string imageSizeProblem(std::string_view text);
 
+// "800x600": `size` as the command lines write it.
+std::string toString(ImageSize size);
+
 }  // namespace tetskin

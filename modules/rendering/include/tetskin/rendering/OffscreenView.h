@@ -28,6 +28,9 @@ struct EnumSchema<CameraPreset> {
                                                        {CameraPreset::Side, "side", ""},
                                                        {CameraPreset::Top, "top", ""}};
 };
+inline constexpr EnumOption<CameraPreset> kCameraOption{"camera", "--camera", "the camera"};
+// The preset `render` and the GUI's View dock start with.
+inline constexpr CameraPreset kDefaultCamera = CameraPreset::Iso;
 // Looks at `bounds` (xmin, xmax, ...) from the preset direction, y up.
 void placeCamera(vtkRenderer* renderer, CameraPreset preset, const double bounds[6],
                  UpAxis up = UpAxis::Y);

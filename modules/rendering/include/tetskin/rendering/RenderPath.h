@@ -26,6 +26,9 @@ struct EnumSchema<RenderPath> {
       {RenderPath::FurCpu, "fur-cpu", "the cpu skin with shells placed on the CPU"},
       {RenderPath::FurGpu, "fur-gpu", "the gpu-2pass skin with instanced shells"}};
 };
+inline constexpr EnumOption<RenderPath> kRenderPathOption{"path", "--path", "the render path"};
+// The path `render` and the GUI's View dock start on.
+inline constexpr RenderPath kDefaultRenderPath = RenderPath::Cpu;
 bool hasFur(RenderPath path);
 // How the skin under the fur is drawn (the path itself for the plain paths).
 RenderPath skinPath(RenderPath path);

@@ -22,8 +22,6 @@
 
 namespace tetskin {
 
-// The scenario a request runs when it names none.
-inline constexpr const char* kDefaultScenario = "wobble";
 // The solver a request runs when it names none: auto picks the faster of
 // cg and multigrid on the running simulation. (SimulationOptions{} keeps
 // cg, the library's choice for a program that sets up its own solves.)

@@ -34,13 +34,24 @@ namespace tetskin {
 
 class SurfaceDeformer;
 
+// How long a run goes and how often it is written (OptionSchema.h):
+// `simulate --steps --every`, `compare --steps --every`, Simulation.record's
+// `every`. (The surface's pieces: kPiecesOption, SurfacePieces.h.)
+namespace recording_option {
+inline constexpr NumberOption kSteps{"steps",      "--steps",  "", "the steps",
+                                     "time steps", atLeast(0), 120};
+inline constexpr NumberOption kEvery{
+    "every",    "--every", "", "the recording interval", "write every k-th step (and the last)",
+    atLeast(1), 1};
+}  // namespace recording_option
+
 // What a run is, as a front end has parsed it.
 struct RunSpec {
   int level = 0;  // a resolved level of the dataset
   // The front end's options (up axis, gravity, floor, material, solver);
   // the scenario adds its own (scenarioOptions()).
   SimulationOptions options;
-  std::string scenario = "wobble";
+  std::string scenario = kDefaultScenario;
   ScenarioParameters parameters;
   std::string datasetName = "dataset";  // names the dataset in errors
 };

@@ -56,6 +56,8 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
 class CorotatedFem {
  public:
+  // Inputs: the rest mesh (#N x 3 nodes in m, #T x 4 positively oriented
+  // tetrahedra) and its material (Pa, kg/m^3).
   CorotatedFem(const TetMesh& rest, const ElasticMaterial& material);
 
   Index nodeCount() const { return restPositions_.size() / 3; }
@@ -94,9 +96,11 @@ class CorotatedFem {
     double rotationVelocityWeight = 0;          // u
   };
 
-  // For positions x (3n): rotations, elastic forces (3n) and the stiffness
-  // R K R^T assembled into `stiffness` (given the pattern's shape; values
-  // overwritten). Elements are processed in parallel.
+  // Inputs:  x          3n positions (m), x, y, z per node
+  // Outputs: force      3n elastic forces (N)
+  //          stiffness  3n x 3n, R K R^T (N/m), in pattern()'s shape (values
+  //                     overwritten)
+  // and the elements' rotations kept. Elements are processed in parallel.
   void update(const Eigen::VectorXd& x, Eigen::VectorXd& force, SparseMatrix& stiffness) {
     update(x, force, stiffness, SystemTerms{});
   }

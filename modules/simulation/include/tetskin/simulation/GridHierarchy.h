@@ -50,8 +50,9 @@ struct GridHierarchy {
   std::vector<SparseMatrix> prolongations() const;
 };
 
-// The grids over `mesh` (the system's mesh: its nodes, and its elements'
-// edges for the topology). Level 1's cell is sized so that it has about
+// Input: the system's mesh (#N x 3 nodes, #T x 4 tetrahedra: its elements'
+// edges give the topology). Output: the grids over it, finest first, each
+// with its #Nl x #N(l-1) prolongation. Level 1's cell is sized so that it has about
 // nodes/coarsening nodes. A mesh with at most options.coarsestNodes nodes
 // gets no level.
 GridHierarchy enclosingGrids(const TetMesh& mesh, const GridHierarchyOptions& options = {});

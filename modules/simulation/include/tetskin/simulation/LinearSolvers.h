@@ -172,6 +172,10 @@ class MultigridPreconditioner : public Preconditioner {
   std::shared_ptr<Impl> impl_;
 };
 
+// Inputs:  A  n x n SPD, node-block layout (n = 3 #N); b  n
+//          x  n, the starting iterate
+// Outputs: x  n, the solution to |b - A x| <= tolerance |b|; the
+//          iterations and relative residual reached.
 // Preconditioned CG to `tolerance` (relative residual) or `maxIterations`,
 // with the Polak-Ribiere beta so that a preconditioner that is symmetric
 // only up to rounding (a float V-cycle) does not stall it. An iteration is

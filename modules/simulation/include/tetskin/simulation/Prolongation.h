@@ -10,10 +10,13 @@
 
 namespace tetskin {
 
-// Scalar prolongation: fine node count x coarse node count.
+// Inputs: the coarse level (#Nc x 3 nodes, #Tc x 4 tetrahedra) and #Nf x 3
+// fine nodes, in one frame (rest coordinates).
+// Output: the scalar prolongation, #Nf x #Nc, 4 weights per row summing to 1.
 SparseMatrix nodalProlongation(const TetMesh& coarse, const Points3& fineNodes);
 
-// The same for xyz degrees of freedom (each weight as a 3x3 identity block).
+// The same for xyz degrees of freedom: 3 #Nf x 3 #Nc, each weight as a 3x3
+// identity block.
 SparseMatrix expandToDofs(const SparseMatrix& nodal);
 
 }  // namespace tetskin

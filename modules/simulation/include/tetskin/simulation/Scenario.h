@@ -210,4 +210,7 @@ std::unique_ptr<Scenario> makeScenario(std::string_view name,
                                        const ScenarioParameters& parameters = {});
 std::vector<std::string> scenarioNames();
 
+// The scenario a run request runs when it names none.
+inline constexpr const char* kDefaultScenario = "wobble";
+
 }  // namespace tetskin

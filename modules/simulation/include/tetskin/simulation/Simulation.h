@@ -143,6 +143,15 @@ inline constexpr NumberOption kFloorStiffness{
     "floor penalty stiffness, N/m; 0: stiff enough for the mesh",
     atLeast(0),
     0};
+// The enum options (their defaults: SimulationOptions' fields, and a run
+// request's solver kDefaultRunSolver).
+inline constexpr EnumOption<SolverKind> kSolver{"solver", "--solver", "the solver"};
+inline constexpr EnumOption<Tangent> kTangent{"tangent", "--tangent", "the tangent",
+                                              "the implicit step's stiffness: "};
+inline constexpr EnumOption<CoarseOperators> kCoarseOperators{
+    "coarse_operators", "--coarse-operators", "the coarse operators", "multigrid: "};
+inline constexpr EnumOption<CoarseLevels> kCoarseLevels{"coarse_levels", "--coarse-levels",
+                                                        "the coarse levels", "multigrid: "};
 }  // namespace simulation_option
 
 struct SimulationOptions {
@@ -201,9 +210,11 @@ struct StepStats {
   double solveSeconds = 0;     // initial guess and CG iterations
 };
 
+// Per node of the level (#N rows, level-local numbering), SI units where
+// the material is (metres, seconds, newtons).
 struct SimulationState {
-  Points3 positions;  // level-local node numbering
-  Points3 velocities;
+  Points3 positions;   // #N x 3, m
+  Points3 velocities;  // #N x 3, m/s
   // The external forces (loads, scenario forces, pulls; not gravity) that
   // acted in the step that led to this state; zero before the first step.
   Points3 externalForces;
@@ -266,13 +277,15 @@ class Simulation {
   const std::vector<int>& fixedNodes() const { return fixedNodes_; }
   // The floor and the fixed nodes: what a recorded run keeps of them.
   RunConditions conditions() const { return {options_.floor(), fixedNodes_}; }
-  // Positions the given fixed nodes must reach at the end of the next step.
+  // Positions (#nodes x 3, m) the given fixed nodes must reach at the end
+  // of the next step.
   void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
-  // Per-node external forces (level-local), kept until replaced. Throws
+  // #N x 3 external forces (newtons, level-local), kept until replaced. Throws
   // Error naming the first node whose force is not finite: such a force
   // must not reach a step.
   void setExternalForces(const Points3& forces);
   Points3 externalForces() const;
+  // #N x 3 positions (m) or velocities (m/s), level-local: a new start.
   void setPositions(const Points3& positions);
   void setVelocities(const Points3& velocities);
 

@@ -22,6 +22,8 @@ namespace tetskin {
 class AabbTree {
  public:
   AabbTree() = default;
+  // Input: one box per primitive; the queries report a primitive by its
+  // index in `boxes`.
   explicit AabbTree(std::span<const Aabb> boxes);
 
   bool empty() const { return nodes_.empty(); }

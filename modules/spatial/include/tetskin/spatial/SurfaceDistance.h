@@ -13,9 +13,9 @@
 
 namespace tetskin {
 
-// The distance from each row of `points` to the triangles of `surface`
-// (degenerate triangles included: their closest point is on their edges).
-// Threaded; `surface` must have at least one triangle.
+// Inputs: #P x 3 points; a surface of #V x 3 positions and #F >= 1
+// triangles (degenerate ones included: their closest point is on their
+// edges). Output: #P distances (model units), exact. Threaded.
 std::vector<double> distancesToSurface(const Points3& points, const SurfaceMesh& surface);
 
 // A one-sided distance from surface A to surface B, over A's vertices:

@@ -20,13 +20,16 @@ struct TetLocation {
   double squaredDistance = 0;                             // 0 inside the element
 };
 
-// Barycentric coordinates of p in element e (unclamped).
+// Barycentric coordinates (4, summing to 1, unclamped) of the point p in
+// element e of `mesh`.
 Eigen::Vector4d tetBarycentric(const TetMesh& mesh, Index e, const Eigen::Vector3d& p);
 
 class TetLocator {
  public:
   explicit TetLocator(const TetMesh& mesh);  // keeps a reference: `mesh` must outlive it
-  // The containing element (the lowest id on a shared face), else the nearest one.
+  // Input: a point (model units). Output: the containing element (the
+  // lowest id on a shared face), else the nearest one, with p's
+  // barycentric coordinates in it and its squared distance (0 inside).
   TetLocation locate(const Eigen::Vector3d& p) const;
 
  private:

@@ -14,6 +14,8 @@ struct ClosestPointOnTriangle {
   double squaredDistance = 0;
 };
 
+// Inputs: the point p and the triangle's corners a, b, c. Output: the
+// closest point, its barycentric coordinates and the squared distance.
 ClosestPointOnTriangle closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                               const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 

@@ -28,6 +28,8 @@ struct EnumSchema<VtkCompression> {
       {VtkCompression::ZLib, "zlib", "the smallest files, slowest to write and read"},
       {VtkCompression::LZ4, "lz4", "fast to write and read"}};
 };
+inline constexpr EnumOption<VtkCompression> kCompressOption{
+    "compress", "--compress", "the compression", "data of the .vtp/.vtu files written: "};
 // The compression of every .vtp/.vtu written from now on, in this process
 // (the command line's --compress); LZ4 unless set.
 void setVtkCompression(VtkCompression compression);
