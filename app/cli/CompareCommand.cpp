@@ -236,9 +236,8 @@ void addCompareCommand(CLI::App& app) {
       ->check(anyWholeNumber())
       ->group(kMotionGroup);
   addNumberOption(*cmd, recording_option::kSteps, a->steps)->group(kMotionGroup);
-  addFlagOf(*cmd, recording_option::kEvery, a->every, "compare every k-th step (and the last)",
-            wholeNumberIn(recording_option::kEvery.range))
-      ->capture_default_str()
+  addNumberOption(*cmd, recording_option::kEvery, a->every,
+                  "compare every k-th step (and the last)")
       ->group(kMotionGroup);
   cmd->add_option("--runs", a->runs,
                   "compare runs recorded by simulate (RUN.pvd, two or more, the first the "

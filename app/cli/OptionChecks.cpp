@@ -143,17 +143,27 @@ CLI::Validator wholeNumberIn(const NumberRange& range) {
                                                                      : std::ceil(range.max) - 1));
 }
 
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value) {
-  return addFlagOf(cmd, option, value, option.help, numberIn(option.range))->capture_default_str();
+namespace {
+std::string shownHelp(const NumberOption& option, const std::string& help) {
+  return help.empty() ? option.help : help;
 }
+}  // namespace
 
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value) {
-  return addFlagOf(cmd, option, value, option.help, wholeNumberIn(option.range))
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value,
+                             const std::string& help) {
+  return addFlagOf(cmd, option, value, shownHelp(option, help), numberIn(option.range))
       ->capture_default_str();
 }
 
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value) {
-  return addFlagOf(cmd, option, value, option.help, wholeNumberIn(option.range))
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value,
+                             const std::string& help) {
+  return addFlagOf(cmd, option, value, shownHelp(option, help), wholeNumberIn(option.range))
+      ->capture_default_str();
+}
+
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value,
+                             const std::string& help) {
+  return addFlagOf(cmd, option, value, shownHelp(option, help), wholeNumberIn(option.range))
       ->capture_default_str();
 }
 

@@ -82,9 +82,15 @@ CLI::Option* addFlagOf(CLI::App& cmd, const NumberOption& option, T& value, cons
   return current;
 }
 
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value);
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value);
-CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value);
+// A number option (OptionSchema.h) on `cmd`: its flag (and old flag), its
+// help or `help` where the command words it its own way, its range
+// checked, the default shown.
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, double& value,
+                             const std::string& help = "");
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, int& value,
+                             const std::string& help = "");
+CLI::Option* addNumberOption(CLI::App& cmd, const NumberOption& option, Index& value,
+                             const std::string& help = "");
 
 // An enum option (OptionSchema.h) on `cmd`: its flag, its help with the
 // names' and then `note` (what the option means to this command), the

@@ -72,8 +72,7 @@ BuildDialog::BuildDialog(QWidget* parent) : QDialog(parent) {
   const BuildOptions defaults;
   mesher_ = enumCombo("mesher", kMesher, defaults.mesher);
   form->addRow(labelOf(kMesher), mesher_);
-  up_ = enumCombo("up", kUpOption, defaults.up);
-  up_->setToolTip(QString::fromStdString(kUpOption.fullHelp()) +
+  up_ = enumCombo("up", kUpOption, defaults.up,
                   " in the inputs (z for most CAD and STL files): the simulation's scenarios, "
                   "floor and gravity and the camera follow it");
   form->addRow(labelOf(kUpOption), up_);

@@ -21,22 +21,23 @@ inline QComboBox* combo(const char* name, const QStringList& items) {
   return c;
 }
 
+// (`tip`: the names' help unless given.)
 template <SchemaEnum E>
-QComboBox* enumCombo(const char* name, E current) {
+QComboBox* enumCombo(const char* name, E current, const std::string& tip = helpOf<E>()) {
   QStringList items;
   for (const std::string& item : namesOf<E>()) items << QString::fromStdString(item);
   QComboBox* c = combo(name, items);
   c->setCurrentText(toString(current));
-  c->setToolTip(QString::fromStdString(helpOf<E>()));
+  c->setToolTip(QString::fromStdString(tip));
   return c;
 }
 
-// The same for an enum option: its help (OptionSchema.h) as the tip.
+// The same for an enum option: its help (OptionSchema.h), then `note`
+// (what it means in this box's place), as the tip.
 template <SchemaEnum E>
-QComboBox* enumCombo(const char* name, const EnumOption<E>& option, E current) {
-  QComboBox* c = enumCombo(name, current);
-  c->setToolTip(QString::fromStdString(option.fullHelp()));
-  return c;
+QComboBox* enumCombo(const char* name, const EnumOption<E>& option, E current,
+                     const std::string& note = "") {
+  return enumCombo(name, current, option.fullHelp() + note);
 }
 
 template <SchemaEnum E>

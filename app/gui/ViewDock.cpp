@@ -63,8 +63,7 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
   // The dataset's up axis (its config's, or y): for a z-up model opened
   // as bare .node/.ele, or a config that does not say. The camera and the
   // next run follow it.
-  upAxis_ = enumCombo("up", kUpOption, UpAxis::Y);
-  upAxis_->setToolTip(QString::fromStdString(kUpOption.fullHelp()) +
+  upAxis_ = enumCombo("up", kUpOption, UpAxis::Y,
                       ": camera presets, scenarios, floor and gravity follow it");
   form->addRow(labelOf(kUpOption), upAxis_);
   connect(upAxis_, &QComboBox::currentTextChanged, this, [this] {

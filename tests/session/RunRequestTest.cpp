@@ -50,10 +50,13 @@ TEST(RunRequest, EveryOptionsFlagIsItsKey) {
   for (const NumberOption* o :
        {&recording_option::kSteps, &recording_option::kEvery, &kPiecesOption})
     options.emplace_back(o, "--");
-  for (const auto& [option, prefix] : options) {
-    std::string kebab = option->key;
+  const auto expectFlagIsKey = [](const char* key, const char* flag, const std::string& prefix) {
+    std::string kebab = key;
     std::replace(kebab.begin(), kebab.end(), '_', '-');
-    EXPECT_EQ(option->flag, prefix + kebab) << option->key;
+    EXPECT_EQ(flag, prefix + kebab) << key;
+  };
+  for (const auto& [option, prefix] : options) {
+    expectFlagIsKey(option->key, option->flag, prefix);
     EXPECT_NE(std::string(option->oldFlag), option->flag) << option->key;
   }
   // The enum options: (key, flag, prefix).
@@ -67,11 +70,7 @@ TEST(RunRequest, EveryOptionsFlagIsItsKey) {
       {binding_option::kOffset.key, binding_option::kOffset.flag, "--"},
       {kCompressOption.key, kCompressOption.flag, "--"},
       {fur_option::kLighting.key, fur_option::kLighting.flag, "--fur-"}};
-  for (const auto& [key, flag, prefix] : enums) {
-    std::string kebab = key;
-    std::replace(kebab.begin(), kebab.end(), '_', '-');
-    EXPECT_EQ(flag, prefix + kebab) << key;
-  }
+  for (const auto& [key, flag, prefix] : enums) expectFlagIsKey(key, flag, prefix);
 }
 
 TEST(RunRequest, EnumOptionsNameThemselvesAsEachFrontEndDoes) {

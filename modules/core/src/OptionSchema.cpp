@@ -32,29 +32,6 @@ std::optional<std::string> NumberOption::problem(double value) const {
   return std::string(what) + " " + words + ", got " + formatNumber(value);
 }
 
-namespace {
-template <class Option>
-std::string nameIn(const Option& option, OptionNames names) {
-  switch (names) {
-    case OptionNames::Flags:
-      return option.flag;
-    case OptionNames::Keys:
-      return option.key;
-    case OptionNames::Words:
-      break;
-  }
-  return option.what;
-}
-}  // namespace
-
-std::string nameOf(const NumberOption& option, OptionNames names) {
-  return nameIn(option, names);
-}
-
-std::string nameOf(const ListOption& option, OptionNames names) {
-  return nameIn(option, names);
-}
-
 std::string deprecatedName(const std::string& oldName, const std::string& name) {
   return oldName + ": is deprecated, use " + name + " (the same option)";
 }

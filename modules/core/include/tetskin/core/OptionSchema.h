@@ -209,12 +209,16 @@ struct EnumOption {
   std::string fullHelp() const { return help + helpOf<E>(); }
 };
 
-// How a front end's user names `option` (OptionNames): "--poisson-ratio",
-// "poisson_ratio" or "Poisson's ratio".
-std::string nameOf(const NumberOption& option, OptionNames names);
-std::string nameOf(const ListOption& option, OptionNames names);
-template <SchemaEnum E>
-std::string nameOf(const EnumOption<E>& option, OptionNames names) {
+// How a front end's user names `option` (a NumberOption, ListOption or
+// EnumOption; OptionNames): "--poisson-ratio", "poisson_ratio" or
+// "Poisson's ratio".
+template <class Option>
+requires requires(const Option& o) {
+  o.key;
+  o.flag;
+  o.what;
+}
+std::string nameOf(const Option& option, OptionNames names) {
   return names == OptionNames::Flags  ? option.flag
          : names == OptionNames::Keys ? option.key
                                       : option.what;
