@@ -27,7 +27,7 @@
 namespace tetskin::cli {
 
 struct SceneOptions {
-  int level = -1;  // (a binding's own level, when the surface input is one)
+  int level = kFinestLevel;  // (a binding's own level, when the surface input is one)
   RenderPath path = kDefaultRenderPath;
   // The simulated frames' run (its level: the scene's); a step per frame.
   RunRequest run;

@@ -20,7 +20,7 @@ namespace {
 
 struct BindArgs {
   std::filesystem::path dataset, surface, output;
-  int level = -1;
+  int level = kFinestLevel;
   std::string method = toString(BindingOptions{}.method),
               offset = toString(BindingOptions{}.offset);
 };
@@ -77,7 +77,7 @@ void addBindCommand(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "binding file (.vtp)")
       ->required()
       ->check(fileEnding(".vtp"));
-  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
+  cmd->add_option(kLevelOption.flag, a->level, kLevelOption.help)->check(anyWholeNumber());
   addEnumOption(*cmd, binding_option::kMethod, a->method);
   addEnumOption(*cmd, binding_option::kOffset, a->offset);
   addCompressOption(*cmd);

@@ -30,7 +30,7 @@ struct ConvertOptions {
   std::vector<std::filesystem::path> files;  // the inputs, then the output
   std::filesystem::path input;               // the one input, when there is one
   std::filesystem::path output;
-  int level = -1;
+  int level = kFinestLevel;
 };
 
 // The boundary of tetrahedra as a surface file.
@@ -206,7 +206,7 @@ void addConvertCommand(CLI::App& app) {
          ".mesh, TetGen .node/.ele), one per level, to a dataset")
       ->required()
       ->expected(-2);
-  cmd->add_option("--level", o->level, kLevelHelp)->check(anyWholeNumber());
+  cmd->add_option(kLevelOption.flag, o->level, kLevelOption.help)->check(anyWholeNumber());
   addCompressOption(*cmd);
   cmd->callback([o, cmd] {
     o->output = o->files.back();
@@ -218,7 +218,7 @@ void addConvertCommand(CLI::App& app) {
       requireNotAnInput(o->output, {input});
     }
     if (lowerExtension(o->output) == ".json") {
-      if (cmd->count("--level") > 0)
+      if (cmd->count(kLevelOption.flag) > 0)
         throw Error("--level: applies to a dataset's conversion, not to making one");
       importDataset(inputs, o->output);
       return;
@@ -229,7 +229,7 @@ void addConvertCommand(CLI::App& app) {
                   "level)");
     o->input = inputs.front();
     if (isSurfaceFile(o->input)) {
-      if (cmd->count("--level") > 0)
+      if (cmd->count(kLevelOption.flag) > 0)
         throw Error("--level: applies to a dataset's conversion, not to a surface's");
       const SurfaceMesh mesh = readSurface(o->input);
       writeSurface(o->output, mesh);
@@ -239,7 +239,7 @@ void addConvertCommand(CLI::App& app) {
     } else if (isDatasetFile(o->input)) {
       convertDataset(*o);
     } else if (lowerExtension(o->input) == ".vtu") {
-      if (cmd->count("--level") > 0)
+      if (cmd->count(kLevelOption.flag) > 0)
         throw Error("--level: applies to a dataset's conversion, not to tetrahedra's");
       convertTetrahedra(*o);
     } else {

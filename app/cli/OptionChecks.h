@@ -23,10 +23,6 @@ namespace tetskin::cli {
 // A whole number in [min, max] (digits with an optional sign).
 CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<int>::max());
 
-// --help of the --level options (resolveLevel, io Dataset.h).
-inline constexpr const char* kLevelHelp =
-    "dataset level: 0 = coarsest, -1 = finest (the default), -2 the one below it, ...";
-
 // --help of the DATASET arguments (loadDataset, io Dataset.h).
 inline constexpr const char* kDatasetHelp =
     "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)";
@@ -61,11 +57,11 @@ inline const std::string kOldNameOf = "old name of ";
 void warnOfOldName(const std::string& warning);
 
 // `option`'s flag bound to `value`, with `help`, checked by `check`; and
-// its old flag (NumberOption::oldFlag), if it has one: the same value,
+// its old flag (a NumberOption's or SwitchOption's oldFlag), if it has one: the same value,
 // hidden from --help, checked alike, a warning when it is used, an error
 // beside the new flag. Returns the flag's option.
-template <class T>
-CLI::Option* addFlagOf(CLI::App& cmd, const NumberOption& option, T& value, const std::string& help,
+template <class Option, class T>
+CLI::Option* addFlagOf(CLI::App& cmd, const Option& option, T& value, const std::string& help,
                        const CLI::Validator& check) {
   CLI::Option* current = cmd.add_option(option.flag, value, help)->check(check);
   if (!*option.oldFlag) return current;

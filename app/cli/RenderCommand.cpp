@@ -39,7 +39,7 @@ struct RenderArgs {
   ScenarioArgs scenario;
   MaterialOverrides material;  // over the config's elasticity
   double timeStep = SimulationOptions{}.timeStep;
-  int level = -1, frames = 0;
+  int level = kFinestLevel, frames = 0;
   bool printRun = false;
   // Fur: overrides of the dataset config's `fur` section.
   std::optional<int> furShells, furMinShells, furTextureSize;
@@ -132,7 +132,7 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
   // A binding from `tetskin bind` is drawn as it is (method, offset, level).
   const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
-  const bool levelGiven = cmd.count("--level") > 0;
+  const bool levelGiven = cmd.count(kLevelOption.flag) > 0;
   const int level = recorded ? runLevel(*recorded, input, dataset, a.level, levelGiven)
                              : commandLevel(input, dataset.mesh, a.level, levelGiven);
   o.level = level;
@@ -228,8 +228,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option(kMinShells.flag, a->furMinShells, kMinShells.help)
       ->check(anyWholeNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-adaptive", a->furAdaptive, "fewer shells when the fur is few pixels tall")
-      ->check(trueOrFalse())
+  addFlagOf(*cmd, kAdaptiveShells, a->furAdaptive, kAdaptiveShells.help, trueOrFalse())
       ->group(kFurGroup);
   cmd->add_option(kLength.flag, a->furLength, kLength.help)
       ->check(finiteNumber())
@@ -242,18 +241,16 @@ void addRenderCommand(CLI::App& app) {
       ->group(kFurGroup);
   addFlagOf(*cmd, kTextureRepeats, a->furRepeats, kTextureRepeats.help, finiteNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-seed", a->furSeed, "random seed of the fur texture")
-      ->check(wholeNumber(0, std::numeric_limits<std::uint32_t>::max()))
+  cmd->add_option(kSeed.flag, a->furSeed, kSeed.help)
+      ->check(wholeNumberIn(kSeed.range))
       ->group(kFurGroup);
   cmd->add_option(kDrag.flag, a->furDrag, kDrag.help)->check(finiteNumber())->group(kFurGroup);
   cmd->add_option(kLighting.flag, a->furLighting, kLighting.fullHelp())->group(kFurGroup);
   cmd->add_option(kVelvet.flag, a->furVelvet, kVelvet.help)
       ->check(finiteNumber())
       ->group(kFurGroup);
-  cmd->add_option("--fur-fins", a->furFins, "silhouette fins")
-      ->check(trueOrFalse())
-      ->group(kFurGroup);
-  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
+  cmd->add_option(kFins.flag, a->furFins, kFins.help)->check(trueOrFalse())->group(kFurGroup);
+  cmd->add_option(kLevelOption.flag, a->level, kLevelOption.help)->check(anyWholeNumber());
   cmd->add_option("--size", a->size, "WIDTHxHEIGHT")->capture_default_str()->check(imageSize());
   cmd->add_option(kCameraOption.flag, a->camera, kCameraOption.fullHelp())->capture_default_str();
   cmd->add_option(kControlMeshOption.flag, a->control, kControlMeshOption.fullHelp())

@@ -19,7 +19,7 @@ constexpr const char* kGroup = "Scenario";
 }  // namespace
 
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
-  cmd.add_option("--scenario", a.name, oneOf(scenarioNames()))
+  cmd.add_option(kScenarioOption.flag, a.name, kScenarioOption.help + oneOf(scenarioNames()))
       ->capture_default_str()
       ->check(CLI::IsMember(scenarioNames()));
   ScenarioParameters& p = a.parameters;
@@ -70,7 +70,7 @@ UpAxis upAxisOf(const ScenarioArgs& a, const DatasetConfig& config) {
 }
 
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
-  if (cmd.count("--scenario") > 0) return "--scenario";
+  if (cmd.count(kScenarioOption.flag) > 0) return kScenarioOption.flag;
   return givenOptionOf(cmd, kGroup);
 }
 

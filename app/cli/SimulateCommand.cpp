@@ -33,7 +33,7 @@ namespace {
 
 struct SimulateArgs {
   std::filesystem::path dataset, output, surface, initial, log;
-  int steps = static_cast<int>(recording_option::kSteps.defaultValue), level = -1,
+  int steps = static_cast<int>(recording_option::kSteps.defaultValue), level = kFinestLevel,
       every = static_cast<int>(recording_option::kEvery.defaultValue),
       pieces = static_cast<int>(kPiecesOption.defaultValue);
   RunArgs run;
@@ -151,8 +151,9 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   // A binding from `tetskin bind` follows as it is, on its level.
   std::optional<SurfaceInput> input;
   if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
-  const int level = input ? commandLevel(*input, dataset.mesh, a.level, cmd.count("--level") > 0)
-                          : resolveLevel(dataset.mesh, a.level);
+  const int level =
+      input ? commandLevel(*input, dataset.mesh, a.level, cmd.count(kLevelOption.flag) > 0)
+            : resolveLevel(dataset.mesh, a.level);
   const RunSpec spec = runSpec(a.run, cmd, dataset, level, a.dataset.string());
   if (a.printRun) {
     std::printf("%s\n", runSpecJson(spec).c_str());
@@ -212,7 +213,7 @@ void addSimulateCommand(CLI::App& app) {
                   "time series RUN.pvd (frames go to RUN_frames/); required unless --print-run");
   addNumberOption(*cmd, recording_option::kSteps, a->steps);
   addNumberOption(*cmd, recording_option::kEvery, a->every);
-  cmd->add_option("--level", a->level, kLevelHelp)->check(anyWholeNumber());
+  cmd->add_option(kLevelOption.flag, a->level, kLevelOption.help)->check(anyWholeNumber());
   cmd->add_option("--initial", a->initial,
                   "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
                   "positions and velocities replace the scenario's start; time starts at 0")

@@ -93,10 +93,11 @@ std::optional<int> applyArguments(const GuiArguments& args, MainWindow& window) 
     combo->setCurrentText(value);
     return true;
   };
-  if (parser.isSet(args.camera) && !choose("camera", "--camera", parser.value(args.camera)))
+  if (parser.isSet(args.camera) &&
+      !choose("camera", tetskin::kCameraOption.flag, parser.value(args.camera)))
     return 1;
   if (parser.isSet(args.control) &&
-      !choose("controlStyle", "--control", parser.value(args.control)))
+      !choose("controlStyle", tetskin::kControlMeshOption.flag, parser.value(args.control)))
     return 1;
   if (parser.isSet(args.colorBy) && !choose("colorBy", "--color-by", parser.value(args.colorBy)))
     return 1;
@@ -105,7 +106,7 @@ std::optional<int> applyArguments(const GuiArguments& args, MainWindow& window) 
     window.findChild<QCheckBox*>("showPrescribed")->setChecked(true);
   if (parser.isSet(args.noOverlay)) window.setOverlayVisible(false);
   if (parser.isSet(args.scenario)) {
-    if (!choose("scenario", "--scenario", parser.value(args.scenario))) return 1;
+    if (!choose("scenario", tetskin::kScenarioOption.flag, parser.value(args.scenario))) return 1;
     window.findChild<QPushButton*>("reset")->click();  // as the dock applies it
     if (oneShot && !window.lastError().isEmpty()) return fail();
   }

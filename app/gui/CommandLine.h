@@ -57,10 +57,11 @@ struct GuiArguments {
   QCommandLineOption prescribed{"prescribed",
                                 "mark the nodes the simulation holds still or drives"};
   QCommandLineOption pick{"pick", "inspect the vertex at the centre of the view"};
-  QCommandLineOption scenario{
-      "scenario",
-      QString::fromStdString(tetskin::oneOf(tetskin::scenarioNames())) + " (the Simulation dock's)",
-      "NAME"};
+  QCommandLineOption scenario{tetskin::kScenarioOption.key,
+                              QString::fromStdString(tetskin::kScenarioOption.help +
+                                                     tetskin::oneOf(tetskin::scenarioNames())) +
+                                  " (the Simulation dock's)",
+                              "NAME"};
   QCommandLineOption steps{
       tetskin::recording_option::kSteps.key,
       QString("simulate N steps first; with --compare, compare over N steps (default: the "

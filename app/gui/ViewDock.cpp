@@ -80,8 +80,9 @@ ViewDock::ViewDock(Scene& scene, QWidget* parent) : QWidget(parent), scene_(scen
   furShells_->setToolTip(fur_option::kShells.help);
   furLength_ = numberBox("furLength", fur_option::kLength);
   furLighting_ = enumCombo("furLighting", fur_option::kLighting, fur.lighting);
-  furFins_ = new QCheckBox("fins at silhouettes");
+  furFins_ = new QCheckBox(fur_option::kFins.help);
   furFins_->setObjectName("furFins");
+  furFins_->setChecked(fur_option::kFins.defaultValue);
   form->addRow(labelOf(fur_option::kShells), furShells_);
   form->addRow(labelOf(fur_option::kLength), furLength_);
   form->addRow(labelOf(fur_option::kLighting), furLighting_);

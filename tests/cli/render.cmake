@@ -117,11 +117,17 @@ tetskin_cli_test(render_texture_needs_texcoords FAIL STDERR "^error: [^\n]*bunny
        --level 0 -o ${cli_out}/untextured.png)
 tetskin_cli_test(render_fur_cpu STDOUT "2 frames, path fur-cpu.*fur: 6 shells drawn.*wrote"
   ARGS render ${data}/bunny.json --surface ${data}/bunny_8k_tex.obj --texture ${data}/bunny_texture.png
-       --path fur-cpu --level 0 --frames 2 --size 160x120 --fur-shells 6 --fur-adaptive false
+       --path fur-cpu --level 0 --frames 2 --size 160x120 --fur-shells 6 --fur-adaptive-shells false
        --fur-fins true --fur-lighting kajiya-kay -o ${cli_out}/fur_cpu.png)
 tetskin_cli_test(render_fur_gpu_adaptive STDOUT "2 frames, path fur-gpu.*fur: 4 shells drawn.*wrote"
   ARGS render ${data}/bunny.json --surface ${data}/bunny.obj --path fur-gpu --level 0 --frames 2
        --size 160x120 --fur-shells 32 --fur-min-shells 4 --fur-fins true -o ${cli_out}/fur_gpu.png)
+# The fur's switch took its config key's name; the old flag is still read
+# (with a warning) and refused beside the new one, before anything is drawn.
+tetskin_cli_test(render_old_fur_flag FAIL STATUS 1
+  STDERR "^error: --fur-adaptive: is the same option as --fur-adaptive-shells: give one\n$"
+  ARGS render ${data}/bunny.json --path fur-cpu --fur-adaptive-shells true --fur-adaptive false
+       -o ${cli_out}/old_fur_flag.png)
 set_tests_properties(cli.render_textured cli.render_texture_needs_texcoords cli.render_fur_cpu
   cli.render_fur_gpu_adaptive PROPERTIES
   LABELS "cli;rendering" RESOURCE_LOCK x_display)

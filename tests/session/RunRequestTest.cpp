@@ -15,6 +15,7 @@
 #include "tetskin/core/Appearance.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfacePieces.h"
+#include "tetskin/io/Dataset.h"
 #include "tetskin/session/RunRequest.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -45,10 +46,10 @@ TEST(RunRequest, EveryOptionsFlagIsItsKey) {
   for (const NumberOption* o :
        {&fur_option::kShells, &fur_option::kMinShells, &fur_option::kLength, &fur_option::kDensity,
         &fur_option::kTextureSize, &fur_option::kTextureRepeats, &fur_option::kDrag,
-        &fur_option::kVelvet})
+        &fur_option::kVelvet, &fur_option::kSeed})
     options.emplace_back(o, "--fur-");
   for (const NumberOption* o :
-       {&recording_option::kSteps, &recording_option::kEvery, &kPiecesOption})
+       {&recording_option::kSteps, &recording_option::kEvery, &kPiecesOption, &kLevelOption})
     options.emplace_back(o, "--");
   const auto expectFlagIsKey = [](const char* key, const char* flag, const std::string& prefix) {
     std::string kebab = key;
@@ -69,8 +70,13 @@ TEST(RunRequest, EveryOptionsFlagIsItsKey) {
       {binding_option::kMethod.key, binding_option::kMethod.flag, "--"},
       {binding_option::kOffset.key, binding_option::kOffset.flag, "--"},
       {kCompressOption.key, kCompressOption.flag, "--"},
-      {fur_option::kLighting.key, fur_option::kLighting.flag, "--fur-"}};
+      {fur_option::kLighting.key, fur_option::kLighting.flag, "--fur-"},
+      // (and the switches and the scenario's name)
+      {fur_option::kFins.key, fur_option::kFins.flag, "--fur-"},
+      {fur_option::kAdaptiveShells.key, fur_option::kAdaptiveShells.flag, "--fur-"},
+      {kScenarioOption.key, kScenarioOption.flag, "--"}};
   for (const auto& [key, flag, prefix] : enums) expectFlagIsKey(key, flag, prefix);
+  EXPECT_STREQ(fur_option::kAdaptiveShells.oldFlag, "--fur-adaptive");
 }
 
 TEST(RunRequest, EnumOptionsNameThemselvesAsEachFrontEndDoes) {

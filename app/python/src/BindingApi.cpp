@@ -13,6 +13,7 @@
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/VertexNormals.h"
+#include "tetskin/io/Dataset.h"
 
 namespace tetskin::python {
 namespace {
@@ -199,7 +200,7 @@ void addBindingApi(py::module_& m) {
         bound.dataset = dataset.path.generic_string();
         return bindingWith(dataset.dataset, std::move(bound));
       },
-      py::arg("dataset"), py::arg("V"), py::arg("F"), py::arg("level") = -1,
+      py::arg("dataset"), py::arg("V"), py::arg("F"), py::arg(kLevelOption.key) = kFinestLevel,
       py::arg(binding_option::kMethod.key) = std::string(toString(BindingOptions{}.method)),
       py::arg(binding_option::kOffset.key) = py::none(), py::arg("tie_tolerance") = 1e-6,
       bindHelp());

@@ -14,6 +14,7 @@
 #include "KeywordOptions.h"
 #include "Objects.h"
 #include "tetskin/core/Error.h"
+#include "tetskin/io/Dataset.h"
 #include "tetskin/session/RunSpecJson.h"
 
 namespace tetskin::python {
@@ -125,8 +126,8 @@ void addSimulationApi(py::module_& m) {
   py::class_<Object, std::shared_ptr<Object>>(
       m, "Simulation",
       "A run of the corotated FEM on a dataset level, as `tetskin simulate` runs it.")
-      .def(py::init(&make), py::arg("dataset"), py::arg("level") = -1,
-           py::arg("scenario") = py::none(), simulationHelp())
+      .def(py::init(&make), py::arg("dataset"), py::arg(kLevelOption.key) = kFinestLevel,
+           py::arg(kScenarioOption.key) = py::none(), simulationHelp())
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "
            "(solver, iterations, residual, contacts, seconds by stage).")

@@ -301,35 +301,39 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     // Types here; ranges once all are read (furParameterProblem).
     constexpr long long kAnyInt = std::numeric_limits<int>::max();
     FurParameters& p = config.fur;
-    p.shells = static_cast<int>(f.integer("shells", -kAnyInt, kAnyInt));
-    p.length = f.anyNumber("length");
-    p.density = f.anyNumber("density");
-    p.textureSize = static_cast<int>(f.integer("texture_size", -kAnyInt, kAnyInt));
-    p.seed = static_cast<std::uint32_t>(f.integer("seed", 0, 0xffffffffLL));
-    if (f.has("texture_repeats")) p.textureRepeats = f.anyNumber("texture_repeats");
-    if (f.has("root_shade")) p.rootShade = f.anyNumber("root_shade");
-    if (f.has("drag")) p.drag = f.anyNumber("drag");
-    if (f.has("max_bend")) p.maxBend = f.anyNumber("max_bend");
-    if (f.has("lighting")) {
+    namespace fur = fur_option;
+    p.shells = static_cast<int>(f.integer(fur::kShells.key, -kAnyInt, kAnyInt));
+    p.length = f.anyNumber(fur::kLength.key);
+    p.density = f.anyNumber(fur::kDensity.key);
+    p.textureSize = static_cast<int>(f.integer(fur::kTextureSize.key, -kAnyInt, kAnyInt));
+    p.seed = static_cast<std::uint32_t>(f.integer(fur::kSeed.key, 0, 0xffffffffLL));
+    if (f.has(fur::kTextureRepeats.key)) p.textureRepeats = f.anyNumber(fur::kTextureRepeats.key);
+    if (f.has(fur::kRootShade.key)) p.rootShade = f.anyNumber(fur::kRootShade.key);
+    if (f.has(fur::kDrag.key)) p.drag = f.anyNumber(fur::kDrag.key);
+    if (f.has(fur::kMaxBend.key)) p.maxBend = f.anyNumber(fur::kMaxBend.key);
+    if (f.has(fur::kLighting.key)) {
       try {
-        p.lighting = fromName<FurLighting>(f.string("lighting"));
+        p.lighting = fromName<FurLighting>(f.string(fur::kLighting.key));
       } catch (const Error& e) {
-        f.fail("/fur/lighting", e.what());
+        f.fail(f.where(fur::kLighting.key), e.what());
       }
     }
-    if (f.has("velvet")) p.velvet = f.anyNumber("velvet");
-    if (f.has("base_darkening")) p.baseDarkening = f.anyNumber("base_darkening");
-    for (auto [key, flag] : {std::pair{"fins", &p.fins}, {"adaptive_shells", &p.adaptiveShells}})
+    if (f.has(fur::kVelvet.key)) p.velvet = f.anyNumber(fur::kVelvet.key);
+    if (f.has(fur::kBaseDarkening.key)) p.baseDarkening = f.anyNumber(fur::kBaseDarkening.key);
+    for (auto [key, flag] :
+         {std::pair{fur::kFins.key, &p.fins}, {fur::kAdaptiveShells.key, &p.adaptiveShells}})
       if (f.has(key)) {
         if (!f.get(key).is_boolean()) f.fail(f.where(key), "must be true or false");
         *flag = f.get(key).get<bool>();
       }
-    if (f.has("min_shells"))
-      p.minShells = static_cast<int>(f.integer("min_shells", -kAnyInt, kAnyInt));
+    if (f.has(fur::kMinShells.key))
+      p.minShells = static_cast<int>(f.integer(fur::kMinShells.key, -kAnyInt, kAnyInt));
     if (const auto problem = furParameterProblem(p)) f.fail("/fur/" + problem->key, problem->what);
     if (auto t = f.optionalString("color_texture")) p.colorTexture = *t;
-    for (const char* key : {"texture_repeats", "root_shade", "drag", "max_bend", "lighting",
-                            "velvet", "base_darkening", "fins", "adaptive_shells", "min_shells"})
+    for (const char* key :
+         {fur::kTextureRepeats.key, fur::kRootShade.key, fur::kDrag.key, fur::kMaxBend.key,
+          fur::kLighting.key, fur::kVelvet.key, fur::kBaseDarkening.key, fur::kFins.key,
+          fur::kAdaptiveShells.key, fur::kMinShells.key})
       f.optional(key);
     f.rejectUnknown();
   }
@@ -411,22 +415,23 @@ void writeDatasetConfig(const std::filesystem::path& path, const DatasetConfig& 
                       {"shininess", config.material.shininess}};
   root["texture"] = config.texture ? json(config.texture->generic_string()) : json(nullptr);
   root["surface"] = config.surface ? json(config.surface->generic_string()) : json(nullptr);
+  namespace fur = fur_option;
   root["fur"] = {{"enabled", config.fur.enabled},
-                 {"shells", config.fur.shells},
-                 {"length", config.fur.length},
-                 {"density", config.fur.density},
-                 {"texture_size", config.fur.textureSize},
-                 {"seed", config.fur.seed},
-                 {"texture_repeats", config.fur.textureRepeats},
-                 {"root_shade", config.fur.rootShade},
-                 {"drag", config.fur.drag},
-                 {"max_bend", config.fur.maxBend},
-                 {"lighting", toString(config.fur.lighting)},
-                 {"velvet", config.fur.velvet},
-                 {"base_darkening", config.fur.baseDarkening},
-                 {"fins", config.fur.fins},
-                 {"adaptive_shells", config.fur.adaptiveShells},
-                 {"min_shells", config.fur.minShells}};
+                 {fur::kShells.key, config.fur.shells},
+                 {fur::kLength.key, config.fur.length},
+                 {fur::kDensity.key, config.fur.density},
+                 {fur::kTextureSize.key, config.fur.textureSize},
+                 {fur::kSeed.key, config.fur.seed},
+                 {fur::kTextureRepeats.key, config.fur.textureRepeats},
+                 {fur::kRootShade.key, config.fur.rootShade},
+                 {fur::kDrag.key, config.fur.drag},
+                 {fur::kMaxBend.key, config.fur.maxBend},
+                 {fur::kLighting.key, toString(config.fur.lighting)},
+                 {fur::kVelvet.key, config.fur.velvet},
+                 {fur::kBaseDarkening.key, config.fur.baseDarkening},
+                 {fur::kFins.key, config.fur.fins},
+                 {fur::kAdaptiveShells.key, config.fur.adaptiveShells},
+                 {fur::kMinShells.key, config.fur.minShells}};
   if (config.fur.colorTexture) root["fur"]["color_texture"] = config.fur.colorTexture->string();
   root["elasticity"] = {{"youngs_modulus", config.elasticity.youngsModulus},
                         {"poisson_ratio", config.elasticity.poissonRatio},

@@ -91,6 +91,20 @@ inline constexpr NumberOption kMinShells{"min_shells",
                                          "fewest shells when adaptive",
                                          between(1, 256),
                                          4};
+inline constexpr NumberOption kSeed{"seed",
+                                    "--fur-seed",
+                                    "",
+                                    "fur seed",
+                                    "random seed of the fur texture",
+                                    between(0, 4294967295.0),
+                                    1};
+inline constexpr SwitchOption kFins{"fins", "--fur-fins", "", "fur fins", "silhouette fins", false};
+inline constexpr SwitchOption kAdaptiveShells{"adaptive_shells",
+                                              "--fur-adaptive-shells",
+                                              "--fur-adaptive",
+                                              "adaptive fur shells",
+                                              "fewer shells when the fur is few pixels tall",
+                                              true};
 inline constexpr EnumOption<FurLighting> kLighting{"lighting", "--fur-lighting",
                                                    "the fur lighting"};
 }  // namespace fur_option
@@ -103,7 +117,8 @@ struct FurParameters {
   double length = fur_option::kLength.defaultValue;    // of the bounding-box diagonal
   double density = fur_option::kDensity.defaultValue;  // share of texels that carry a hair
   int textureSize = static_cast<int>(fur_option::kTextureSize.defaultValue);  // texels
-  std::uint32_t seed = 1;                                                     // of the texture
+  std::uint32_t seed =
+      static_cast<std::uint32_t>(fur_option::kSeed.defaultValue);  // of the texture
   double textureRepeats = fur_option::kTextureRepeats.defaultValue;
   double rootShade = fur_option::kRootShade.defaultValue;  // brightness at the root
   double drag = fur_option::kDrag.defaultValue;            // seconds the tips trail by
@@ -111,8 +126,8 @@ struct FurParameters {
   FurLighting lighting = FurLighting::Velvet;
   double velvet = fur_option::kVelvet.defaultValue;  // highlight off the mirror direction
   double baseDarkening = fur_option::kBaseDarkening.defaultValue;
-  bool fins = false;           // silhouette fins (Lengyel et al. 2001)
-  bool adaptiveShells = true;  // fewer shells when the fur is few pixels tall
+  bool fins = fur_option::kFins.defaultValue;  // silhouette fins (Lengyel et al. 2001)
+  bool adaptiveShells = fur_option::kAdaptiveShells.defaultValue;
   int minShells = static_cast<int>(fur_option::kMinShells.defaultValue);
   std::optional<std::filesystem::path> colorTexture;  // RGBA PNG over the surface's texcoords;
                                                       // alpha 0 = no fur (default: `texture`)

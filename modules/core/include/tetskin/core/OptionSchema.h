@@ -178,6 +178,19 @@ struct NumberOption {
   std::optional<std::string> problem(double value) const;
 };
 
+// An on/off option of a run (the fur's fins): its key, its command-line
+// flag (taking true or false), the flag it had before flag and key agreed
+// ("" for none; read with a warning), its name in messages, its help and
+// its default.
+struct SwitchOption {
+  const char* key;
+  const char* flag;
+  const char* oldFlag;
+  const char* what;
+  const char* help;
+  bool defaultValue;
+};
+
 // An option of a run that is not one number: node ids, a box, loads and
 // their curve, a vector. Its key (a config's, Python's keyword), its
 // command-line flag, its name in messages and the GUI's label ("the fixed

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/io/DatasetConfig.h"
 
@@ -39,5 +40,19 @@ void saveDataset(const std::filesystem::path& jsonPath, Dataset& dataset);
 // from the finest (-1 the finest, -2 the one below it), as Python indexes;
 // a level outside the dataset either way is an Error.
 int resolveLevel(const MultiLevelTetMesh& mesh, int level);
+
+// The level a command, a binding and a run take when none is given.
+inline constexpr int kFinestLevel = -1;
+
+// The level option of every command and keyword that picks one
+// (OptionSchema.h): any whole number, resolved by resolveLevel.
+inline constexpr NumberOption kLevelOption{
+    "level",
+    "--level",
+    "",
+    "the level",
+    "dataset level: 0 = coarsest, -1 = finest (the default), -2 the one below it, ...",
+    {},
+    kFinestLevel};
 
 }  // namespace tetskin

@@ -213,4 +213,9 @@ std::vector<std::string> scenarioNames();
 // The scenario a run request runs when it names none.
 inline constexpr const char* kDefaultScenario = "wobble";
 
+// The option naming the scenario (OptionSchema.h; its choices
+// scenarioNames(), its default kDefaultScenario).
+inline constexpr ListOption kScenarioOption{"scenario", "--scenario", "the scenario",
+                                            "the loads and held nodes of the run: "};
+
 }  // namespace tetskin
