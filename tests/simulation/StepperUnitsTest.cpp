@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // The units a simulation step composes (modules/simulation/src), each on
 // its own: the floor's springs and projection, the fixed and driven nodes'
-// rows, the implicit-Euler system, the node numbering. Known answers on a
+// rows, the implicit-Euler system over the force models (and a model the
+// integrator has never heard of), the node numbering. Known answers on a
 // small grid; whole runs are SimulationTest's.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
 
+#include "BodyModels.h"
 #include "FloorContact.h"
 #include "ImplicitEuler.h"
 #include "NodeConstraints.h"
@@ -28,13 +30,23 @@ TEST(FloorContact, SpringsOnNodesOnOrBelowThePlaneOnly) {
       0, 0, 0.4;   // 0.1 below
   v << 0, 0, -1, 0, 0, -2, 0, 0, -3;
   const double h = 0.01;
-  EXPECT_EQ(floor.linearize(x, v, h), 2);
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(9), force = diagonal;
-  diagonal[5] = diagonal[8] = h * h * 1000.0;
+  StepSystem system;
+  system.diagonal = Eigen::VectorXd::Ones(9);  // (the mass: the springs add to it)
+  system.force = Eigen::VectorXd::Zero(9);
+  EXPECT_EQ(floor.addForce({x, v, h}, system), 2);
+  Eigen::VectorXd springs = Eigen::VectorXd::Zero(9), force = springs;
+  springs[5] = springs[8] = h * h * 1000.0;
   force[5] = 0 - h * 1000.0 * -2;
   force[8] = 1000.0 * 0.1 - h * 1000.0 * -3;
-  EXPECT_TRUE(floor.diagonal().isApprox(diagonal));
-  EXPECT_NEAR((floor.force() - force).norm(), 0, 1e-12);
+  ASSERT_TRUE(system.hasSprings);
+  EXPECT_TRUE(system.springs.isApprox(springs));
+  EXPECT_TRUE(system.diagonal.isApprox(Eigen::VectorXd::Ones(9) + springs));
+  EXPECT_NEAR((system.force - force).norm(), 0, 1e-12);
+  // Its force at a state, for reactions: k depth below the plane only.
+  Eigen::VectorXd atRest = Eigen::VectorXd::Zero(9);
+  floor.addForceAt(x, v, atRest);
+  EXPECT_NEAR(atRest[8], 100.0, 1e-12);
+  EXPECT_EQ(atRest.sum(), atRest[8]);
 }
 
 TEST(FloorContact, ProjectsNodesBelowOntoThePlaneWithFriction) {
@@ -103,17 +115,19 @@ TEST(ImplicitEuler, AFreeBodyAtRestFallsUniformly) {
   options.material.massDamping = 0.5;
   options.timeStep = 0.02;
   CorotatedFem fem(mesh, options.material);
-  ImplicitEuler integrator(options, fem);
+  const BodyModels body = bodyModels(fem, options);
+  ImplicitEuler integrator(options.timeStep, fem.lumpedMass());
   SparseMatrix A = fem.pattern();
   Eigen::VectorXd b;
   const Eigen::VectorXd x = fem.restPositions(), v = Eigen::VectorXd::Zero(x.size());
-  integrator.assemble(fem, x, v, Eigen::VectorXd::Zero(x.size()), nullptr, nullptr, A, b);
+  EXPECT_EQ(integrator.assemble(body.models, x, v, Eigen::VectorXd::Zero(x.size()), A, b), 0);
+  EXPECT_EQ(integrator.springs(), nullptr);  // no floor
   const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);
   const Eigen::Vector3d expected = options.timeStep * options.gravity / (1 + 0.02 * 0.5);
   for (Index node = 0; node < fem.nodeCount(); ++node)
     EXPECT_NEAR((dv.segment<3>(3 * node) - expected).norm(), 0, 1e-12) << node;
   Eigen::VectorXd newX, newV;
-  integrator.advance(x, v, dv, newX, newV);
+  integrator.advance(body.models, x, v, dv, newX, newV);
   EXPECT_TRUE(newV.isApprox(dv));
   EXPECT_TRUE((newX - x).isApprox(options.timeStep * dv));
 }
@@ -123,13 +137,94 @@ TEST(ImplicitEuler, CoarseOperatorsDiscretizeTheSameStep) {
   options.timeStep = 0.01;
   options.material.massDamping = 2;
   options.material.stiffnessDamping = 0.1;
-  const CorotatedFem fem(unitTetrahedron(), options.material);
-  const CoarseDiscretization full = ImplicitEuler(options, fem).coarseDiscretization();
+  CorotatedFem fem(unitTetrahedron(), options.material);
+  const auto coarse = [&] {
+    return ImplicitEuler(options.timeStep, fem.lumpedMass())
+        .coarseDiscretization(bodyModels(fem, options).models);
+  };
+  const CoarseDiscretization full = coarse();
   EXPECT_DOUBLE_EQ(full.massScale, 1 + 0.01 * 2);
   EXPECT_DOUBLE_EQ(full.terms.stiffnessScale, 0.01 * 0.1 + 0.01 * 0.01);
   EXPECT_DOUBLE_EQ(full.terms.rotationScale, 0.01 * 0.01);
   options.tangent = Tangent::Warped;
-  EXPECT_EQ(ImplicitEuler(options, fem).coarseDiscretization().terms.rotationScale, 0);
+  EXPECT_EQ(coarse().terms.rotationScale, 0);
+}
+
+// A model the integrator does not know: springs of stiffness c m per node
+// towards the rest positions shifted by d. From rest, every node gets the
+// same force m (c d + g) and spring c m, so a rigid dv solves the step:
+// (m + h^2 c m) dv = h m (c d + g), whatever the elastic stiffness.
+class ShiftedAnchors : public ForceModel {
+ public:
+  ShiftedAnchors(const Eigen::VectorXd& mass, const Eigen::VectorXd& rest, double c,
+                 const Eigen::Vector3d& d)
+      : mass_(mass), rest_(rest), c_(c), d_(d) {}
+  int addForce(const StepState& at, StepSystem& system) override {
+    for (Index dof = 0; dof < at.x.size(); ++dof) {
+      const double k = c_ * mass_[dof];
+      system.addSpring(dof, at.h * at.h * k);
+      system.force[dof] += k * (rest_[dof] + d_[dof % 3] - at.x[dof]) - at.h * k * at.v[dof];
+    }
+    return static_cast<int>(at.x.size() / 3);
+  }
+
+ private:
+  const Eigen::VectorXd& mass_;
+  const Eigen::VectorXd& rest_;
+  double c_;
+  Eigen::Vector3d d_;
+};
+
+TEST(ImplicitEuler, StepsAForceModelItDoesNotKnow) {
+  const TetMesh mesh = tetGrid(2, 2, 1, {1, 1, 0.5});
+  SimulationOptions options;
+  options.material.massDamping = 0;
+  options.timeStep = 0.01;
+  CorotatedFem fem(mesh, options.material);
+  BodyModels body = bodyModels(fem, options);
+  const double c = 400;
+  const Eigen::Vector3d d(0.01, -0.02, 0.03);
+  body.models.push_back(
+      std::make_unique<ShiftedAnchors>(fem.lumpedMass(), fem.restPositions(), c, d));
+  ImplicitEuler integrator(options.timeStep, fem.lumpedMass());
+  SparseMatrix A = fem.pattern();
+  Eigen::VectorXd b;
+  const Eigen::VectorXd x = fem.restPositions(), v = Eigen::VectorXd::Zero(x.size());
+  EXPECT_EQ(integrator.assemble(body.models, x, v, Eigen::VectorXd::Zero(x.size()), A, b),
+            mesh.nodeCount());
+  ASSERT_NE(integrator.springs(), nullptr);  // what rediscretized coarse levels restrict
+  const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);
+  const double h = options.timeStep;
+  const Eigen::Vector3d expected = h * (c * d + options.gravity) / (1 + h * h * c);
+  for (Index node = 0; node < fem.nodeCount(); ++node)
+    EXPECT_NEAR((dv.segment<3>(3 * node) - expected).norm(), 0, 1e-12) << node;
+}
+
+TEST(ForceModels, TheForceAtRestIsTheWeightAndTheEnergiesAreTheirs) {
+  const TetMesh mesh = tetGrid(2, 1, 1, {2, 1, 1});
+  SimulationOptions options;
+  options.material.massDamping = 1;
+  CorotatedFem fem(mesh, options.material);
+  const BodyModels body = bodyModels(fem, options);
+  const Eigen::VectorXd x = fem.restPositions();
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : body.models)
+    model->addForceAt(x, Eigen::VectorXd::Zero(x.size()), force);
+  for (Index node = 0; node < fem.nodeCount(); ++node)
+    EXPECT_NEAR((force.segment<3>(3 * node) - fem.lumpedMass()[3 * node] * options.gravity).norm(),
+                0, 1e-9)
+        << node;
+  // Moving: damping -alpha M v joins; lifted by 1 m: -m g . (0, 1, 0) each.
+  const Eigen::VectorXd v = Eigen::VectorXd::Constant(x.size(), 2.0);
+  Eigen::VectorXd moving = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : body.models) model->addForceAt(x, v, moving);
+  EXPECT_NEAR((moving - force + 2.0 * fem.lumpedMass()).norm(), 0, 1e-9);
+  Eigen::VectorXd lifted = x;
+  for (Index node = 0; node < fem.nodeCount(); ++node) lifted[3 * node + 1] += 1;
+  Energies e;
+  for (const auto& model : body.models) model->addEnergy(lifted, e);
+  EXPECT_NEAR(e.elastic, 0, 1e-9);
+  EXPECT_NEAR(e.gravitational, fem.lumpedMass().sum() / 3 * -options.gravity.y(), 1e-9);
 }
 
 TEST(NodeNumbering, RoundTripsAndKeepsTheElements) {

@@ -15,19 +15,26 @@ double FloorContact::automaticStiffness(CorotatedFem& fem) {
   return 100.0 * stiffness.diagonal().maxCoeff();
 }
 
-int FloorContact::linearize(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double h) {
-  diagonal_.setZero(x.size());
-  force_.setZero(x.size());
+int FloorContact::addForce(const StepState& at, StepSystem& system) {
+  const double h = at.h;
   int contacts = 0;
-  for (Index node = 0; node < x.size() / 3; ++node) {
+  for (Index node = 0; node < at.x.size() / 3; ++node) {
     const Index dof = 3 * node + up_;
-    const double depth = floor_.height - x[dof];
+    const double depth = floor_.height - at.x[dof];
     if (depth < 0) continue;  // touching counts: the penalty keeps it from sinking
     ++contacts;
-    diagonal_[dof] = h * h * stiffness_;
-    force_[dof] = stiffness_ * depth - h * stiffness_ * v[dof];
+    system.addSpring(dof, h * h * stiffness_);
+    system.force[dof] += stiffness_ * depth - h * stiffness_ * at.v[dof];
   }
   return contacts;
+}
+
+void FloorContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd&,
+                              Eigen::VectorXd& force) const {
+  for (Index node = 0; node < x.size() / 3; ++node) {
+    const Index dof = 3 * node + up_;
+    force[dof] += stiffness_ * std::max(floor_.height - x[dof], 0.0);
+  }
 }
 
 void FloorContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {

@@ -1,55 +1,53 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// The implicit (backward) Euler step of the corotated body, linearized
-// once per step: (M + h C + h^2 K_T) dv = h (f - C v - h K_T v + f_ext + M g)
-// with Rayleigh damping C = alpha M + beta K and the tangent K_T = K +
-// K_rot (K_rot only with the full tangent: CorotatedFem::SystemTerms), then
-// v += dv, x += h v. Another integrator replaces this class: the stepper
-// asks it for the system of a step, the discretization of its coarse
-// operators, and the step's outcome.
+// The implicit (backward) Euler step, linearized once per step:
+// (M + h D + h^2 K) dv = h (f - h K v + f_ext), summed over the body's force
+// models (ForceModel.h: elasticity with its damping, gravity, mass damping,
+// contacts), whose constraints then decide their rows; then v += dv,
+// x += h v, and the models' projections. Another integrator replaces this
+// class: the stepper asks it for the system of a step, the discretization
+// of its coarse operators, and the step's outcome.
 
-#include "tetskin/simulation/Simulation.h"
+#include <memory>
+#include <vector>
+
+#include "ForceModel.h"
 
 namespace tetskin {
 
-// How a coarser level's own FEM becomes a coarse operator of the step's
-// system (rediscretized multigrid): terms.stiffnessScale K + terms.
-// rotationScale K_rot + massScale M (+ the contact's diagonal).
-struct CoarseDiscretization {
-  double massScale = 1;
-  CorotatedFem::SystemTerms terms;
-};
+// A body's force models, in the order they act: the elastic model first
+// (it writes the matrix), the constraints before the contacts (whose
+// projection has the last word on a node).
+using ForceModels = std::vector<std::unique_ptr<ForceModel>>;
 
 class ImplicitEuler {
  public:
-  // For `fem` (whose lumped mass it damps), steps of options.timeStep.
-  ImplicitEuler(const SimulationOptions& options, const CorotatedFem& fem);
+  // Steps of `timeStep` seconds for a body of lumped `mass` (per dof; it
+  // outlives the integrator).
+  ImplicitEuler(double timeStep, const Eigen::VectorXd& mass);
 
   double timeStep() const { return h_; }
 
-  // A (values, in `fem`'s pattern) and b of the step from (x, v) under
-  // `external` forces; `contactDiagonal` and `contactForce` (null: none)
-  // add a contact's linearized springs. Returns the seconds of the element
-  // pass.
-  double assemble(CorotatedFem& fem, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
-                  const Eigen::VectorXd& external, const Eigen::VectorXd* contactDiagonal,
-                  const Eigen::VectorXd* contactForce, SparseMatrix& A, Eigen::VectorXd& b);
+  // A (values, in the elastic model's pattern) and b of the step from
+  // (x, v) under `external` loads (3n, N), with the constraints' rows
+  // decided. Returns the contacts the models found.
+  int assemble(const ForceModels& models, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+               const Eigen::VectorXd& external, SparseMatrix& A, Eigen::VectorXd& b);
+  // The springs' share of the last assembled diagonal, per dof (null: no
+  // spring acted), for rediscretized coarse operators.
+  const Eigen::VectorXd* springs() const { return system_.hasSprings ? &system_.springs : nullptr; }
 
-  CoarseDiscretization coarseDiscretization() const;
+  CoarseDiscretization coarseDiscretization(const ForceModels& models) const;
 
-  // The step's outcome: v + dv, x + h (v + dv).
-  void advance(const Eigen::VectorXd& x, const Eigen::VectorXd& v, const Eigen::VectorXd& dv,
-               Eigen::VectorXd& newX, Eigen::VectorXd& newV) const;
+  // The step's outcome: v + dv, x + h (v + dv), then the models'
+  // projections in their order.
+  void advance(const ForceModels& models, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+               const Eigen::VectorXd& dv, Eigen::VectorXd& newX, Eigen::VectorXd& newV) const;
 
  private:
   double h_;
-  ElasticMaterial material_;
-  Eigen::Vector3d gravity_;
-  Tangent tangent_;
-  const Eigen::VectorXd& mass_;  // lumped, per dof
-  Eigen::VectorXd dampedMass_;   // (1 + h alpha) M
-  Eigen::VectorXd diagonal_;     // dampedMass_ + the contact's diagonal
-  Eigen::VectorXd force_;        // the element pass's
+  const Eigen::VectorXd& mass_;
+  StepSystem system_;
 };
 
 }  // namespace tetskin

@@ -5,14 +5,16 @@
 // it to its target at the end of the step; the system gets identity rows
 // and columns there (DirichletRows.h) and the prescribed dv moves to the
 // right-hand side. Node numbers are the internal ones (NodeNumbering.h).
+// A force model (ForceModel.h) without a force: it decides rows.
 
 #include <vector>
 
 #include "DirichletRows.h"
+#include "ForceModel.h"
 
 namespace tetskin {
 
-class NodeConstraints {
+class NodeConstraints : public ForceModel {
  public:
   // For systems of `pattern`'s shape (3 dofs per node).
   explicit NodeConstraints(const SparseMatrix& pattern);
@@ -27,9 +29,13 @@ class NodeConstraints {
   // Imposes the conditions of a step of length h from (x, v) on A dv = b.
   void impose(SparseMatrix& A, Eigen::VectorXd& b, const Eigen::VectorXd& x,
               const Eigen::VectorXd& v, double h);
+  void constrain(const StepState& at, StepSystem& system) override {
+    impose(*system.A, *system.b, at.x, at.v, at.h);
+  }
   // The driven nodes of a step's outcome exactly on their targets (free of
   // the solve's round-off).
   void placeOnTargets(Eigen::VectorXd& x) const;
+  void project(Eigen::VectorXd& x, Eigen::VectorXd&) const override { placeOnTargets(x); }
 
  private:
   const SparseMatrix& pattern_;

@@ -8,8 +8,7 @@
 #include <tuple>
 #include <utility>
 
-#include "FloorContact.h"
-#include "ImplicitEuler.h"
+#include "BodyModels.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
 #include "SolverStack.h"
@@ -96,10 +95,12 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       internal_(numbering_->renumbered(rest_)),
       fem_(internal_, options.material) {
   validateOptions(options);
-  integrator_ = std::make_unique<ImplicitEuler>(options, fem_);
-  constraints_ = std::make_unique<NodeConstraints>(fem_.pattern());
+  BodyModels body = bodyModels(fem_, options);
+  models_ = std::move(body.models);
+  constraints_ = body.constraints;
+  integrator_ = std::make_unique<ImplicitEuler>(options.timeStep, fem_.lumpedMass());
   solvers_ = std::make_unique<SolverStack>(dataset, level_, internal_, options,
-                                           integrator_->coarseDiscretization(), datasetName);
+                                           integrator_->coarseDiscretization(models_), datasetName);
   x_ = fem_.restPositions();
   v_.setZero(fem_.dofCount());
   acceleration_.setZero(fem_.dofCount());
@@ -107,12 +108,6 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   appliedExternal_.setZero(fem_.dofCount());
   dv_.setZero(fem_.dofCount());
   system_ = fem_.pattern();
-  if (const auto floor = options.floor())
-    floor_ = std::make_unique<FloorContact>(*floor,
-                                            options.floorStiffness > 0
-                                                ? options.floorStiffness
-                                                : FloorContact::automaticStiffness(fem_),
-                                            options.friction);
 }
 
 Simulation::~Simulation() = default;
@@ -179,20 +174,16 @@ StepStats Simulation::step() {
     std::lock_guard lock(mutex_);
     stepExternal_ = external_;
   }
-  // The system of the step: the integrator's, with the floor's springs
-  // (touching counts: the penalty keeps a node from sinking) and the
-  // fixed and driven nodes' rows.
-  if (floor_) stats.contacts = floor_->linearize(x_, v_, h);
+  // The system of the step: the force models' sum, with the fixed and
+  // driven nodes' rows.
+  const auto start = std::chrono::steady_clock::now();
+  stats.contacts = integrator_->assemble(models_, x_, v_, stepExternal_, system_, rhs_);
   stats.assemblySeconds =
-      integrator_->assemble(fem_, x_, v_, stepExternal_, floor_ ? &floor_->diagonal() : nullptr,
-                            floor_ ? &floor_->force() : nullptr, system_, rhs_);
-  constraints_->impose(system_, rhs_, x_, v_, h);
-  const SolveStats solve = solvers_->solve(system_, rhs_, dv_, steps_,
-                                           {&x_, floor_ ? &floor_->diagonal() : nullptr}, stats);
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SolveStats solve =
+      solvers_->solve(system_, rhs_, dv_, steps_, {&x_, integrator_->springs()}, stats);
   Eigen::VectorXd x, v;
-  integrator_->advance(x_, v_, dv_, x, v);
-  constraints_->placeOnTargets(x);
-  if (floor_) floor_->project(x, v);
+  integrator_->advance(models_, x_, v_, dv_, x, v);
   // The state stays the last one that was fine. (A solve that overflowed
   // spreads NaN over every node through CG's dot products: no node to name.)
   const std::string problem = dv_.allFinite()
@@ -263,30 +254,27 @@ Energies Simulation::energies() const {
     v = v_;
   }
   Energies e;
-  const Eigen::VectorXd& mass = fem_.lumpedMass();
-  e.kinetic = 0.5 * v.dot(mass.cwiseProduct(v));
-  e.elastic = fem_.elasticEnergy(x);
-  for (Index node = 0; node < internal_.nodeCount(); ++node)
-    e.gravitational -= mass[3 * node] * options_.gravity.dot(x.segment<3>(3 * node) -
-                                                             internal_.nodes.row(node).transpose());
+  e.kinetic = 0.5 * v.dot(fem_.lumpedMass().cwiseProduct(v));
+  for (const auto& model : models_) model->addEnergy(x, e);
   return e;
 }
 
 Points3 Simulation::reactionForces(const SimulationState& state) const {
   Points3 reactions = Points3::Zero(rest_.nodeCount(), 3);
   if (fixedNodes_.empty()) return reactions;
-  const ElasticMaterial& m = options_.material;
-  const Eigen::VectorXd internalForce =
-      fem_.dampedElasticForce(numbering_->toInternal(state.positions),
-                              numbering_->toInternal(state.velocities), m.stiffnessDamping);
+  // What holds a node: its inertia less every force model's force and
+  // the loads.
+  const Eigen::VectorXd x = numbering_->toInternal(state.positions);
+  const Eigen::VectorXd v = numbering_->toInternal(state.velocities);
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : models_) model->addForceAt(x, v, force);
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   for (int node : fixedNodes_) {
     const Index i = 3 * numbering_->internal(node);
-    const Eigen::Vector3d inertia = mass.segment<3>(i).cwiseProduct(
-        state.accelerations.row(node).transpose() +
-        m.massDamping * state.velocities.row(node).transpose() - options_.gravity);
-    reactions.row(node) = inertia.transpose() - internalForce.segment<3>(i).transpose() -
-                          state.externalForces.row(node);
+    const Eigen::Vector3d inertia =
+        mass.segment<3>(i).cwiseProduct(state.accelerations.row(node).transpose());
+    reactions.row(node) =
+        inertia.transpose() - force.segment<3>(i).transpose() - state.externalForces.row(node);
   }
   return reactions;
 }

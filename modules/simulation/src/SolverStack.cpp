@@ -123,7 +123,7 @@ void SolverStack::setFixedNodes(const std::vector<char>& fixedNodes) {
 void SolverStack::buildCoarseSystems(const StepPoint& at) {
   CorotatedFem::SystemTerms terms = discretization_.terms;
   const Eigen::VectorXd* finer = at.positions;
-  const Eigen::VectorXd* finerContact = at.contactDiagonal;
+  const Eigen::VectorXd* finerContact = at.springs;
   for (std::size_t l = 0; l < coarse_.size(); ++l) {
     CoarseLevel& level = coarse_[l];
     multiplyNodal(level.positionsFromFiner, *finer, level.x);

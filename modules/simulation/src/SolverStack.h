@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "ImplicitEuler.h"
+#include "ForceModel.h"
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/ProjectedInitialGuess.h"
 
@@ -40,10 +40,10 @@ class SolverStack {
   void setFixedNodes(const std::vector<char>& fixedNodes);
 
   // What a rediscretized coarse operator is built at: the step's positions
-  // and the contact's diagonal (null: no contact).
+  // and the springs' share of its diagonal (null: no spring acted).
   struct StepPoint {
     const Eigen::VectorXd* positions = nullptr;
-    const Eigen::VectorXd* contactDiagonal = nullptr;
+    const Eigen::VectorXd* springs = nullptr;
   };
   // Solves A dv = b (dv: the last solution on entry, the new one on
   // return) for the step numbered `step` from 0; fills the stats' solver

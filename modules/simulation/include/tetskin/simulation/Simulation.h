@@ -10,12 +10,13 @@
 // of the two is faster on the running simulation (SolverChoice.h).
 //
 // A step composes units of the module's src, one concern each: the
-// integrator (ImplicitEuler: the system of a step and its outcome), the
-// fixed and driven nodes (NodeConstraints: Dirichlet rows), the floor
-// (FloorContact: penalty springs, then projection with friction) and the
-// linear solve (SolverStack: the solvers, the multigrid hierarchy, the
-// initial guess). A new integrator, contact model or solver replaces or
-// extends one of them (doc/dev/extending.md).
+// integrator (ImplicitEuler: the system of a step and its outcome), which
+// sums the body's force models (ForceModel.h: elasticity, gravity, mass
+// damping, the fixed and driven nodes' Dirichlet rows, the floor's penalty
+// springs and projection with friction), and the linear solve
+// (SolverStack: the solvers, the multigrid hierarchy, the initial guess).
+// A new contact model is a new force model; a new integrator or solver
+// replaces its unit (doc/dev/extending.md).
 //
 // Threads: step() may run on one thread while others call state(),
 // setExternalForces() or energies(), which are guarded by a mutex, or
@@ -40,7 +41,7 @@
 
 namespace tetskin {
 
-class FloorContact;
+class ForceModel;
 class Preconditioner;
 class ImplicitEuler;
 class NodeConstraints;
@@ -205,7 +206,7 @@ struct StepStats {
   int iterations = 0;
   double residual = 0;
   int contacts = 0;
-  double assemblySeconds = 0;  // element rotations, forces, stiffness
+  double assemblySeconds = 0;  // the force models' system: element pass, contacts, rows
   double setupSeconds = 0;     // preconditioner (Galerkin products, factorization)
   double solveSeconds = 0;     // initial guess and CG iterations
 };
@@ -322,13 +323,14 @@ class Simulation {
   TetMesh rest_;  // the level's own numbering
   SimulationOptions options_;
   // The units a step composes (modules/simulation/src): the numbering, the
-  // body, the integrator, the fixed and driven nodes, the floor, the solver.
+  // body, its force models (the fixed and driven nodes among them), the
+  // integrator, the solver.
   std::unique_ptr<NodeNumbering> numbering_;
   TetMesh internal_;  // rest_ renumbered
   CorotatedFem fem_;  // on internal_
+  std::vector<std::unique_ptr<ForceModel>> models_;
+  NodeConstraints* constraints_ = nullptr;  // one of models_
   std::unique_ptr<ImplicitEuler> integrator_;
-  std::unique_ptr<NodeConstraints> constraints_;
-  std::unique_ptr<FloorContact> floor_;  // null without a floor
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering
 

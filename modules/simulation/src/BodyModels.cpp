@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "BodyModels.h"
+
+#include "ElasticForce.h"
+#include "FloorContact.h"
+#include "Gravity.h"
+#include "MassDamping.h"
+
+namespace tetskin {
+
+BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options) {
+  BodyModels body;
+  const ElasticMaterial& m = options.material;
+  body.models.push_back(std::make_unique<ElasticForce>(fem, m.stiffnessDamping, options.tangent));
+  body.models.push_back(
+      std::make_unique<Gravity>(fem.lumpedMass(), fem.restPositions(), options.gravity));
+  body.models.push_back(std::make_unique<MassDamping>(fem.lumpedMass(), m.massDamping));
+  auto constraints = std::make_unique<NodeConstraints>(fem.pattern());
+  body.constraints = constraints.get();
+  body.models.push_back(std::move(constraints));
+  if (const auto floor = options.floor())
+    body.models.push_back(std::make_unique<FloorContact>(
+        *floor,
+        options.floorStiffness > 0 ? options.floorStiffness : FloorContact::automaticStiffness(fem),
+        options.friction));
+  return body;
+}
+
+}  // namespace tetskin

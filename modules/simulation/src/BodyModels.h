@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The force models of one body (ForceModel.h), built from its options: the
+// one place that lists them. A new contact model is a line here.
+
+#include "ImplicitEuler.h"
+#include "NodeConstraints.h"
+
+namespace tetskin {
+
+struct BodyModels {
+  ForceModels models;
+  NodeConstraints* constraints = nullptr;  // one of `models`: fixed and driven nodes
+};
+
+// Elasticity (with stiffness damping), gravity, mass damping, the fixed and
+// driven nodes (none yet: set them through `constraints`) and the floor if
+// the options have one, in that order, for the body `fem` (which outlives
+// them).
+BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options);
+
+}  // namespace tetskin
