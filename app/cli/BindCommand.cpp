@@ -28,9 +28,9 @@ struct BindArgs {
 void run(const BindArgs& a, const CLI::App& cmd) {
   if (fromName<BindingMethod>(a.method) == BindingMethod::Embed &&
       cmd.count(binding_option::kOffset.flag) > 0)
-    throw Error(
-        "--offset: applies to the closest and seed methods, not to embed (an embedded vertex is "
-        "its tetrahedron's barycentric combination, with no offset)");
+    throw Error(std::string(binding_option::kOffset.flag) +
+                ": applies to the closest and seed methods, not to embed (an embedded vertex is "
+                "its tetrahedron's barycentric combination, with no offset)");
   requireNotAnInput(a.output, {a.dataset, a.surface});
   const Dataset dataset = loadDataset(a.dataset);
   const int level = resolveLevel(dataset.mesh, a.level);

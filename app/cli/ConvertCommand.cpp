@@ -219,7 +219,8 @@ void addConvertCommand(CLI::App& app) {
     }
     if (lowerExtension(o->output) == ".json") {
       if (cmd->count(kLevelOption.flag) > 0)
-        throw Error("--level: applies to a dataset's conversion, not to making one");
+        throw Error(std::string(kLevelOption.flag) +
+                    ": applies to a dataset's conversion, not to making one");
       importDataset(inputs, o->output);
       return;
     }
@@ -230,7 +231,8 @@ void addConvertCommand(CLI::App& app) {
     o->input = inputs.front();
     if (isSurfaceFile(o->input)) {
       if (cmd->count(kLevelOption.flag) > 0)
-        throw Error("--level: applies to a dataset's conversion, not to a surface's");
+        throw Error(std::string(kLevelOption.flag) +
+                    ": applies to a dataset's conversion, not to a surface's");
       const SurfaceMesh mesh = readSurface(o->input);
       writeSurface(o->output, mesh);
       std::printf("wrote %s (%lld vertices, %lld triangles)\n", o->output.c_str(),
@@ -240,7 +242,8 @@ void addConvertCommand(CLI::App& app) {
       convertDataset(*o);
     } else if (lowerExtension(o->input) == ".vtu") {
       if (cmd->count(kLevelOption.flag) > 0)
-        throw Error("--level: applies to a dataset's conversion, not to tetrahedra's");
+        throw Error(std::string(kLevelOption.flag) +
+                    ": applies to a dataset's conversion, not to tetrahedra's");
       convertTetrahedra(*o);
     } else {
       throw Error(o->input.string(), 0,

@@ -11,6 +11,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/Dataset.h"
 #include "tetskin/rendering/MovieFile.h"
 #include "tetskin/rendering/OffscreenView.h"
 
@@ -53,8 +54,8 @@ int runLevel(const RecordedRun& recorded, const SurfaceInput& input, const Datas
                 "is a frame of level " + std::to_string(level) + "; the dataset has " +
                     std::to_string(dataset.mesh.levels.size()) + " level(s)");
   if (levelGiven && resolveLevel(dataset.mesh, levelOption) != level)
-    throw Error("--level " + std::to_string(levelOption) + ": the run's frames are of level " +
-                std::to_string(level) + "; leave --level out");
+    throw Error(std::string(kLevelOption.flag) + " " + std::to_string(levelOption) +
+                ": the run's frames are of level " + std::to_string(level) + "; leave --level out");
   if (input.binding && input.binding->level != level)
     throw Error(input.path.string(), 0,
                 "is bound to level " + std::to_string(input.binding->level) +

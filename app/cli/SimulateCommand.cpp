@@ -45,7 +45,7 @@ void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
   checkRunOptions(a.run, cmd);
   requireOutputOrPrintRun(a.output, a.printRun);
   if (a.pieces > 1 && a.surface.empty())
-    throw Error("--pieces " + std::to_string(a.pieces) +
+    throw Error(std::string(kPiecesOption.flag) + " " + std::to_string(a.pieces) +
                 " splits the surface's frames: give the surface (--surface)");
   if (!a.log.empty()) {
     requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});

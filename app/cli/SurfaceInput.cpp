@@ -36,8 +36,8 @@ int commandLevel(const SurfaceInput& input, const MultiLevelTetMesh& dataset, in
   if (!input.binding) return resolveLevel(dataset, levelOption);
   const int bound = input.binding->level;
   if (levelGiven && resolveLevel(dataset, levelOption) != bound)
-    throw Error("--level " + std::to_string(levelOption) + ": " + input.path.string() +
-                " is bound to level " + std::to_string(bound) +
+    throw Error(std::string(kLevelOption.flag) + " " + std::to_string(levelOption) + ": " +
+                input.path.string() + " is bound to level " + std::to_string(bound) +
                 "; leave --level out to use that level");
   return bound;
 }

@@ -53,8 +53,8 @@ bool GuiArguments::read(const QStringList& arguments) {
   bool stepsOk = false;
   stepCount = parser.value(steps).toInt(&stepsOk);
   if (!stepsOk || stepCount < 0)
-    return usageError("--steps: '" + parser.value(steps).toStdString() +
-                      "' is not a whole number >= 0");
+    return usageError(std::string(tetskin::recording_option::kSteps.flag) + ": '" +
+                      parser.value(steps).toStdString() + "' is not a whole number >= 0");
   bool compareOk = true;
   if (parser.isSet(compare)) compareLevel = parser.value(compare).toInt(&compareOk);
   if (!compareOk)
