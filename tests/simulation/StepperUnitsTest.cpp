@@ -120,7 +120,7 @@ TEST(ImplicitEuler, AFreeBodyAtRestFallsUniformly) {
   SparseMatrix A = fem.pattern();
   Eigen::VectorXd b;
   const Eigen::VectorXd x = fem.restPositions(), v = Eigen::VectorXd::Zero(x.size());
-  EXPECT_EQ(integrator.assemble(body.models, x, v, Eigen::VectorXd::Zero(x.size()), A, b), 0);
+  EXPECT_EQ(integrator.assemble(body.models, 0, x, v, Eigen::VectorXd::Zero(x.size()), A, b), 0);
   EXPECT_EQ(integrator.springs(), nullptr);  // no floor
   const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);
   const Eigen::Vector3d expected = options.timeStep * options.gravity / (1 + 0.02 * 0.5);
@@ -148,6 +148,68 @@ TEST(ImplicitEuler, CoarseOperatorsDiscretizeTheSameStep) {
   EXPECT_DOUBLE_EQ(full.terms.rotationScale, 0.01 * 0.01);
   options.tangent = Tangent::Warped;
   EXPECT_EQ(coarse().terms.rotationScale, 0);
+}
+
+// The sum of the models is the implicit-Euler step written out whole, as
+// the integrator computed it before the models existed: A = (1 + h alpha) M
+// + (h beta + h^2) K + h^2 K_rot + the floor's h^2 k, b = h (f_el - (beta +
+// h) K v - h K_rot v + f_ext + M (g - alpha v)) + h (k depth - h k v).
+TEST(ImplicitEuler, TheModelsSumIsTheStepWrittenOut) {
+  const TetMesh mesh = tetGrid(3, 2, 2, {1.5, 1, 1});
+  SimulationOptions options;
+  options.material.massDamping = 0.7;
+  options.material.stiffnessDamping = 0.05;
+  options.timeStep = 0.01;
+  options.floorHeight = 0.2;  // crosses the grid's lowest layer of nodes, moved below
+  options.floorStiffness = 5e4;
+  CorotatedFem fem(mesh, options.material);
+  const BodyModels body = bodyModels(fem, options);
+  Eigen::VectorXd x = fem.restPositions(), v(x.size()), external(x.size());
+  for (Index i = 0; i < x.size(); ++i) {
+    x[i] += 0.03 * std::sin(1.7 * static_cast<double>(i));
+    v[i] = 0.4 * std::cos(0.9 * static_cast<double>(i));
+    external[i] = 2.0 * std::sin(0.3 * static_cast<double>(i));
+  }
+  ImplicitEuler integrator(options.timeStep, fem.lumpedMass());
+  SparseMatrix A = fem.pattern();
+  Eigen::VectorXd b;
+  const int contacts = integrator.assemble(body.models, 0, x, v, external, A, b);
+
+  const double h = options.timeStep, alpha = 0.7, beta = 0.05, k = 5e4;
+  const Eigen::VectorXd& M = fem.lumpedMass();
+  Eigen::VectorXd diagonal = (1 + h * alpha) * M, floorForce = Eigen::VectorXd::Zero(x.size());
+  int below = 0;
+  for (Index node = 0; node < fem.nodeCount(); ++node) {
+    const Index dof = 3 * node + 1;
+    if (x[dof] > 0.2) continue;
+    ++below;
+    diagonal[dof] += h * h * k;
+    floorForce[dof] = k * (0.2 - x[dof]) - h * k * v[dof];
+  }
+  CorotatedFem::SystemTerms terms;
+  terms.stiffnessScale = h * beta + h * h;
+  terms.diagonal = &diagonal;
+  terms.velocity = &v;
+  terms.velocityWeight = beta + h;
+  terms.rotationScale = h * h;
+  terms.rotationVelocityWeight = h;
+  SparseMatrix expectedA = fem.pattern();
+  Eigen::VectorXd force;
+  fem.update(x, force, expectedA, terms);
+  Eigen::VectorXd expectedB(x.size());
+  for (Index node = 0; node < fem.nodeCount(); ++node)
+    expectedB.segment<3>(3 * node) =
+        h * (force.segment<3>(3 * node) + external.segment<3>(3 * node) +
+             M.segment<3>(3 * node).cwiseProduct(options.gravity - alpha * v.segment<3>(3 * node)));
+  expectedB += h * floorForce;
+
+  EXPECT_GT(below, 0);
+  EXPECT_EQ(contacts, below);
+  const Eigen::Map<const Eigen::VectorXd> values(A.valuePtr(), A.nonZeros()),
+      expectedValues(expectedA.valuePtr(), expectedA.nonZeros());
+  EXPECT_LE((values - expectedValues).cwiseAbs().maxCoeff(),
+            1e-12 * expectedValues.cwiseAbs().maxCoeff());
+  EXPECT_LE((b - expectedB).cwiseAbs().maxCoeff(), 1e-12 * expectedB.cwiseAbs().maxCoeff());
 }
 
 // A model the integrator does not know: springs of stiffness c m per node
@@ -190,7 +252,7 @@ TEST(ImplicitEuler, StepsAForceModelItDoesNotKnow) {
   SparseMatrix A = fem.pattern();
   Eigen::VectorXd b;
   const Eigen::VectorXd x = fem.restPositions(), v = Eigen::VectorXd::Zero(x.size());
-  EXPECT_EQ(integrator.assemble(body.models, x, v, Eigen::VectorXd::Zero(x.size()), A, b),
+  EXPECT_EQ(integrator.assemble(body.models, 0, x, v, Eigen::VectorXd::Zero(x.size()), A, b),
             mesh.nodeCount());
   ASSERT_NE(integrator.springs(), nullptr);  // what rediscretized coarse levels restrict
   const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);

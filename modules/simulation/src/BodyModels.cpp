@@ -5,6 +5,8 @@
 #include "FloorContact.h"
 #include "Gravity.h"
 #include "MassDamping.h"
+#include "ObstacleContact.h"
+#include "tetskin/core/Geometry.h"
 
 namespace tetskin {
 
@@ -23,6 +25,14 @@ BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options) {
         *floor,
         options.floorStiffness > 0 ? options.floorStiffness : FloorContact::automaticStiffness(fem),
         options.friction));
+  if (!options.obstacles.empty()) {
+    // Contacts are looked for within a twentieth of the body's size: far
+    // deeper than the automatic stiffness lets a node sink.
+    Points3 rest = Eigen::Map<const Points3>(fem.restPositions().data(), fem.nodeCount(), 3);
+    body.models.push_back(std::make_unique<ObstacleContact>(options.obstacles, fem.lumpedMass(),
+                                                            FloorContact::automaticStiffness(fem),
+                                                            0.05 * boundingBox(rest).diagonal()));
+  }
   return body;
 }
 

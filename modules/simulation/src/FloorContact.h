@@ -33,6 +33,7 @@ class FloorContact : public ForceModel {
   // k depth per node below the plane.
   void addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                   Eigen::VectorXd& force) const override;
+  bool isContact() const override { return true; }
 
  private:
   FloorPlane floor_;

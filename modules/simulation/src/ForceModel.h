@@ -22,12 +22,13 @@
 
 namespace tetskin {
 
-// The start of a step: positions and velocities (3n, internal node order)
-// and its length (s).
+// The start of a step: positions and velocities (3n, internal node order),
+// its length and its time (s).
 struct StepState {
   const Eigen::VectorXd& x;
   const Eigen::VectorXd& v;
   double h;
+  double t = 0;
 };
 
 // The step's system A dv = b as the models build it. `diagonal` starts as
@@ -85,6 +86,9 @@ class ForceModel {
   // Its force f(x, v) added to `force` (the reactions balance these).
   virtual void addForceAt(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*v*/,
                           Eigen::VectorXd& /*force*/) const {}
+  // Whether its force is a contact's (Simulation::contactForces sums
+  // these models' addForceAt).
+  virtual bool isContact() const { return false; }
   // Its potential energy at x (from the rest state) added to `energies`.
   virtual void addEnergy(const Eigen::VectorXd& /*x*/, Energies& /*energies*/) const {}
   // Its terms of a coarse operator of a step of length h.

@@ -6,10 +6,10 @@ namespace tetskin {
 ImplicitEuler::ImplicitEuler(double timeStep, const Eigen::VectorXd& mass)
     : h_(timeStep), mass_(mass) {}
 
-int ImplicitEuler::assemble(const ForceModels& models, const Eigen::VectorXd& x,
+int ImplicitEuler::assemble(const ForceModels& models, double t, const Eigen::VectorXd& x,
                             const Eigen::VectorXd& v, const Eigen::VectorXd& external,
                             SparseMatrix& A, Eigen::VectorXd& b) {
-  const StepState at{x, v, h_};
+  const StepState at{x, v, h_, t};
   system_.diagonal = mass_;
   system_.hasSprings = false;
   system_.force = external;

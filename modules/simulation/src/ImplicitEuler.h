@@ -29,10 +29,11 @@ class ImplicitEuler {
   double timeStep() const { return h_; }
 
   // A (values, in the elastic model's pattern) and b of the step from
-  // (x, v) under `external` loads (3n, N), with the constraints' rows
-  // decided. Returns the contacts the models found.
-  int assemble(const ForceModels& models, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
-               const Eigen::VectorXd& external, SparseMatrix& A, Eigen::VectorXd& b);
+  // (x, v) at time t under `external` loads (3n, N), with the constraints'
+  // rows decided. Returns the contacts the models found.
+  int assemble(const ForceModels& models, double t, const Eigen::VectorXd& x,
+               const Eigen::VectorXd& v, const Eigen::VectorXd& external, SparseMatrix& A,
+               Eigen::VectorXd& b);
   // The springs' share of the last assembled diagonal, per dof (null: no
   // spring acted), for rediscretized coarse operators.
   const Eigen::VectorXd* springs() const { return system_.hasSprings ? &system_.springs : nullptr; }

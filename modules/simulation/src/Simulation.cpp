@@ -73,6 +73,8 @@ void validateOptions(const SimulationOptions& o) {
     throw Error(
         "rediscretized coarse operators need the dataset's coarse levels (coarse levels "
         "\"dataset\"): the solver's grid levels are no body meshes with an FEM of their own");
+  for (const Obstacle& obstacle : o.obstacles)
+    if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
 }
@@ -177,7 +179,7 @@ StepStats Simulation::step() {
   // The system of the step: the force models' sum, with the fixed and
   // driven nodes' rows.
   const auto start = std::chrono::steady_clock::now();
-  stats.contacts = integrator_->assemble(models_, x_, v_, stepExternal_, system_, rhs_);
+  stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
   stats.assemblySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const SolveStats solve =
@@ -277,6 +279,15 @@ Points3 Simulation::reactionForces(const SimulationState& state) const {
         inertia.transpose() - force.segment<3>(i).transpose() - state.externalForces.row(node);
   }
   return reactions;
+}
+
+Points3 Simulation::contactForces(const SimulationState& state) const {
+  const Eigen::VectorXd x = numbering_->toInternal(state.positions);
+  const Eigen::VectorXd v = numbering_->toInternal(state.velocities);
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : models_)
+    if (model->isContact()) model->addForceAt(x, v, force);
+  return numbering_->toOutside(force);
 }
 
 Eigen::Vector3d Simulation::supportReaction(const SimulationState& state) const {

@@ -37,6 +37,7 @@
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
 #include "tetskin/simulation/LinearSolvers.h"
+#include "tetskin/simulation/Obstacle.h"
 #include "tetskin/simulation/SolverChoice.h"
 
 namespace tetskin {
@@ -163,6 +164,9 @@ struct SimulationOptions {
   std::optional<double> floorHeight;  // floor plane: the up coordinate = height
   double floorStiffness = simulation_option::kFloorStiffness.defaultValue;  // 0 = automatic
   double friction = simulation_option::kFriction.defaultValue;
+  // Closed surfaces the nodes cannot enter (ObstacleContact: penalty
+  // springs and Coulomb friction), each checked by obstacleProblem.
+  std::vector<Obstacle> obstacles;
   Tangent tangent = Tangent::Full;
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance =
@@ -316,6 +320,9 @@ class Simulation {
   // frame exports (FrameFields.h). (From a state taken once, so that a
   // frame's fields and the surface deformed with it are of one instant,
   // whatever step the GUI's runner takes in between.)
+  // The force the floor and the obstacles exert on each node at `state`
+  // (#nodes x 3, N; the friction of the last step not included).
+  Points3 contactForces(const SimulationState& state) const;
   FrameFields frameFields(const SimulationState& state) const;
 
  private:
