@@ -14,6 +14,8 @@
 
 #include "Shapes.h"
 #include "SimulationBodies.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/Simulation.h"
 
 namespace tetskin::test {
@@ -157,6 +159,47 @@ TEST(ObstacleContact, ARigidMotionOfTheWholeSceneChangesNothing) {
   const Eigen::Vector3d fa = plain.contactForces(a).colwise().sum().transpose();
   const Eigen::Vector3d fb = turned.contactForces(b).colwise().sum().transpose();
   EXPECT_NEAR((turn.conjugate() * fb - fa).norm(), 0, 1e-4 * fa.norm());
+}
+
+// A skin 1 cm outside the block's cage on every side: the skin, not the
+// cage, rests on the slab (the cage's base stays about 1 cm above it),
+// held by contact forces equal to the weight; with the cage as the
+// contact points the skin sinks 1 cm into the slab instead. (Frictionless:
+// with friction, skin points bound to shared nodes still chatter in and
+// out of contact from step to step; doc/dev/contact.md.)
+TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
+  TetMesh cage = block();
+  cage.nodes.col(1).array() += 0.012;
+  const MultiLevelTetMesh dataset = oneLevel(cage);
+  // (The surface of a finer grid: four skin vertices to a cage node.)
+  TetMesh shell = tetGrid(8, 4, 8, {0.22, 0.12, 0.22});
+  shell.nodes.rowwise() += Eigen::RowVector3d(-0.01, 0.002, -0.01);
+  const SurfaceMesh skin = boundarySurface(shell);
+  const SurfaceBinding binding = bindSurface(skin, dataset, 0);
+  const auto settle = [&](ContactPoints points) {
+    SimulationOptions options = rubber(0);
+    options.material.massDamping = 2;
+    options.obstacles = {slab(0, 0)};
+    options.contactPoints = points;
+    auto sim = std::make_unique<Simulation>(dataset, 0, options);
+    sim->setContactSkin(skin, binding);
+    for (int i = 0; i < 300; ++i) sim->step();
+    return sim;
+  };
+  const auto skinLowest = [&](const Simulation& sim) {
+    // The skin's corners follow their faces' nodes with the binding's
+    // offsets: the lowest is below the cage's lowest node by about 1 cm.
+    return sim.state().positions.col(1).minCoeff() - 0.01;
+  };
+  const auto bySkin = settle(ContactPoints::Skin);
+  const double diagonal = std::sqrt(0.22 * 0.22 + 0.12 * 0.12 + 0.22 * 0.22);
+  EXPECT_GT(bySkin->state().positions.col(1).minCoeff(), 0.008);  // the cage stays up
+  EXPECT_GT(skinLowest(*bySkin), -0.005 * diagonal);
+  const SimulationState state = bySkin->state();
+  const double weight = bySkin->nodeMasses().sum() * kStandardGravity;
+  EXPECT_NEAR(bySkin->contactForces(state).colwise().sum()(1), weight, 0.01 * weight);
+  const auto byCage = settle(ContactPoints::Cage);
+  EXPECT_LT(skinLowest(*byCage), -0.008);  // the skin sinks by about its margin
 }
 
 }  // namespace

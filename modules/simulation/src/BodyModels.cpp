@@ -29,9 +29,11 @@ BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options) {
     // Contacts are looked for within a twentieth of the body's size: far
     // deeper than the automatic stiffness lets a node sink.
     Points3 rest = Eigen::Map<const Points3>(fem.restPositions().data(), fem.nodeCount(), 3);
-    body.models.push_back(std::make_unique<ObstacleContact>(options.obstacles, fem.lumpedMass(),
-                                                            FloorContact::automaticStiffness(fem),
-                                                            0.05 * boundingBox(rest).diagonal()));
+    auto obstacles = std::make_unique<ObstacleContact>(options.obstacles, fem.lumpedMass(),
+                                                       FloorContact::automaticStiffness(fem),
+                                                       0.05 * boundingBox(rest).diagonal());
+    body.obstacles = obstacles.get();
+    body.models.push_back(std::move(obstacles));
   }
   return body;
 }

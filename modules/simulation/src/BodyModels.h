@@ -8,9 +8,12 @@
 
 namespace tetskin {
 
+class ObstacleContact;
+
 struct BodyModels {
   ForceModels models;
   NodeConstraints* constraints = nullptr;  // one of `models`: fixed and driven nodes
+  ObstacleContact* obstacles = nullptr;    // one of `models` when there are obstacles
 };
 
 // Elasticity (with stiffness damping), gravity, mass damping, the fixed and

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "tetskin/core/Error.h"
 
@@ -15,60 +16,156 @@ ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::V
     if (const auto problem = obstacleProblem(o)) throw Error(*problem);
     stiffness_.push_back(o.stiffness > 0 ? o.stiffness : automaticStiffness);
   }
+  points_.resize(static_cast<std::size_t>(mass.size() / 3));
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    points_[i].nodes[0] = static_cast<Index>(i);
+    points_[i].weights[0] = 1;
+  }
+  firstSkinPoint_ = static_cast<Index>(points_.size());
+}
+
+void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
+                              const SurfaceBinding& binding, bool withNodes) {
+  if (!withNodes) points_.clear();
+  firstSkinPoint_ = static_cast<Index>(points_.size());
+  // Each skin vertex's spring is the share of the obstacle's stiffness that
+  // keeps the skin as stiff as the nodes it is bound to would be.
+  std::set<Index> bound;
+  const int count = binding.controlsPerVertex();
+  for (Index v = 0; v < binding.vertexCount(); ++v)
+    for (int j = 0; j < count; ++j) bound.insert(binding.controlIds(v, j));
+  const double share = static_cast<double>(bound.size()) /
+                       static_cast<double>(std::max<Index>(1, binding.vertexCount()));
+  for (Index v = 0; v < binding.vertexCount(); ++v) {
+    Point p;
+    p.count = count;
+    p.share = share;
+    for (int j = 0; j < count; ++j) {
+      p.nodes[static_cast<std::size_t>(j)] = binding.controlIds(v, j);
+      p.weights[static_cast<std::size_t>(j)] = binding.weights(v, j);
+    }
+    if (count == 3 && binding.offset == OffsetMode::Normal) p.offset = binding.distance[v];
+    points_.push_back(p);
+  }
+  skin_ = std::move(deformer);
+}
+
+const Points3& ObstacleContact::pointPositions(const Eigen::VectorXd& x) const {
+  const Index nodes = x.size() / 3;
+  const Eigen::Map<const Points3> control(x.data(), nodes, 3);
+  const Index skinPoints = skin_ ? skin_->vertexCount() : 0;
+  positions_.resize(static_cast<Index>(points_.size()), 3);
+  if (firstSkinPoint_ > 0) positions_.topRows(firstSkinPoint_) = control;
+  if (skin_) {
+    skin_->deformPositions(control, skinPositions_);
+    positions_.bottomRows(skinPoints) = skinPositions_;
+  }
+  return positions_;
+}
+
+void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
+                                   std::vector<Contact>& out) const {
+  out.clear();
+  const Points3& positions = pointPositions(x);
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+    const Obstacle& obstacle = obstacles_[o];
+    const ObstaclePose now = obstacle.poseAt(t), next = obstacle.poseAt(t + h);
+    for (Index i = 0; i < positions.rows(); ++i) {
+      const auto hit = closestPointOf(obstacle, t, positions.row(i).transpose(), radius_);
+      if (!hit || hit->distance > 0) continue;  // touching counts, as on the floor
+      const Point& point = points_[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d surfaceVelocity =
+          h > 0 ? Eigen::Vector3d((next.toWorld(now.toLocal(hit->point)) - hit->point) / h)
+                : Eigen::Vector3d::Zero();
+      Contact c{static_cast<int>(i),
+                static_cast<int>(o),
+                -hit->distance,
+                hit->normal,
+                surfaceVelocity,
+                {},
+                0,
+                stiffness_[o] * point.share};
+      for (int j = 0; j < point.count; ++j)
+        c.gradient[static_cast<std::size_t>(j)] =
+            point.weights[static_cast<std::size_t>(j)] * c.normal;
+      if (point.offset != 0) {
+        // n_F = m / |m|, m = (x1 - x0) x (x2 - x0): d(n_F.n) = u.dm with
+        // u = (I - n_F n_F^T) n / |m|, and u.dm = dx1.(e2 x u) + dx2.(u x e1)
+        // - dx0.(both).
+        const Eigen::Vector3d x0 = x.segment<3>(3 * point.nodes[0]);
+        const Eigen::Vector3d e1 = x.segment<3>(3 * point.nodes[1]) - x0;
+        const Eigen::Vector3d e2 = x.segment<3>(3 * point.nodes[2]) - x0;
+        const Eigen::Vector3d m = e1.cross(e2);
+        const double length = m.norm();
+        if (length > 0) {
+          const Eigen::Vector3d face = m / length;
+          const Eigen::Vector3d u = (c.normal - face.dot(c.normal) * face) / length;
+          const Eigen::Vector3d d1 = point.offset * e2.cross(u), d2 = point.offset * u.cross(e1);
+          c.gradient[0] -= d1 + d2;
+          c.gradient[1] += d1;
+          c.gradient[2] += d2;
+        }
+      }
+      c.start = c.along(point, x);
+      out.push_back(c);
+    }
+  }
 }
 
 int ObstacleContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
   t_ = at.t;
-  contacts_.clear();
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-    const Obstacle& obstacle = obstacles_[o];
-    const ObstaclePose now = obstacle.poseAt(at.t), next = obstacle.poseAt(at.t + at.h);
-    for (Index node = 0; node < at.x.size() / 3; ++node) {
-      const Eigen::Vector3d p = at.x.segment<3>(3 * node);
-      const auto hit = closestPointOf(obstacle, at.t, p, radius_);
-      if (!hit || hit->distance > 0) continue;  // touching counts, as on the floor
-      const Eigen::Vector3d surfaceVelocity =
-          (next.toWorld(now.toLocal(hit->point)) - hit->point) / at.h;
-      contacts_.push_back(
-          {node, static_cast<int>(o), -hit->distance, hit->normal, surfaceVelocity, p});
-    }
-  }
+  findContacts(at.x, at.t, at.h, contacts_);
   const double h = at.h;
   for (const Contact& c : contacts_) {
-    const double k = stiffness_[static_cast<std::size_t>(c.obstacle)];
-    const Eigen::Vector3d v = at.v.segment<3>(3 * c.node);
-    system.force.segment<3>(3 * c.node) +=
-        k * (c.depth + h * c.normal.dot(c.velocity) - h * c.normal.dot(v)) * c.normal;
-    for (int a = 0; a < 3; ++a)
-      system.addSpring(3 * c.node + a, h * h * k * c.normal[a] * c.normal[a]);
+    const Point& point = points_[static_cast<std::size_t>(c.point)];
+    const double k = c.stiffness;
+    const double spring = k * (c.depth + h * c.normal.dot(c.velocity) - h * c.along(point, at.v));
+    for (int j = 0; j < point.count; ++j) {
+      const Index node = point.nodes[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d& g = c.gradient[static_cast<std::size_t>(j)];
+      system.force.segment<3>(3 * node) += spring * g;
+      for (int a = 0; a < 3; ++a) system.addSpring(3 * node + a, h * h * k * g[a] * g[a]);
+    }
   }
   return static_cast<int>(contacts_.size());
 }
 
 void ObstacleContact::addMatrix(const StepState& at, StepSystem& system) {
-  // The off-diagonal entries of h^2 k n n^T (its diagonal went with the
-  // springs): inside the node's own 3x3 block, which the pattern holds.
+  // The entries of h^2 k g_j g_l^T off the diagonal (the diagonal went
+  // with the springs), between nodes of one element, which the pattern
+  // holds.
   const double h2 = at.h * at.h;
   for (const Contact& c : contacts_) {
-    const double k = stiffness_[static_cast<std::size_t>(c.obstacle)];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        if (a != b)
-          system.A->coeffRef(3 * c.node + a, 3 * c.node + b) += h2 * k * c.normal[a] * c.normal[b];
+    const Point& point = points_[static_cast<std::size_t>(c.point)];
+    for (int j = 0; j < point.count; ++j)
+      for (int l = 0; l < point.count; ++l) {
+        const Eigen::Vector3d& gj = c.gradient[static_cast<std::size_t>(j)];
+        const Eigen::Vector3d& gl = c.gradient[static_cast<std::size_t>(l)];
+        const Index row = 3 * point.nodes[static_cast<std::size_t>(j)];
+        const Index column = 3 * point.nodes[static_cast<std::size_t>(l)];
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b)
+            if (row != column || a != b)
+              system.A->coeffRef(row + a, column + b) += h2 * c.stiffness * gj[a] * gl[b];
+      }
   }
 }
 
 void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
   for (const Contact& c : contacts_) {
+    const Point& point = points_[static_cast<std::size_t>(c.point)];
     const Obstacle& obstacle = obstacles_[static_cast<std::size_t>(c.obstacle)];
-    const double k = stiffness_[static_cast<std::size_t>(c.obstacle)];
-    const Eigen::Vector3d moved = x.segment<3>(3 * c.node) - c.start;
     // The spring's force at the step's end, as the step linearized it.
-    const double normalForce =
-        k * std::max(0.0, c.depth + h_ * c.normal.dot(c.velocity) - c.normal.dot(moved));
-    const double allowance = h_ * normalForce / mass_[3 * c.node];
-    Eigen::Vector3d relative = v.segment<3>(3 * c.node) - c.velocity;
+    const double normalForce = c.stiffness * std::max(0.0, c.depth + h_ * c.normal.dot(c.velocity) -
+                                                               (c.along(point, x) - c.start));
+    double inverseMass = 0;
+    for (int j = 0; j < point.count; ++j)
+      inverseMass += point.weights[static_cast<std::size_t>(j)] *
+                     point.weights[static_cast<std::size_t>(j)] /
+                     mass_[3 * point.nodes[static_cast<std::size_t>(j)]];
+    const double allowance = h_ * normalForce * inverseMass;
+    const Eigen::Vector3d relative = point.combine(v) - c.velocity;
     const Eigen::Vector3d tangential = relative - c.normal.dot(relative) * c.normal;
     const double speed = tangential.norm();
     if (speed == 0) continue;
@@ -77,19 +174,28 @@ void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
             ? Eigen::Vector3d(-tangential)
             : Eigen::Vector3d(-std::min(speed, obstacle.kineticFriction * allowance) / speed *
                               tangential);
-    v.segment<3>(3 * c.node) += change;
-    x.segment<3>(3 * c.node) += h_ * change;
+    // The impulse m_p change, spread over the nodes by their weights.
+    const Eigen::Vector3d impulse = change / inverseMass;
+    for (int j = 0; j < point.count; ++j) {
+      const Index node = point.nodes[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d dv =
+          point.weights[static_cast<std::size_t>(j)] / mass_[3 * node] * impulse;
+      v.segment<3>(3 * node) += dv;
+      x.segment<3>(3 * node) += h_ * dv;
+    }
   }
 }
 
 void ObstacleContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd&,
                                  Eigen::VectorXd& force) const {
-  for (std::size_t o = 0; o < obstacles_.size(); ++o)
-    for (Index node = 0; node < x.size() / 3; ++node) {
-      const auto hit = closestPointOf(obstacles_[o], t_, x.segment<3>(3 * node), radius_);
-      if (hit && hit->distance < 0)
-        force.segment<3>(3 * node) -= stiffness_[o] * hit->distance * hit->normal;
-    }
+  std::vector<Contact> contacts;
+  findContacts(x, t_, 0, contacts);
+  for (const Contact& c : contacts) {
+    const Point& point = points_[static_cast<std::size_t>(c.point)];
+    for (int j = 0; j < point.count; ++j)
+      force.segment<3>(3 * point.nodes[static_cast<std::size_t>(j)]) +=
+          c.stiffness * c.depth * c.gradient[static_cast<std::size_t>(j)];
+  }
 }
 
 }  // namespace tetskin

@@ -1,23 +1,36 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Contact of the body's nodes with obstacles (Obstacle.h) as a force model:
-// implicit penalty springs along the contact normal and Coulomb friction.
+// Contact of the body with obstacles (Obstacle.h) as a force model:
+// implicit penalty springs along the contact normal and Coulomb friction,
+// at contact points: the control nodes, the bound skin's vertices, or
+// both (ContactPoints). A skin vertex p = sum_j w_j x_j (+ its offset)
+// acts on its control nodes j through the binding's weights.
 //
-// A node at depth d >= 0 inside an obstacle (normal n, the obstacle's
-// surface moving with velocity v_o there) gets the force k d n, linearized
-// with the obstacle's motion over the step: the block h^2 k n n^T on its
-// diagonal (the step stays symmetric positive definite, so every solver
-// keeps working) and k (d + h n.v_o) n - h k n n^T v in the force. After the
-// solve, friction acts on the velocity relative to the obstacle: the normal
-// force at the step's end, f_n, allows a tangential velocity change of
-// mu h f_n / m; a tangential velocity within mu_s's allowance stops
-// (sticking), a larger one loses mu_k's (sliding), and the position follows
-// (x = x0 + h v). Nodes farther than the search radius from an obstacle are
-// not looked at: the radius bounds the depth a contact can be found at.
+// A point at depth d >= 0 inside an obstacle (normal n, the obstacle's
+// surface moving with velocity v_o there) is a spring k d along the depth's
+// gradient: g_j = -dd/dx_j = w_j n for a node or a linearly bound vertex,
+// plus the offset's share o (dn_F/dx_j)^T n for a vertex offset by o along
+// its control face's normal n_F (without it the step would linearize a
+// different motion than the skin makes, and a stiff spring through a lever
+// turns unstable). Linearized with the obstacle's motion over the step it
+// adds the blocks h^2 k g_j g_l^T between its nodes j, l (one element's:
+// the pattern holds them; the step stays symmetric positive definite, so
+// every solver keeps working) and g_j k (d + h n.v_o - h sum_l g_l.v_l) to
+// node j's force. After the solve, friction acts on the point's velocity relative
+// to the obstacle: the normal force at the step's end, f_n, allows a
+// tangential velocity change of mu h f_n / m_p (m_p = 1 / sum_j w_j^2 / m_j,
+// the point's share of its nodes' masses); a tangential velocity within
+// mu_s's allowance stops (sticking), a larger one loses mu_k's (sliding),
+// spread over the nodes as the impulse m_p dv, and the positions follow
+// (x = x0 + h v). Points farther than the search radius from an obstacle
+// are not looked at: the radius bounds the depth a contact is found at.
 
+#include <array>
+#include <memory>
 #include <vector>
 
 #include "ForceModel.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/simulation/Obstacle.h"
 
 namespace tetskin {
@@ -26,9 +39,16 @@ class ObstacleContact : public ForceModel {
  public:
   // `obstacles` checked (obstacleProblem); a stiffness of 0 becomes
   // `automaticStiffness`. `mass` (lumped, per dof) outlives the model;
-  // `searchRadius` (model units) > 0.
+  // `searchRadius` (model units) > 0. The control nodes are the contact
+  // points until setSkin.
   ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,
                   double automaticStiffness, double searchRadius);
+
+  // The skin's vertices become contact points (with the nodes, if
+  // `withNodes`): `deformer` places them from the nodes' positions (its
+  // binding's ids are the model's node numbers).
+  void setSkin(std::unique_ptr<SurfaceDeformer> deformer, const SurfaceBinding& binding,
+               bool withNodes);
 
   int addForce(const StepState& at, StepSystem& system) override;
   void addMatrix(const StepState& at, StepSystem& system) override;
@@ -38,19 +58,51 @@ class ObstacleContact : public ForceModel {
   bool isContact() const override { return true; }
 
  private:
-  struct Contact {
-    Index node;
-    int obstacle;
-    double depth;              // at the step's start
-    Eigen::Vector3d normal;    // outward, unit
-    Eigen::Vector3d velocity;  // of the obstacle's surface there, over the step
-    Eigen::Vector3d start;     // the node's position at the step's start
+  // A point moving as sum w_j x_j of up to four nodes; its spring is
+  // `share` of the obstacle's stiffness.
+  struct Point {
+    std::array<Index, 4> nodes{};
+    std::array<double, 4> weights{};
+    int count = 1;
+    double share = 1;
+    double offset = 0;  // along the normal of the face nodes[0..2] (SurfaceDeformer's)
+    Eigen::Vector3d combine(const Eigen::VectorXd& values) const {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int j = 0; j < count; ++j) sum += weights[j] * values.segment<3>(3 * nodes[j]);
+      return sum;
+    }
   };
+  struct Contact {
+    int point;
+    int obstacle;
+    double depth;                             // at the step's start
+    Eigen::Vector3d normal;                   // outward, unit
+    Eigen::Vector3d velocity;                 // of the obstacle's surface there, over the step
+    std::array<Eigen::Vector3d, 4> gradient;  // g_j
+    double start;                             // sum g_j.x_j at the step's start
+    double stiffness;                         // k times the point's share
+
+    double along(const Point& p, const Eigen::VectorXd& values) const {
+      double sum = 0;
+      for (int j = 0; j < p.count; ++j)
+        sum += gradient[static_cast<std::size_t>(j)].dot(
+            values.segment<3>(3 * p.nodes[static_cast<std::size_t>(j)]));
+      return sum;
+    }
+  };
+
+  // The contact points' positions at x.
+  const Points3& pointPositions(const Eigen::VectorXd& x) const;
+  void findContacts(const Eigen::VectorXd& x, double t, double h, std::vector<Contact>& out) const;
 
   std::vector<Obstacle> obstacles_;
   std::vector<double> stiffness_;  // per obstacle
   const Eigen::VectorXd& mass_;
   double radius_;
+  std::vector<Point> points_;
+  Index firstSkinPoint_;  // points from here on are the skin's vertices
+  std::unique_ptr<SurfaceDeformer> skin_;
+  mutable Points3 positions_, skinPositions_;
   double h_ = 0, t_ = 0;           // of the step being taken
   std::vector<Contact> contacts_;  // of the step being taken
 };

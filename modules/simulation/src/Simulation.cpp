@@ -9,11 +9,13 @@
 #include <utility>
 
 #include "BodyModels.h"
+#include "ObstacleContact.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
 #include "SolverStack.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
 
 namespace tetskin {
 
@@ -91,6 +93,7 @@ Eigen::VectorXd Simulation::nodeMasses() const {
 Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
                        const SimulationOptions& options, const std::string& datasetName)
     : level_(level < 0 ? dataset.finestLevel() : level),
+      levelFirstNode_(dataset.levels.at(static_cast<std::size_t>(level_)).firstNode),
       rest_(extractLevel(dataset, level_)),
       options_(options),
       numbering_(std::make_unique<NodeNumbering>(rest_, levelName(datasetName, level_))),
@@ -100,6 +103,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
   BodyModels body = bodyModels(fem_, options);
   models_ = std::move(body.models);
   constraints_ = body.constraints;
+  obstacles_ = body.obstacles;
   integrator_ = std::make_unique<ImplicitEuler>(options.timeStep, fem_.lumpedMass());
   solvers_ = std::make_unique<SolverStack>(dataset, level_, internal_, options,
                                            integrator_->coarseDiscretization(models_), datasetName);
@@ -116,6 +120,30 @@ Simulation::~Simulation() = default;
 
 const SolverChoice* Simulation::solverChoice() const {
   return solvers_->choice();
+}
+
+void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding) {
+  if (binding.level != level_)
+    throw Error("the contact skin is bound to level " + std::to_string(binding.level) +
+                ", the simulation runs level " + std::to_string(level_));
+  validateBinding(binding, restSkin.vertexCount(), levelFirstNode_ + rest_.nodeCount(),
+                  "the contact skin's binding");
+  // The binding in the stepper's own node numbers, for a deformer that
+  // reads the step's positions as they are.
+  SurfaceBinding internal = binding;
+  for (Index v = 0; v < binding.vertexCount(); ++v)
+    for (int j = 0; j < binding.controlsPerVertex(); ++j) {
+      const Index node = binding.controlIds(v, j) - levelFirstNode_;
+      if (node < 0)
+        throw Error("the contact skin's binding: vertex " + std::to_string(v) +
+                    " is bound to node " + std::to_string(binding.controlIds(v, j)) +
+                    ", which is not of level " + std::to_string(level_));
+      internal.controlIds(v, j) = numbering_->internal(static_cast<int>(node));
+    }
+  if (!obstacles_ || options_.contactPoints == ContactPoints::Cage) return;
+  const Points3 rest = Eigen::Map<const Points3>(fem_.restPositions().data(), fem_.nodeCount(), 3);
+  obstacles_->setSkin(std::make_unique<SurfaceDeformer>(restSkin, internal, rest), internal,
+                      options_.contactPoints == ContactPoints::Both);
 }
 
 void Simulation::setFixedNodes(const std::vector<int>& nodes) {

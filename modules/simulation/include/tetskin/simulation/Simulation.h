@@ -33,6 +33,8 @@
 #include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/FrameFields.h"
 #include "tetskin/core/RunConditions.h"
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/core/UpAxis.h"
 #include "tetskin/simulation/CorotatedFem.h"
@@ -46,6 +48,7 @@ class ForceModel;
 class Preconditioner;
 class ImplicitEuler;
 class NodeConstraints;
+class ObstacleContact;
 class NodeNumbering;
 class SolverStack;
 
@@ -73,6 +76,19 @@ struct EnumSchema<CoarseLevels> {
   static constexpr EnumValue<CoarseLevels> values[] = {
       {CoarseLevels::Grid, "grid", "nested grids enclosing the mesh, about 8x coarser each"},
       {CoarseLevels::Dataset, "dataset", "the dataset's coarser levels"}};
+};
+
+// What meets the obstacles: the bound skin's vertices (each acting on its
+// control nodes through the binding's weights), the control mesh's nodes,
+// or both. Without a skin (Simulation::setContactSkin) the nodes do.
+enum class ContactPoints { Skin, Cage, Both };
+template <>
+struct EnumSchema<ContactPoints> {
+  static constexpr const char* what = "contact points";
+  static constexpr EnumValue<ContactPoints> values[] = {
+      {ContactPoints::Skin, "skin", "the bound surface's vertices, through the binding"},
+      {ContactPoints::Cage, "cage", "the control mesh's nodes"},
+      {ContactPoints::Both, "both", "both"}};
 };
 
 // The implicit step's tangent stiffness: full (R K R^T and the rotation term
@@ -154,6 +170,8 @@ inline constexpr EnumOption<CoarseOperators> kCoarseOperators{
     "coarse_operators", "--coarse-operators", "the coarse operators", "multigrid: "};
 inline constexpr EnumOption<CoarseLevels> kCoarseLevels{"coarse_levels", "--coarse-levels",
                                                         "the coarse levels", "multigrid: "};
+inline constexpr EnumOption<ContactPoints> kContactPoints{"contact_points", "--contact-points",
+                                                          "the contact points", "obstacles meet "};
 }  // namespace simulation_option
 
 struct SimulationOptions {
@@ -167,6 +185,7 @@ struct SimulationOptions {
   // Closed surfaces the nodes cannot enter (ObstacleContact: penalty
   // springs and Coulomb friction), each checked by obstacleProblem.
   std::vector<Obstacle> obstacles;
+  ContactPoints contactPoints = ContactPoints::Skin;
   Tangent tangent = Tangent::Full;
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance =
@@ -276,6 +295,12 @@ class Simulation {
   // Lumped mass per node.
   Eigen::VectorXd nodeMasses() const;
 
+  // The skin that meets the obstacles (options.contactPoints skin or
+  // both): `restSkin` bound to the simulated level by `binding` (control
+  // ids in the dataset's numbering, as bind makes them). Throws Error when
+  // the binding is of another level or does not fit the surface.
+  void setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding);
+
   // Dirichlet nodes (level-local ids): they keep their position unless given
   // a kinematic target.
   void setFixedNodes(const std::vector<int>& nodes);
@@ -327,7 +352,8 @@ class Simulation {
 
  private:
   int level_;
-  TetMesh rest_;  // the level's own numbering
+  Index levelFirstNode_;  // the level's first node in the dataset's numbering
+  TetMesh rest_;          // the level's own numbering
   SimulationOptions options_;
   // The units a step composes (modules/simulation/src): the numbering, the
   // body, its force models (the fixed and driven nodes among them), the
@@ -337,6 +363,7 @@ class Simulation {
   CorotatedFem fem_;  // on internal_
   std::vector<std::unique_ptr<ForceModel>> models_;
   NodeConstraints* constraints_ = nullptr;  // one of models_
+  ObstacleContact* obstacles_ = nullptr;    // one of models_ (null: no obstacles)
   std::unique_ptr<ImplicitEuler> integrator_;
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering
