@@ -5,17 +5,13 @@
 #include <cmath>
 #include <set>
 
-#include "tetskin/core/Error.h"
-
 namespace tetskin {
 
 ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,
                                  double automaticStiffness, double searchRadius)
     : obstacles_(std::move(obstacles)), mass_(mass), radius_(searchRadius) {
-  for (const Obstacle& o : obstacles_) {
-    if (const auto problem = obstacleProblem(o)) throw Error(*problem);
+  for (const Obstacle& o : obstacles_)
     stiffness_.push_back(o.stiffness > 0 ? o.stiffness : automaticStiffness);
-  }
   points_.resize(static_cast<std::size_t>(mass.size() / 3));
   for (std::size_t i = 0; i < points_.size(); ++i) {
     points_[i].nodes[0] = static_cast<Index>(i);

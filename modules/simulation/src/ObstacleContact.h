@@ -37,7 +37,8 @@ namespace tetskin {
 
 class ObstacleContact : public ForceModel {
  public:
-  // `obstacles` checked (obstacleProblem); a stiffness of 0 becomes
+  // `obstacles` checked by the caller (obstacleProblem, in Simulation's
+  // option check); a stiffness of 0 becomes
   // `automaticStiffness`. `mass` (lumped, per dof) outlives the model;
   // `searchRadius` (model units) > 0. The control nodes are the contact
   // points until setSkin.

@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "BodyModels.h"
-#include "ObstacleContact.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
+#include "ObstacleContact.h"
 #include "SolverStack.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -79,6 +79,19 @@ void validateOptions(const SimulationOptions& o) {
     if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
+}
+
+// The sum of the force models' forces at `state` (those of contacts only,
+// if `contactsOnly`), in the internal numbering.
+Eigen::VectorXd forcesAt(const std::vector<std::unique_ptr<ForceModel>>& models,
+                         const NodeNumbering& numbering, const SimulationState& state,
+                         bool contactsOnly) {
+  const Eigen::VectorXd x = numbering.toInternal(state.positions);
+  const Eigen::VectorXd v = numbering.toInternal(state.velocities);
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : models)
+    if (!contactsOnly || model->isContact()) model->addForceAt(x, v, force);
+  return force;
 }
 
 }  // namespace
@@ -294,10 +307,7 @@ Points3 Simulation::reactionForces(const SimulationState& state) const {
   if (fixedNodes_.empty()) return reactions;
   // What holds a node: its inertia less every force model's force and
   // the loads.
-  const Eigen::VectorXd x = numbering_->toInternal(state.positions);
-  const Eigen::VectorXd v = numbering_->toInternal(state.velocities);
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
-  for (const auto& model : models_) model->addForceAt(x, v, force);
+  const Eigen::VectorXd force = forcesAt(models_, *numbering_, state, false);
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   for (int node : fixedNodes_) {
     const Index i = 3 * numbering_->internal(node);
@@ -310,12 +320,7 @@ Points3 Simulation::reactionForces(const SimulationState& state) const {
 }
 
 Points3 Simulation::contactForces(const SimulationState& state) const {
-  const Eigen::VectorXd x = numbering_->toInternal(state.positions);
-  const Eigen::VectorXd v = numbering_->toInternal(state.velocities);
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
-  for (const auto& model : models_)
-    if (model->isContact()) model->addForceAt(x, v, force);
-  return numbering_->toOutside(force);
+  return numbering_->toOutside(forcesAt(models_, *numbering_, state, true));
 }
 
 Eigen::Vector3d Simulation::supportReaction(const SimulationState& state) const {
