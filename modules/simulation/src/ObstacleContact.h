@@ -11,8 +11,7 @@
 // gradient: g_j = -dd/dx_j = w_j n for a node or a linearly bound vertex,
 // plus the offset's share o (dn_F/dx_j)^T n for a vertex offset by o along
 // its control face's normal n_F (without it the step would linearize a
-// different motion than the skin makes, and a stiff spring through a lever
-// turns unstable). Linearized with the obstacle's motion over the step it
+// different motion than the skin makes). Linearized with the obstacle's motion over the step it
 // adds the blocks h^2 k g_j g_l^T between its nodes j, l (one element's:
 // the pattern holds them; the step stays symmetric positive definite, so
 // every solver keeps working) and g_j k (d + h n.v_o - h sum_l g_l.v_l) to
