@@ -40,7 +40,6 @@ void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
       p.nodes[static_cast<std::size_t>(j)] = binding.controlIds(v, j);
       p.weights[static_cast<std::size_t>(j)] = binding.weights(v, j);
     }
-    if (count == 3 && binding.offset == OffsetMode::Normal) p.offset = binding.distance[v];
     points_.push_back(p);
   }
   skin_ = std::move(deformer);
@@ -84,24 +83,6 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
       for (int j = 0; j < point.count; ++j)
         c.gradient[static_cast<std::size_t>(j)] =
             point.weights[static_cast<std::size_t>(j)] * c.normal;
-      if (point.offset != 0) {
-        // n_F = m / |m|, m = (x1 - x0) x (x2 - x0): d(n_F.n) = u.dm with
-        // u = (I - n_F n_F^T) n / |m|, and u.dm = dx1.(e2 x u) + dx2.(u x e1)
-        // - dx0.(both).
-        const Eigen::Vector3d x0 = x.segment<3>(3 * point.nodes[0]);
-        const Eigen::Vector3d e1 = x.segment<3>(3 * point.nodes[1]) - x0;
-        const Eigen::Vector3d e2 = x.segment<3>(3 * point.nodes[2]) - x0;
-        const Eigen::Vector3d m = e1.cross(e2);
-        const double length = m.norm();
-        if (length > 0) {
-          const Eigen::Vector3d face = m / length;
-          const Eigen::Vector3d u = (c.normal - face.dot(c.normal) * face) / length;
-          const Eigen::Vector3d d1 = point.offset * e2.cross(u), d2 = point.offset * u.cross(e1);
-          c.gradient[0] -= d1 + d2;
-          c.gradient[1] += d1;
-          c.gradient[2] += d2;
-        }
-      }
       c.start = c.along(point, x);
       out.push_back(c);
     }
@@ -149,36 +130,54 @@ void ObstacleContact::addMatrix(const StepState& at, StepSystem& system) {
 }
 
 void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
+  // Friction is gathered per node from all the contacts that act on it and
+  // applied once: points bound to shared nodes would otherwise each spend
+  // the whole stopping impulse on the same nodes, overshoot, and chatter.
+  const std::size_t nodes = static_cast<std::size_t>(x.size() / 3);
+  if (friction_.size() != nodes) friction_.assign(nodes, {});
+  std::vector<Index> touched;
   for (const Contact& c : contacts_) {
     const Point& point = points_[static_cast<std::size_t>(c.point)];
     const Obstacle& obstacle = obstacles_[static_cast<std::size_t>(c.obstacle)];
     // The spring's force at the step's end, as the step linearized it.
     const double normalForce = c.stiffness * std::max(0.0, c.depth + h_ * c.normal.dot(c.velocity) -
                                                                (c.along(point, x) - c.start));
-    double inverseMass = 0;
-    for (int j = 0; j < point.count; ++j)
-      inverseMass += point.weights[static_cast<std::size_t>(j)] *
-                     point.weights[static_cast<std::size_t>(j)] /
-                     mass_[3 * point.nodes[static_cast<std::size_t>(j)]];
-    const double allowance = h_ * normalForce * inverseMass;
-    const Eigen::Vector3d relative = point.combine(v) - c.velocity;
-    const Eigen::Vector3d tangential = relative - c.normal.dot(relative) * c.normal;
-    const double speed = tangential.norm();
-    if (speed == 0) continue;
-    const Eigen::Vector3d change =
-        speed <= obstacle.staticFriction * allowance
-            ? Eigen::Vector3d(-tangential)
-            : Eigen::Vector3d(-std::min(speed, obstacle.kineticFriction * allowance) / speed *
-                              tangential);
-    // The impulse m_p change, spread over the nodes by their weights.
-    const Eigen::Vector3d impulse = change / inverseMass;
+    if (normalForce == 0) continue;
     for (int j = 0; j < point.count; ++j) {
       const Index node = point.nodes[static_cast<std::size_t>(j)];
-      const Eigen::Vector3d dv =
-          point.weights[static_cast<std::size_t>(j)] / mass_[3 * node] * impulse;
-      v.segment<3>(3 * node) += dv;
-      x.segment<3>(3 * node) += h_ * dv;
+      const double share = point.weights[static_cast<std::size_t>(j)] * normalForce;
+      if (share <= 0) continue;
+      NodeFriction& f = friction_[static_cast<std::size_t>(node)];
+      if (f.total == 0) touched.push_back(node);
+      f.normalForce += share * c.normal;
+      f.surfaceVelocity += share * c.velocity;
+      f.staticFriction += share * obstacle.staticFriction;
+      f.kineticFriction += share * obstacle.kineticFriction;
+      f.total += share;
     }
+  }
+  for (const Index node : touched) {
+    NodeFriction& f = friction_[static_cast<std::size_t>(node)];
+    const double normalForce = f.normalForce.norm();
+    if (normalForce > 0) {
+      // The node's tangential velocity relative to the surfaces it touches
+      // may change by mu h f_n / m: all of it when mu_s allows (sticking),
+      // mu_k's share of it otherwise (sliding).
+      const Eigen::Vector3d normal = f.normalForce / normalForce;
+      const Eigen::Vector3d relative = v.segment<3>(3 * node) - f.surfaceVelocity / f.total;
+      const Eigen::Vector3d tangential = relative - normal.dot(relative) * normal;
+      const double speed = tangential.norm();
+      const double allowance = h_ * normalForce / mass_[3 * node];
+      if (speed > 0) {
+        const double change = speed <= f.staticFriction / f.total * allowance
+                                  ? speed
+                                  : std::min(speed, f.kineticFriction / f.total * allowance);
+        const Eigen::Vector3d dv = -change / speed * tangential;
+        v.segment<3>(3 * node) += dv;
+        x.segment<3>(3 * node) += h_ * dv;
+      }
+    }
+    f = NodeFriction{};
   }
 }
 
