@@ -41,20 +41,35 @@ void checkRunOptions(const RunArgs& a, const CLI::App& cmd) {
                     " multigrid or auto), not to cg");
 }
 
+void applyRunOptions(const RunArgs& a, const CLI::App& cmd, Index nodeCount, RunRequest& request) {
+  using namespace simulation_option;
+  request.names = OptionNames::Flags;
+  SimulationOptions& s = request.settings;
+  const auto given = [&](const NumberOption& option) { return givenName(cmd, option).has_value(); };
+  const auto chosen = [&](const auto& option) { return cmd.count(option.flag) > 0; };
+  if (given(kTimeStep)) s.timeStep = a.options.timeStep;
+  if (given(kTolerance)) s.tolerance = a.options.tolerance;
+  if (given(kGuessSolutions)) s.guessSolutions = a.options.guessSolutions;
+  if (given(kCoarseReuse)) s.coarseReuse = a.options.coarseReuse;
+  if (given(kMaxIterations)) s.maxIterations = a.options.maxIterations;
+  if (given(kFriction)) s.friction = a.options.friction;
+  if (given(kFloorStiffness)) s.floorStiffness = a.options.floorStiffness;
+  if (chosen(kSolver)) s.solver = fromName<SolverKind>(a.solver);
+  if (chosen(kTangent)) s.tangent = fromName<Tangent>(a.tangent);
+  if (chosen(kCoarseOperators)) s.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
+  if (chosen(kCoarseLevels)) s.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
+  const auto fields = materialFields();
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (a.material.values[i]) request.material.values[i] = a.material.values[i];
+  fillScenario(cmd, a.scenario, nodeCount, request);
+}
+
 RunRequest runRequest(const RunArgs& a, const CLI::App& cmd, const Dataset& dataset, int level,
                       const std::string& datasetName) {
   RunRequest request;
-  request.names = OptionNames::Flags;
   request.datasetName = datasetName;
   request.level = level;
-  request.settings = a.options;
-  request.settings.solver = fromName<SolverKind>(a.solver);
-  request.settings.tangent = fromName<Tangent>(a.tangent);
-  request.settings.coarseOperators = fromName<CoarseOperators>(a.coarseOperators);
-  request.settings.coarseLevels = fromName<CoarseLevels>(a.coarseLevels);
-  request.material = a.material;
-  fillScenario(cmd, a.scenario, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount,
-               request);
+  applyRunOptions(a, cmd, dataset.mesh.levels[static_cast<std::size_t>(level)].nodeCount, request);
   return request;
 }
 

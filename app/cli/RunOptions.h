@@ -40,6 +40,12 @@ void requireOutputOrPrintRun(const std::filesystem::path& output, bool printRun)
 // before any work, as a typo would be).
 void checkRunOptions(const RunArgs& args, const CLI::App& cmd);
 
+// Sets in `request` the options given on the command line (the rest stays
+// as `request` has it: the defaults, or a scene's values), for a level of
+// `nodeCount` nodes; errors name the flags.
+void applyRunOptions(const RunArgs& args, const CLI::App& cmd, Index nodeCount,
+                     RunRequest& request);
+
 // The run the options ask for on `level` of `dataset` (named
 // `datasetName` in errors), and the run it is (resolveRun).
 RunRequest runRequest(const RunArgs& args, const CLI::App& cmd, const Dataset& dataset, int level,

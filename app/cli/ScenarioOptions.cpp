@@ -76,18 +76,22 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd) {
 
 void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
                   RunRequest& request) {
+  // Only what was given: the request may hold a scene's values already.
+  if (cmd.count(kScenarioOption.flag) > 0) request.scenario = a.name;
   for (const ScenarioField& f : scenarioFields())
-    if (const auto given = givenName(cmd, *f.option); given && !scenarioReads(a.name, f.parameter))
-      throw Error(*given + ": " + notReadBy(a.name, f.parameter));
+    if (const auto given = givenName(cmd, *f.option);
+        given && !scenarioReads(request.scenario, f.parameter))
+      throw Error(*given + ": " + notReadBy(request.scenario, f.parameter));
   std::optional<std::string> withLoads = givenName(cmd, scenario_option::kLoadSeconds);
   if (cmd.count(scenario_option::kLoadCurve.flag) > 0) withLoads = scenario_option::kLoadCurve.flag;
-  if (withLoads && a.loads.empty())
+  if (withLoads && a.loads.empty() && request.parameters.loads.size() == 0)
     throw Error(*withLoads + ": applies with --loads, which is not given");
   // (Each number was checked as it was parsed; makeScenario() checks the
   // whole set again for its other callers.)
-  request.scenario = a.name;
   ScenarioParameters& p = request.parameters;
-  p = a.parameters;
+  for (const ScenarioField& f : scenarioFields())
+    if (givenName(cmd, *f.option)) p.*f.field = a.parameters.*f.field;
+  if (givenName(cmd, scenario_option::kLoadSeconds)) p.loadSeconds = a.parameters.loadSeconds;
   if (!a.fixedNodes.empty()) p.fixedNodes = readNodeList(a.fixedNodes, nodeCount);
   if (a.fixedBox.size() == 6) {
     BoundingBox box;
@@ -99,7 +103,7 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
   if (a.gravity.size() == 3)
     request.gravity = Eigen::Vector3d(a.gravity[0], a.gravity[1], a.gravity[2]);
-  request.floorHeight = a.floor;
+  if (a.floor) request.floorHeight = a.floor;
   if (!a.up.empty()) request.up = fromName<UpAxis>(a.up);
 }
 

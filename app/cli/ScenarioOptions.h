@@ -37,11 +37,13 @@ UpAxis upAxisOf(const ScenarioArgs& args, const DatasetConfig& config);
 // command line, if any.
 std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
-// Fills `request`'s scenario and its parameters (the numbers, the held
-// nodes of --fixed-nodes, the loads and their curve read), the held box
-// (--fixed-box), gravity, the floor and the up axis, for a level of
-// `nodeCount` nodes. Throws Error for an option of another scenario than
-// the chosen one (e.g. --push-acceleration with drop): it would change nothing.
+// Sets in `request` what the command line gives of the scenario and its
+// parameters (the numbers, the held nodes of --fixed-nodes, the loads and
+// their curve read), the held box (--fixed-box), gravity, the floor and
+// the up axis, for a level of `nodeCount` nodes; the rest stays as
+// `request` has it (the defaults, or a scene's values). Throws Error for an
+// option of another scenario than the chosen one (e.g. --push-acceleration
+// with drop): it would change nothing.
 void fillScenario(const CLI::App& cmd, const ScenarioArgs& args, Index nodeCount,
                   RunRequest& request);
 

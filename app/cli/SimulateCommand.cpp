@@ -21,6 +21,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/StepLogFile.h"
 #include "tetskin/session/RunSpecJson.h"
+#include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -66,6 +67,7 @@ void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
 struct RunTotals {
   double stepSeconds = 0;
   long iterations = 0, multigridSteps = 0;
+  int contacts = 0;  // of the last step
 };
 
 // What the run was and how it ended, on stdout.
@@ -116,6 +118,15 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
     std::printf(", floor at %s = %s", toString(options.up),
                 formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
+  if (!options.obstacles.empty()) {
+    const Eigen::RowVector3d force = sim.contactForces(sim.state()).colwise().sum();
+    std::printf("  %zu obstacle%s met by the %s; at the end %d contacts, contact force %s N\n",
+                options.obstacles.size(), options.obstacles.size() == 1 ? "" : "s",
+                session.hasSurface() && options.contactPoints != ContactPoints::Cage
+                    ? (options.contactPoints == ContactPoints::Both ? "skin and nodes" : "skin")
+                    : "nodes",
+                totals.contacts, commaSeparated(force.transpose()).c_str());
+  }
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
                 a.steps / std::max(totals.stepSeconds, 1e-12),
@@ -145,16 +156,57 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
                 a.steps == 1 ? "" : "s");
 }
 
-void run(SimulateArgs& a, const CLI::App& cmd) {
-  checkOptions(a, cmd);
-  const Dataset dataset = loadDataset(a.dataset);
+// What a run starts from: a dataset and the command line's options, or a
+// scene (SceneRun.h) with the command line's options over its values.
+struct RunInput {
+  Dataset dataset;
+  std::string datasetName;  // as the binding names it
+  RunSpec spec;
+  std::optional<std::pair<SurfaceMesh, SurfaceBinding>> surface;
+};
+
+RunInput datasetInput(const SimulateArgs& a, const CLI::App& cmd) {
+  RunInput in;
+  in.dataset = loadDataset(a.dataset);
+  in.datasetName = a.dataset.generic_string();
   // A binding from `tetskin bind` follows as it is, on its level.
   std::optional<SurfaceInput> input;
-  if (!a.surface.empty()) input = readSurfaceInput(a.surface, dataset.mesh);
+  if (!a.surface.empty()) input = readSurfaceInput(a.surface, in.dataset.mesh);
   const int level =
-      input ? commandLevel(*input, dataset.mesh, a.level, cmd.count(kLevelOption.flag) > 0)
-            : resolveLevel(dataset.mesh, a.level);
-  const RunSpec spec = runSpec(a.run, cmd, dataset, level, a.dataset.string());
+      input ? commandLevel(*input, in.dataset.mesh, a.level, cmd.count(kLevelOption.flag) > 0)
+            : resolveLevel(in.dataset.mesh, a.level);
+  in.spec = runSpec(a.run, cmd, in.dataset, level, a.dataset.string());
+  if (input) {
+    SurfaceBinding binding = bindingAt(*input, in.dataset.mesh, level);
+    in.surface.emplace(std::move(input->surface), std::move(binding));
+  }
+  return in;
+}
+
+RunInput sceneInput(SimulateArgs& a, const CLI::App& cmd) {
+  Scene scene = readScene(a.dataset);
+  SceneBody& body = scene.bodies.front();
+  if (cmd.count(kLevelOption.flag) > 0) body.level = a.level;
+  if (!a.surface.empty()) body.surface = std::filesystem::absolute(a.surface);
+  SceneRun run = loadScene(scene);
+  if (!givenName(cmd, recording_option::kSteps)) a.steps = run.steps;
+  applyRunOptions(a.run, cmd,
+                  run.dataset.mesh.levels[static_cast<std::size_t>(run.level)].nodeCount,
+                  run.request);
+  RunInput in;
+  in.spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  in.dataset = std::move(run.dataset);
+  in.datasetName = body.dataset.generic_string();
+  if (run.surface)
+    in.surface.emplace(std::move(run.surface->surface), std::move(run.surface->binding));
+  return in;
+}
+
+void run(SimulateArgs& a, const CLI::App& cmd) {
+  checkOptions(a, cmd);
+  RunInput in = isSceneFile(a.dataset) ? sceneInput(a, cmd) : datasetInput(a, cmd);
+  const Dataset& dataset = in.dataset;
+  const RunSpec& spec = in.spec;
   if (a.printRun) {
     std::printf("%s\n", runSpecJson(spec).c_str());
     return;
@@ -164,11 +216,10 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   for (const std::string& warning : session.takeWarnings(OptionNames::Flags))
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   // The bound surface, if any, follows every frame (frame 0 too: the
-  // scenario's start, not always the rest).
-  if (input) {
-    SurfaceBinding binding = bindingAt(*input, dataset.mesh, level);
-    session.bindSurface(std::move(input->surface), std::move(binding), a.dataset.generic_string());
-  }
+  // scenario's start, not always the rest), and meets the obstacles.
+  if (in.surface)
+    session.bindSurface(std::move(in.surface->first), std::move(in.surface->second),
+                        in.datasetName);
   session.record(a.output, a.pieces);
   // --log: the start and every step, written at the end (and by a run cut
   // short, with the steps before it).
@@ -182,6 +233,7 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
       totals.stepSeconds += session.lastStepSeconds();
       totals.iterations += stats.iterations;
       totals.multigridSteps += stats.solver == SolverKind::Multigrid;
+      totals.contacts = stats.contacts;
       progress.update("simulate", static_cast<std::size_t>(i + 1),
                       static_cast<std::size_t>(a.steps));
     });
@@ -208,7 +260,12 @@ void addSimulateCommand(CLI::App& app) {
   auto a = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the corotated FEM on a dataset level; writes a ParaView time series (.pvd)");
-  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset,
+                  std::string(kDatasetHelp) +
+                      "; or a scene (.json, format tetskin-scene): the body, obstacles, floor "
+                      "and settings, which the options given here override")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output,
                   "time series RUN.pvd (frames go to RUN_frames/); required unless --print-run");
   addNumberOption(*cmd, recording_option::kSteps, a->steps);

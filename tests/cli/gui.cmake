@@ -51,7 +51,7 @@ if(TETSKIN_BUILD_GUI)
     ARGS ${data}/bunny.json --scenario twist --steps 2 --prescribed --size 320x240 --no-overlay
          --screenshot ${cli_out}/gui_prescribed.png)
   tetskin_cli_test(gui_bad_scenario FAIL STATUS 1 EXE tetskin-gui
-    STDERR "(^|\n)error: --scenario: 'spin' is not one of wobble, drop, twist, sag\n$"
+    STDERR "(^|\n)error: --scenario: 'spin' is not one of wobble, drop, twist, sag, free\n$"
     NOT_EXIST ${cli_out}/gui_spin.png
     ARGS ${data}/bunny.json --scenario spin --screenshot ${cli_out}/gui_spin.png)
   set_tests_properties(cli.gui_drop_screenshot cli.gui_drop_floor cli.gui_wobble_screenshot

@@ -17,6 +17,7 @@
 #include "SimulationBodies.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/simulation/Simulation.h"
 
 namespace tetskin::test {
@@ -168,15 +169,30 @@ TEST(ObstacleContact, ARigidMotionOfTheWholeSceneChangesNothing) {
 // gathered per node, so skin points sharing nodes do not chatter in and
 // out of contact); with the cage as the contact points the skin sinks
 // 1 cm into the slab instead.
-TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
+// The block with its base at `base` and a skin 1 cm outside it on every
+// side (the surface of a finer grid: four skin vertices to a cage node),
+// bound to it.
+struct SkinnedBlock {
+  MultiLevelTetMesh dataset;
+  SurfaceMesh skin;
+  SurfaceBinding binding;
+};
+SkinnedBlock skinnedBlock(double base) {
   TetMesh cage = block();
-  cage.nodes.col(1).array() += 0.012;
-  const MultiLevelTetMesh dataset = oneLevel(cage);
-  // (The surface of a finer grid: four skin vertices to a cage node.)
+  cage.nodes.col(1).array() += base;
+  SkinnedBlock b{oneLevel(cage), {}, {}};
   TetMesh shell = tetGrid(8, 4, 8, {0.22, 0.12, 0.22});
-  shell.nodes.rowwise() += Eigen::RowVector3d(-0.01, 0.002, -0.01);
-  const SurfaceMesh skin = boundarySurface(shell);
-  const SurfaceBinding binding = bindSurface(skin, dataset, 0);
+  shell.nodes.rowwise() += Eigen::RowVector3d(-0.01, base - 0.01, -0.01);
+  b.skin = boundarySurface(shell);
+  b.binding = bindSurface(b.skin, b.dataset, 0);
+  return b;
+}
+
+TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
+  const SkinnedBlock body = skinnedBlock(0.012);
+  const MultiLevelTetMesh& dataset = body.dataset;
+  const SurfaceMesh& skin = body.skin;
+  const SurfaceBinding& binding = body.binding;
   std::vector<int> contacts;
   std::vector<double> support;
   const auto settle = [&](ContactPoints points) {
@@ -211,6 +227,42 @@ TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
   }
   const auto byCage = settle(ContactPoints::Cage);
   EXPECT_LT(skinLowest(*byCage), -0.008);  // the skin sinks by about its margin
+}
+
+// The same block and skin dropped onto a ball (radius 0.15, finely
+// tessellated) under its centre comes to rest on it: its deepest skin
+// vertex, measured against the exact sphere, less than 0.5% of the
+// diagonal inside, the contact forces (springs and friction) equal to the
+// weight within 1% and no sideways force left.
+TEST(ObstacleContact, ABlockDroppedOntoABallRestsOnItsSkin) {
+  const SkinnedBlock body = skinnedBlock(0.02);
+  const MultiLevelTetMesh& dataset = body.dataset;
+  const SurfaceMesh& skin = body.skin;
+  const SurfaceBinding& binding = body.binding;
+  const Eigen::Vector3d centre(0.1, -0.15, 0.1);
+  constexpr double kRadius = 0.15;
+  Obstacle ball;
+  ball.name = "ball";
+  ball.shape = std::make_shared<ClosedSurfaceDistance>(sphere(centre, kRadius, 64, 128), "ball");
+  SimulationOptions options = rubber(0);
+  options.material.massDamping = 2;
+  options.obstacles = {ball};
+  Simulation sim(dataset, 0, options);
+  sim.setContactSkin(skin, binding);
+  for (int i = 0; i < 400; ++i) sim.step();
+  const SimulationState state = sim.state();
+  SurfaceDeformer deformer(skin, binding, dataset.nodes);
+  Points3 placed;
+  deformer.deformPositions(state.positions, placed);
+  const double deepest =
+      (kRadius - (placed.rowwise() - centre.transpose()).rowwise().norm().array()).maxCoeff();
+  const double diagonal = std::sqrt(0.22 * 0.22 + 0.12 * 0.12 + 0.22 * 0.22);
+  EXPECT_LT(deepest, 0.005 * diagonal);
+  EXPECT_GT(deepest, -0.005 * diagonal);  // it rests on the ball, not beside it
+  const double weight = sim.nodeMasses().sum() * kStandardGravity;
+  const Eigen::Vector3d support = sim.contactForces(state).colwise().sum().transpose();
+  EXPECT_NEAR(support.y(), weight, 0.01 * weight);
+  EXPECT_LT(std::hypot(support.x(), support.z()), 0.01 * weight);
 }
 
 }  // namespace

@@ -12,82 +12,15 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/core/NumberText.h"
 #include "tetskin/io/AtomicFile.h"
+#include "tetskin/io/JsonFields.h"
 
 namespace tetskin {
 namespace {
 
 using nlohmann::json;
 
-// Validates one JSON object and reads typed fields out of it; errors name the
-// file and the JSON pointer of the field.
-class Fields {
- public:
-  Fields(const json& object, std::string pointer, const std::string& file)
-      : object_(object), pointer_(std::move(pointer)), file_(file) {
-    if (!object_.is_object()) fail(pointer_.empty() ? "/" : pointer_, "must be an object");
-  }
-
-  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw Error(file_, 0, (where.empty() ? "/" : where) + ": " + what);
-  }
-
-  bool has(const char* key) const { return object_.contains(key) && !object_[key].is_null(); }
-  const json& get(const char* key) const {
-    seen_.insert(key);
-    if (!object_.contains(key)) fail(pointer_ + "/" + key, "is missing");
-    return object_[key];
-  }
-  std::string where(const char* key) const { return pointer_ + "/" + key; }
-
-  double number(const char* key, double min, double max, bool minExclusive = false) const {
-    const json& v = get(key);
-    if (!v.is_number()) fail(where(key), "must be a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x < min || x > max || (minExclusive && x == min))
-      fail(where(key), outOfRange(min, max, minExclusive, v.dump()));
-    return x;
-  }
-  long long integer(const char* key, long long min, long long max) const {
-    const json& v = get(key);
-    if (!v.is_number_integer()) fail(where(key), "must be an integer");
-    const long long x = v.get<long long>();
-    if (x < min || x > max)
-      fail(where(key), "must lie in [" + std::to_string(min) + ", " + std::to_string(max) +
-                           "], found " + std::to_string(x));
-    return x;
-  }
-  // Any finite number; its range is checked elsewhere.
-  double anyNumber(const char* key) const {
-    constexpr double kLargest = std::numeric_limits<double>::max();
-    return number(key, -kLargest, kLargest);
-  }
-  std::string string(const char* key) const {
-    const json& v = get(key);
-    if (!v.is_string() || v.get<std::string>().empty())
-      fail(where(key), "must be a non-empty string");
-    return v.get<std::string>();
-  }
-  std::optional<std::string> optionalString(const char* key) const {
-    seen_.insert(key);
-    if (!has(key)) return std::nullopt;
-    return string(key);
-  }
-  // Fails on keys that were never asked for: typos must not pass silently.
-  void rejectUnknown() const {
-    for (const auto& [key, value] : object_.items())
-      if (!seen_.contains(key)) fail(pointer_ + "/" + key, "is not a known field");
-  }
-  void optional(const char* key) const { seen_.insert(key); }
-
- private:
-  const json& object_;
-  std::string pointer_;
-  const std::string& file_;
-  mutable std::set<std::string> seen_;
-};
-
-LevelRange readRange(const Fields& level, const char* key, const std::string& file, LevelRange r,
-                     bool nodes) {
+LevelRange readRange(const JsonFields& level, const char* key, const std::string& file,
+                     LevelRange r, bool nodes) {
   const json& pair = level.get(key);
   if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
       !pair[1].is_number_integer() || pair[0].get<long long>() < 0 || pair[1].get<long long>() <= 0)
@@ -99,9 +32,9 @@ LevelRange readRange(const Fields& level, const char* key, const std::string& fi
 }
 
 // {"max": x, "mean": y}: a one-sided distance.
-std::pair<double, double> readDistance(const Fields& wrap, const char* key,
+std::pair<double, double> readDistance(const JsonFields& wrap, const char* key,
                                        const std::string& file) {
-  Fields d(wrap.get(key), wrap.where(key), file);
+  JsonFields d(wrap.get(key), wrap.where(key), file);
   const double max = d.number("max", 0, 1e300);
   const double mean = d.number("mean", 0, 1e300);
   d.rejectUnknown();
@@ -110,7 +43,7 @@ std::pair<double, double> readDistance(const Fields& wrap, const char* key,
 }
 
 LevelWrap readWrap(const json& value, const std::string& pointer, const std::string& file) {
-  Fields wrap(value, pointer, file);
+  JsonFields wrap(value, pointer, file);
   LevelWrap out;
   out.alpha = wrap.number("alpha", 0, 1e300, true);
   out.offset = wrap.number("offset", 0, 1e300, true);
@@ -124,7 +57,7 @@ LevelWrap readWrap(const json& value, const std::string& pointer, const std::str
 }
 
 LevelFidelity readFidelity(const json& value, const std::string& pointer, const std::string& file) {
-  Fields fidelity(value, pointer, file);
+  JsonFields fidelity(value, pointer, file);
   LevelFidelity out;
   out.diagonal = fidelity.number("diagonal", 0, 1e300, true);
   out.elementSize = fidelity.number("element_size", 0, 1e300, true);
@@ -133,7 +66,7 @@ LevelFidelity readFidelity(const json& value, const std::string& pointer, const 
   std::tie(out.levelToInputMax, out.levelToInputMean) =
       readDistance(fidelity, "level_to_input", file);
   if (fidelity.has("bound")) {
-    Fields bound(fidelity.get("bound"), fidelity.where("bound"), file);
+    JsonFields bound(fidelity.get("bound"), fidelity.where("bound"), file);
     out.boundMax = bound.number("max", 0, 1e300);
     out.boundMean = bound.number("mean", 0, 1e300);
     bound.rejectUnknown();
@@ -150,12 +83,12 @@ LevelFidelity readFidelity(const json& value, const std::string& pointer, const 
 }
 
 LevelConfig readLevel(const json& value, const std::string& pointer, const std::string& file) {
-  Fields level(value, pointer, file);
+  JsonFields level(value, pointer, file);
   LevelConfig out;
   out.range = readRange(level, "nodes", file, out.range, true);
   out.range = readRange(level, "elements", file, out.range, false);
   if (level.has("source")) {
-    Fields source(level.get("source"), pointer + "/source", file);
+    JsonFields source(level.get("source"), pointer + "/source", file);
     out.source.input = source.optionalString("input").value_or("");
     out.source.mesher = source.optionalString("mesher").value_or("");
     if (source.has("quality")) out.source.quality = source.number("quality", 0, 1e6);
@@ -227,34 +160,8 @@ std::string describe(const LevelFidelity& f) {
 
 DatasetConfig parseDatasetConfig(std::string_view content, const std::string& sourceName,
                                  const std::filesystem::path& directory) {
-  json root;
-  try {
-    root = json::parse(content);
-  } catch (const json::parse_error& e) {
-    // Turn nlohmann's byte offset into the line a person looks for.
-    const std::size_t byte = std::min<std::size_t>(e.byte, content.size());
-    const long line =
-        1 + std::count(content.begin(), content.begin() + static_cast<long>(byte), '\n');
-    std::string what = e.what();
-    if (const auto pos = what.find("parse error"); pos != std::string::npos)
-      what = what.substr(pos);
-    throw Error(sourceName, line, "invalid JSON: " + what);
-  } catch (const json::exception& e) {
-    // A number beyond a double ("number overflow parsing '1e999'", found by
-    // fuzz_config): the line of the text it quotes.
-    const std::string what = e.what();
-    const std::size_t open = what.find('\''), close = what.rfind('\'');
-    long line = 0;
-    if (open != std::string::npos && close > open + 1)
-      if (const std::size_t at = content.find(what.substr(open + 1, close - open - 1));
-          at != std::string_view::npos)
-        line = 1 + std::count(content.begin(), content.begin() + static_cast<long>(at), '\n');
-    const std::size_t bracket = what.find("] ");
-    throw Error(
-        sourceName, line,
-        "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-  }
-  Fields top(root, "", sourceName);
+  const json root = parseJsonText(content, sourceName);
+  JsonFields top(root, "", sourceName);
   DatasetConfig config;
   config.directory = directory;
   if (top.string("format") != "tetskin-dataset") top.fail("/format", "must be \"tetskin-dataset\"");
@@ -277,7 +184,7 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
     config.up = *axis;
   }
   if (top.has("material")) {
-    Fields m(top.get("material"), "/material", sourceName);
+    JsonFields m(top.get("material"), "/material", sourceName);
     const json& color = m.get("color");
     if (!color.is_array() || color.size() != 3)
       m.fail("/material/color", "must be [r, g, b] with values in [0, 1]");
@@ -294,7 +201,7 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
   if (auto t = top.optionalString("texture")) config.texture = *t;
   if (auto s = top.optionalString("surface")) config.surface = *s;
   if (top.has("fur")) {
-    Fields f(top.get("fur"), "/fur", sourceName);
+    JsonFields f(top.get("fur"), "/fur", sourceName);
     const json& enabled = f.get("enabled");
     if (!enabled.is_boolean()) f.fail("/fur/enabled", "must be true or false");
     config.fur.enabled = enabled.get<bool>();
@@ -339,7 +246,7 @@ DatasetConfig parseDatasetConfig(std::string_view content, const std::string& so
   }
   top.optional("fur");
   if (top.has("elasticity")) {
-    Fields e(top.get("elasticity"), "/elasticity", sourceName);
+    JsonFields e(top.get("elasticity"), "/elasticity", sourceName);
     ElasticMaterial& m = config.elasticity;
     // Types here; ranges once all are read (materialProblem).
     for (auto [key, value] : {std::pair{"youngs_modulus", &m.youngsModulus},

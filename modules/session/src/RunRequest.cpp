@@ -54,6 +54,7 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
   if (request.gravity) spec.options.gravity = *request.gravity;
   spec.options.floorHeight = request.floorHeight;
   spec.parameters = request.parameters;
+  spec.initialVelocity = request.initialVelocity;
   if (request.fixedBox) {
     const LevelRange& level = mesh.levels[static_cast<std::size_t>(request.level)];
     const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);

@@ -36,13 +36,39 @@ nlohmann::json parametersJson(const ScenarioParameters& p) {
   return out;
 }
 
+nlohmann::json vector(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+nlohmann::json obstaclesJson(const std::vector<Obstacle>& obstacles) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Obstacle& o : obstacles) {
+    nlohmann::json motion = nlohmann::json::array();
+    for (const PoseKey& key : o.motion)
+      motion.push_back(
+          {{"time", key.time},
+           {"translation", vector(key.translation)},
+           {"rotation", {key.rotation.w(), key.rotation.x(), key.rotation.y(), key.rotation.z()}}});
+    const ObstaclePose& p = o.placement;
+    out.push_back({{"name", o.name},
+                   {"translation", vector(p.translation)},
+                   {"rotation", {p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z()}},
+                   {"scale", p.scale},
+                   {"motion", motion},
+                   {"static_friction", o.staticFriction},
+                   {"kinetic_friction", o.kineticFriction},
+                   {"stiffness", o.stiffness}});
+  }
+  return out;
+}
+
 nlohmann::json optionsJson(const SimulationOptions& o) {
   namespace so = simulation_option;
   nlohmann::json material;
   for (const MaterialField& f : materialFields()) material[f.option->key] = o.material.*f.field;
   return {{"material", material},
           {so::kTimeStep.key, o.timeStep},
-          {"gravity", {o.gravity.x(), o.gravity.y(), o.gravity.z()}},
+          {"gravity", vector(o.gravity)},
           {"up", toString(o.up)},
           {"floor_height", o.floorHeight ? nlohmann::json(*o.floorHeight) : nullptr},
           {so::kFloorStiffness.key, o.floorStiffness},
@@ -57,7 +83,9 @@ nlohmann::json optionsJson(const SimulationOptions& o) {
           {"single_precision_cycle", o.singlePrecisionCycle},
           {"smoother", toString(o.smoother)},
           {so::kMaxIterations.key, o.maxIterations},
-          {"custom_preconditioner", static_cast<bool>(o.preconditioner)}};
+          {"custom_preconditioner", static_cast<bool>(o.preconditioner)},
+          {so::kContactPoints.key, toString(o.contactPoints)},
+          {"obstacles", obstaclesJson(o.obstacles)}};
 }
 
 }  // namespace
@@ -67,6 +95,7 @@ std::string runSpecJson(const RunSpec& spec) {
                               {"level", spec.level},
                               {"scenario", spec.scenario},
                               {"parameters", parametersJson(spec.parameters)},
+                              {"initial_velocity", vector(spec.initialVelocity)},
                               {"options", optionsJson(spec.options)}};
   return out.dump(2);
 }

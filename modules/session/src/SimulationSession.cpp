@@ -18,6 +18,10 @@ SimulationSession::SimulationSession(const MultiLevelTetMesh& dataset, const Run
   simulation_ = std::make_unique<Simulation>(
       dataset, spec.level, scenarioOptions(spec.scenario, spec.options, rest), spec.datasetName);
   scenario_->setUp(*simulation_);
+  if (!spec.initialVelocity.isZero()) {
+    const SimulationState start = simulation_->state();
+    simulation_->setVelocities(start.velocities.rowwise() + spec.initialVelocity.transpose());
+  }
 }
 
 SimulationSession::~SimulationSession() = default;
@@ -46,6 +50,7 @@ void SimulationSession::bindSurface(SurfaceMesh surface, SurfaceBinding binding,
   bound->dataset = std::move(dataset);
   bound->deformed.emplace();
   deformer_ = std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset_.nodes);
+  simulation_->setContactSkin(bound->surface, bound->binding);
   bound_ = std::move(bound);
   allNodes_ = dataset_.nodes;
 }

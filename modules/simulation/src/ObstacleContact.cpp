@@ -83,10 +83,35 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
       for (int j = 0; j < point.count; ++j)
         c.gradient[static_cast<std::size_t>(j)] =
             point.weights[static_cast<std::size_t>(j)] * c.normal;
-      c.start = c.along(point, x);
       out.push_back(c);
     }
   }
+  // A skin point pushes each of its nodes along the node's mean skin
+  // contact normal (over all skin contacts at it, by |w_j|), so that the
+  // friction that stops the node's tangential motion moves none of its
+  // points along their push (ObstacleContact.h).
+  if (skin_) {
+    nodeNormals_.assign(static_cast<std::size_t>(x.size() / 3), Eigen::Vector3d::Zero());
+    for (const Contact& c : out)
+      if (c.point >= firstSkinPoint_) {
+        const Point& point = points_[static_cast<std::size_t>(c.point)];
+        for (int j = 0; j < point.count; ++j)
+          nodeNormals_[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])] +=
+              std::abs(point.weights[static_cast<std::size_t>(j)]) * c.normal;
+      }
+    for (Contact& c : out)
+      if (c.point >= firstSkinPoint_) {
+        const Point& point = points_[static_cast<std::size_t>(c.point)];
+        for (int j = 0; j < point.count; ++j) {
+          const Eigen::Vector3d& sum =
+              nodeNormals_[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])];
+          if (sum.norm() > 0)
+            c.gradient[static_cast<std::size_t>(j)] =
+                point.weights[static_cast<std::size_t>(j)] * sum.normalized();
+        }
+      }
+  }
+  for (Contact& c : out) c.start = c.along(points_[static_cast<std::size_t>(c.point)], x);
 }
 
 int ObstacleContact::addForce(const StepState& at, StepSystem& system) {
@@ -135,6 +160,7 @@ void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
   // the whole stopping impulse on the same nodes, overshoot, and chatter.
   const std::size_t nodes = static_cast<std::size_t>(x.size() / 3);
   if (friction_.size() != nodes) friction_.assign(nodes, {});
+  frictionForces_.clear();
   std::vector<Index> touched;
   for (const Contact& c : contacts_) {
     const Point& point = points_[static_cast<std::size_t>(c.point)];
@@ -149,7 +175,7 @@ void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
       if (share <= 0) continue;
       NodeFriction& f = friction_[static_cast<std::size_t>(node)];
       if (f.total == 0) touched.push_back(node);
-      f.normalForce += share * c.normal;
+      f.normalForce += normalForce * c.gradient[static_cast<std::size_t>(j)];
       f.surfaceVelocity += share * c.velocity;
       f.staticFriction += share * obstacle.staticFriction;
       f.kineticFriction += share * obstacle.kineticFriction;
@@ -175,6 +201,7 @@ void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
         const Eigen::Vector3d dv = -change / speed * tangential;
         v.segment<3>(3 * node) += dv;
         x.segment<3>(3 * node) += h_ * dv;
+        frictionForces_.push_back({node, mass_[3 * node] * dv / h_});
       }
     }
     f = NodeFriction{};
@@ -191,6 +218,7 @@ void ObstacleContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd
       force.segment<3>(3 * point.nodes[static_cast<std::size_t>(j)]) +=
           c.stiffness * c.depth * c.gradient[static_cast<std::size_t>(j)];
   }
+  for (const auto& [node, friction] : frictionForces_) force.segment<3>(3 * node) += friction;
 }
 
 }  // namespace tetskin

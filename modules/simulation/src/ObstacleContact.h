@@ -8,11 +8,15 @@
 //
 // A point at depth d >= 0 inside an obstacle (normal n, the obstacle's
 // surface moving with velocity v_o there) is a spring k d that acts on its
-// nodes along g_j = w_j n. (For a skin vertex offset along its control
-// face's normal, the depth's exact gradient has a further term, the
-// face normal's turn; it is left out on purpose: with it, friction that
-// stops a node's tangential motion moves offset points along the normal,
-// and a skin resting on a slab with friction settled on contact forces
+// nodes along g_j = w_j n; for a skin point, n at node j is the node's
+// mean skin contact normal (over all skin contacts at it, by |w_j|), so
+// that friction, which stops a node's motion across that normal, moves
+// none of its points along their push. (With each point's own normal, a
+// bunny at rest in a bowl was held by contact forces 7% above its weight:
+// the nodes' friction moved the points along their normals.) (For a skin vertex offset along its
+// control face's normal, the depth's exact gradient has a further term, the face normal's turn; it
+// is left out on purpose: with it, friction that stops a node's tangential motion moves offset
+// points along the normal, and a skin resting on a slab with friction settled on contact forces
 // of 1.8 times its weight; without it, on its weight within 1e-4.)
 // Linearized with the obstacle's motion over the step it adds the blocks
 // h^2 k g_j g_l^T between its nodes j, l (one element's: the pattern holds
@@ -108,8 +112,9 @@ class ObstacleContact : public ForceModel {
   Index firstSkinPoint_;  // points from here on are the skin's vertices
   std::unique_ptr<SurfaceDeformer> skin_;
   mutable Points3 positions_, skinPositions_;
-  double h_ = 0, t_ = 0;           // of the step being taken
-  std::vector<Contact> contacts_;  // of the step being taken
+  mutable std::vector<Eigen::Vector3d> nodeNormals_;  // the mean skin contact normal per node
+  double h_ = 0, t_ = 0;                              // of the step being taken
+  std::vector<Contact> contacts_;                     // of the step being taken
   // A node's share of its contacts' normal forces (sum w_j f_n n) and
   // what they weigh by it: the surfaces' velocity and the coefficients.
   struct NodeFriction {
@@ -118,6 +123,8 @@ class ObstacleContact : public ForceModel {
     double staticFriction = 0, kineticFriction = 0, total = 0;
   };
   mutable std::vector<NodeFriction> friction_;  // per node, zero between steps
+  // The last step's friction, m_j dv_j / h, on the nodes it acted on.
+  mutable std::vector<std::pair<Index, Eigen::Vector3d>> frictionForces_;
 };
 
 }  // namespace tetskin

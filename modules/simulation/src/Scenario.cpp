@@ -88,6 +88,18 @@ class Drop : public Scenario {
   }
 };
 
+// Nothing held but what the parameters hold, nothing pushed: the body as
+// placed, under gravity and its loads (a scene's body).
+class Free : public Scenario {
+ public:
+  using Scenario::Scenario;
+  const char* name() const override { return "free"; }
+
+ protected:
+  void drive(Simulation&, double, Points3&) override {}
+  std::vector<int> prepare(Simulation&) override { return {}; }
+};
+
 class Twist : public Sag {
  public:
   using Sag::Sag;
@@ -247,11 +259,13 @@ std::unique_ptr<Scenario> makeScenario(std::string_view name, const ScenarioPara
   if (name == "drop") return std::make_unique<Drop>(p);
   if (name == "twist") return std::make_unique<Twist>(p);
   if (name == "sag") return std::make_unique<Sag>(p);
-  throw Error("unknown scenario '" + std::string(name) + "' (known: wobble, drop, twist, sag)");
+  if (name == "free") return std::make_unique<Free>(p);
+  throw Error("unknown scenario '" + std::string(name) + "' (known: " + listed(scenarioNames()) +
+              ")");
 }
 
 std::vector<std::string> scenarioNames() {
-  return {"wobble", "drop", "twist", "sag"};
+  return {"wobble", "drop", "twist", "sag", "free"};
 }
 
 }  // namespace tetskin

@@ -58,6 +58,7 @@ struct RunRequest {
   std::optional<UpAxis> up;                // nullopt: the dataset config's
   std::optional<Eigen::Vector3d> gravity;  // nullopt: standard gravity down the up axis
   std::optional<double> floorHeight;       // along the up axis; nullopt: no floor
+  Eigen::Vector3d initialVelocity = Eigen::Vector3d::Zero();  // every node's at the start
   // The time step, solver, tolerance, ... (the material, up, gravity and
   // floor in it are replaced by the fields above).
   SimulationOptions settings = defaultRunSettings();

@@ -9,7 +9,7 @@
 // Keys are the options' schema keys (OptionSchema.h: "time_step",
 // "poisson_ratio", ...), enums their schema names ("auto", "full"). Output
 // (one JSON object, keys sorted, 2-space indent):
-//   dataset, level, scenario
+//   dataset, level, scenario, initial_velocity [x, y, z] (m/s)
 //   parameters: the scenario's numbers by key, fixed_nodes (ids), loads
 //     (nodeCount x 3 rows, N; [] for none), load_curve ({points: [[t, f]],
 //     after: "hold"|"repeat"}), load_seconds (null: for ever)
@@ -17,7 +17,10 @@
 //     floor_height (null: no floor), floor_stiffness, friction, tangent,
 //     solver, tolerance, guess_solutions, coarse_reuse, coarse_operators,
 //     coarse_levels, single_precision_cycle, smoother, max_iterations,
-//     custom_preconditioner (bool)
+//     custom_preconditioner (bool), contact_points, obstacles (per
+//     obstacle: name, translation, rotation [w, x, y, z], scale, motion
+//     [{time, translation, rotation}], static_friction, kinetic_friction,
+//     stiffness (0: automatic))
 
 #include <string>
 

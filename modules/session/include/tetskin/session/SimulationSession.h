@@ -54,6 +54,8 @@ struct RunSpec {
   std::string scenario = kDefaultScenario;
   ScenarioParameters parameters;
   std::string datasetName = "dataset";  // names the dataset in errors
+  // Every node's velocity at the start (m/s), added to the scenario's.
+  Eigen::Vector3d initialVelocity = Eigen::Vector3d::Zero();
 };
 
 class SimulationSession {
@@ -74,8 +76,10 @@ class SimulationSession {
   void startFromFrame(const std::filesystem::path& frame);
 
   // A surface bound to this run's level that follows every state it is
-  // asked for (deformedSurface(), recorded frames). `dataset` is the path
-  // the binding names (BoundSurface::dataset).
+  // asked for (deformedSurface(), recorded frames), and that meets the
+  // obstacles as the options' contact points say (Simulation::
+  // setContactSkin). `dataset` is the path the binding names
+  // (BoundSurface::dataset).
   void bindSurface(SurfaceMesh surface, SurfaceBinding binding, std::string dataset);
   bool hasSurface() const { return bound_ != nullptr; }
   // The bound surface deformed to `positions` of the level's nodes.

@@ -346,7 +346,9 @@ class Simulation {
   // frame's fields and the surface deformed with it are of one instant,
   // whatever step the GUI's runner takes in between.)
   // The force the floor and the obstacles exert on each node at `state`
-  // (#nodes x 3, N; the friction of the last step not included).
+  // (#nodes x 3, N): their penalty springs at `state`, and the obstacles'
+  // friction of the last step (m dv / h; the floor's friction is not
+  // included).
   Points3 contactForces(const SimulationState& state) const;
   FrameFields frameFields(const SimulationState& state) const;
 

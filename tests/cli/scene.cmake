@@ -1,0 +1,24 @@
+# CLI tests of scenes: tetskin simulate SCENE.json (included by
+# tests/cli/CMakeLists.txt).
+
+# The bundled scene, briefly, on its coarsest level: the skin meets the bowl.
+tetskin_cli_test(simulate_scene
+  STDOUT "scenario free.*\n  1 obstacle met by the skin. at the end [0-9]+ contacts"
+  ARGS simulate ${data}/scenes/bunny-in-bowl.json --level 0 --steps 90 -q -o ${cli_out}/scene_run.pvd)
+# The command line's options over the scene's values; the rest the scene's.
+tetskin_cli_test(simulate_scene_overrides
+  STDOUT "\"dataset\": \"[^,]*bunny.json\".*\"level\": 0,.*\"contact_points\": \"skin\".*\"friction\": 0.3,.*\"obstacles\": .*\"kinetic_friction\": 0.4,.*\"time_step\": 0.01.*\"scenario\": \"free\""
+  ARGS simulate ${data}/scenes/bunny-in-bowl.json --level 0 --time-step 0.01 --friction 0.3 --print-run)
+# Bad scenes: the scene file and the field named, nothing written.
+tetskin_cli_test(simulate_scene_bad_key FAIL STATUS 1
+  STDERR "^error: [^\n]*bad_key.json: /bodies/0/colour: is not a known field\n$"
+  NOT_EXIST ${cli_out}/bad_scene.pvd
+  ARGS simulate ${tdata}/scenes/bad_key.json -o ${cli_out}/bad_scene.pvd)
+tetskin_cli_test(simulate_scene_missing_obstacle FAIL STATUS 1
+  STDERR "^error: [^\n]*missing_obstacle.json: /obstacles/0/surface: [^\n]*no_such_bowl.obj: no such file\n$"
+  NOT_EXIST ${cli_out}/bad_scene.pvd
+  ARGS simulate ${tdata}/scenes/missing_obstacle.json -o ${cli_out}/bad_scene.pvd)
+tetskin_cli_test(simulate_scene_open_obstacle FAIL STATUS 1
+  STDERR "^error: [^\n]*open_obstacle.json: /obstacles/0/surface: [^\n]*open_sheet.obj[^\n]*edge[^\n]*\n$"
+  NOT_EXIST ${cli_out}/bad_scene.pvd
+  ARGS simulate ${tdata}/scenes/open_obstacle.json -o ${cli_out}/bad_scene.pvd)
