@@ -6,6 +6,10 @@
 // against the exact sphere, not the contact's own distances), the contact
 // forces equal to the weight within 1%.
 #include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,11 +21,13 @@
 #include "TestFiles.h"
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
+#include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::test {
 namespace {
@@ -141,6 +147,49 @@ TEST(SceneRun, TheBunnyDroppedIntoTheBowlComesToRestOnItsSkin) {
       session.simulation().contactForces(state).colwise().sum().transpose();
   EXPECT_NEAR(support.y(), weight, 0.01 * weight);
   EXPECT_LT(std::hypot(support.x(), support.z()), 0.01 * weight);
+}
+
+// A recorded scene: the control frames carry ContactForce (the run's
+// contact forces, summed as Simulation::contactForces sums them), the skin
+// frames Penetration, which matches the depth in the exact bowl within its
+// tessellation's sag, and ContactForce, zero where the skin is outside.
+TEST(SceneRun, TheRecordedRunCarriesTheContact) {
+  ScratchDir dir;
+  Scene scene = readScene(kBowlScene);
+  scene.bodies[0].level = 0;
+  SceneRun run = loadScene(scene);
+  const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  SimulationSession session(run.dataset.mesh, spec);
+  session.bindSurface(run.surface->surface, run.surface->binding, "bunny.json");
+  session.record(dir / "run.pvd");
+  session.recordFrame();  // frame 0: the start
+  session.run(120, 120);  // frame 1: after 2 s
+  const auto control = readVtu(dir / "run_frames/control_00001.vtu");
+  const auto skin = readVtp(dir / "run_frames/surface_00001.vtp");
+  vtkDataArray* nodeForces = control->GetPointData()->GetArray(arrays::kContactForce);
+  vtkDataArray* penetration = skin->GetPointData()->GetArray(arrays::kPenetration);
+  vtkDataArray* skinForces = skin->GetPointData()->GetArray(arrays::kContactForce);
+  ASSERT_TRUE(nodeForces && penetration && skinForces);
+  const Eigen::Vector3d expected =
+      session.simulation().contactForces(session.state()).colwise().sum().transpose();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (vtkIdType i = 0; i < nodeForces->GetNumberOfTuples(); ++i)
+    sum += Eigen::Map<const Eigen::Vector3d>(nodeForces->GetTuple3(i));
+  EXPECT_LT((sum - expected).norm(), 1e-6 * expected.norm());
+  EXPECT_GT(expected.norm(), 0);  // it has landed
+  int inside = 0;
+  for (vtkIdType v = 0; v < skin->GetNumberOfPoints(); ++v) {
+    const Eigen::Vector3d p(skin->GetPoint(v));
+    const double depth = penetration->GetTuple1(v);
+    const double force = Eigen::Vector3d(skinForces->GetTuple3(v)).norm();
+    if (depth > 0) ++inside;
+    EXPECT_EQ(force > 0, depth > 0) << "vertex " << v;
+    // Near the bowl's inner wall (away from the rim): the exact depth.
+    if (depth > -0.5 && -p.y() > 0.5 * p.norm()) {
+      EXPECT_NEAR(depth, p.norm() - 9, 0.01) << v;
+    }
+  }
+  EXPECT_GT(inside, 0);
 }
 
 }  // namespace

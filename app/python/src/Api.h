@@ -11,6 +11,7 @@ void addSurfaceApi(pybind11::module_& m);     // read_surface, write_surface
 void addDatasetApi(pybind11::module_& m);     // Dataset, Level, load_dataset, build
 void addBindingApi(pybind11::module_& m);     // Binding, bind, load_binding, deform
 void addSimulationApi(pybind11::module_& m);  // Simulation
+void addSceneApi(pybind11::module_& m);       // Scene (a Simulation)
 void addNativeTiming(pybind11::module_& m);   // _native: C++ timings for the overhead benchmark
 
 }  // namespace tetskin::python

@@ -73,6 +73,11 @@ void Keywords::finish() const {
 
 RunRequest runRequest(Keywords& k) {
   RunRequest r;
+  applyRunKeywords(k, r);
+  return r;
+}
+
+void applyRunKeywords(Keywords& k, RunRequest& r) {
   r.names = OptionNames::Keys;
   for (const MaterialField& field : materialFields())
     if (const auto value = k.number(*field.option)) r.material.set(*field.option, *value);
@@ -89,7 +94,7 @@ RunRequest runRequest(Keywords& k) {
   if (const auto v = k.choice(kTangent)) o.tangent = *v;
   if (const auto v = k.choice(kCoarseOperators)) o.coarseOperators = *v;
   if (const auto v = k.choice(kCoarseLevels)) o.coarseLevels = *v;
-  r.up = k.choice(kUpOption);
+  if (const auto up = k.choice(kUpOption)) r.up = up;
   using scenario_option::kGravity;
   if (const auto gravity = k.take(kGravity.key)) {
     const py::array given = py::array::ensure(*gravity);
@@ -99,7 +104,6 @@ RunRequest runRequest(Keywords& k) {
     r.gravity = points3(given.attr("reshape")(1, 3), kGravity.key).row(0).transpose();
   }
   if (const auto height = k.number(scenario_option::kFloorHeight)) r.floorHeight = *height;
-  return r;
 }
 
 void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {

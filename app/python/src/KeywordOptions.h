@@ -75,6 +75,9 @@ class Keywords {
 // numbers of simulation_option, up, gravity (3 numbers) and floor_height;
 // the defaults are the request's (RunRequest.h), as in every front end.
 RunRequest runRequest(Keywords& keywords);
+// The same keywords set in `request` (a scene's run); what is not given
+// stays as `request` has it.
+void applyRunKeywords(Keywords& keywords, RunRequest& request);
 // The request's scenario parameters (for its scenario, on a level of
 // `levelNodes` nodes): its numbers (base_share or base, ...; refused for a
 // scenario that does not read them, as on the command line), fixed_nodes,

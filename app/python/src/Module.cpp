@@ -32,5 +32,6 @@ PYBIND11_MODULE(_tetskin, m) {
   tetskin::python::addDatasetApi(m);
   tetskin::python::addBindingApi(m);
   tetskin::python::addSimulationApi(m);
+  tetskin::python::addSceneApi(m);
   tetskin::python::addNativeTiming(m);
 }

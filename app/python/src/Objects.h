@@ -65,4 +65,7 @@ struct SimulationObject {
   }
 };
 
+// The run's warnings not shown yet, as Python UserWarnings.
+void warnOfRun(SimulationObject& s);
+
 }  // namespace tetskin::python

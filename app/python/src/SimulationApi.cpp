@@ -22,12 +22,6 @@ namespace {
 
 using Object = SimulationObject;
 
-// The run's warnings not shown yet, as Python UserWarnings.
-void warnOf(Object& s) {
-  for (const std::string& warning : s.session->takeWarnings(OptionNames::Keys))
-    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
-}
-
 std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
                              std::optional<std::string> scenario, const py::kwargs& kwargs) {
   Keywords keywords(kwargs, "Simulation");
@@ -52,7 +46,7 @@ std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
     object->session = std::make_unique<SimulationSession>(dataset.dataset->mesh, spec);
   }
   object->forces = Points3::Zero(nodes, 3);
-  warnOf(*object);
+  warnOfRun(*object);
   return object;
 }
 
@@ -80,7 +74,7 @@ py::object step(Object& s, int n) {
     }
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between steps
   }
-  warnOf(s);
+  warnOfRun(s);
   if (n == 0) return py::none();
   return statsDict(stats, s.session->lastStepSeconds());
 }
@@ -121,6 +115,11 @@ const char* solverHelp() {
 }
 
 }  // namespace
+
+void warnOfRun(SimulationObject& s) {
+  for (const std::string& warning : s.session->takeWarnings(OptionNames::Keys))
+    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+}
 
 void addSimulationApi(py::module_& m) {
   py::class_<Object, std::shared_ptr<Object>>(
@@ -207,6 +206,14 @@ void addSimulationApi(py::module_& m) {
           },
           "Kinetic, elastic, gravitational and total energy now, joules (gravitational from the "
           "rest shape).")
+      .def(
+          "contact_forces",
+          [](const Object& s) {
+            const Simulation& sim = s.session->simulation();
+            return owning(sim.contactForces(sim.state()));
+          },
+          "The floor's and obstacles' force on each node now (their springs and the "
+          "obstacles' friction of the last step), newtons, float64 (n, 3).")
       .def(
           "von_mises",
           [](const Object& s) {

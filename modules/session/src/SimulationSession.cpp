@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 
+#include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/session/SkinFields.h"
@@ -162,6 +163,15 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
   if (!surface->deformed)
     surface->deformed.emplace(DeformedState{surface->surface.positions, surface->surface.normals});
   surface->deformed->scalars = surfaceFields(fields, surface->binding);
+  surface->deformed->vectors.clear();
+  // The contact skin's penetration and forces, on the skin they are of.
+  if (bound_ && surface->binding.vertexCount() == bound_->binding.vertexCount()) {
+    SkinContact contact = simulation_->skinContact(s);
+    if (contact.penetration.size() > 0) {
+      surface->deformed->scalars.push_back({arrays::kPenetration, std::move(contact.penetration)});
+      surface->deformed->vectors.push_back({arrays::kContactForce, std::move(contact.forces)});
+    }
+  }
   recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface);
 }
 

@@ -21,8 +21,11 @@ ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::V
 }
 
 void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
-                              const SurfaceBinding& binding, bool withNodes) {
-  if (!withNodes) points_.clear();
+                              const SurfaceBinding& binding, ContactPoints mode) {
+  skin_ = std::move(deformer);
+  skinCollides_ = mode != ContactPoints::Cage;
+  if (!skinCollides_) return;
+  if (mode == ContactPoints::Skin) points_.clear();
   firstSkinPoint_ = static_cast<Index>(points_.size());
   // Each skin vertex's spring is the share of the obstacle's stiffness that
   // keeps the skin as stiff as the nodes it is bound to would be.
@@ -42,16 +45,15 @@ void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
     }
     points_.push_back(p);
   }
-  skin_ = std::move(deformer);
 }
 
 const Points3& ObstacleContact::pointPositions(const Eigen::VectorXd& x) const {
   const Index nodes = x.size() / 3;
   const Eigen::Map<const Points3> control(x.data(), nodes, 3);
-  const Index skinPoints = skin_ ? skin_->vertexCount() : 0;
+  const Index skinPoints = skinCollides_ ? skin_->vertexCount() : 0;
   positions_.resize(static_cast<Index>(points_.size()), 3);
   if (firstSkinPoint_ > 0) positions_.topRows(firstSkinPoint_) = control;
-  if (skin_) {
+  if (skinPoints > 0) {
     skin_->deformPositions(control, skinPositions_);
     positions_.bottomRows(skinPoints) = skinPositions_;
   }
@@ -90,7 +92,7 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
   // contact normal (over all skin contacts at it, by |w_j|), so that the
   // friction that stops the node's tangential motion moves none of its
   // points along their push (ObstacleContact.h).
-  if (skin_) {
+  if (skinCollides_) {
     nodeNormals_.assign(static_cast<std::size_t>(x.size() / 3), Eigen::Vector3d::Zero());
     for (const Contact& c : out)
       if (c.point >= firstSkinPoint_) {
@@ -219,6 +221,29 @@ void ObstacleContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd
           c.stiffness * c.depth * c.gradient[static_cast<std::size_t>(j)];
   }
   for (const auto& [node, friction] : frictionForces_) force.segment<3>(3 * node) += friction;
+}
+
+void ObstacleContact::skinContact(const Eigen::VectorXd& x, double t, Eigen::VectorXd& penetration,
+                                  Points3& force) const {
+  penetration.resize(0);
+  force.resize(0, 3);
+  if (!skin_) return;
+  const Eigen::Map<const Points3> control(x.data(), x.size() / 3, 3);
+  Points3 skin;
+  skin_->deformPositions(control, skin);
+  penetration = Eigen::VectorXd::Constant(skin.rows(), -radius_);
+  force = Points3::Zero(skin.rows(), 3);
+  const double share = skinCollides_ && !points_.empty() ? points_.back().share : 0;
+  for (Index v = 0; v < skin.rows(); ++v)
+    for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+      const auto hit = closestPointOf(obstacles_[o], t, skin.row(v).transpose(), radius_);
+      if (!hit || -hit->distance <= penetration[v]) continue;
+      penetration[v] = -hit->distance;
+      force.row(v) =
+          hit->distance < 0
+              ? Eigen::RowVector3d(stiffness_[o] * share * -hit->distance * hit->normal.transpose())
+              : Eigen::RowVector3d::Zero();
+    }
 }
 
 }  // namespace tetskin

@@ -41,6 +41,7 @@
 #include "ForceModel.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/simulation/Obstacle.h"
+#include "tetskin/simulation/Simulation.h"
 
 namespace tetskin {
 
@@ -54,11 +55,21 @@ class ObstacleContact : public ForceModel {
   ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,
                   double automaticStiffness, double searchRadius);
 
-  // The skin's vertices become contact points (with the nodes, if
-  // `withNodes`): `deformer` places them from the nodes' positions (its
-  // binding's ids are the model's node numbers).
+  // The bound skin: `deformer` places it from the nodes' positions (its
+  // binding's ids are the model's node numbers). Its vertices become the
+  // contact points for `points` skin, or join the nodes for both; for cage
+  // the nodes stay the contact points and the skin is only reported on
+  // (skinContact).
   void setSkin(std::unique_ptr<SurfaceDeformer> deformer, const SurfaceBinding& binding,
-               bool withNodes);
+               ContactPoints points);
+  bool hasSkin() const { return skin_ != nullptr; }
+
+  // Per skin vertex at positions x and time t: how deep it lies in the
+  // obstacle it is deepest in (positive inside; -radius beyond the search
+  // radius of all) and its contact spring's force k d n (zero when the
+  // skin is not among the contact points).
+  void skinContact(const Eigen::VectorXd& x, double t, Eigen::VectorXd& penetration,
+                   Points3& force) const;
 
   int addForce(const StepState& at, StepSystem& system) override;
   void addMatrix(const StepState& at, StepSystem& system) override;
@@ -110,6 +121,7 @@ class ObstacleContact : public ForceModel {
   double radius_;
   std::vector<Point> points_;
   Index firstSkinPoint_;  // points from here on are the skin's vertices
+  bool skinCollides_ = false;
   std::unique_ptr<SurfaceDeformer> skin_;
   mutable Points3 positions_, skinPositions_;
   mutable std::vector<Eigen::Vector3d> nodeNormals_;  // the mean skin contact normal per node

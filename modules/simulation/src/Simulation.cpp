@@ -153,10 +153,18 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
                     ", which is not of level " + std::to_string(level_));
       internal.controlIds(v, j) = numbering_->internal(static_cast<int>(node));
     }
-  if (!obstacles_ || options_.contactPoints == ContactPoints::Cage) return;
+  if (!obstacles_) return;
   const Points3 rest = Eigen::Map<const Points3>(fem_.restPositions().data(), fem_.nodeCount(), 3);
   obstacles_->setSkin(std::make_unique<SurfaceDeformer>(restSkin, internal, rest), internal,
-                      options_.contactPoints == ContactPoints::Both);
+                      options_.contactPoints);
+}
+
+SkinContact Simulation::skinContact(const SimulationState& state) const {
+  SkinContact out;
+  if (obstacles_)
+    obstacles_->skinContact(numbering_->toInternal(state.positions), state.time, out.penetration,
+                            out.forces);
+  return out;
 }
 
 void Simulation::setFixedNodes(const std::vector<int>& nodes) {
@@ -335,7 +343,8 @@ FrameFields Simulation::frameFields(const SimulationState& state) const {
           state.externalForces,
           reactionForces(state),
           std::move(measures.vonMisesStress),
-          std::move(measures.equivalentStrain)};
+          std::move(measures.equivalentStrain),
+          options_.floorHeight || obstacles_ ? contactForces(state) : Points3()};
 }
 
 }  // namespace tetskin

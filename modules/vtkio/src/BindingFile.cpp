@@ -135,6 +135,13 @@ vtkSmartPointer<vtkPolyData> bindingToPolyData(const BoundSurface& bound) {
                     std::to_string(bound.surface.vertexCount()) + " vertices");
       data->GetPointData()->AddArray(toVtkScalars(scalars.name.c_str(), scalars.values));
     }
+    for (const PointVectors& vectors : bound.deformed->vectors) {
+      if (vectors.values.rows() != bound.surface.vertexCount())
+        throw Error("the deformed surface's " + vectors.name + ": " +
+                    std::to_string(vectors.values.rows()) + " vectors for " +
+                    std::to_string(bound.surface.vertexCount()) + " vertices");
+      data->GetPointData()->AddArray(toVtkVectors(vectors.name.c_str(), vectors.values));
+    }
   }
   addString(data->GetFieldData(), "Dataset", bound.dataset);
   return data;

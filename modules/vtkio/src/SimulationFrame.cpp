@@ -55,6 +55,10 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetPointData()->AddArray(toVtkVectors(arrays::kVelocity, fields.velocities));
   grid->GetPointData()->AddArray(toVtkVectors(arrays::kExternalForce, fields.externalForces));
   grid->GetPointData()->AddArray(toVtkVectors(arrays::kReactionForce, fields.reactionForces));
+  if (fields.contactForces.rows() > 0) {
+    requireRows("the frame's contact forces", fields.contactForces.rows(), nodes, "nodes");
+    grid->GetPointData()->AddArray(toVtkVectors(arrays::kContactForce, fields.contactForces));
+  }
   // 0/1 per node rather than a list: ParaView thresholds or colours by it.
   auto prescribed = vtkSmartPointer<vtkUnsignedCharArray>::New();
   prescribed->SetName(arrays::kPrescribed);

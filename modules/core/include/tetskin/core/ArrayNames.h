@@ -8,10 +8,19 @@
 namespace tetskin::arrays {
 
 // Control-mesh frames (.vtu of simulate, the GUI's Record and Export).
-inline constexpr const char* kDisplacement = "Displacement";      // point vectors: position - rest
-inline constexpr const char* kVelocity = "Velocity";              // point vectors
-inline constexpr const char* kExternalForce = "ExternalForce";    // point vectors, N
-inline constexpr const char* kReactionForce = "ReactionForce";    // point vectors, N
+inline constexpr const char* kDisplacement = "Displacement";    // point vectors: position - rest
+inline constexpr const char* kVelocity = "Velocity";            // point vectors
+inline constexpr const char* kExternalForce = "ExternalForce";  // point vectors, N
+inline constexpr const char* kReactionForce = "ReactionForce";  // point vectors, N
+// Point vectors, N: what the floor and obstacles exert on a node (springs
+// and the last step's friction); on a skin vertex, its contact spring.
+// Control frames of a run with contact, and skin frames of a run with
+// obstacles.
+inline constexpr const char* kContactForce = "ContactForce";
+// Skin frames of a run with obstacles, point scalars: the signed distance
+// (model units) into the obstacle a vertex is deepest in, positive inside;
+// -r for a vertex farther than the contact search radius r from all.
+inline constexpr const char* kPenetration = "Penetration";
 inline constexpr const char* kPrescribed = "Prescribed";          // point 0/1: held or driven
 inline constexpr const char* kVonMisesStress = "VonMisesStress";  // cell scalars, Pa
 // Cell scalars: the von Mises equivalent strain (CorotatedFem::elementMeasures).

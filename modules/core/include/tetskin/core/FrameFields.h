@@ -17,6 +17,9 @@ namespace tetskin {
 struct FrameFields {
   Points3 positions, velocities, externalForces, reactionForces;
   Eigen::VectorXd vonMisesStress, equivalentStrain;
+  // Per node, N: the floor's and obstacles' forces (Simulation::
+  // contactForces); empty for a run without contact.
+  Points3 contactForces = {};
 };
 
 }  // namespace tetskin

@@ -236,6 +236,12 @@ struct StepStats {
 
 // Per node of the level (#N rows, level-local numbering), SI units where
 // the material is (metres, seconds, newtons).
+// The contact skin's vertices at a state (Simulation::skinContact).
+struct SkinContact {
+  Eigen::VectorXd penetration;  // model units, positive inside an obstacle
+  Points3 forces;               // N, the contact spring's
+};
+
 struct SimulationState {
   Points3 positions;   // #N x 3, m
   Points3 velocities;  // #N x 3, m/s
@@ -295,11 +301,16 @@ class Simulation {
   // Lumped mass per node.
   Eigen::VectorXd nodeMasses() const;
 
-  // The skin that meets the obstacles (options.contactPoints skin or
-  // both): `restSkin` bound to the simulated level by `binding` (control
-  // ids in the dataset's numbering, as bind makes them). Throws Error when
-  // the binding is of another level or does not fit the surface.
+  // The skin: `restSkin` bound to the simulated level by `binding`
+  // (control ids in the dataset's numbering, as bind makes them). It meets
+  // the obstacles where options.contactPoints is skin or both, and
+  // skinContact reports on it in any case. Throws Error when the binding
+  // is of another level or does not fit the surface.
   void setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding);
+  // Per vertex of the contact skin at `state`: its penetration into the
+  // obstacles and its contact spring's force (arrays::kPenetration,
+  // kContactForce); empty without obstacles or a skin.
+  SkinContact skinContact(const SimulationState& state) const;
 
   // Dirichlet nodes (level-local ids): they keep their position unless given
   // a kinematic target.

@@ -35,11 +35,18 @@ struct PointScalars {
   Eigen::VectorXd values;
 };
 
+// A named vector per surface vertex (the skin's contact forces).
+struct PointVectors {
+  std::string name;
+  Points3 values;
+};
+
 // Where a binding has moved its surface, and what else its file shows of
 // that state (not read back: the file's points and normals are the state).
 struct DeformedState {
   Points3 positions, normals;
   std::vector<PointScalars> scalars = {};
+  std::vector<PointVectors> vectors = {};
 };
 
 struct BoundSurface {

@@ -1,0 +1,75 @@
+# SPDX-License-Identifier: AGPL-3.0-or-later
+"""Scene: a scene file or dict run as `tetskin simulate SCENE.json` runs it,
+its skin kept out of the bowl, its run the command's, and bad scenes
+refused naming the field."""
+import json
+
+import numpy as np
+import pytest
+
+import tetskin
+from conftest import DATA
+
+SCENE = DATA / "scenes" / "bunny-in-bowl.json"
+
+
+def scene_dict(level=0):
+    """The bundled scene as a dict, its paths made absolute."""
+    scene = json.loads(SCENE.read_text())
+    body = scene["bodies"][0]
+    body["dataset"] = str((SCENE.parent / body["dataset"]).resolve())
+    body["surface"] = str((SCENE.parent / body["surface"]).resolve())
+    body["level"] = level
+    for obstacle in scene["obstacles"]:
+        obstacle["surface"] = str(SCENE.parent / obstacle["surface"])
+    return scene
+
+
+def test_the_skin_settles_in_the_bowl_without_entering_it():
+    scene = tetskin.Scene(scene_dict(), mass_damping=2.0)
+    assert scene.scene_steps == 240
+    assert scene.run_spec["scenario"] == "free"
+    assert scene.run_spec["options"]["material"]["mass_damping"] == 2.0
+    scene.step(400)
+    penetration, forces = scene.skin_contact()
+    skin = scene.skin_positions()
+    assert penetration.shape == (skin.shape[0],) and forces.shape == skin.shape
+    diagonal = np.linalg.norm(skin.max(axis=0) - skin.min(axis=0))
+    assert 0 < penetration.max() < 0.005 * diagonal
+    # Measured independently: the depth in the bowl's exact inner sphere.
+    radius = np.linalg.norm(skin, axis=1)
+    near = (penetration > -0.5) & (-skin[:, 1] > 0.5 * radius)
+    assert np.allclose(penetration[near], radius[near] - 9, atol=0.01)
+    # At rest: the contact forces hold the weight (gravity along -y).
+    support = scene.contact_forces().sum(axis=0)
+    assert support[1] > 0 and abs(support[0]) < 0.01 * support[1]
+
+
+def test_the_scene_runs_as_the_command_runs_it(cli):
+    printed = json.loads(cli("simulate", SCENE, "--level", 0, "--time-step", 0.01, "--print-run"))
+    scene = tetskin.Scene(scene_dict(), time_step=0.01)
+    ours = scene.run_spec
+    # (An obstacle's name says where it came from: the file, or "scene".)
+    for run in (ours, printed):
+        for obstacle in run["options"]["obstacles"]:
+            obstacle.pop("name")
+    assert ours["options"] == printed["options"]
+    assert ours["parameters"] == printed["parameters"] and ours["level"] == printed["level"]
+
+
+def test_a_path_reads_relative_to_the_file():
+    scene = tetskin.Scene(SCENE)
+    assert scene.level == 1 and scene.run_spec["options"]["obstacles"][0]["kinetic_friction"] == 0.4
+
+
+def test_bad_scenes_name_the_field():
+    bad = scene_dict()
+    bad["bodies"][0]["colour"] = "red"
+    with pytest.raises(tetskin.Error, match="/bodies/0/colour: is not a known field"):
+        tetskin.Scene(bad)
+    bad = scene_dict()
+    bad["obstacles"][0]["surface"] = "nowhere.obj"
+    with pytest.raises(tetskin.Error, match="/obstacles/0/surface: .*nowhere.obj: no such file"):
+        tetskin.Scene(bad)
+    with pytest.raises(tetskin.Error, match="Scene: unknown option 'stepz'"):
+        tetskin.Scene(scene_dict(), stepz=3)
