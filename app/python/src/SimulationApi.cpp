@@ -30,10 +30,9 @@ std::shared_ptr<Object> make(const DatasetObject& dataset, int level,
   request.level = resolveLevel(data.mesh, level);
   request.datasetName = dataset.path.string();
   if (scenario) request.scenario = *scenario;
-  const auto names = scenarioNames();
-  if (std::find(names.begin(), names.end(), request.scenario) == names.end())
+  if (!isScenario(request.scenario))
     throw Error("Simulation: scenario: unknown scenario '" + request.scenario +
-                "' (known: " + listed(names) + ")");
+                "' (known: " + listed(scenarioNames()) + ")");
   const Index nodes = data.mesh.levels[static_cast<std::size_t>(request.level)].nodeCount;
   readScenarioParameters(keywords, nodes, request);
   keywords.finish();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "TextLines.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/NumberText.h"
 
@@ -38,6 +39,10 @@ json parseJsonText(std::string_view content, const std::string& sourceName) {
         sourceName, line,
         "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
+}
+
+json readJsonFile(const std::filesystem::path& path) {
+  return parseJsonText(detail::readWholeFile(path), path.string());
 }
 
 JsonFields::JsonFields(const json& object, std::string pointer, std::string file)

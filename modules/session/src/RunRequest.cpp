@@ -42,9 +42,9 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
   if (request.level < 0 || request.level >= static_cast<int>(mesh.levels.size()))
     throw Error(request.datasetName + ": has no level " + std::to_string(request.level) +
                 " (it has " + std::to_string(mesh.levels.size()) + ")");
-  const std::vector<std::string> names = scenarioNames();
-  if (std::find(names.begin(), names.end(), request.scenario) == names.end())
-    throw Error("unknown scenario '" + request.scenario + "' (known: " + listed(names) + ")");
+  if (!isScenario(request.scenario))
+    throw Error("unknown scenario '" + request.scenario + "' (known: " + listed(scenarioNames()) +
+                ")");
   RunSpec spec;
   spec.level = request.level;
   spec.datasetName = request.datasetName;

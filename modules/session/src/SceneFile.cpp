@@ -5,7 +5,6 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "tetskin/core/Error.h"
 #include "tetskin/core/NumberText.h"
@@ -89,10 +88,9 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   }
   if (f.has("scenario")) {
     body.scenario = f.string("scenario");
-    const std::vector<std::string> names = scenarioNames();
-    if (std::find(names.begin(), names.end(), body.scenario) == names.end())
+    if (!isScenario(body.scenario))
       f.fail(f.where("scenario"),
-             "must be one of " + listed(names) + ", found \"" + body.scenario + "\"");
+             "must be one of " + listed(scenarioNames()) + ", found \"" + body.scenario + "\"");
   }
   if (f.has(simulation_option::kContactPoints.key))
     body.contactPoints = enumField<ContactPoints>(f, simulation_option::kContactPoints.key);
@@ -210,13 +208,9 @@ Scene parseScene(const json& root, const std::filesystem::path& file,
 }
 
 Scene readScene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
   const std::filesystem::path directory =
       path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-  return parseScene(parseJsonText(text.str(), path.string()), path, directory);
+  return parseScene(readJsonFile(path), path, directory);
 }
 
 bool isSceneFile(const std::filesystem::path& path) {

@@ -264,6 +264,11 @@ std::unique_ptr<Scenario> makeScenario(std::string_view name, const ScenarioPara
               ")");
 }
 
+bool isScenario(std::string_view name) {
+  const std::vector<std::string> names = scenarioNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 std::vector<std::string> scenarioNames() {
   return {"wobble", "drop", "twist", "sag", "free"};
 }

@@ -7,6 +7,7 @@
 // for are refused, so a typo does not pass silently.
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -19,6 +20,9 @@ namespace tetskin {
 // `content` parsed; throws Error naming `sourceName` and the line of a
 // syntax error or of a number beyond a double.
 nlohmann::json parseJsonText(std::string_view content, const std::string& sourceName);
+// The JSON file at `path`, parsed as parseJsonText parses; throws Error
+// naming the file when it cannot be read.
+nlohmann::json readJsonFile(const std::filesystem::path& path);
 
 class JsonFields {
  public:

@@ -209,6 +209,8 @@ std::string nodesBelowFloor(const Simulation& simulation);
 std::unique_ptr<Scenario> makeScenario(std::string_view name,
                                        const ScenarioParameters& parameters = {});
 std::vector<std::string> scenarioNames();
+// Whether `name` is one of scenarioNames().
+bool isScenario(std::string_view name);
 
 // The scenario a run request runs when it names none.
 inline constexpr const char* kDefaultScenario = "wobble";
