@@ -115,13 +115,20 @@ QString BindingDock::pickedVertexText() const {
     ids += QString::number(i.controlIds[k]) + (k + 1 < n ? " " : "");
     weights += QString::number(i.weights[k], 'f', 4) + (k + 1 < n ? " " : "");
   }
-  return QString(
-             "vertex %1: element %2, control ids %3, weights %4, distance %5, min barycentric %6")
-      .arg(i.vertex)
-      .arg(i.face)
-      .arg(ids, weights)
-      .arg(i.distance, 0, 'g', 4)
-      .arg(i.minBarycentric, 0, 'g', 4);
+  QString text =
+      QString("vertex %1: element %2, control ids %3, weights %4, distance %5, min barycentric %6")
+          .arg(i.vertex)
+          .arg(i.face)
+          .arg(ids, weights)
+          .arg(i.distance, 0, 'g', 4)
+          .arg(i.minBarycentric, 0, 'g', 4);
+  // Its contact with the obstacles this frame (a run with obstacles).
+  if (i.penetration)
+    text += *i.penetration > 0 ? QString("; in contact: %1 inside, force %2 N")
+                                     .arg(*i.penetration, 0, 'g', 3)
+                                     .arg(i.contactForce.norm(), 0, 'g', 4)
+                               : QString("; no contact");
+  return text;
 }
 
 }  // namespace tetskin::gui

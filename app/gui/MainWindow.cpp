@@ -28,6 +28,8 @@
 #include "ViewMouse.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
+#include "tetskin/session/SceneFile.h"
+#include "tetskin/session/SceneRun.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
@@ -94,6 +96,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   vtkRenderWindowInteractor* interactor = window_->GetInteractor();
   interactor->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New());
   new ViewMouse(view_, interactor, *scene_, *run_, [this](int x, int y) { clickAt(x, y); });
+  obstacleBox_ = std::make_unique<ObstacleBox>(
+      interactor, [this](std::size_t k, const ObstaclePose& pose) { placeObstacle(k, pose); });
 
   timer_ = new QTimer(this);
   connect(timer_, &QTimer::timeout, this, [this] { tick(); });
@@ -102,11 +106,16 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  obstacleBox_.reset();
   run_.reset();  // stop the simulation thread before the scene goes
 }
 
 void MainWindow::connectDocks() {
-  auto redraw = [this] { renderNow(); };
+  // (A colouring by the skin's contact needs this frame's.)
+  auto redraw = [this] {
+    run_->refreshSkinContact();
+    renderNow();
+  };
   connect(viewDock_, &ViewDock::redraw, this, redraw);
   connect(viewDock_, &ViewDock::failed, this, [this](const QString& message) { fail(message); });
   connect(viewDock_, &ViewDock::renderPathChosen, this,
@@ -160,6 +169,9 @@ void MainWindow::buildMenus() {
   });
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+  obstacleMenu_ = menuBar()->addMenu("&Obstacles");
+  obstacleMenu_->setObjectName("obstacleMenu");
+  refreshObstacleMenu();
   QMenu* viewMenu = menuBar()->addMenu("&View");
   for (const std::string& name : namesOf<CameraPreset>()) {
     const QString preset = QString::fromStdString(name);
@@ -227,10 +239,13 @@ bool MainWindow::openFile(const QString& qpath) {
   // replaces what the dock held; a surface opened later keeps the dock's.
   const auto openDataset = [this](const std::filesystem::path& dataset) {
     scene_->openDataset(dataset);
+    simulationDock_->clearScene();  // (a scene's run, if one was open)
     simulationDock_->showMaterial(scene_->dataset().config.elasticity);
   };
   try {
-    if (isDatasetFile(path)) {
+    if (isSceneFile(path)) {
+      openScene(path);
+    } else if (isDatasetFile(path)) {
       openDataset(path);
     } else if (isSurfaceFile(path)) {
       // A binding (or a frame of one) names its own dataset: opened with it
@@ -251,14 +266,100 @@ bool MainWindow::openFile(const QString& qpath) {
       return openRun(qpath);  // states of the open dataset too
     } else {
       throw Error(path.string(), 0,
-                  "is not a file tetskin-gui opens (.json .node .ele .obj .ply .stl .vtp .vtu "
-                  ".pvd)");
+                  "is not a file tetskin-gui opens (.json scene or dataset, .node .ele .obj .ply "
+                  ".stl .vtp .vtu .pvd)");
     }
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;
   }
   afterLoad(qpath);
+  return true;
+}
+
+void MainWindow::openScene(const std::filesystem::path& path) {
+  const SceneRun run = loadScene(readScene(path));  // throws before anything changes
+  scene_->openScene(run);
+  simulationDock_->showScene(
+      run.request, run.request.material.over(run.dataset.config.elasticity, OptionNames::Keys));
+}
+
+void MainWindow::refreshObstacleMenu() {
+  obstacleMenu_->clear();
+  obstacleMenu_->addAction("&Add obstacle...", this, [this] {
+    const QString path = QFileDialog::getOpenFileName(
+        this, "Add obstacle", {}, "Closed surfaces (*.obj *.ply *.stl *.vtp);;All files (*)");
+    if (!path.isEmpty()) addObstacle(path);
+  });
+  if (scene_->obstacles().empty()) return;
+  obstacleMenu_->addSeparator();
+  for (std::size_t k = 0; k < scene_->obstacles().size(); ++k) {
+    QAction* place = obstacleMenu_->addAction(
+        QString("Place %1 with a box").arg(QString::fromStdString(scene_->obstacles()[k].name)));
+    place->setCheckable(true);
+    place->setChecked(obstacleBox_ && obstacleBox_->shownObstacle() == k);
+    connect(place, &QAction::toggled, this, [this, k](bool on) {
+      showObstacleBox(on ? std::optional<std::size_t>(k) : std::nullopt);
+    });
+  }
+}
+
+bool MainWindow::addObstacle(const QString& qpath) {
+  try {
+    if (!scene_->hasDataset()) throw Error("open a dataset or a scene before adding obstacles");
+    Obstacle obstacle;
+    obstacle.name = qpath.toStdString();
+    obstacle.shape = readObstacleShape(qpath.toStdString());
+    scene_->addObstacle(std::move(obstacle));
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  refreshObstacleMenu();
+  run_->reset();  // (the run meets it from the start)
+  succeed("added the obstacle " + qpath + " (Obstacles > Place ... to move it)");
+  renderNow();
+  return true;
+}
+
+bool MainWindow::showObstacleBox(std::optional<std::size_t> k) {
+  if (!k) {
+    obstacleBox_->hide();
+  } else {
+    if (*k >= scene_->obstacles().size()) {
+      fail(QString("there is no obstacle %1").arg(*k));
+      return false;
+    }
+    if (run_->runner() && run_->runner()->playing()) {
+      run_->runner()->pause();  // (placed while paused)
+      simulationDock_->showPlaying(false);
+    }
+    const Obstacle& o = scene_->obstacles()[*k];
+    const double time = run_->runner() ? run_->runner()->state().time : 0.0;
+    obstacleBox_->show(*k, boundingBox(o.shape->surface()), o.poseAt(time));
+  }
+  refreshObstacleMenu();
+  renderNow();
+  return true;
+}
+
+bool MainWindow::placeObstacle(std::size_t k, const ObstaclePose& placement) {
+  try {
+    scene_->setObstaclePlacement(k, placement);
+    if (SimulationRunner* runner = run_->runner()) {
+      if (runner->playing()) {
+        runner->pause();
+        simulationDock_->showPlaying(false);
+      }
+      runner->simulation().setObstaclePlacement(k, placement);
+    }
+  } catch (const std::exception& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  run_->refreshSkinContact();
+  succeed(QString("placed %1").arg(QString::fromStdString(scene_->obstacles()[k].name)));
+  renderNow();
   return true;
 }
 
@@ -271,6 +372,8 @@ void MainWindow::afterLoad(const QString& path) {
   compareDock_->close();  // (of another dataset or surface)
   compareDock_->showDataset();
   setWindowTitle("TetSkin - " + QString::fromStdString(scene_->datasetPath().filename().string()));
+  obstacleBox_->hide();  // (of the obstacles before)
+  refreshObstacleMenu();
   run_->reset();
   bindingDock_->refresh();
   QString message = "opened " + path;
@@ -372,6 +475,7 @@ std::optional<Index> MainWindow::clickAt(int x, int y) {
   }
   const std::optional<Index> v = scene_->pickVertex(x, y);
   if (!v) scene_->showPickedVertex(std::nullopt);
+  run_->refreshSkinContact();  // (the picked vertex's contact state)
   bindingDock_->showPickedVertex();
   statusBar()->showMessage(v ? vertexInfoText() : "no surface vertex there");
   renderNow();
@@ -429,7 +533,21 @@ void MainWindow::dropEvent(QDropEvent* event) {
     };
     return rank(a) < rank(b);
   });
-  openFiles(files);
+  // A surface dropped beside a skin already shown may be an obstacle
+  // for it: the user says which.
+  for (const QString& f : files) {
+    const std::filesystem::path path = f.toStdString();
+    const bool obstacle =
+        interactive_ && scene_->hasSurface() && isSurfaceFile(path) && !isSceneFile(path) &&
+        QMessageBox::question(this, "TetSkin",
+                              "Add " + QFileInfo(f).fileName() +
+                                  " as an obstacle? (No: bind it as the skin instead)") ==
+            QMessageBox::Yes;
+    if (obstacle)
+      addObstacle(f);
+    else
+      openFile(f);
+  }
   event->acceptProposedAction();
 }
 

@@ -24,12 +24,14 @@
 #include "CompareDock.h"
 #include "ComparisonController.h"
 #include "FrameStatistics.h"
+#include "ObstacleBox.h"
 #include "RunController.h"
 #include "Scene.h"
 #include "SimulationDock.h"
 #include "ViewDock.h"
 #include "WindowServices.h"
 
+class QMenu;
 class QTimer;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
@@ -56,7 +58,8 @@ class MainWindow : public QMainWindow, private WindowServices {
   CompareDock* compareDock() { return compareDock_; }
   SimulationDock* simulationDock() { return simulationDock_; }
 
-  // By extension: .json/.node/.ele/.msh/.mesh dataset, .obj/.ply/.stl
+  // By extension: .json scene (format tetskin-scene: its body, surface,
+  // obstacles and run), .json/.node/.ele/.msh/.mesh dataset, .obj/.ply/.stl
   // surface, .vtp binding (with ControlIds) or surface, .vtu simulation
   // frame to start from (startFromFrame), .pvd recorded run (openRun).
   // False on error (see lastError()).
@@ -92,6 +95,15 @@ class MainWindow : public QMainWindow, private WindowServices {
   bool startRecording(const QString& pvd) { return run_->startRecording(pvd); }
   void stopRecording() { run_->stopRecording(); }
   Index recordedFrames() const { return run_->recordedFrames(); }
+  // Obstacles (Obstacles menu): a closed surface (.obj .ply .stl .vtp) added
+  // at its own coordinates, the run started again with it; obstacle k
+  // placed (the box widget's end: the next run's, and the paused run's
+  // from its next step); the box widget around obstacle k (nullopt: none).
+  // False on error.
+  bool addObstacle(const QString& path);
+  bool placeObstacle(std::size_t k, const ObstaclePose& placement);
+  bool showObstacleBox(std::optional<std::size_t> k);
+  ObstacleBox& obstacleBox() { return *obstacleBox_; }
   bool compareLevels(int reference, int inspected, int steps) {
     return comparison_->compareLevels(reference, inspected, steps);
   }
@@ -114,6 +126,9 @@ class MainWindow : public QMainWindow, private WindowServices {
   // The docks' requests that reach beyond one dock.
   void connectDocks();
   void afterLoad(const QString& path);
+  void openScene(const std::filesystem::path& path);
+  // The Obstacles menu's place items, one per obstacle.
+  void refreshObstacleMenu();
   void refreshOverlay();
   void tick();
 
@@ -133,6 +148,8 @@ class MainWindow : public QMainWindow, private WindowServices {
   SimulationDock* simulationDock_;
   std::unique_ptr<RunController> run_;
   std::unique_ptr<ComparisonController> comparison_;
+  std::unique_ptr<ObstacleBox> obstacleBox_;
+  QMenu* obstacleMenu_ = nullptr;
   FrameStatistics statistics_;  // the overlay's
 };
 

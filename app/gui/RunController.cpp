@@ -10,6 +10,7 @@
 
 #include "EnergyPlot.h"
 #include "RecordedRunPanel.h"
+#include "SeriesPlot.h"
 #include "SimulationDock.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
@@ -94,6 +95,9 @@ void RunController::reset() {
   runner_.reset();
   scene_.setRunConditions({});  // (the new simulation's, if it starts)
   energyPlot_->clear();
+  contactSamples_.clear();
+  dock_.contactPlot()->setSeries({}, {}, kContactTitle);
+  dock_.contactPlot()->hide();
   dock_.clearSupports();
   plottedSteps_ = -1;
   shownSteps_ = -1;
@@ -104,6 +108,10 @@ void RunController::reset() {
     const RunSpec spec = dock_.runSpec();
     options = spec.options;
     runner_ = std::make_unique<SimulationRunner>(scene_.dataset().mesh, spec);
+    // The skin meets the obstacles (the contact points the run names).
+    if (!options.obstacles.empty() && scene_.hasSurface())
+      runner_->session().bindSurface(scene_.surface(), scene_.binding(),
+                                     scene_.datasetPath().generic_string());
   } catch (const std::exception& e) {
     window_.fail(QString::fromStdString(e.what()));
     return;
@@ -253,6 +261,8 @@ void RunController::showLatestState() {
   replaying_ = false;
   scene_.setRunConditions(runner_->simulation().conditions());
   const SimulationState state = runner_->state();
+  scene_.poseObstacles(state.time);
+  if (scene_.wantsSkinContact()) scene_.setSkinContact(runner_->simulation().skinContact(state));
   lastTimes_ = scene_.showControlState(state.positions);
   if (scene_.colorsBySimulation()) {
     const FrameFields fields = runner_->simulation().frameFields(state);
@@ -282,6 +292,20 @@ void RunController::plotEnergy(const SimulationState& state) {
   const Simulation& sim = runner_->simulation();
   const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
+  const SimulationOptions& options = sim.options();
+  if (state.steps > 0 && (options.floorHeight || !options.obstacles.empty())) {
+    // The contacts of the last step, over the energy plot's window.
+    contactSamples_.emplace_back(state.time, runner_->lastStats().contacts);
+    while (contactSamples_.front().first < state.time - energyPlot_->window())
+      contactSamples_.pop_front();
+    std::vector<double> times, counts;
+    for (const auto& [time, count] : contactSamples_) {
+      times.push_back(time);
+      counts.push_back(count);
+    }
+    dock_.contactPlot()->setSeries(times, counts, kContactTitle);
+    dock_.contactPlot()->show();
+  }
   dock_.showSupports(sim.supportReaction(state), sim.fixedNodes().size());
   plottedSteps_ = state.steps;
   lastEnergySample_ = now;
@@ -309,6 +333,11 @@ QString RunController::takeWarnings() {
   for (const std::string& warning : runner_->session().takeWarnings(OptionNames::Words))
     text += (text.isEmpty() ? "warning: " : "; warning: ") + QString::fromStdString(warning);
   return text;
+}
+
+void RunController::refreshSkinContact() {
+  if (runner_ && !replaying_ && scene_.wantsSkinContact())
+    scene_.setSkinContact(runner_->simulation().skinContact(runner_->state()));
 }
 
 void RunController::tick() {

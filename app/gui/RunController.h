@@ -11,9 +11,11 @@
 #include <QObject>
 #include <QString>
 #include <chrono>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "Scene.h"
 #include "WindowServices.h"
@@ -58,6 +60,9 @@ class RunController : public QObject {
   void closeRun();
   // Draws the latest simulated state (and records it while recording).
   void showLatestState();
+  // The skin's contact at the state shown, where the scene wants it (a
+  // colouring by it, a picked vertex): after either changes.
+  void refreshSkinContact();
   // Writes the simulated level's frame shown now (.vtu): a recorded run's
   // frame as the run wrote it, else the simulation's state. Throws Error.
   void writeControlFrame(const std::filesystem::path& vtu);
@@ -98,6 +103,9 @@ class RunController : public QObject {
   Index shownSteps_ = -1;    // the step of the state drawn last
   Index plottedSteps_ = -1;  // the step of the energy plot's last sample
   std::chrono::steady_clock::time_point lastEnergySample_;
+  // (time, contacts of the step that ended then), as plotted.
+  std::deque<std::pair<double, int>> contactSamples_;
+  static constexpr const char* kContactTitle = "contacts per step";
   FrameTimes lastTimes_;
 };
 

@@ -184,6 +184,32 @@ void ScenarioRows::fill(Index nodeCount, RunRequest& request) const {
   if (floor_->isChecked()) request.floorHeight = floorHeight_->value();
 }
 
+void ScenarioRows::show(const RunRequest& request) {
+  scenario_->setCurrentText(QString::fromStdString(request.scenario));
+  const ScenarioParameters& p = request.parameters;
+  baseShare_->setValue(p.baseShare);
+  push_->setValue(p.pushAcceleration);
+  pushFrequency_->setValue(p.pushFrequency);
+  dropHeight_->setValue(p.dropHeight);
+  twistDegrees_->setValue(p.twistDegrees);
+  twistSeconds_->setValue(p.twistSeconds);
+  loadSeconds_->setValue(std::isfinite(p.loadSeconds) ? p.loadSeconds : 0);  // (0: whole run)
+  fixedNodes_->clear();
+  loads_->clear();
+  loadCurve_->clear();
+  fixedBox_->setChecked(request.fixedBox.has_value());
+  if (request.fixedBox)
+    for (int i = 0; i < 3; ++i) {
+      boxMin_[i]->setValue(request.fixedBox->min[i]);
+      boxMax_[i]->setValue(request.fixedBox->max[i]);
+    }
+  if (request.up) setUpAxis(*request.up);
+  const Eigen::Vector3d pull = request.gravity.value_or(uprightAlong(up_, {}).gravity);
+  for (int i = 0; i < 3; ++i) gravity_[i]->setValue(pull[i]);
+  floor_->setChecked(request.floorHeight.has_value());
+  if (request.floorHeight) floorHeight_->setValue(*request.floorHeight);
+}
+
 bool ScenarioRows::standardGravity() const {
   const Eigen::Vector3d standard = uprightAlong(up_, {}).gravity;
   for (int i = 0; i < 3; ++i)

@@ -36,6 +36,10 @@ class ScenarioRows : public QObject {
   // `nodeCount` nodes), the held box, gravity and the floor; throws Error
   // naming the file and line.
   void fill(Index nodeCount, RunRequest& request) const;
+  // Shows `request`'s scenario, its numbers, the held box, gravity and the
+  // floor (a scene's run); the file rows are emptied, since fill keeps what
+  // the request holds where they are empty.
+  void show(const RunRequest& request);
   // The dataset's up axis: the floor's height is along it, and gravity
   // left at the standard pull down the last axis follows it.
   void setUpAxis(UpAxis up);

@@ -43,6 +43,10 @@ const char* arrayName(ColorBy c) {
       return arrays::kVonMisesStress;
     case ColorBy::EquivalentStrain:
       return arrays::kEquivalentStrain;
+    case ColorBy::Penetration:
+      return arrays::kPenetration;
+    case ColorBy::ContactForce:
+      return arrays::kContactForce;
     case ColorBy::Material:
       break;
   }
@@ -51,6 +55,10 @@ const char* arrayName(ColorBy c) {
 
 bool bySimulation(ColorBy c) {
   return c == ColorBy::VonMisesStress || c == ColorBy::EquivalentStrain;
+}
+
+bool byContact(ColorBy c) {
+  return c == ColorBy::Penetration || c == ColorBy::ContactForce;
 }
 
 // Blue (0) to red (`maxValue`), as a legend shows it.
@@ -118,7 +126,29 @@ void Scene::openDataset(const std::filesystem::path& path) {
     binding = bindSurface(*surface, loaded.mesh, level);
     drawing = makeDrawing(loaded, *surface, binding, path_, loaded.config.fur);
   }
-  dataset_ = std::move(loaded);
+  install(std::move(loaded), path, std::move(surface), std::move(binding), level,
+          std::move(drawing), {});
+}
+
+void Scene::openScene(const SceneRun& run) {
+  Dataset loaded = run.dataset;
+  if (run.request.up) loaded.config.up = *run.request.up;
+  std::optional<SurfaceMesh> surface;
+  SurfaceBinding binding;
+  std::unique_ptr<DeformableSurface> drawing;
+  if (run.surface) {
+    surface = run.surface->surface;
+    binding = run.surface->binding;
+    drawing = makeDrawing(loaded, *surface, binding, path_, loaded.config.fur);
+  }
+  install(std::move(loaded), run.scene.bodies.front().dataset, std::move(surface),
+          std::move(binding), run.level, std::move(drawing), run.request.settings.obstacles);
+}
+
+void Scene::install(Dataset dataset, const std::filesystem::path& path,
+                    std::optional<SurfaceMesh> surface, SurfaceBinding binding, int level,
+                    std::unique_ptr<DeformableSurface> drawing, std::vector<Obstacle> obstacles) {
+  dataset_ = std::move(dataset);
   datasetPath_ = path;
   surface_ = std::move(surface);
   binding_ = std::move(binding);
@@ -128,9 +158,52 @@ void Scene::openDataset(const std::filesystem::path& path) {
   setRunConditions({});  // (another body's)
   previousSummary_.reset();
   picked_.reset();
+  skinContact_ = {};
+  setObstacles(std::move(obstacles));
   rebuildControl();
   showDrawing(std::move(drawing));
   setCamera(camera_);
+}
+
+void Scene::setObstacles(std::vector<Obstacle> obstacles) {
+  for (const auto& actor : obstacleActors_) renderer_->RemoveActor(actor->actor());
+  obstacleActors_.clear();
+  obstacles_.clear();
+  for (Obstacle& o : obstacles) addObstacle(std::move(o));
+}
+
+void Scene::addObstacle(Obstacle obstacle) {
+  if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
+  auto actor = std::make_unique<ObstacleActor>(obstacle.shape->surface());
+  actor->setPose(obstacle.poseAt(obstacleTime_).affine());
+  renderer_->AddActor(actor->actor());
+  obstacles_.push_back(std::move(obstacle));
+  obstacleActors_.push_back(std::move(actor));
+}
+
+void Scene::setObstaclePlacement(std::size_t k, const ObstaclePose& placement) {
+  Obstacle placed = obstacles_.at(k);
+  placed.placement = placement;
+  if (const auto problem = obstacleProblem(placed)) throw Error(*problem);
+  obstacles_[k] = std::move(placed);
+  obstacleActors_[k]->setPose(obstacles_[k].poseAt(obstacleTime_).affine());
+}
+
+void Scene::poseObstacles(double time) {
+  obstacleTime_ = time;
+  for (std::size_t k = 0; k < obstacles_.size(); ++k)
+    if (!obstacles_[k].motion.empty())
+      obstacleActors_[k]->setPose(obstacles_[k].poseAt(time).affine());
+}
+
+void Scene::setSkinContact(SkinContact contact) {
+  if (!surface_ || contact.penetration.size() != surface_->vertexCount()) contact = {};
+  skinContact_ = std::move(contact);
+  if (byContact(colorBy_)) applyColoring();
+}
+
+bool Scene::wantsSkinContact() const {
+  return !obstacles_.empty() && surface_ && (byContact(colorBy_) || picked_);
 }
 
 void Scene::openSurface(const std::filesystem::path& path, SurfaceOrBinding read) {
@@ -380,6 +453,25 @@ void Scene::applyColoring() {
       lut->SetHueRange(0.66, 0.0);
       break;
     }
+    case ColorBy::Penetration:
+    case ColorBy::ContactForce: {
+      // This frame's contact (zero before the run gives one): depth from
+      // as far outside as the deepest vertex is inside (blue) to that
+      // depth (red); the force's magnitude from 0.
+      const Index n = surface_ ? surface_->vertexCount() : 0;
+      Eigen::VectorXd values = Eigen::VectorXd::Zero(n);
+      if (skinContact_.penetration.size() == n && n > 0)
+        values = colorBy_ == ColorBy::Penetration ? skinContact_.penetration
+                                                  : skinContact_.forces.rowwise().norm().eval();
+      vtkPolyData* poly = surfaceDrawing_->polyData();
+      poly->GetPointData()->RemoveArray(arrayName(colorBy_));
+      poly->GetPointData()->AddArray(toVtkScalars(arrayName(colorBy_), values));
+      const double top = std::max(n > 0 ? values.maxCoeff() : 0.0, 1e-30);
+      range[0] = colorBy_ == ColorBy::Penetration ? -top : 0;
+      range[1] = top;
+      lut->SetHueRange(0.66, 0.0);
+      break;
+    }
     case ColorBy::Material:
       break;
   }
@@ -453,8 +545,13 @@ std::optional<FloorPlane> Scene::floor() const {
 }
 
 BoundingBox Scene::restBox() const {
-  return surface_ ? boundingBox(*surface_)
-                  : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
+  BoundingBox box =
+      surface_ ? boundingBox(*surface_) : boundingBox(extractLevel(dataset_->mesh, level_).nodes);
+  for (const auto& actor : obstacleActors_) {
+    box.extend(actor->bounds().min);
+    box.extend(actor->bounds().max);
+  }
+  return box;
 }
 
 void Scene::setCamera(CameraPreset preset) {
@@ -535,6 +632,10 @@ VertexInfo Scene::vertexInfo(Index v) const {
   info.distance = binding_.distance[v];
   info.minBarycentric = binding_.minBarycentric[v];
   info.position = deformedPositions().row(v).transpose();
+  if (skinContact_.penetration.size() == surface_->vertexCount()) {
+    info.penetration = skinContact_.penetration[v];
+    info.contactForce = skinContact_.forces.row(v).transpose();
+  }
   return info;
 }
 

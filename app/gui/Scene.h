@@ -25,8 +25,12 @@
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/FloorActor.h"
+#include "tetskin/rendering/ObstacleActor.h"
 #include "tetskin/rendering/OffscreenView.h"
+#include "tetskin/session/SceneRun.h"
 #include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/Obstacle.h"
+#include "tetskin/simulation/Simulation.h"
 #include "tetskin/vtkio/BindingFile.h"
 
 class vtkActor;
@@ -35,9 +39,20 @@ class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace tetskin::gui {
-// What colours the surface: its material, a binding array, or the
-// simulated level's stress or strain carried to the skin (SurfaceFields.h).
-enum class ColorBy { Material, MinBarycentric, Distance, FaceId, VonMisesStress, EquivalentStrain };
+// What colours the surface: its material, a binding array, the simulated
+// level's stress or strain carried to the skin (SurfaceFields.h), or the
+// skin's contact with the obstacles (its penetration, its contact force's
+// magnitude).
+enum class ColorBy {
+  Material,
+  MinBarycentric,
+  Distance,
+  FaceId,
+  VonMisesStress,
+  EquivalentStrain,
+  Penetration,
+  ContactForce
+};
 }  // namespace tetskin::gui
 
 template <>
@@ -49,7 +64,9 @@ struct tetskin::EnumSchema<tetskin::gui::ColorBy> {
       {gui::ColorBy::Distance, arrays::kDistance, ""},
       {gui::ColorBy::FaceId, arrays::kFaceId, ""},
       {gui::ColorBy::VonMisesStress, arrays::kVonMisesStress, ""},
-      {gui::ColorBy::EquivalentStrain, arrays::kEquivalentStrain, ""}};
+      {gui::ColorBy::EquivalentStrain, arrays::kEquivalentStrain, ""},
+      {gui::ColorBy::Penetration, arrays::kPenetration, ""},
+      {gui::ColorBy::ContactForce, arrays::kContactForce, ""}};
 };
 
 namespace tetskin::gui {
@@ -61,6 +78,11 @@ struct VertexInfo {
   Eigen::Vector4d weights;
   double distance = 0, minBarycentric = 0;
   Eigen::Vector3d position;  // deformed, this frame
+  // Its contact this frame, where the run has obstacles (Scene::
+  // setSkinContact): depth inside the obstacle it is deepest in (negative
+  // outside) and its contact spring's force.
+  std::optional<double> penetration;
+  Eigen::Vector3d contactForce = Eigen::Vector3d::Zero();
 };
 
 class Scene {
@@ -76,6 +98,10 @@ class Scene {
   // A surface or binding read from `path` (readSurfaceOrBinding, BindingFile.h):
   // a binding is checked against the open dataset, a surface bound to it.
   void openSurface(const std::filesystem::path& path, SurfaceOrBinding read);
+  // A scene made ready (SceneRun.h): its placed dataset (named by the
+  // body's dataset path), its surface and binding, its level and its
+  // obstacles, which replace those shown.
+  void openScene(const SceneRun& run);
   bool hasDataset() const { return dataset_.has_value(); }
   bool hasSurface() const { return surface_.has_value(); }
   const Dataset& dataset() const { return *dataset_; }
@@ -140,6 +166,25 @@ class Scene {
   void setUpAxis(UpAxis up);
   void setOverlayText(const std::string& text);
 
+  // Obstacles: drawn translucent, as the next run meets them (a scene's,
+  // those added, as placed). Opening a dataset clears them, a scene
+  // replaces them.
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+  // Throws Error (obstacleProblem) for an obstacle the run would refuse.
+  void addObstacle(Obstacle obstacle);
+  void setObstaclePlacement(std::size_t k, const ObstaclePose& placement);
+  // The obstacles drawn as posed at simulated time t (a moving one follows
+  // its keyframes).
+  void poseObstacles(double time);
+  const ObstacleActor& obstacleActor(std::size_t k) const { return *obstacleActors_[k]; }
+  // The skin's contact this frame (Simulation::skinContact; empty: none):
+  // what colouring by Penetration or ContactForce shows, and the picked
+  // vertex's contact state. Ignored for a skin of another size.
+  void setSkinContact(SkinContact contact);
+  // Whether the shown frame needs the skin's contact (a colouring by it,
+  // or a picked vertex).
+  bool wantsSkinContact() const;
+
   // Binding diagnostics.
   void rebind(BindingMethod method, int level);
   const BindingSummary& summary() const { return summary_; }
@@ -186,7 +231,8 @@ class Scene {
   // binding, path or fur makes its drawing first and takes the new state on
   // after, so one that cannot be drawn (e.g. its texture file is gone)
   // throws with the scene as it was.
-  // The box the camera presets frame: the surface's, else the bound level's at rest.
+  // The box the camera presets frame: the surface's, else the bound level's
+  // at rest, with the obstacles'.
   BoundingBox restBox() const;
   std::unique_ptr<DeformableSurface> makeDrawing(const Dataset& dataset, const SurfaceMesh& surface,
                                                  const SurfaceBinding& binding, RenderPath path,
@@ -205,6 +251,13 @@ class Scene {
   void updateDiagnostics();
   void updatePrescribedMarks();
   void setFloor(const std::optional<FloorPlane>& floor);
+  // `dataset` (named `path`) with `surface` bound by `binding` at `level`
+  // (and its drawing), in place of what is open; `obstacles` replace the
+  // shown ones.
+  void install(Dataset dataset, const std::filesystem::path& path,
+               std::optional<SurfaceMesh> surface, SurfaceBinding binding, int level,
+               std::unique_ptr<DeformableSurface> drawing, std::vector<Obstacle> obstacles);
+  void setObstacles(std::vector<Obstacle> obstacles);
 
   vtkRenderer* renderer_;
   std::optional<Dataset> dataset_;
@@ -244,6 +297,10 @@ class Scene {
   vtkSmartPointer<vtkActor> comparison_;
   Points3 comparisonPositions_;
   bool comparisonShown_ = false;
+  std::vector<Obstacle> obstacles_;
+  std::vector<std::unique_ptr<ObstacleActor>> obstacleActors_;  // one per obstacle
+  double obstacleTime_ = 0;                                     // posed at
+  SkinContact skinContact_;                                     // this frame's (or empty)
   vtkSmartPointer<vtkScalarBarActor> legend_;
   vtkSmartPointer<vtkTextActor> overlay_;
 };

@@ -14,6 +14,7 @@
 #include "RecordedRunPanel.h"
 #include "ScenarioRows.h"
 #include "ScientificSpinBox.h"
+#include "SeriesPlot.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/NumberText.h"
 
@@ -46,6 +47,13 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   energyPlot_ = new EnergyPlot;
   energyPlot_->setObjectName("energyPlot");
   layout->addWidget(energyPlot_);
+  contactPlot_ = new SeriesPlot;
+  contactPlot_->setObjectName("contactPlot");
+  contactPlot_->setToolTip(
+      "How many contact points (skin vertices or nodes) touch the floor and the obstacles, per "
+      "step");
+  contactPlot_->hide();
+  layout->addWidget(contactPlot_);
   supports_ = new QLabel;
   supports_->setObjectName("supports");
   supports_->setWordWrap(true);
@@ -100,10 +108,14 @@ RunRequest SimulationDock::runRequest(int levelNumber) {
   const BoundingBox restBox = boundingBox(mesh.nodes.middleRows(level.firstNode, level.nodeCount));
   scenarioRows_->setBodyBottom(restBox.min[axisIndex(up)]);
   scenarioRows_->setBodyBox(restBox);
-  RunRequest request;
+  RunRequest request = sceneRequest_.value_or(RunRequest{});
   request.names = OptionNames::Words;
   request.level = levelNumber;
   request.datasetName = scene_.datasetPath().string();
+  // (The rows show a scene's gravity, floor and held box: theirs count.)
+  request.gravity.reset();
+  request.floorHeight.reset();
+  request.fixedBox.reset();
   scenarioRows_->fill(level.nodeCount, request);
   request.settings.timeStep = timeStep_->value();
   request.settings.solver = chosen<SolverKind>(solver_);
@@ -112,10 +124,12 @@ RunRequest SimulationDock::runRequest(int levelNumber) {
   // (The fields show the dataset's material after showMaterial: a value
   // left as shown is the config's.)
   const ElasticMaterial& config = scene_.dataset().config.elasticity;
+  request.material = {};  // (a scene's material is in the fields)
   const auto fields = materialFields();
   for (std::size_t i = 0; i < fields.size(); ++i)
     if (material_[i]->value() != config.*fields[i].field)
       request.material.set(*fields[i].option, material_[i]->value());
+  request.settings.obstacles = scene_.obstacles();  // (as placed and added)
   return request;
 }
 
@@ -126,6 +140,20 @@ RunSpec SimulationDock::runSpec(int levelNumber) {
 void SimulationDock::showMaterial(const ElasticMaterial& material) {
   const auto fields = materialFields();
   for (std::size_t i = 0; i < fields.size(); ++i) material_[i]->setValue(material.*fields[i].field);
+}
+
+void SimulationDock::showScene(const RunRequest& request, const ElasticMaterial& material) {
+  sceneRequest_ = request;
+  timeStep_->setValue(request.settings.timeStep);
+  tolerance_->setValue(request.settings.tolerance);
+  solver_->setCurrentText(toString(request.settings.solver));
+  tangent_->setCurrentText(toString(request.settings.tangent));
+  showMaterial(material);
+  scenarioRows_->show(request);
+}
+
+void SimulationDock::clearScene() {
+  sceneRequest_.reset();
 }
 
 void SimulationDock::showPlaying(bool playing) {

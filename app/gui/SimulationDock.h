@@ -8,6 +8,7 @@
 #include <QString>
 #include <QWidget>
 #include <array>
+#include <optional>
 
 #include "Scene.h"
 #include "tetskin/session/RunRequest.h"
@@ -22,6 +23,7 @@ namespace tetskin::gui {
 class EnergyPlot;
 class RecordedRunPanel;
 class ScenarioRows;
+class SeriesPlot;
 
 class SimulationDock : public QWidget {
   Q_OBJECT
@@ -38,9 +40,19 @@ class SimulationDock : public QWidget {
   RunSpec runSpec(int level);
   // A dataset's body in the material fields (what the next Reset uses).
   void showMaterial(const ElasticMaterial& material);
+  // A scene's run (SceneRun.h) as the base of the runs the dock asks for:
+  // its fields show the scene's values (`material` is its body's), and what
+  // the dock has no field for (contact points, the start's velocity, held
+  // nodes and loads read from the scene's files, the floor's friction)
+  // comes from it, until clearScene (a dataset opened).
+  void showScene(const RunRequest& request, const ElasticMaterial& material);
+  void clearScene();
+  bool showsScene() const { return sceneRequest_.has_value(); }
 
   RecordedRunPanel* runPanel() const { return runPanel_; }
   EnergyPlot* energyPlot() const { return energyPlot_; }
+  // The contacts per step (shown for a run with a floor or obstacles).
+  SeriesPlot* contactPlot() const { return contactPlot_; }
   // Play as playing or not, Record as recording or not, without their
   // requests.
   void showPlaying(bool playing);
@@ -61,7 +73,9 @@ class SimulationDock : public QWidget {
   QPushButton *play_, *record_;
   RecordedRunPanel* runPanel_;
   EnergyPlot* energyPlot_;
+  SeriesPlot* contactPlot_;
   QLabel* supports_;
+  std::optional<RunRequest> sceneRequest_;
   ScenarioRows* scenarioRows_;
   QDoubleSpinBox *timeStep_, *tolerance_;
   std::array<QDoubleSpinBox*, 5> material_;  // materialFields()' order, named by key

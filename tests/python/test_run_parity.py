@@ -89,3 +89,21 @@ def test_a_level_and_material_given_resolve_the_same_run(cli):
     assert from_cli["parameters"]["base_share"] == 0.2
     assert from_cli["level"] == 0
 
+
+
+def test_a_scene_resolves_the_same_run_in_every_front_end(cli):
+    """A scene file (bodies, obstacles, contact) is one run for simulate,
+    Python's Scene and the GUI (which opens it in its Simulation dock)."""
+    scene = str(DATA / "scenes" / "bunny-in-bowl.json")
+    specs = {
+        "simulate": json.loads(cli("simulate", scene, "--print-run")),
+        "python": tetskin.Scene(scene).run_spec,
+    }
+    gui = os.environ.get("TETSKIN_GUI")
+    if gui:
+        specs["gui"] = printed_run(gui, scene, "--print-run")
+    reference = specs["simulate"]
+    assert reference["scenario"] == "free"
+    assert len(reference["options"]["obstacles"]) == 1
+    for name, spec in specs.items():
+        assert differences(reference, spec) == [], f"{name} differs from simulate"

@@ -4,6 +4,8 @@
 #include <vtkAlgorithm.h>
 #include <vtkDataSet.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
+#include <vtkProperty.h>
 
 #include <cmath>
 
@@ -11,6 +13,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/FloorActor.h"
+#include "tetskin/rendering/ObstacleActor.h"
 
 namespace tetskin {
 namespace {
@@ -74,6 +77,34 @@ TEST(FloorActor, RefusesAnEmptyBodyAndANonFiniteHeight) {
   body.extend(Eigen::Vector3d(0, 0, 0));
   body.extend(Eigen::Vector3d(1, 1, 1));
   EXPECT_THROW(FloorActor(FloorPlane{UpAxis::Y, std::nan("")}, body), Error);
+}
+
+// The obstacle's own surface is drawn as it is, posed by the actor's
+// matrix: a box of side 2 turned a quarter about z, doubled and moved
+// lies where the map puts its corners, translucent.
+TEST(ObstacleActor, IsPosedByItsMatrixAndTranslucent) {
+  ObstacleActor obstacle(test::box({0, 0, 0}, {2, 1, 1}));
+  Eigen::Affine3d pose = Eigen::Affine3d::Identity();
+  pose.translate(Eigen::Vector3d(10, 0, 0))
+      .rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()))
+      .scale(2);
+  obstacle.setPose(pose);
+  vtkMatrix4x4* m = obstacle.actor()->GetUserMatrix();
+  ASSERT_NE(m, nullptr);
+  EXPECT_DOUBLE_EQ(m->GetElement(0, 3), 10);
+  EXPECT_NEAR(m->GetElement(1, 0), 2, 1e-12);  // x goes to 2 y
+  double b[6];
+  obstacle.actor()->GetBounds(b);  // the actor's: with its matrix
+  EXPECT_NEAR(b[0], 8, 1e-9);      // y in [0, 1] -> x in [8, 10]
+  EXPECT_NEAR(b[1], 10, 1e-9);
+  EXPECT_NEAR(b[2], 0, 1e-9);  // x in [0, 2] -> y in [0, 4]
+  EXPECT_NEAR(b[3], 4, 1e-9);
+  EXPECT_NEAR(obstacle.bounds().min.x(), 8, 1e-9);
+  EXPECT_NEAR(obstacle.bounds().max.y(), 4, 1e-9);
+  EXPECT_NEAR(obstacle.bounds().max.z(), 2, 1e-9);
+  EXPECT_DOUBLE_EQ(obstacle.actor()->GetProperty()->GetOpacity(), ObstacleActor::kOpacity);
+  EXPECT_LT(ObstacleActor::kOpacity, 1);
+  EXPECT_THROW(ObstacleActor(SurfaceMesh{}), Error);
 }
 
 }  // namespace

@@ -27,6 +27,8 @@
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
+#include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin::test {
@@ -190,6 +192,55 @@ TEST(SceneRun, TheRecordedRunCarriesTheContact) {
     }
   }
   EXPECT_GT(inside, 0);
+}
+
+// The obstacles as each frame poses them: a static one written once and
+// named by every frame, a moving one written per frame where its keyframes
+// put it at that frame's time.
+TEST(SceneRun, TheRecordedRunPosesTheObstaclesAtEachFrame) {
+  ScratchDir dir;
+  nlohmann::json json = sceneJson();
+  json["bodies"][0]["level"] = 0;
+  nlohmann::json moving = json["obstacles"][0];
+  moving["scale"] = 0.5;
+  moving["translate"] = {0, 20, 0};
+  moving["motion"] = {{{"time", 0}, {"translate", {0, 20, 0}}},
+                      {{"time", 1}, {"translate", {4, 20, 0}}, {"rotate", {0, 90, 0}}}};
+  json["obstacles"].push_back(moving);
+  const SceneRun run = loadScene(parse(json));
+  const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  SimulationSession session(run.dataset.mesh, spec);
+  session.record(dir / "run.pvd");
+  session.recordFrame();  // t = 0
+  session.run(30, 30);    // t = 0.5 s
+  const PvdSeries series = PvdSeries::read(dir / "run.pvd");
+  std::vector<std::string> bowlFiles, movingFiles;
+  for (const PvdSeries::Entry& e : series.entries()) {
+    if (e.part == RunRecorder::kFirstObstaclePart) bowlFiles.push_back(e.file);
+    if (e.part == RunRecorder::kFirstObstaclePart + 1) movingFiles.push_back(e.file);
+  }
+  EXPECT_EQ(bowlFiles, std::vector<std::string>(2, "run_frames/obstacle_0.vtp"));
+  EXPECT_EQ(movingFiles, (std::vector<std::string>{"run_frames/obstacle_00000_1.vtp",
+                                                   "run_frames/obstacle_00001_1.vtp"}));
+  const SurfaceMesh bowl = readObj(kSampleData + "scenes/bowl.obj");
+  const auto staticBowl = readVtp(dir / "run_frames/obstacle_0.vtp");
+  const auto movedBowl = readVtp(dir / "run_frames/obstacle_00001_1.vtp");
+  ASSERT_EQ(staticBowl->GetNumberOfPoints(), bowl.vertexCount());
+  ASSERT_EQ(movedBowl->GetNumberOfPoints(), bowl.vertexCount());
+  // About halfway through its motion at the frame's time (30 steps of the
+  // scene's 1/60 s, rounded): 4 t along x, turned 90 t degrees about y.
+  const double t = session.state().time;
+  ASSERT_NEAR(t, 0.5, 1e-4);
+  const Eigen::AngleAxisd turn(M_PI / 2 * t, Eigen::Vector3d::UnitY());
+  double staticError = 0, movedError = 0;
+  for (Index v = 0; v < bowl.vertexCount(); ++v) {
+    const Eigen::Vector3d p = bowl.positions.row(v).transpose();
+    staticError = std::max(staticError, (Eigen::Vector3d(staticBowl->GetPoint(v)) - p).norm());
+    const Eigen::Vector3d moved = Eigen::Vector3d(4 * t, 20, 0) + 0.5 * (turn * p);
+    movedError = std::max(movedError, (Eigen::Vector3d(movedBowl->GetPoint(v)) - moved).norm());
+  }
+  EXPECT_LT(staticError, 1e-9);
+  EXPECT_LT(movedError, 1e-9);
 }
 
 }  // namespace

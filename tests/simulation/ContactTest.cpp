@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -163,6 +164,30 @@ TEST(ObstacleContact, ARigidMotionOfTheWholeSceneChangesNothing) {
   EXPECT_NEAR((turn.conjugate() * fb - fa).norm(), 0, 1e-4 * fa.norm());
 }
 
+// An obstacle placed anew before a step (the GUI's box widget, while
+// paused) acts as one placed there from the start: both runs step alike.
+TEST(ObstacleContact, AnObstaclePlacedAnewActsAsOnePlacedThereFromTheStart) {
+  SimulationOptions options = rubber(0);
+  TetMesh lifted = block();
+  lifted.nodes.col(1).array() += 0.002;
+  const ObstaclePose raised{{0, 0.001, 0}, Eigen::Quaterniond::Identity(), 1};
+  options.obstacles = {slab(0.5, 0.4)};
+  Simulation moved(oneLevel(lifted), 0, options);
+  moved.setObstaclePlacement(0, raised);
+  EXPECT_EQ(moved.options().obstacles[0].placement.translation, raised.translation);
+  options.obstacles = {slab(0.5, 0.4, raised)};
+  Simulation placed(oneLevel(lifted), 0, options);
+  for (int i = 0; i < 40; ++i) {
+    const StepStats a = moved.step(), b = placed.step();
+    ASSERT_EQ(a.contacts, b.contacts) << "step " << i;
+  }
+  EXPECT_EQ(moved.state().positions, placed.state().positions);
+  EXPECT_GT(moved.contactForces(moved.state()).colwise().sum().norm(), 0);  // it has landed
+  EXPECT_THROW(moved.setObstaclePlacement(1, raised), Error);
+  EXPECT_THROW(moved.setObstaclePlacement(0, {{0, 0, 0}, Eigen::Quaterniond::Identity(), 0}),
+               Error);
+}
+
 // A skin 1 cm outside the block's cage on every side: the skin, not the
 // cage, rests on the slab (the cage's base stays about 1 cm above it),
 // held by contact forces equal to the weight on every step (friction is
@@ -227,6 +252,34 @@ TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
   }
   const auto byCage = settle(ContactPoints::Cage);
   EXPECT_LT(skinLowest(*byCage), -0.008);  // the skin sinks by about its margin
+}
+
+// A static obstacle's clearance (points that have moved less than their
+// known distance outside it are not looked up) skips no contact: the skin
+// dropped onto the slab runs bit for bit as onto the same slab given two
+// keyframes at the same pose, which is looked up in full every step.
+TEST(ObstacleContact, TheClearanceOfAStaticObstacleSkipsNoContact) {
+  const SkinnedBlock body = skinnedBlock(0.03);
+  const auto run = [&](bool keyed) {
+    SimulationOptions options = rubber(0);
+    options.obstacles = {slab(0.5, 0.4)};
+    if (keyed) {
+      PoseKey start, end;  // (both at the slab's pose)
+      end.time = 10;
+      options.obstacles[0].motion = {start, end};
+    }
+    auto sim = std::make_unique<Simulation>(body.dataset, 0, options);
+    sim->setContactSkin(body.skin, body.binding);
+    std::vector<int> contacts;
+    for (int i = 0; i < 120; ++i) contacts.push_back(sim->step().contacts);
+    return std::make_pair(std::move(sim), contacts);
+  };
+  const auto [cached, cachedContacts] = run(false);
+  const auto [full, fullContacts] = run(true);
+  EXPECT_EQ(cachedContacts, fullContacts);
+  EXPECT_GT(*std::max_element(cachedContacts.begin(), cachedContacts.end()), 0);  // it landed
+  EXPECT_EQ(cachedContacts.front(), 0);                                           // (from 3 cm up)
+  EXPECT_EQ(cached->state().positions, full->state().positions);
 }
 
 // The same block and skin dropped onto a ball (radius 0.15, finely

@@ -51,6 +51,10 @@ void place(const ScenePlacement& placement, SurfaceBinding& binding) {
   binding.distance *= placement.scale;
 }
 
+std::shared_ptr<const ClosedSurfaceDistance> readObstacleShape(const std::filesystem::path& path) {
+  return std::make_shared<const ClosedSurfaceDistance>(readSurface(path), path.string());
+}
+
 SceneRun loadScene(const Scene& scene) {
   if (scene.bodies.size() != 1)
     throw Error(scene.file.string(), 0, "/bodies: this TetSkin runs one body per scene");
@@ -131,10 +135,7 @@ SceneRun loadScene(const Scene& scene) {
     requireFile(scene, o.pointer + "/surface", o.surface);
     std::shared_ptr<const ClosedSurfaceDistance>& shape = shapes[o.surface];
     if (!shape)
-      shape = inScene(scene, o.pointer + "/surface", [&] {
-        return std::make_shared<const ClosedSurfaceDistance>(readSurface(o.surface),
-                                                             o.surface.string());
-      });
+      shape = inScene(scene, o.pointer + "/surface", [&] { return readObstacleShape(o.surface); });
     Obstacle obstacle;
     obstacle.name = scene.file.string() + ": " + o.pointer;
     obstacle.shape = shape;

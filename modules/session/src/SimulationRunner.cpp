@@ -47,6 +47,11 @@ void SimulationRunner::release() {
   pull_.setZero();
 }
 
+StepStats SimulationRunner::lastStats() const {
+  std::lock_guard<std::mutex> lock(statsMutex_);
+  return lastStats_;
+}
+
 void SimulationRunner::stepOnce() {
   std::lock_guard<std::mutex> lock(stepMutex_);
   try {
@@ -56,7 +61,9 @@ void SimulationRunner::stepOnce() {
       std::lock_guard<std::mutex> pullLock(pullMutex_);
       pull = pull_;
     }
-    session_.step(&pull);
+    const StepStats stats = session_.step(&pull);
+    std::lock_guard<std::mutex> statsLock(statsMutex_);
+    lastStats_ = stats;
   } catch (const std::exception& e) {
     playing_ = false;
     std::lock_guard<std::mutex> failureLock(failureMutex_);

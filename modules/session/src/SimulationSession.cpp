@@ -148,8 +148,11 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
   if (!recorder_) throw Error("the run is not being recorded");
   const SimulationState s = state ? *state : simulation_->state();
   const FrameFields fields = simulation_->frameFields(s);
+  std::vector<PosedSurface> obstacles;
+  for (const Obstacle& o : simulation_->options().obstacles)
+    obstacles.push_back({&o.shape->surface(), o.poseAt(s.time).affine(), !o.motion.empty()});
   if (!bound_ && !drawnSurface) {
-    recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_);
+    recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, nullptr, obstacles);
     return;
   }
   // The surface with the stress and strain on its skin: the front end's
@@ -172,7 +175,7 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
       surface->deformed->vectors.push_back({arrays::kContactForce, std::move(contact.forces)});
     }
   }
-  recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface);
+  recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface, obstacles);
 }
 
 std::vector<PointScalars> SimulationSession::surfaceFields(const FrameFields& fields,

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include "tetskin/core/Parallel.h"
+
 namespace tetskin {
 
 ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,
@@ -23,6 +25,7 @@ ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::V
 void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
                               const SurfaceBinding& binding, ContactPoints mode) {
   skin_ = std::move(deformer);
+  clearance_.clear();  // (of other points)
   skinCollides_ = mode != ContactPoints::Cage;
   if (!skinCollides_) return;
   if (mode == ContactPoints::Skin) points_.clear();
@@ -47,28 +50,55 @@ void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
   }
 }
 
-const Points3& ObstacleContact::pointPositions(const Eigen::VectorXd& x) const {
+const Points3& ObstacleContact::pointPositions(const Eigen::VectorXd& x, Search& search) const {
   const Index nodes = x.size() / 3;
   const Eigen::Map<const Points3> control(x.data(), nodes, 3);
   const Index skinPoints = skinCollides_ ? skin_->vertexCount() : 0;
-  positions_.resize(static_cast<Index>(points_.size()), 3);
-  if (firstSkinPoint_ > 0) positions_.topRows(firstSkinPoint_) = control;
+  search.positions.resize(static_cast<Index>(points_.size()), 3);
+  if (firstSkinPoint_ > 0) search.positions.topRows(firstSkinPoint_) = control;
   if (skinPoints > 0) {
-    skin_->deformPositions(control, skinPositions_);
-    positions_.bottomRows(skinPoints) = skinPositions_;
+    skin_->deformPositions(control, search.skinPositions);
+    search.positions.bottomRows(skinPoints) = search.skinPositions;
   }
-  return positions_;
+  return search.positions;
 }
 
 void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
-                                   std::vector<Contact>& out) const {
+                                   std::vector<Contact>& out, Search& search,
+                                   std::vector<Clearance>* clearance) const {
   out.clear();
-  const Points3& positions = pointPositions(x);
+  const Points3& positions = pointPositions(x, search);
+  const Index count = positions.rows();
+  search.hits.resize(static_cast<std::size_t>(count));
+  if (clearance && clearance->size() != obstacles_.size()) clearance->assign(obstacles_.size(), {});
   for (std::size_t o = 0; o < obstacles_.size(); ++o) {
     const Obstacle& obstacle = obstacles_[o];
     const ObstaclePose now = obstacle.poseAt(t), next = obstacle.poseAt(t + h);
-    for (Index i = 0; i < positions.rows(); ++i) {
-      const auto hit = closestPointOf(obstacle, t, positions.row(i).transpose(), radius_);
+    // (A moving obstacle's distances change with it: every point is looked up.)
+    Clearance* kept = clearance && obstacle.motion.empty() ? &(*clearance)[o] : nullptr;
+    if (kept && kept->distance.size() != count) {
+      kept->distance = Eigen::VectorXd::Zero(count);
+      kept->at = positions;
+    }
+    // The lookups, in parallel: each point's own slot, so the contacts come
+    // out in point order whatever the threads.
+    parallelFor<Index>(0, count, 256, [&](const IndexRange<Index>& range) {
+      for (Index i = range.begin(); i != range.end(); ++i) {
+        std::optional<SurfacePoint>& hit = search.hits[static_cast<std::size_t>(i)];
+        if (kept && kept->distance[i] > 0 &&
+            (positions.row(i) - kept->at.row(i)).norm() < kept->distance[i]) {
+          hit.reset();  // still outside
+          continue;
+        }
+        hit = closestPointOf(obstacle, t, positions.row(i).transpose(), radius_);
+        if (kept) {
+          kept->distance[i] = hit ? std::max(hit->distance, 0.0) : radius_;
+          kept->at.row(i) = positions.row(i);
+        }
+      }
+    });
+    for (Index i = 0; i < count; ++i) {
+      const std::optional<SurfacePoint>& hit = search.hits[static_cast<std::size_t>(i)];
       if (!hit || hit->distance > 0) continue;  // touching counts, as on the floor
       const Point& point = points_[static_cast<std::size_t>(i)];
       const Eigen::Vector3d surfaceVelocity =
@@ -93,12 +123,13 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
   // friction that stops the node's tangential motion moves none of its
   // points along their push (ObstacleContact.h).
   if (skinCollides_) {
-    nodeNormals_.assign(static_cast<std::size_t>(x.size() / 3), Eigen::Vector3d::Zero());
+    std::vector<Eigen::Vector3d>& nodeNormals = search.nodeNormals;
+    nodeNormals.assign(static_cast<std::size_t>(x.size() / 3), Eigen::Vector3d::Zero());
     for (const Contact& c : out)
       if (c.point >= firstSkinPoint_) {
         const Point& point = points_[static_cast<std::size_t>(c.point)];
         for (int j = 0; j < point.count; ++j)
-          nodeNormals_[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])] +=
+          nodeNormals[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])] +=
               std::abs(point.weights[static_cast<std::size_t>(j)]) * c.normal;
       }
     for (Contact& c : out)
@@ -106,7 +137,7 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
         const Point& point = points_[static_cast<std::size_t>(c.point)];
         for (int j = 0; j < point.count; ++j) {
           const Eigen::Vector3d& sum =
-              nodeNormals_[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])];
+              nodeNormals[static_cast<std::size_t>(point.nodes[static_cast<std::size_t>(j)])];
           if (sum.norm() > 0)
             c.gradient[static_cast<std::size_t>(j)] =
                 point.weights[static_cast<std::size_t>(j)] * sum.normalized();
@@ -119,7 +150,7 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
 int ObstacleContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
   t_ = at.t;
-  findContacts(at.x, at.t, at.h, contacts_);
+  findContacts(at.x, at.t, at.h, contacts_, search_, &clearance_);
   const double h = at.h;
   for (const Contact& c : contacts_) {
     const Point& point = points_[static_cast<std::size_t>(c.point)];
@@ -213,7 +244,8 @@ void ObstacleContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
 void ObstacleContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd&,
                                  Eigen::VectorXd& force) const {
   std::vector<Contact> contacts;
-  findContacts(x, t_, 0, contacts);
+  Search search;
+  findContacts(x, t_, 0, contacts, search, nullptr);
   for (const Contact& c : contacts) {
     const Point& point = points_[static_cast<std::size_t>(c.point)];
     for (int j = 0; j < point.count; ++j)

@@ -36,6 +36,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ForceModel.h"
@@ -63,6 +64,12 @@ class ObstacleContact : public ForceModel {
   void setSkin(std::unique_ptr<SurfaceDeformer> deformer, const SurfaceBinding& binding,
                ContactPoints points);
   bool hasSkin() const { return skin_ != nullptr; }
+  // Obstacle k's placement from the next step on (Simulation::
+  // setObstaclePlacement has checked it).
+  void setPlacement(std::size_t k, const ObstaclePose& placement) {
+    obstacles_[k].placement = placement;
+    clearance_.clear();  // (measured against the old placement)
+  }
 
   // Per skin vertex at positions x and time t: how deep it lies in the
   // obstacle it is deepest in (positive inside; -radius beyond the search
@@ -111,9 +118,32 @@ class ObstacleContact : public ForceModel {
     }
   };
 
+  // What one search for contacts works in: the points' positions, the
+  // skin's, each point's closest obstacle point, the nodes' mean normals.
+  // The step's search has its own (members); a search at another state
+  // (addForceAt, which a front end may call while a step runs) a local one.
+  struct Search {
+    Points3 positions, skinPositions;
+    std::vector<std::optional<SurfacePoint>> hits;  // per point, of one obstacle
+    std::vector<Eigen::Vector3d> nodeNormals;       // the mean skin contact normal per node
+  };
+  // A static obstacle's clearance per point: the point lay at least
+  // `distance` outside it when it was at `at`. Since the distance to a
+  // surface changes no faster than the point moves, a point that has moved
+  // less than its clearance since is still outside, and is not looked up
+  // again (most of a skin at rest in a bowl). Only the step's search keeps
+  // it; it changes which points are looked up, never a contact.
+  struct Clearance {
+    Eigen::VectorXd distance;  // 0: look up (inside, touching, or not yet measured)
+    Points3 at;
+  };
+
   // The contact points' positions at x.
-  const Points3& pointPositions(const Eigen::VectorXd& x) const;
-  void findContacts(const Eigen::VectorXd& x, double t, double h, std::vector<Contact>& out) const;
+  const Points3& pointPositions(const Eigen::VectorXd& x, Search& search) const;
+  // The contacts at x (time t, over a step of h); `clearance` (the step's
+  // search) skips points that cannot touch a static obstacle.
+  void findContacts(const Eigen::VectorXd& x, double t, double h, std::vector<Contact>& out,
+                    Search& search, std::vector<Clearance>* clearance) const;
 
   std::vector<Obstacle> obstacles_;
   std::vector<double> stiffness_;  // per obstacle
@@ -123,10 +153,10 @@ class ObstacleContact : public ForceModel {
   Index firstSkinPoint_;  // points from here on are the skin's vertices
   bool skinCollides_ = false;
   std::unique_ptr<SurfaceDeformer> skin_;
-  mutable Points3 positions_, skinPositions_;
-  mutable std::vector<Eigen::Vector3d> nodeNormals_;  // the mean skin contact normal per node
-  double h_ = 0, t_ = 0;                              // of the step being taken
-  std::vector<Contact> contacts_;                     // of the step being taken
+  Search search_;                     // the step's
+  std::vector<Clearance> clearance_;  // per obstacle, of the step's search
+  double h_ = 0, t_ = 0;              // of the step being taken
+  std::vector<Contact> contacts_;     // of the step being taken
   // A node's share of its contacts' normal forces (sum w_j f_n n) and
   // what they weigh by it: the surfaces' velocity and the coefficients.
   struct NodeFriction {

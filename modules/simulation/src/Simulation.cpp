@@ -167,6 +167,17 @@ SkinContact Simulation::skinContact(const SimulationState& state) const {
   return out;
 }
 
+void Simulation::setObstaclePlacement(std::size_t k, const ObstaclePose& placement) {
+  if (k >= options_.obstacles.size())
+    throw Error("there is no obstacle " + std::to_string(k) + " (the run has " +
+                std::to_string(options_.obstacles.size()) + ")");
+  Obstacle placed = options_.obstacles[k];
+  placed.placement = placement;
+  if (const auto problem = obstacleProblem(placed)) throw Error(*problem);
+  options_.obstacles[k].placement = placement;
+  obstacles_->setPlacement(k, placement);
+}
+
 void Simulation::setFixedNodes(const std::vector<int>& nodes) {
   for (int v : nodes)
     if (v < 0 || v >= rest_.nodeCount())

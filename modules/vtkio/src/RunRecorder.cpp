@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RunRecorder.h"
 
+#include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include "tetskin/core/Error.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/vtkio/SimulationFrame.h"
+#include "tetskin/vtkio/VtkConversion.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
 namespace tetskin {
@@ -42,7 +44,7 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions, in
   // ParaView's offer as one series. Only files named as this class names
   // frames go, and the old .pvd, which names them.
   static const std::regex frameName(
-      R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?(\.vtp|\.pvtp|_piece\d+\.vtp)))");
+      R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?(\.vtp|\.pvtp|_piece\d+\.vtp)|obstacle_(\d{5}_)?\d+\.vtp))");
   for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
     if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
       std::filesystem::remove(entry.path());
@@ -50,7 +52,8 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions, in
 }
 
 void RunRecorder::addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
-                           const BoundSurface* deformedSurface) {
+                           const BoundSurface* deformedSurface,
+                           std::span<const PosedSurface> obstacles) {
   char name[64];
   std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
   // The series names its files relative to the .pvd, which lies beside the folder.
@@ -58,8 +61,28 @@ void RunRecorder::addFrame(double time, const TetMesh& rest, const FrameFields& 
   writeVtu(framesDirectory_ / name, simulationFrame(rest, fields, level, conditions_));
   series_.add(time, 0, folder + name);
   if (deformedSurface) addSurface(time, *deformedSurface);
+  for (std::size_t k = 0; k < obstacles.size(); ++k) addObstacle(time, k, obstacles[k]);
   series_.write();
   ++frames_;
+}
+
+void RunRecorder::addObstacle(double time, std::size_t k, const PosedSurface& obstacle) {
+  char name[64];
+  if (obstacle.moves)
+    std::snprintf(name, sizeof name, "obstacle_%05lld_%zu.vtp", static_cast<long long>(frames_), k);
+  else
+    std::snprintf(name, sizeof name, "obstacle_%zu.vtp", k);
+  if (staticObstacleWritten_.size() <= k) staticObstacleWritten_.resize(k + 1, false);
+  if (obstacle.moves || !staticObstacleWritten_[k]) {
+    SurfaceMesh posed = *obstacle.surface;
+    for (Index v = 0; v < posed.positions.rows(); ++v)
+      posed.positions.row(v) = (obstacle.toWorld * posed.positions.row(v).transpose()).transpose();
+    posed.normals.resize(0, 3);  // (flat shading; the scale would stretch them)
+    writeVtp(framesDirectory_ / name, toVtkPolyData(posed));
+    staticObstacleWritten_[k] = !obstacle.moves;
+  }
+  series_.add(time, kFirstObstaclePart + static_cast<int>(k),
+              framesDirectory_.filename().string() + "/" + name);
 }
 
 void RunRecorder::addSurfaceFrame(double time, const BoundSurface& deformedSurface) {

@@ -9,6 +9,7 @@
 // on the request after (the time step, the material, ...).
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -40,6 +41,10 @@ struct SceneRun {
 // obstacle that is not closed, a binding of another level than the
 // body's, or a held box around no node.
 SceneRun loadScene(const Scene& scene);
+
+// The shape of an obstacle read from a surface file (OBJ, PLY, STL, VTP),
+// checked closed. Throws Error naming the file.
+std::shared_ptr<const ClosedSurfaceDistance> readObstacleShape(const std::filesystem::path& path);
 
 // `mesh`, `surface` and `binding` moved by `placement` (the binding's
 // offsets scale with it; its weights stay).

@@ -46,6 +46,8 @@ class SimulationRunner {
   // The run (its recorder is the GUI thread's to use; steps are this one's).
   SimulationSession& session() { return session_; }
   double lastStepSeconds() const { return lastStepSeconds_; }
+  // What the last step did (its contacts, solver, times); zeros before the first.
+  StepStats lastStats() const;
   // Why the last failed step failed (once; nullopt when none failed since
   // the last call).
   std::optional<std::string> takeFailure();
@@ -66,6 +68,8 @@ class SimulationRunner {
   std::mutex stepMutex_;  // one step at a time
   std::mutex failureMutex_;
   std::optional<std::string> failure_;  // guarded by failureMutex_
+  mutable std::mutex statsMutex_;
+  StepStats lastStats_;  // guarded by statsMutex_
   std::mutex waitMutex_;
   std::condition_variable wake_;
   std::thread thread_;

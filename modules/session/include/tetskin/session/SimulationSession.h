@@ -126,7 +126,8 @@ class SimulationSession {
   // Adds `state` (by default the current one) to the recording, with the
   // bound surface: `drawnSurface` if the front end has deformed it already
   // (a render path), else the session's own deformation of it; the surface
-  // frame carries the state's stress and strain (surfaceFields).
+  // frame carries the state's stress and strain (surfaceFields), and the
+  // frame the obstacles posed at the state's time (RunRecorder::addFrame).
   void recordFrame(const std::optional<SimulationState>& state = std::nullopt,
                    const BoundSurface* drawnSurface = nullptr);
 

@@ -28,6 +28,12 @@ struct ObstaclePose {
   Eigen::Vector3d toLocal(const Eigen::Vector3d& world) const {
     return rotation.conjugate() * (world - translation) / scale;
   }
+  // toWorld as one affine map (for drawing and writing the posed surface).
+  Eigen::Affine3d affine() const {
+    Eigen::Affine3d map = Eigen::Affine3d::Identity();
+    map.translate(translation).rotate(rotation).scale(scale);
+    return map;
+  }
 };
 
 // A keyframe of a kinematic obstacle: at `time` (s) its translation and

@@ -311,6 +311,11 @@ class Simulation {
   // obstacles and its contact spring's force (arrays::kPenetration,
   // kContactForce); empty without obstacles or a skin.
   SkinContact skinContact(const SimulationState& state) const;
+  // Places obstacle k (of options().obstacles) at `placement` from the next
+  // step on: a static obstacle's pose, a moving one's scale (its keyframes
+  // stay). Not while a step runs: the GUI places obstacles while paused.
+  // Throws Error for a k out of range or a placement obstacleProblem refuses.
+  void setObstaclePlacement(std::size_t k, const ObstaclePose& placement);
 
   // Dirichlet nodes (level-local ids): they keep their position unless given
   // a kinematic target.

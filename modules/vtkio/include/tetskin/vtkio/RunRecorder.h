@@ -2,12 +2,15 @@
 #pragma once
 // A simulation run as a ParaView time series: RUN.pvd plus RUN_frames/ with
 // one control-mesh .vtu (and optionally one bound-surface .vtp) per frame,
-// or the bound surface's frames alone, or several bound surfaces' frames.
+// or the bound surface's frames alone, or several bound surfaces' frames;
+// a run with obstacles adds them as posed at each frame (parts 2, 3, ...).
 // The .pvd is rewritten after every frame, so a run stopped at any point
 // leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
 
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "tetskin/core/FloorPlane.h"
@@ -17,6 +20,15 @@
 #include "tetskin/vtkio/SimulationFrame.h"
 
 namespace tetskin {
+
+// An obstacle as a frame shows it: its surface in its own coordinates, the
+// map to the world's at the frame's time, and whether that map changes over
+// the run (a static obstacle's file is written once and named by every frame).
+struct PosedSurface {
+  const SurfaceMesh* surface = nullptr;
+  Eigen::Affine3d toWorld = Eigen::Affine3d::Identity();
+  bool moves = false;
+};
 
 class RunRecorder {
  public:
@@ -35,9 +47,14 @@ class RunRecorder {
   const std::filesystem::path& path() const { return series_.path(); }
   Index frames() const { return frames_; }
   // The control level's state (level-local nodes; SimulationFrame.h) and,
-  // if given, the bound surface already deformed to this frame.
+  // if given, the bound surface already deformed to this frame, and the
+  // obstacles posed at it: obstacle K is part 2 + K, in
+  // obstacle_K.vtp (static) or obstacle_NNNNN_K.vtp (moving).
   void addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
-                const BoundSurface* deformedSurface = nullptr);
+                const BoundSurface* deformedSurface = nullptr,
+                std::span<const PosedSurface> obstacles = {});
+  // The first part the obstacles take.
+  static constexpr int kFirstObstaclePart = 2;
   // A frame of the bound surface alone (part 1, as beside a control frame):
   // `tetskin deform` of a recorded run.
   void addSurfaceFrame(double time, const BoundSurface& deformedSurface);
@@ -52,12 +69,16 @@ class RunRecorder {
   int surfacePieces_ = 1;
   std::vector<std::vector<SurfacePiece>> piecesOfPart_;  // with surfacePieces_ > 1
   Index frames_ = 0;
+  std::vector<bool> staticObstacleWritten_;  // per obstacle
 
   // Writes this frame's surface file and adds it to the series (unwritten).
   void addSurface(double time, const BoundSurface& deformedSurface);
   // Writes `surface` as the frame's file `stem` + .vtp (or .pvtp in pieces)
   // and adds it to the series as `part`.
   void writeSurface(double time, int part, const std::string& stem, const BoundSurface& surface);
+  // Writes obstacle `k` as posed at this frame (a static one the first time
+  // only) and adds it to the series.
+  void addObstacle(double time, std::size_t k, const PosedSurface& obstacle);
 };
 
 }  // namespace tetskin

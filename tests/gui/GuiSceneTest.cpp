@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Scenes in tetskin-gui: a scene file opens its placed body, skin and
+// obstacles (drawn translucent) and runs the scene's run; the skin is
+// coloured by its contact and the picked vertex shows its contact state;
+// the contacts per step are plotted; obstacles are added from a file and
+// placed (the box widget's end, made uniform); a recording carries the
+// obstacles.
+#include <vtkBoxRepresentation.h>
+#include <vtkBoxWidget2.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkTransform.h>
+
+#include "GuiFixture.h"
+#include "tetskin/rendering/DeformableSurface.h"
+#include "tetskin/session/RunSpecJson.h"
+#include "tetskin/session/SceneRun.h"
+#include "tetskin/vtkio/RunRecorder.h"
+
+namespace tetskin::gui {
+namespace {
+
+const QString kBowlScene = kData + "scenes/bunny-in-bowl.json";
+
+class GuiScene : public Gui {
+ protected:
+  void openBowlScene() {
+    ASSERT_TRUE(window_->openFile(kBowlScene)) << window_->lastError().toStdString();
+    ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  }
+  void step(int n) {
+    for (int i = 0; i < n; ++i) QTest::mouseClick(child<QPushButton>("step"), Qt::LeftButton);
+  }
+};
+
+TEST_F(GuiScene, OpensTheSceneAndRunsItsRun) {
+  openBowlScene();
+  const SceneRun run = loadScene(readScene(kBowlScene.toStdString()));
+  Scene& scene = window_->scene();
+  // The body as the scene places it, its skin bound to the scene's level.
+  EXPECT_EQ(scene.dataset().mesh.nodes, run.dataset.mesh.nodes);
+  ASSERT_TRUE(scene.hasSurface());
+  EXPECT_EQ(scene.surface().positions, run.surface->surface.positions);
+  EXPECT_EQ(scene.level(), run.level);
+  // The bowl drawn translucent, framed with the body.
+  ASSERT_EQ(scene.obstacles().size(), 1u);
+  vtkActor* bowl = scene.obstacleActor(0).actor();
+  EXPECT_TRUE(window_->renderer()->GetActors()->IsItemPresent(bowl));
+  EXPECT_LT(bowl->GetProperty()->GetOpacity(), 1);
+  // The dock's run is the scene's (as simulate and Python resolve it).
+  EXPECT_EQ(child<QComboBox>("scenario")->currentText(), "free");
+  EXPECT_EQ(runSpecJson(window_->simulationDock()->runSpec()),
+            runSpecJson(resolveRun(run.request, run.dataset.mesh, run.dataset.config)));
+  EXPECT_EQ(window_->runner()->simulation().options().obstacles.size(), 1u);
+  // A dataset opened after it: no obstacles, the dataset's own run.
+  openSample();
+  EXPECT_TRUE(window_->scene().obstacles().empty());
+  EXPECT_TRUE(window_->runner()->simulation().options().obstacles.empty());
+  EXPECT_EQ(child<QComboBox>("scenario")->currentText(), "free");  // (the rows as left)
+}
+
+TEST_F(GuiScene, ColoursTheSkinByItsContactAndPlotsTheContacts) {
+  openBowlScene();
+  child<QSpinBox>("controlLevel");  // (exists; the level stays the scene's)
+  EXPECT_TRUE(child<SeriesPlot>("contactPlot")->isHidden());
+  SimulationRunner& runner = *window_->runner();
+  for (int i = 0; i < 150 && runner.lastStats().contacts == 0; ++i) step(1);  // it falls
+  step(5);  // and lands in the bowl
+  const SkinContact contact = runner.simulation().skinContact(runner.state());
+  ASSERT_EQ(contact.penetration.size(), window_->scene().surface().vertexCount());
+  Index deepest = 0;
+  contact.penetration.maxCoeff(&deepest);
+  ASSERT_GT(contact.penetration[deepest], 0) << "the skin touches the bowl";
+  // The contacts of the steps, plotted.
+  SeriesPlot* plot = child<SeriesPlot>("contactPlot");
+  EXPECT_FALSE(plot->isHidden());
+  ASSERT_FALSE(plot->values().empty());
+  EXPECT_EQ(plot->values().back(), runner.lastStats().contacts);
+  EXPECT_GT(plot->values().back(), 0);
+  // Coloured by penetration: the drawn array is the run's.
+  child<QComboBox>("colorBy")->setCurrentText("Penetration");
+  vtkDataArray* drawn =
+      window_->scene().deformable()->polyData()->GetPointData()->GetArray("Penetration");
+  ASSERT_NE(drawn, nullptr);
+  ASSERT_EQ(drawn->GetNumberOfTuples(), contact.penetration.size());
+  EXPECT_DOUBLE_EQ(drawn->GetTuple1(deepest), contact.penetration[deepest]);
+  child<QComboBox>("colorBy")->setCurrentText("ContactForce");
+  drawn = window_->scene().deformable()->polyData()->GetPointData()->GetArray("ContactForce");
+  ASSERT_NE(drawn, nullptr);
+  EXPECT_NEAR(drawn->GetTuple1(deepest), contact.forces.row(deepest).norm(),
+              1e-9 * contact.forces.row(deepest).norm());
+  // The picked vertex's contact state.
+  child<QComboBox>("colorBy")->setCurrentText("material");
+  window_->scene().showPickedVertex(deepest);
+  window_->run().refreshSkinContact();
+  const VertexInfo info = window_->scene().vertexInfo(deepest);
+  ASSERT_TRUE(info.penetration.has_value());
+  EXPECT_DOUBLE_EQ(*info.penetration, contact.penetration[deepest]);
+  EXPECT_TRUE(window_->vertexInfoText().contains("in contact"))
+      << window_->vertexInfoText().toStdString();
+}
+
+TEST_F(GuiScene, RecordsTheObstaclesWithTheRun) {
+  openBowlScene();
+  const std::filesystem::path pvd = scratch("scene_run.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())));
+  step(3);
+  window_->stopRecording();
+  const PvdSeries series = PvdSeries::read(pvd);
+  int obstacleFrames = 0, surfaceFrames = 0;
+  for (const PvdSeries::Entry& e : series.entries()) {
+    if (e.part == RunRecorder::kFirstObstaclePart) ++obstacleFrames;
+    if (e.part == 1) ++surfaceFrames;
+  }
+  EXPECT_GT(surfaceFrames, 0);
+  EXPECT_EQ(obstacleFrames, surfaceFrames);
+  const auto skin = readVtp(pvd.parent_path() / series.framesOfPart(1).back().file);
+  EXPECT_NE(skin->GetPointData()->GetArray("Penetration"), nullptr);
+}
+
+TEST_F(GuiScene, AddsAnObstacleFromAFileAndRefusesAnOpenOne) {
+  openSample();
+  const QString bowl = kData + "scenes/bowl.obj";
+  ASSERT_TRUE(window_->addObstacle(bowl)) << window_->lastError().toStdString();
+  ASSERT_EQ(window_->scene().obstacles().size(), 1u);
+  ASSERT_NE(window_->runner(), nullptr);
+  EXPECT_EQ(window_->runner()->simulation().options().obstacles.size(), 1u);
+  const QString open = QString(TETSKIN_SOURCE_DIR) + "/tests/data/open_sheet.obj";
+  EXPECT_FALSE(window_->addObstacle(open));
+  EXPECT_TRUE(window_->lastError().contains("open_sheet.obj"))
+      << window_->lastError().toStdString();
+  EXPECT_EQ(window_->scene().obstacles().size(), 1u);
+}
+
+// The box widget's transform, made one scale: the rotation nearest its
+// linear part and the scale of the same volume.
+TEST(ObstacleBoxPose, IsTheTransformWithAUniformScale) {
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->Translate(1, 2, 3);
+  transform->RotateWXYZ(30, 0, 0, 1);
+  transform->Scale(2, 2, 2);
+  ObstaclePose pose = poseOfBoxTransform(transform);
+  EXPECT_NEAR((pose.translation - Eigen::Vector3d(1, 2, 3)).norm(), 0, 1e-12);
+  EXPECT_NEAR(pose.scale, 2, 1e-12);
+  EXPECT_NEAR(pose.rotation.angularDistance(
+                  Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()))),
+              0, 1e-9);
+  transform->Scale(1, 1, 8);  // a box pulled along one side: the same volume's cube
+  pose = poseOfBoxTransform(transform);
+  EXPECT_NEAR(pose.scale, 4, 1e-12);  // (2 * 2 * 16)^(1/3)
+  EXPECT_NEAR(pose.rotation.angularDistance(
+                  Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()))),
+              0, 1e-9);
+}
+
+TEST_F(GuiScene, PlacesAnObstacleWithTheBoxWhilePaused) {
+  openBowlScene();
+  step(2);
+  ASSERT_TRUE(window_->showObstacleBox(0));
+  ObstacleBox& box = window_->obstacleBox();
+  EXPECT_EQ(box.shownObstacle(), std::optional<std::size_t>(0));
+  EXPECT_TRUE(box.widget()->GetEnabled());
+  // A user's drag: the box moved 1 up and pulled to twice its size along x.
+  auto* representation = vtkBoxRepresentation::SafeDownCast(box.widget()->GetRepresentation());
+  auto dragged = vtkSmartPointer<vtkTransform>::New();
+  dragged->Translate(0, 1, 0);
+  dragged->Scale(2, 1, 1);
+  representation->SetTransform(dragged);
+  box.finishInteraction();
+  const ObstaclePose placed = window_->scene().obstacles()[0].placement;
+  EXPECT_NEAR((placed.translation - Eigen::Vector3d(0, 1, 0)).norm(), 0, 1e-9);
+  EXPECT_NEAR(placed.scale, std::cbrt(2.0), 1e-9);
+  // The paused run meets it there from its next step, without a reset.
+  EXPECT_EQ(window_->runner()->steps(), 2);
+  EXPECT_NEAR(window_->runner()->simulation().options().obstacles[0].placement.scale,
+              std::cbrt(2.0), 1e-9);
+  // The box shows the placement made uniform.
+  auto shown = vtkSmartPointer<vtkTransform>::New();
+  representation->GetTransform(shown);
+  EXPECT_NEAR(poseOfBoxTransform(shown).scale, std::cbrt(2.0), 1e-9);
+  EXPECT_NEAR(shown->GetMatrix()->GetElement(0, 0), std::cbrt(2.0), 1e-9);
+  ASSERT_TRUE(window_->showObstacleBox(std::nullopt));
+  EXPECT_FALSE(box.widget()->GetEnabled());
+  EXPECT_FALSE(window_->showObstacleBox(3));
+}
+
+}  // namespace
+}  // namespace tetskin::gui
