@@ -330,10 +330,7 @@ bool MainWindow::showObstacleBox(std::optional<std::size_t> k) {
       fail(QString("there is no obstacle %1").arg(*k));
       return false;
     }
-    if (run_->runner() && run_->runner()->playing()) {
-      run_->runner()->pause();  // (placed while paused)
-      simulationDock_->showPlaying(false);
-    }
+    run_->pause();  // (placed while paused)
     const Obstacle& o = scene_->obstacles()[*k];
     const double time = run_->runner() ? run_->runner()->state().time : 0.0;
     obstacleBox_->show(*k, boundingBox(o.shape->surface()), o.poseAt(time));
@@ -346,13 +343,9 @@ bool MainWindow::showObstacleBox(std::optional<std::size_t> k) {
 bool MainWindow::placeObstacle(std::size_t k, const ObstaclePose& placement) {
   try {
     scene_->setObstaclePlacement(k, placement);
-    if (SimulationRunner* runner = run_->runner()) {
-      if (runner->playing()) {
-        runner->pause();
-        simulationDock_->showPlaying(false);
-      }
+    run_->pause();
+    if (SimulationRunner* runner = run_->runner())
       runner->simulation().setObstaclePlacement(k, placement);
-    }
   } catch (const std::exception& e) {
     fail(QString::fromStdString(e.what()));
     return false;

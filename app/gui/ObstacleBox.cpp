@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "tetskin/core/Geometry.h"
+#include "tetskin/vtkio/VtkConversion.h"
 
 namespace tetskin::gui {
 
@@ -40,11 +41,7 @@ namespace {
 
 vtkSmartPointer<vtkTransform> boxTransform(const ObstaclePose& pose) {
   auto transform = vtkSmartPointer<vtkTransform>::New();
-  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
-  const Eigen::Matrix4d map = pose.affine().matrix();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, map(r, c));
-  transform->SetMatrix(matrix);
+  transform->SetMatrix(toVtkMatrix(pose.affine()));
   return transform;
 }
 

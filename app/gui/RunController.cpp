@@ -183,10 +183,7 @@ bool RunController::showRunFrame() {
     window_.fail(QString::fromStdString(e.what()));
     return false;
   }
-  if (runner_ && runner_->playing()) {
-    runner_->pause();
-    showPlaying(false);
-  }
+  pause();
   replaying_ = true;
   scene_.setRunConditions(runPanel_->conditions());
   lastTimes_ = scene_.showControlState(state.positions);
@@ -333,6 +330,13 @@ QString RunController::takeWarnings() {
   for (const std::string& warning : runner_->session().takeWarnings(OptionNames::Words))
     text += (text.isEmpty() ? "warning: " : "; warning: ") + QString::fromStdString(warning);
   return text;
+}
+
+void RunController::pause() {
+  if (runner_ && runner_->playing()) {
+    runner_->pause();
+    showPlaying(false);
+  }
 }
 
 void RunController::refreshSkinContact() {

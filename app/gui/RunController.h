@@ -60,6 +60,9 @@ class RunController : public QObject {
   void closeRun();
   // Draws the latest simulated state (and records it while recording).
   void showLatestState();
+  // Pauses a playing simulation (Play shown off), to show a recorded frame
+  // or place an obstacle.
+  void pause();
   // The skin's contact at the state shown, where the scene wants it (a
   // colouring by it, a picked vertex): after either changes.
   void refreshSkinContact();

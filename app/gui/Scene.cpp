@@ -182,10 +182,7 @@ void Scene::addObstacle(Obstacle obstacle) {
 }
 
 void Scene::setObstaclePlacement(std::size_t k, const ObstaclePose& placement) {
-  Obstacle placed = obstacles_.at(k);
-  placed.placement = placement;
-  if (const auto problem = obstacleProblem(placed)) throw Error(*problem);
-  obstacles_[k] = std::move(placed);
+  obstacles_.at(k) = placedAt(obstacles_.at(k), placement);
   obstacleActors_[k]->setPose(obstacles_[k].poseAt(obstacleTime_).affine());
 }
 

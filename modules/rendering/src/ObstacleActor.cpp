@@ -44,10 +44,7 @@ vtkActor* ObstacleActor::actor() const {
 
 void ObstacleActor::setPose(const Eigen::Affine3d& toWorld) {
   impl_->toWorld = toWorld;
-  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, toWorld.matrix()(r, c));
-  impl_->actor->SetUserMatrix(matrix);
+  impl_->actor->SetUserMatrix(toVtkMatrix(toWorld));
 }
 
 BoundingBox ObstacleActor::bounds() const {

@@ -27,6 +27,12 @@ ObstaclePose Obstacle::poseAt(double t) const {
   return pose;
 }
 
+Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement) {
+  obstacle.placement = placement;
+  if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
+  return obstacle;
+}
+
 std::optional<std::string> obstacleProblem(const Obstacle& o) {
   const std::string name = o.name.empty() ? std::string("an obstacle") : o.name;
   if (!o.shape) return name + ": no surface";

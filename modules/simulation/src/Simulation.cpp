@@ -171,10 +171,7 @@ void Simulation::setObstaclePlacement(std::size_t k, const ObstaclePose& placeme
   if (k >= options_.obstacles.size())
     throw Error("there is no obstacle " + std::to_string(k) + " (the run has " +
                 std::to_string(options_.obstacles.size()) + ")");
-  Obstacle placed = options_.obstacles[k];
-  placed.placement = placement;
-  if (const auto problem = obstacleProblem(placed)) throw Error(*problem);
-  options_.obstacles[k].placement = placement;
+  options_.obstacles[k] = placedAt(options_.obstacles[k], placement);
   obstacles_->setPlacement(k, placement);
 }
 

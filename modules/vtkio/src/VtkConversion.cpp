@@ -7,6 +7,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkGenericCell.h>
 #include <vtkIdTypeArray.h>
+#include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -62,6 +63,13 @@ vtkSmartPointer<vtkDoubleArray> toVtkScalars(const char* name, const Eigen::Vect
   out->SetNumberOfValues(values.size());
   for (Index i = 0; i < values.size(); ++i) out->SetValue(i, values[i]);
   return out;
+}
+
+vtkSmartPointer<vtkMatrix4x4> toVtkMatrix(const Eigen::Affine3d& map) {
+  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) matrix->SetElement(r, c, map.matrix()(r, c));
+  return matrix;
 }
 
 Eigen::Map<Points3> vectorRows(vtkDoubleArray* array) {

@@ -65,6 +65,11 @@ struct Obstacle {
 // name; nullopt when nothing is.
 std::optional<std::string> obstacleProblem(const Obstacle& obstacle);
 
+// `obstacle` at `placement` (a static one's pose, a moving one's scale; its
+// keyframes stay). Throws Error with obstacleProblem's message for a
+// placement it refuses.
+Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement);
+
 // The closest point of `obstacle` at time t to the world point p, in world
 // coordinates (distance, point and normal); nullopt when farther than
 // `radius` (world units).

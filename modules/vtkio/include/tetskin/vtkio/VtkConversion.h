@@ -5,6 +5,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 
 class vtkDataArray;
 class vtkDoubleArray;
+class vtkMatrix4x4;
 class vtkPoints;
 class vtkPolyData;
 class vtkUnstructuredGrid;
@@ -38,6 +40,9 @@ Points3 fromVtkPoints(vtkPoints* points, const std::string& sourceName);
 vtkSmartPointer<vtkDoubleArray> toVtkVectors(const char* name, const Points3& values);
 // Values as a named 1-component double array (stresses, errors).
 vtkSmartPointer<vtkDoubleArray> toVtkScalars(const char* name, const Eigen::VectorXd& values);
+// An affine map as VTK's 4x4 matrix (an actor's user matrix, a widget's
+// transform).
+vtkSmartPointer<vtkMatrix4x4> toVtkMatrix(const Eigen::Affine3d& map);
 // The other way without a copy: a 3-component double array's buffer seen as
 // rows, one per tuple, for a kernel to write in place (Points3Ref). Throws
 // Error for a null array or another component count.
