@@ -118,10 +118,13 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
     std::printf(", floor at %s = %s", toString(options.up),
                 formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
-  if (!options.obstacles.empty()) {
+  if (options.hasContact()) {
     const Eigen::RowVector3d force = sim.contactForces(sim.state()).colwise().sum();
-    std::printf("  %zu obstacle%s met by the %s; at the end %d contacts, contact force %s N\n",
-                options.obstacles.size(), options.obstacles.size() == 1 ? "" : "s",
+    const std::size_t count = options.obstacles.size();
+    const std::string met =
+        (options.floorHeight ? std::string("the floor") + (count > 0 ? " and " : "") : "") +
+        (count > 0 ? std::to_string(count) + " obstacle" + (count == 1 ? "" : "s") : "");
+    std::printf("  %s met by the %s; at the end %d contacts, contact force %s N\n", met.c_str(),
                 session.hasSurface() && options.contactPoints != ContactPoints::Cage
                     ? (options.contactPoints == ContactPoints::Both ? "skin and nodes" : "skin")
                     : "nodes",

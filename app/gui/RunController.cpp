@@ -108,8 +108,8 @@ void RunController::reset() {
     const RunSpec spec = dock_.runSpec();
     options = spec.options;
     runner_ = std::make_unique<SimulationRunner>(scene_.dataset().mesh, spec);
-    // The skin meets the obstacles (the contact points the run names).
-    if (!options.obstacles.empty() && scene_.hasSurface())
+    // The skin meets the obstacles and the floor (the contact points the run names).
+    if (options.hasContact() && scene_.hasSurface())
       runner_->session().bindSurface(scene_.surface(), scene_.binding(),
                                      scene_.datasetPath().generic_string());
   } catch (const std::exception& e) {
@@ -290,7 +290,7 @@ void RunController::plotEnergy(const SimulationState& state) {
   const Energies e = sim.energies();
   energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
   const SimulationOptions& options = sim.options();
-  if (state.steps > 0 && (options.floorHeight || !options.obstacles.empty())) {
+  if (state.steps > 0 && options.hasContact()) {
     // The contacts of the last step, over the energy plot's window.
     contactSamples_.emplace_back(state.time, runner_->lastStats().contacts);
     while (contactSamples_.front().first < state.time - energyPlot_->window())

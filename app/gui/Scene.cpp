@@ -200,7 +200,7 @@ void Scene::setSkinContact(SkinContact contact) {
 }
 
 bool Scene::wantsSkinContact() const {
-  return !obstacles_.empty() && surface_ && (byContact(colorBy_) || picked_);
+  return (!obstacles_.empty() || floor_) && surface_ && (byContact(colorBy_) || picked_);
 }
 
 void Scene::openSurface(const std::filesystem::path& path, SurfaceOrBinding read) {

@@ -4,8 +4,9 @@
 // g (sin theta - mu_k cos theta) when mu_k < tan(theta); a block at rest
 // on a slab is held by contact forces equal to its weight, sunk by a
 // fraction of its size; a paddle sweeping through pushes it along without
-// it ending up inside; and a rigid motion of body, obstacle and gravity
-// together leaves the run unchanged.
+// it ending up inside; a rigid motion of body, obstacle and gravity
+// together leaves the run unchanged; and the floor, the simplest obstacle,
+// runs as a slab and stops a sliding block where Coulomb says.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -316,6 +317,61 @@ TEST(ObstacleContact, ABlockDroppedOntoABallRestsOnItsSkin) {
   const Eigen::Vector3d support = sim.contactForces(state).colwise().sum().transpose();
   EXPECT_NEAR(support.y(), weight, 0.01 * weight);
   EXPECT_LT(std::hypot(support.x(), support.z()), 0.01 * weight);
+}
+
+// The floor is the simplest obstacle: a skinned block dropped onto a floor
+// at y = 0 runs as onto a slab whose top is y = 0 with the floor's friction
+// (the same contacts every step, the same positions to round-off), and
+// rests on its skin (the cage 1 cm up, the weight carried within 1%).
+TEST(FloorObstacle, TheFloorActsAsASlabAndTheSkinRestsOnIt) {
+  const SkinnedBlock body = skinnedBlock(0.03);
+  const auto run = [&](bool floor) {
+    SimulationOptions options = rubber(0);
+    options.material.massDamping = 2;  // to settle
+    if (floor) {
+      options.floorHeight = 0;
+      options.friction = 0.5;
+    } else {
+      options.obstacles = {slab(0.5, 0.5)};
+    }
+    auto sim = std::make_unique<Simulation>(body.dataset, 0, options);
+    sim->setContactSkin(body.skin, body.binding);
+    std::vector<int> contacts;
+    for (int i = 0; i < 300; ++i) contacts.push_back(sim->step().contacts);
+    return std::make_pair(std::move(sim), contacts);
+  };
+  const auto [onFloor, floorContacts] = run(true);
+  const auto [onSlab, slabContacts] = run(false);
+  EXPECT_EQ(floorContacts, slabContacts);
+  EXPECT_GT(floorContacts.back(), 0);
+  EXPECT_LT((onFloor->state().positions - onSlab->state().positions).cwiseAbs().maxCoeff(),
+            1e-9 * kBlockSize);
+  const SimulationState state = onFloor->state();
+  EXPECT_GT(state.positions.col(1).minCoeff(), 0.008);  // the cage stays up: the skin holds it
+  const double weight = onFloor->nodeMasses().sum() * kStandardGravity;
+  EXPECT_NEAR(onFloor->contactForces(state).colwise().sum()(1), weight, 0.01 * weight);
+}
+
+// Coulomb friction on the floor: a block set sliding at v0 on a floor with
+// mu stops after v0^2 / (2 mu g) (the floor's friction was once a share of
+// the tangential velocity lost per step, which stops it at a distance set
+// by the time step instead).
+TEST(FloorObstacle, ABlockSetSlidingStopsWhereCoulombSays) {
+  SimulationOptions options = rubber(0);
+  options.floorHeight = 0;
+  options.friction = 0.4;
+  Simulation sim(oneLevel(block()), 0, options);
+  for (int i = 0; i < 100; ++i) sim.step();  // 0.5 s: the springs carry the weight
+  const Eigen::Vector3d start = mean(sim.state().positions);
+  Points3 velocities = sim.state().velocities;
+  velocities.col(0).array() += 1.0;  // v0 = 1 m/s along x
+  sim.setVelocities(velocities);
+  for (int i = 0; i < 100; ++i) sim.step();  // 0.5 s: it stops after 0.25 s
+  const double slid = mean(sim.state().positions).x() - start.x();
+  const double expected = 1.0 / (2 * 0.4 * kStandardGravity);
+  EXPECT_NEAR(slid, expected, 0.05 * expected);
+  EXPECT_LT(std::abs(mean(sim.state().velocities).x()), 0.01);  // and it has stopped
+  std::printf("slid %.4g m, Coulomb's v0^2 / (2 mu g) = %.4g m\n", slid, expected);
 }
 
 }  // namespace

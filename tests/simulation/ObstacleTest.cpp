@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // An obstacle's placement and keyframed motion, its distances in the
-// world, and the checks of its settings.
+// world (the floor's too), and the checks of its settings.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -72,6 +72,28 @@ TEST(Obstacle, BadSettingsAreNamed) {
   EXPECT_EQ(*obstacleProblem(o), "cube.obj: the rotation must be a unit quaternion");
   o.shape.reset();
   EXPECT_EQ(*obstacleProblem(o), "cube.obj: no surface");
+}
+
+// The floor as an obstacle: the exact distance to its plane along the up
+// axis, found above it within the radius only and below it at any depth.
+TEST(Obstacle, TheFloorIsTheHalfSpaceBelowItsPlane) {
+  const Obstacle floor = floorObstacle({UpAxis::Z, 0.5}, 0.6, 0);
+  EXPECT_EQ(floor.name, "the floor");
+  EXPECT_EQ(floor.staticFriction, 0.6);
+  EXPECT_EQ(floor.kineticFriction, 0.6);
+  EXPECT_FALSE(obstacleProblem(floor).has_value());
+  const auto above = closestPointOf(floor, 0, {1, 2, 0.8}, 0.5);
+  ASSERT_TRUE(above.has_value());
+  EXPECT_NEAR(above->distance, 0.3, 1e-15);
+  EXPECT_EQ(above->point, Eigen::Vector3d(1, 2, 0.5));
+  EXPECT_EQ(above->normal, Eigen::Vector3d(0, 0, 1));
+  EXPECT_FALSE(closestPointOf(floor, 0, {1, 2, 1.1}, 0.5).has_value());  // beyond the radius
+  const auto deep = closestPointOf(floor, 0, {1, 2, -9.5}, 0.5);         // 10 below: still found
+  ASSERT_TRUE(deep.has_value());
+  EXPECT_EQ(deep->distance, -10);
+  Obstacle bad = floor;
+  bad.floor->height = std::nan("");
+  EXPECT_EQ(*obstacleProblem(bad), "the floor: the height must be finite, got nan");
 }
 
 }  // namespace

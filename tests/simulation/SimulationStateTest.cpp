@@ -244,7 +244,7 @@ TEST(Simulation, OptionsOutOfRangeAreErrorsNamingTheOption) {
       {[&](auto& o) { o.tolerance = 1; }, "tolerance"},
       {[&](auto& o) { o.maxIterations = 0; }, "iteration"},
       {[&](auto& o) { o.coarseReuse = 0; }, "coarse-operator reuse"},
-      {[&](auto& o) { o.friction = 1.5; }, "friction"},
+      {[&](auto& o) { o.friction = -0.5; }, "friction"},
       {[&](auto& o) { o.friction = nan; }, "friction"},
       {[&](auto& o) { o.floorStiffness = -1; }, "floor stiffness"},
       {[&](auto& o) { o.floorHeight = nan; }, "floor height"},

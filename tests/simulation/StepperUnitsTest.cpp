@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // The units a simulation step composes (modules/simulation/src), each on
-// its own: the floor's springs and projection, the fixed and driven nodes'
+// its own: the floor's springs, the fixed and driven nodes'
 // rows, the implicit-Euler system over the force models (and a model the
 // integrator has never heard of), the node numbering. Known answers on a
 // small grid; whole runs are SimulationTest's.
@@ -9,10 +9,10 @@
 #include <Eigen/SparseCholesky>
 
 #include "BodyModels.h"
-#include "FloorContact.h"
 #include "ImplicitEuler.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
+#include "ObstacleContact.h"
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
 
@@ -22,8 +22,12 @@ namespace {
 using test::tetGrid;
 using test::unitTetrahedron;
 
-TEST(FloorContact, SpringsOnNodesOnOrBelowThePlaneOnly) {
-  FloorContact floor({UpAxis::Z, 0.5}, 1000.0, 0.3);
+// The floor is an obstacle (ObstacleContact with floorObstacle): a spring
+// h^2 k on the up axis of each node on or below the plane, k depth - h k v
+// in its force; nodes above it, however close, get none.
+TEST(FloorObstacle, SpringsOnNodesOnOrBelowThePlaneOnly) {
+  const Eigen::VectorXd mass = Eigen::VectorXd::Ones(9);
+  ObstacleContact floor({floorObstacle({UpAxis::Z, 0.5}, 0.3, 1000.0)}, mass, 1.0, 1.0);
   Eigen::VectorXd x(9), v(9);
   x << 0, 0, 1.0,  // above
       0, 0, 0.5,   // touching
@@ -31,7 +35,7 @@ TEST(FloorContact, SpringsOnNodesOnOrBelowThePlaneOnly) {
   v << 0, 0, -1, 0, 0, -2, 0, 0, -3;
   const double h = 0.01;
   StepSystem system;
-  system.diagonal = Eigen::VectorXd::Ones(9);  // (the mass: the springs add to it)
+  system.diagonal = mass;  // (the springs add to it)
   system.force = Eigen::VectorXd::Zero(9);
   EXPECT_EQ(floor.addForce({x, v, h}, system), 2);
   Eigen::VectorXd springs = Eigen::VectorXd::Zero(9), force = springs;
@@ -40,31 +44,13 @@ TEST(FloorContact, SpringsOnNodesOnOrBelowThePlaneOnly) {
   force[8] = 1000.0 * 0.1 - h * 1000.0 * -3;
   ASSERT_TRUE(system.hasSprings);
   EXPECT_TRUE(system.springs.isApprox(springs));
-  EXPECT_TRUE(system.diagonal.isApprox(Eigen::VectorXd::Ones(9) + springs));
+  EXPECT_TRUE(system.diagonal.isApprox(mass + springs));
   EXPECT_NEAR((system.force - force).norm(), 0, 1e-12);
   // Its force at a state, for reactions: k depth below the plane only.
   Eigen::VectorXd atRest = Eigen::VectorXd::Zero(9);
   floor.addForceAt(x, v, atRest);
   EXPECT_NEAR(atRest[8], 100.0, 1e-12);
   EXPECT_EQ(atRest.sum(), atRest[8]);
-}
-
-TEST(FloorContact, ProjectsNodesBelowOntoThePlaneWithFriction) {
-  FloorContact floor({UpAxis::Y, 0.0}, 1.0, 0.25);
-  Eigen::VectorXd x(6), v(6);
-  x << 1, -0.2, 2, 1, 0.3, 2;
-  v << 4, -5, 8, 4, -5, 8;
-  floor.project(x, v);
-  Eigen::VectorXd x1(6), v1(6);
-  x1 << 1, 0, 2, 1, 0.3, 2;  // the first on the plane, the second left as it was
-  v1 << 3, 0, 6, 4, -5, 8;   // no velocity into the floor, tangential 3/4 of it
-  EXPECT_EQ(x, x1);
-  EXPECT_EQ(v, v1);
-  // Moving away from the floor keeps its speed.
-  x << 0, -1, 0, 0, 1, 0;
-  v << 0, 2, 0, 0, 2, 0;
-  floor.project(x, v);
-  EXPECT_EQ(v[1], 2);
 }
 
 TEST(NodeConstraints, StopsFixedNodesAndDrivesTargetsToTheirPositions) {

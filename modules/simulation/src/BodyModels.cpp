@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "BodyModels.h"
 
-#include <optional>
-
 #include "ElasticForce.h"
-#include "FloorContact.h"
 #include "Gravity.h"
 #include "MassDamping.h"
 #include "ObstacleContact.h"
@@ -22,25 +19,19 @@ BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options) {
   auto constraints = std::make_unique<NodeConstraints>(fem.pattern());
   body.constraints = constraints.get();
   body.models.push_back(std::move(constraints));
-  // (An element pass: made once, for the floor and the obstacles both.)
-  std::optional<double> automatic;
-  const auto automaticStiffness = [&] {
-    if (!automatic) automatic = FloorContact::automaticStiffness(fem);
-    return *automatic;
-  };
+  // The floor is the last obstacle: the scene's keep their numbers.
+  std::vector<Obstacle> obstacles = options.obstacles;
   if (const auto floor = options.floor())
-    body.models.push_back(std::make_unique<FloorContact>(
-        *floor, options.floorStiffness > 0 ? options.floorStiffness : automaticStiffness(),
-        options.friction));
-  if (!options.obstacles.empty()) {
+    obstacles.push_back(floorObstacle(*floor, options.friction, options.floorStiffness));
+  if (!obstacles.empty()) {
     // Contacts are looked for within a twentieth of the body's size: far
     // deeper than the automatic stiffness lets a node sink.
     Points3 rest = Eigen::Map<const Points3>(fem.restPositions().data(), fem.nodeCount(), 3);
-    auto obstacles =
-        std::make_unique<ObstacleContact>(options.obstacles, fem.lumpedMass(), automaticStiffness(),
-                                          0.05 * boundingBox(rest).diagonal());
-    body.obstacles = obstacles.get();
-    body.models.push_back(std::move(obstacles));
+    auto contact = std::make_unique<ObstacleContact>(std::move(obstacles), fem.lumpedMass(),
+                                                     ObstacleContact::automaticStiffness(fem),
+                                                     0.05 * boundingBox(rest).diagonal());
+    body.obstacles = contact.get();
+    body.models.push_back(std::move(contact));
   }
   return body;
 }

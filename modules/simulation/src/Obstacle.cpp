@@ -27,6 +27,15 @@ ObstaclePose Obstacle::poseAt(double t) const {
   return pose;
 }
 
+Obstacle floorObstacle(const FloorPlane& floor, double friction, double stiffness) {
+  Obstacle o;
+  o.name = "the floor";
+  o.floor = floor;
+  o.staticFriction = o.kineticFriction = friction;
+  o.stiffness = stiffness;
+  return o;
+}
+
 Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement) {
   obstacle.placement = placement;
   if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
@@ -35,7 +44,9 @@ Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement) {
 
 std::optional<std::string> obstacleProblem(const Obstacle& o) {
   const std::string name = o.name.empty() ? std::string("an obstacle") : o.name;
-  if (!o.shape) return name + ": no surface";
+  if (!o.shape && !o.floor) return name + ": no surface";
+  if (o.floor && !std::isfinite(o.floor->height))
+    return name + ": the height must be finite, got " + formatNumber(o.floor->height);
   if (!(std::isfinite(o.staticFriction) && std::isfinite(o.kineticFriction) &&
         o.kineticFriction >= 0 && o.staticFriction >= o.kineticFriction))
     return name + ": friction must satisfy 0 <= kinetic <= static, got static " +
@@ -66,6 +77,17 @@ std::optional<std::string> obstacleProblem(const Obstacle& o) {
 
 std::optional<SurfacePoint> closestPointOf(const Obstacle& obstacle, double t,
                                            const Eigen::Vector3d& p, double radius) {
+  if (obstacle.floor) {
+    // Exact and at any depth: a half-space has no far side to mistake.
+    const int up = axisIndex(obstacle.floor->up);
+    SurfacePoint hit;
+    hit.distance = p[up] - obstacle.floor->height;
+    if (hit.distance > radius) return std::nullopt;
+    hit.point = p;
+    hit.point[up] = obstacle.floor->height;
+    hit.normal = Eigen::Vector3d::Unit(up);
+    return hit;
+  }
   const ObstaclePose pose = obstacle.poseAt(t);
   std::optional<SurfacePoint> hit = obstacle.shape->closest(pose.toLocal(p), radius / pose.scale);
   if (!hit) return hit;

@@ -22,6 +22,13 @@ ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::V
   firstSkinPoint_ = static_cast<Index>(points_.size());
 }
 
+double ObstacleContact::automaticStiffness(CorotatedFem& fem) {
+  Eigen::VectorXd force;
+  SparseMatrix stiffness = fem.pattern();
+  fem.update(fem.restPositions(), force, stiffness);
+  return 100.0 * stiffness.diagonal().maxCoeff();
+}
+
 void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,
                               const SurfaceBinding& binding, ContactPoints mode) {
   skin_ = std::move(deformer);

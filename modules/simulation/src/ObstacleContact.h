@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// Contact of the body with obstacles (Obstacle.h) as a force model:
+// Contact of the body with obstacles (Obstacle.h), the floor among them, as a force model:
 // implicit penalty springs along the contact normal and Coulomb friction,
 // at contact points: the control nodes, the bound skin's vertices, or
 // both (ContactPoints). A skin vertex p = sum_j w_j x_j (+ its offset)
@@ -55,6 +55,11 @@ class ObstacleContact : public ForceModel {
   // points until setSkin.
   ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,
                   double automaticStiffness, double searchRadius);
+
+  // About a hundred times the stiffest element diagonal of `fem` at its
+  // rest positions: penetration stays small without ruining the
+  // conditioning of the system.
+  static double automaticStiffness(CorotatedFem& fem);
 
   // The bound skin: `deformer` places it from the nodes' positions (its
   // binding's ids are the model's node numbers). Its vertices become the

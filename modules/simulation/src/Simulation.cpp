@@ -352,7 +352,7 @@ FrameFields Simulation::frameFields(const SimulationState& state) const {
           reactionForces(state),
           std::move(measures.vonMisesStress),
           std::move(measures.equivalentStrain),
-          options_.floorHeight || obstacles_ ? contactForces(state) : Points3()};
+          obstacles_ ? contactForces(state) : Points3()};
 }
 
 }  // namespace tetskin

@@ -3,7 +3,9 @@
 // An obstacle: a closed surface the body cannot enter, placed by a rigid
 // transform with a uniform scale, static or moved kinematically through
 // keyframes, with Coulomb friction against the body. Its shape is shared
-// (a scene may place one surface several times) and read-only.
+// (a scene may place one surface several times) and read-only. The floor
+// is the simplest obstacle: the half-space below a plane, its distance
+// exact and computed, not looked up (floorObstacle).
 
 #include <Eigen/Geometry>
 #include <memory>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/core/FloorPlane.h"
 #include "tetskin/spatial/ClosedSurfaceDistance.h"
 
 namespace tetskin {
@@ -47,6 +50,9 @@ struct PoseKey {
 struct Obstacle {
   std::string name;                                    // in messages: the file, or "obstacle 2"
   std::shared_ptr<const ClosedSurfaceDistance> shape;  // in its own coordinates
+  // The floor, in place of a shape: the half-space below this plane, in
+  // world coordinates (placement and motion do not apply).
+  std::optional<FloorPlane> floor;
   ObstaclePose placement;  // a static obstacle's pose; a moving one's scale
   // Keyframes, times strictly increasing (empty: static). Between two the
   // translation is linear and the rotation spherical; before the first and
@@ -60,6 +66,10 @@ struct Obstacle {
   ObstaclePose poseAt(double t) const;
 };
 
+// The floor as an obstacle: named "the floor", with `friction` as its
+// static and kinetic coefficient and the penalty `stiffness` (0: automatic).
+Obstacle floorObstacle(const FloorPlane& floor, double friction, double stiffness);
+
 // What is wrong with `obstacle` (no shape, friction or stiffness out of
 // range, a zero scale, keyframes out of order or not unit), named by its
 // name; nullopt when nothing is.
@@ -72,7 +82,7 @@ Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement);
 
 // The closest point of `obstacle` at time t to the world point p, in world
 // coordinates (distance, point and normal); nullopt when farther than
-// `radius` (world units).
+// `radius` (world units) from its surface (the floor: only above it).
 std::optional<SurfacePoint> closestPointOf(const Obstacle& obstacle, double t,
                                            const Eigen::Vector3d& p, double radius);
 

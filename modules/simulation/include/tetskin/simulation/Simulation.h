@@ -12,8 +12,8 @@
 // A step composes units of the module's src, one concern each: the
 // integrator (ImplicitEuler: the system of a step and its outcome), which
 // sums the body's force models (ForceModel.h: elasticity, gravity, mass
-// damping, the fixed and driven nodes' Dirichlet rows, the floor's penalty
-// springs and projection with friction), and the linear solve
+// damping, the fixed and driven nodes' Dirichlet rows, contact with the
+// obstacles and the floor: penalty springs and Coulomb friction), and the linear solve
 // (SolverStack: the solvers, the multigrid hierarchy, the initial guess).
 // A new contact model is a new force model; a new integrator or solver
 // replaces its unit (doc/dev/extending.md).
@@ -146,13 +146,14 @@ inline constexpr NumberOption kMaxIterations{"max_iterations",
                                              "CG iterations per solve at most",
                                              atLeast(1),
                                              2000};
-inline constexpr NumberOption kFriction{"friction",
-                                        "--friction",
-                                        "",
-                                        "friction",
-                                        "share of tangential velocity lost in floor contact",
-                                        between(0, 1),
-                                        0.3};
+inline constexpr NumberOption kFriction{
+    "friction",
+    "--friction",
+    "",
+    "the floor's friction",
+    "the floor's Coulomb friction coefficient, static and kinetic",
+    atLeast(0),
+    0.3};
 inline constexpr NumberOption kFloorStiffness{
     "floor_stiffness",
     "--floor-stiffness",
@@ -213,6 +214,8 @@ struct SimulationOptions {
   // benchmark's sparse direct and algebraic multigrid baselines).
   std::function<std::unique_ptr<Preconditioner>()> preconditioner;
 
+  // Whether the body meets anything: a floor or obstacles.
+  bool hasContact() const { return floorHeight || !obstacles.empty(); }
   // The floor plane, if there is one (floorHeight along up).
   std::optional<FloorPlane> floor() const {
     if (!floorHeight) return std::nullopt;
@@ -352,7 +355,7 @@ class Simulation {
   // to hold them still or on their targets: M a + alpha M v - (f_el - beta K
   // v) - f_ext - M g there. A body settled under gravity and loads rests on
   // them: they sum to its weight and loads, opposed, and balance their
-  // moment. The floor's contact forces on fixed nodes are left out.
+  // moment. Contact forces on fixed nodes are left out.
   Points3 reactionForces(const SimulationState& state) const;
   // Their sum: what the supports carry in all (a settled body's weight and
   // loads, opposed; zero without fixed nodes).
@@ -363,8 +366,7 @@ class Simulation {
   // whatever step the GUI's runner takes in between.)
   // The force the floor and the obstacles exert on each node at `state`
   // (#nodes x 3, N): their penalty springs at `state`, and the obstacles'
-  // friction of the last step (m dv / h; the floor's friction is not
-  // included).
+  // friction of the last step (m dv / h).
   Points3 contactForces(const SimulationState& state) const;
   FrameFields frameFields(const SimulationState& state) const;
 
