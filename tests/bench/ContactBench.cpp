@@ -3,7 +3,8 @@
 // level with its 64k skin as the contact points, resting in a bowl of about
 // 100k triangles (BOWL.obj, from data/tools/make_bowl.py; see
 // contact_bench.sh). In one run: the step with skin contact against the
-// same step, from the same state, with no obstacle; and the obstacle's
+// same step, from the same state, with no obstacle (the two stepping by
+// turns, medians over the steps); and the obstacle's
 // distance queries alone, TetSkin's exact AABB tree (bounded by the
 // contact's search radius, as the step asks, and unbounded) against CGAL's
 // AABB tree (its closest point, unbounded), on one thread and on all. Prints a table; asserts
@@ -39,25 +40,28 @@ double secondsSince(Clock::time_point start) {
 }
 
 struct StepTimes {
-  double step = 0, assembly = 0, solve = 0;  // ms per step
-  double contacts = 0;                       // per step
+  double step = 0, assembly = 0, solve = 0;  // ms
+  int contacts = 0, iterations = 0;
 };
 
-StepTimes timeSteps(SimulationSession& session, int steps) {
-  StepTimes t;
-  for (int i = 0; i < steps; ++i) {
-    const auto start = Clock::now();
-    const StepStats s = session.step();
-    t.step += secondsSince(start);
-    t.assembly += s.assemblySeconds;
-    t.solve += s.solveSeconds;
-    t.contacts += s.contacts;
-  }
-  t.step *= 1e3 / steps;
-  t.assembly *= 1e3 / steps;
-  t.solve *= 1e3 / steps;
-  t.contacts /= steps;
-  return t;
+StepTimes timeStep(SimulationSession& session) {
+  const auto start = Clock::now();
+  const StepStats s = session.step();
+  return {secondsSince(start) * 1e3, s.assemblySeconds * 1e3, s.solveSeconds * 1e3, s.contacts,
+          s.iterations};
+}
+
+// The median of each column of `steps`.
+StepTimes median(std::vector<StepTimes> steps) {
+  const auto middle = [&](auto field) {
+    std::vector<double> values;
+    for (const StepTimes& t : steps) values.push_back(static_cast<double>(t.*field));
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  };
+  return {middle(&StepTimes::step), middle(&StepTimes::assembly), middle(&StepTimes::solve),
+          static_cast<int>(middle(&StepTimes::contacts)),
+          static_cast<int>(middle(&StepTimes::iterations))};
 }
 
 // Mean microseconds per point of `query` over `points`, on the threads TBB
@@ -103,25 +107,33 @@ int main(int argc, char** argv) {
       static_cast<long long>(bowl.triangleCount()),
       static_cast<int>(tbb::info::default_concurrency()));
 
-  // The run with contact, settled a while, then timed.
+  // The run with contact, settled a while; then the same steps from the
+  // same state with no obstacle. The two runs step by turns, so that the
+  // machine's drift (other load, clock changes) falls on both alike, and
+  // each column is the median over the steps.
   SimulationSession contact(run.dataset.mesh, spec);
   contact.bindSurface(run.surface->surface, run.surface->binding, "bunny.json");
   for (int i = 0; i < 30; ++i) contact.step();
   const SimulationState settled = contact.state();
-  const StepTimes with = timeSteps(contact, steps);
-
-  // The same step from the same state with no obstacle.
   RunSpec freeSpec = spec;
   freeSpec.options.obstacles.clear();
   SimulationSession free(run.dataset.mesh, freeSpec);
   free.startFrom({settled.positions, settled.velocities});
-  const StepTimes without = timeSteps(free, steps);
+  std::vector<StepTimes> withSteps, withoutSteps;
+  for (int i = 0; i < steps; ++i) {
+    withSteps.push_back(timeStep(contact));
+    withoutSteps.push_back(timeStep(free));
+  }
+  const StepTimes with = median(withSteps), without = median(withoutSteps);
 
-  std::printf("\nsteps (ms per step, mean of %d)   step   assembly   solve   contacts\n", steps);
-  std::printf("  without obstacles            %7.2f  %8.2f  %6.2f  %9.0f\n", without.step,
-              without.assembly, without.solve, without.contacts);
-  std::printf("  skin contact with the bowl   %7.2f  %8.2f  %6.2f  %9.0f\n", with.step,
-              with.assembly, with.solve, with.contacts);
+  std::printf(
+      "\nsteps (ms per step, median of %d, by turns)   step   assembly   solve   contacts   "
+      "cg iterations\n",
+      steps);
+  std::printf("  without obstacles                        %7.2f  %8.2f  %6.2f  %9d  %14d\n",
+              without.step, without.assembly, without.solve, without.contacts, without.iterations);
+  std::printf("  skin contact with the bowl               %7.2f  %8.2f  %6.2f  %9d  %14d\n",
+              with.step, with.assembly, with.solve, with.contacts, with.iterations);
   std::printf("  contact's share: %.2f ms per step (%.0f%% of the step with it)\n",
               with.step - without.step, 100 * (with.step - without.step) / with.step);
 
