@@ -10,7 +10,7 @@
 // AABB tree (its closest point, unbounded), on one thread and on all. Prints a table; asserts
 // nothing.
 //
-// usage: contact_bench BOWL.obj [STEPS]
+// usage: contact_bench BOWL.obj [STEPS] [multigrid]
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -79,7 +79,7 @@ double microsecondsPerPoint(const Points3& points, const Query& query) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: contact_bench BOWL.obj [STEPS]\n");
+    std::fprintf(stderr, "usage: contact_bench BOWL.obj [STEPS] [multigrid]\n");
     return 2;
   }
   const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
@@ -94,18 +94,20 @@ int main(int argc, char** argv) {
                                   {"rotate", {0, 30, 0}}}}},
                                {"obstacles", {{{"surface", argv[1]}, {"friction", 0.4}}}}};
   SceneRun run = loadScene(parseScene(json, "contact_bench", "."));
-  run.request.settings.solver = SolverKind::ConjugateGradient;  // (the same solver in both)
+  // (The same solver in both: cg, or multigrid-preconditioned cg.)
+  const bool multigrid = argc > 3 && std::string(argv[3]) == "multigrid";
+  run.request.settings.solver = multigrid ? SolverKind::Multigrid : SolverKind::ConjugateGradient;
   const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
   const TetMesh level = extractLevel(run.dataset.mesh, run.level);
   const SurfaceMesh& bowl = run.request.settings.obstacles.front().shape->surface();
   std::printf(
       "contact_bench: level %d (%lld tetrahedra, %lld nodes), skin %lld vertices, "
-      "obstacle %lld triangles, %d threads, cg\n",
+      "obstacle %lld triangles, %d threads, %s\n",
       run.level, static_cast<long long>(level.elementCount()),
       static_cast<long long>(level.nodeCount()),
       static_cast<long long>(run.surface->surface.vertexCount()),
       static_cast<long long>(bowl.triangleCount()),
-      static_cast<int>(tbb::info::default_concurrency()));
+      static_cast<int>(tbb::info::default_concurrency()), multigrid ? "multigrid" : "cg");
 
   // The run with contact, settled a while; then the same steps from the
   // same state with no obstacle. The two runs step by turns, so that the
