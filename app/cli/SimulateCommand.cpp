@@ -39,6 +39,10 @@ struct SimulateArgs {
       pieces = static_cast<int>(kPiecesOption.defaultValue);
   RunArgs run;
   bool quiet = false, printRun = false;
+  bool staticOnly = false;  // --static
+  // --initial equilibrium (or --static): start from the static equilibrium
+  bool equilibrium() const { return staticOnly || initial == kEquilibrium; }
+  static constexpr const char* kEquilibrium = "equilibrium";
 };
 
 // (Checked before any work, as a typo would be.)
@@ -52,7 +56,17 @@ void checkOptions(const SimulateArgs& a, const CLI::App& cmd) {
     requireNotAnInput(a.log, {a.dataset, a.surface, a.initial, a.output});
     requireWritableLocation(a.log);  // before the run, not after it
   }
-  if (!a.initial.empty()) {
+  if (a.staticOnly && !a.initial.empty() && a.initial != SimulateArgs::kEquilibrium)
+    throw Error(
+        "--static solves for the equilibrium from the scenario's start: it takes no "
+        "--initial frame");
+  if (a.staticOnly && givenName(cmd, recording_option::kSteps))
+    throw Error("--static writes the equilibrium alone: it takes no --steps");
+  if (!a.initial.empty() && !a.equilibrium()) {
+    if (!std::filesystem::is_regular_file(a.initial))
+      throw Error(a.initial.string(), 0,
+                  "no such frame (--initial takes a frame file or "
+                  "\"equilibrium\")");
     // The frame replaces the scenario's start; its folder is not the one
     // this run writes, where frame 0 would overwrite it.
     std::error_code error;
@@ -215,7 +229,8 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
     return;
   }
   SimulationSession session(dataset.mesh, spec);
-  if (!a.initial.empty()) session.startFromFrame(a.initial);  // (drop's lift too)
+  if (!a.initial.empty() && !a.equilibrium())
+    session.startFromFrame(a.initial);  // (drop's lift too)
   for (const std::string& warning : session.takeWarnings(OptionNames::Flags))
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   // The bound surface, if any, follows every frame (frame 0 too: the
@@ -223,6 +238,20 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
   if (in.surface)
     session.bindSurface(std::move(in.surface->first), std::move(in.surface->second),
                         in.datasetName);
+  if (a.equilibrium()) {
+    // (With the surface bound: the skin meets the floor and obstacles.)
+    const StaticStats stats = session.solveStatic();
+    std::printf(
+        "static equilibrium: %d Newton iterations (%d linear), largest force left %s N "
+        "(largest load %s N)\n",
+        stats.iterations, stats.linearIterations, formatNumber(stats.residual).c_str(),
+        formatNumber(stats.load).c_str());
+    if (!stats.converged)
+      std::fprintf(stderr,
+                   "warning: the static solve stopped short of its tolerance (1e-08 of the "
+                   "largest load); the run starts from the best positions it found\n");
+  }
+  if (a.staticOnly) a.steps = 0;
   session.record(a.output, a.pieces);
   // --log: the start and every step, written at the end (and by a run cut
   // short, with the steps before it).
@@ -276,8 +305,12 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option(kLevelOption.flag, a->level, kLevelOption.help)->check(anyWholeNumber());
   cmd->add_option("--initial", a->initial,
                   "start from a frame a run of this level wrote (RUN_frames/control_N.vtu): its "
-                  "positions and velocities replace the scenario's start; time starts at 0")
-      ->check(CLI::ExistingFile);
+                  "positions and velocities replace the scenario's start; time starts at 0; or "
+                  "\"equilibrium\": from the static equilibrium under the scenario's loads and "
+                  "held nodes (Newton's method from the scenario's start)");
+  cmd->add_flag("--static", a->staticOnly,
+                "solve for the static equilibrium (as --initial equilibrium) and write it as the "
+                "run's only frame; prints the Newton iterations and the force left");
   addRunOptions(*cmd, a->run);
   addPrintRunFlag(*cmd, a->printRun);
   cmd->add_option("--surface", a->surface,
@@ -287,7 +320,7 @@ void addSimulateCommand(CLI::App& app) {
   addNumberOption(*cmd, kPiecesOption, a->pieces);
   cmd->add_option("--log", a->log,
                   "also write every step to this table (.csv): time, solver, iterations, "
-                  "residual, floor contacts, the step's times by stage, kinetic, elastic and "
+                  "residual, contacts, the step's times by stage, kinetic, elastic and "
                   "gravitational energy")
       ->check(fileEnding(".csv"));
   cmd->add_flag("-q,--quiet", a->quiet, "no progress on stderr");

@@ -380,3 +380,20 @@ tetskin_cli_test(simulate_old_flag_warns
 tetskin_cli_test(simulate_old_and_new_flag FAIL STATUS 1
   STDERR "^error: --alpha: is the same option as --mass-damping: give one\n$"
   ARGS simulate ${data}/bunny.json --mass-damping 0.3 --alpha 0.25 --print-run)
+# --static: the bunny under gravity, its base held (sag), solved for its
+# equilibrium and written as the run's only frame; --initial equilibrium
+# starts a run there. --static takes no --steps.
+tetskin_cli_test(simulate_static
+  STDOUT "static equilibrium: [0-9]+ Newton iterations .[0-9]+ linear., largest force left [^ ]+ N .largest load [^ ]+ N.\n.*wrote [^\n]*static.pvd .1 frames?."
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --static -o ${cli_out}/static.pvd -q)
+tetskin_cli_test(simulate_initial_equilibrium
+  STDOUT "static equilibrium: [0-9]+ Newton iterations.*wrote [^\n]*from_static.pvd .4 frames."
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --initial equilibrium --steps 3 -o ${cli_out}/from_static.pvd -q)
+tetskin_cli_test(simulate_static_with_steps FAIL STATUS 1
+  STDERR "^error: --static writes the equilibrium alone: it takes no --steps\n$"
+  NOT_EXIST ${cli_out}/static_steps.pvd
+  ARGS simulate ${data}/bunny.json --static --steps 3 -o ${cli_out}/static_steps.pvd)
+tetskin_cli_test(simulate_static_free_body FAIL STATUS 1
+  STDERR "^error: there is no static equilibrium: the body is free .no held node, floor or obstacle. under a net load of [^ ]+ N. hold nodes or add a floor\n$"
+  NOT_EXIST ${cli_out}/static_free.pvd
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base-share 0 --static -o ${cli_out}/static_free.pvd)

@@ -55,6 +55,32 @@ def test_a_free_body_falls_and_fixed_nodes_stay(bunny):
     assert sim.fixed_nodes == [0, 5]
 
 
+def test_solve_static_rests_the_bunny_on_its_held_base(bunny):
+    # The bundled bunny's finest level under gravity, its base held: the
+    # static solve converges, and a run started there stays at rest (under
+    # 1e-6 of the body's size per second over 1 s).
+    sim = tetskin.Simulation(bunny, scenario="sag")
+    rest = sim.positions
+    stats = sim.solve_static()
+    assert stats["converged"] and stats["residual"] <= 1e-8 * stats["load"], stats
+    assert stats["iterations"] >= 1 and stats["linear_iterations"] > 0
+    sagged = sim.positions
+    assert sagged[:, 1].mean() < rest[:, 1].mean()  # it sagged
+    assert np.abs(sim.velocities).max() == 0 and sim.time == 0
+    size = np.linalg.norm(rest.max(axis=0) - rest.min(axis=0))
+    fastest = 0.0
+    while sim.time < 1.0:
+        sim.step()
+        fastest = max(fastest, np.linalg.norm(sim.velocities, axis=1).max())
+    assert fastest < 1e-6 * size, fastest
+
+
+def test_solve_static_refuses_a_free_body_under_gravity(bunny):
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag", base_share=0)
+    with pytest.raises(tetskin.Error, match="there is no static equilibrium: the body is free"):
+        sim.solve_static()
+
+
 def test_the_default_run_is_every_front_ends(bunny):
     # No scenario and no solver: the run request's defaults, those of
     # `tetskin simulate` and the GUI: wobble (its base held), solver auto.

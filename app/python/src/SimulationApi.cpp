@@ -78,6 +78,22 @@ py::object step(Object& s, int n) {
   return statsDict(stats, s.session->lastStepSeconds());
 }
 
+py::dict solveStatic(Object& s) {
+  StaticStats stats;
+  {
+    py::gil_scoped_release unlocked;
+    std::lock_guard lock(s.changing);
+    stats = s.session->solveStatic();
+  }
+  py::dict d;
+  d["converged"] = stats.converged;
+  d["iterations"] = stats.iterations;
+  d["linear_iterations"] = stats.linearIterations;
+  d["residual"] = stats.residual;
+  d["load"] = stats.load;
+  return d;
+}
+
 void setRows(Object& s, py::handle value, const char* name, bool positions) {
   const Points3 rows = points3(value, name);
   if (rows.rows() != s.nodeCount())
@@ -129,6 +145,13 @@ void addSimulationApi(py::module_& m) {
       .def("step", &step, py::arg("n") = 1,
            "Takes n implicit steps (without the GIL); returns the last one's statistics "
            "(solver, iterations, residual, contacts, seconds by stage).")
+      .def("solve_static", &solveStatic,
+           "Moves the body to its static equilibrium under the scenario's loads, gravity, held "
+           "nodes, floor and obstacles (Newton's method from the present positions; velocities "
+           "become zero, time stays); returns converged, iterations, linear_iterations, "
+           "residual (N, the largest force left on a free node) and load (N, the largest load "
+           "on one). Raises tetskin.Error when there is no equilibrium (a free body under a "
+           "net load).")
       .def_property_readonly(
           "time", [](const Object& s) { return s.session->simulation().time(); },
           "seconds simulated")

@@ -65,6 +65,11 @@ const BoundSurface& SimulationSession::deformedSurface(const Points3& positions)
   return *bound_;
 }
 
+StaticStats SimulationSession::solveStatic() {
+  scenario_->beforeStep(*simulation_, simulation_->time());
+  return simulation_->solveStatic();
+}
+
 StepStats SimulationSession::step(const Points3* extraForces) {
   const auto start = std::chrono::steady_clock::now();
   scenario_->beforeStep(*simulation_, simulation_->time());

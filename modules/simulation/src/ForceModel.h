@@ -15,7 +15,9 @@
 // contact model is a new class here and one line where Simulation builds
 // its list (doc/dev/extending.md).
 
+#include <memory>
 #include <string_view>
+#include <vector>
 
 #include "tetskin/core/Types.h"
 #include "tetskin/simulation/Simulation.h"
@@ -29,6 +31,9 @@ struct StepState {
   const Eigen::VectorXd& v;
   double h;
   double t = 0;
+  // A static solve's Newton system (Simulation::solveStatic): the world
+  // stands still at t, and moving obstacles do not move over h.
+  bool still = false;
 };
 
 // The step's system A dv = b as the models build it. `diagonal` starts as
@@ -94,5 +99,16 @@ class ForceModel {
   // Its terms of a coarse operator of a step of length h.
   virtual void addCoarseTerms(double /*h*/, CoarseDiscretization&) const {}
 };
+
+// The sum of `models`' forces at (x, v) (addForceAt; of the contacts only,
+// if `contactsOnly`).
+inline Eigen::VectorXd sumOfForces(const std::vector<std::unique_ptr<ForceModel>>& models,
+                                   const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                   bool contactsOnly = false) {
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
+  for (const auto& model : models)
+    if (!contactsOnly || model->isContact()) model->addForceAt(x, v, force);
+  return force;
+}
 
 }  // namespace tetskin

@@ -3,13 +3,13 @@
 
 namespace tetskin {
 
-ImplicitEuler::ImplicitEuler(double timeStep, const Eigen::VectorXd& mass)
-    : h_(timeStep), mass_(mass) {}
+ImplicitEuler::ImplicitEuler(double timeStep, const Eigen::VectorXd& mass, bool still)
+    : h_(timeStep), mass_(mass), still_(still) {}
 
 int ImplicitEuler::assemble(const ForceModels& models, double t, const Eigen::VectorXd& x,
                             const Eigen::VectorXd& v, const Eigen::VectorXd& external,
                             SparseMatrix& A, Eigen::VectorXd& b) {
-  const StepState at{x, v, h_, t};
+  const StepState at{x, v, h_, t, still_};
   system_.diagonal = mass_;
   system_.hasSprings = false;
   system_.force = external;

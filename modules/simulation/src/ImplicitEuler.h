@@ -23,8 +23,9 @@ using ForceModels = std::vector<std::unique_ptr<ForceModel>>;
 class ImplicitEuler {
  public:
   // Steps of `timeStep` seconds for a body of lumped `mass` (per dof; it
-  // outlives the integrator).
-  ImplicitEuler(double timeStep, const Eigen::VectorXd& mass);
+  // outlives the integrator). `still`: the steps of a static solve, in a
+  // world that stands still (StepState::still).
+  ImplicitEuler(double timeStep, const Eigen::VectorXd& mass, bool still = false);
 
   double timeStep() const { return h_; }
 
@@ -48,6 +49,7 @@ class ImplicitEuler {
  private:
   double h_;
   const Eigen::VectorXd& mass_;
+  bool still_;
   StepSystem system_;
 };
 

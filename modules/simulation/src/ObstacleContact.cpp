@@ -157,7 +157,8 @@ void ObstacleContact::findContacts(const Eigen::VectorXd& x, double t, double h,
 int ObstacleContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
   t_ = at.t;
-  findContacts(at.x, at.t, at.h, contacts_, search_, &clearance_);
+  // (In a still world the obstacles' surfaces do not move over the step.)
+  findContacts(at.x, at.t, at.still ? 0.0 : at.h, contacts_, search_, &clearance_);
   const double h = at.h;
   for (const Contact& c : contacts_) {
     const Point& point = points_[static_cast<std::size_t>(c.point)];

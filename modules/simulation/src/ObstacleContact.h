@@ -89,6 +89,12 @@ class ObstacleContact : public ForceModel {
   void addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                   Eigen::VectorXd& force) const override;
   bool isContact() const override { return true; }
+  // Forgets the last step's contacts and friction (a new start: a static
+  // solve's outcome has none).
+  void forgetStep() {
+    contacts_.clear();
+    frictionForces_.clear();
+  }
 
  private:
   // A point moving as sum w_j x_j of up to four nodes; its spring is

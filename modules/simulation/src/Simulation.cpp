@@ -86,12 +86,8 @@ void validateOptions(const SimulationOptions& o) {
 Eigen::VectorXd forcesAt(const std::vector<std::unique_ptr<ForceModel>>& models,
                          const NodeNumbering& numbering, const SimulationState& state,
                          bool contactsOnly) {
-  const Eigen::VectorXd x = numbering.toInternal(state.positions);
-  const Eigen::VectorXd v = numbering.toInternal(state.velocities);
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(x.size());
-  for (const auto& model : models)
-    if (!contactsOnly || model->isContact()) model->addForceAt(x, v, force);
-  return force;
+  return sumOfForces(models, numbering.toInternal(state.positions),
+                     numbering.toInternal(state.velocities), contactsOnly);
 }
 
 }  // namespace

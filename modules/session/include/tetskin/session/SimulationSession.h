@@ -85,6 +85,12 @@ class SimulationSession {
   // The bound surface deformed to `positions` of the level's nodes.
   const BoundSurface& deformedSurface(const Points3& positions);
 
+  // The static equilibrium under the scenario's loads and targets for the
+  // step that starts now (Simulation::solveStatic, with the bound surface
+  // meeting the floor and obstacles): the run rests there, time unchanged.
+  // Throws Error when there is none (a free body under a net load).
+  StaticStats solveStatic();
+
   // One step: the scenario's forces and targets for the step that starts
   // now, `extraForces` (per level node, e.g. the GUI's pull) added, the
   // implicit step; then a log row when the log is kept. Throws Error when

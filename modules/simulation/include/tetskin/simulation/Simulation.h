@@ -274,6 +274,17 @@ struct SolveShortfall {
 std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options,
                      const std::string& multigrid);
 
+// The outcome of a static solve (Simulation::solveStatic). Forces are per
+// node (N): the largest force left on a free node, against the largest
+// load (weight and external force) on one.
+struct StaticStats {
+  bool converged = false;    // residual <= tolerance * load
+  int iterations = 0;        // Newton iterations
+  int linearIterations = 0;  // the linear solver's, over all of them
+  double residual = 0;
+  double load = 0;
+};
+
 // Joules. The gravitational energy is measured from the rest shape where
 // the dataset puts it: the body at rest there has none of the three, any
 // state of a run has the same zero whichever state the run started from
@@ -342,6 +353,21 @@ class Simulation {
   // not finite or beyond kMaxCoordinate, Geometry.h), naming the step and
   // the node; the state is then left as it was.
   StepStats step();
+  // Static equilibrium under the present loads, gravity, held and driven
+  // nodes (at their targets), floor and obstacles (standing at the present
+  // time; friction plays no part): the positions where every free node's
+  // forces balance, by Newton's method on the corotated equations with a
+  // backtracking line search, each Newton system solved by the run's
+  // solver (cg, or multigrid over the solver's own grids). Starts from the
+  // present positions; on return the body rests there (velocities zero,
+  // time unchanged), unless it threw. Stops when the largest force left on
+  // a free node is at most `tolerance` times the largest load on one (or,
+  // with no load, the largest force at the start), or after `maxIterations`
+  // or when four line searches in a row find no decrease (then converged is
+  // false and the best positions found are kept). Throws Error when there
+  // is no equilibrium to find: a free body (no held node, floor or
+  // obstacle) under a net load.
+  StaticStats solveStatic(double tolerance = 1e-8, int maxIterations = 60);
   SimulationState state() const;
   // The state's time and step count alone (state() converts every node's
   // rows to the level's numbering: too much for a caller that wants these).
