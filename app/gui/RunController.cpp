@@ -70,6 +70,7 @@ void RunController::connectDock() {
     reportProblems();
   });
   connect(&dock_, &SimulationDock::resetRequested, this, [this] { reset(); });
+  connect(&dock_, &SimulationDock::equilibriumRequested, this, [this] { solveStatic(); });
   connect(&dock_, &SimulationDock::fromFrameRequested, this, [this] {
     const QString file = window_.interactive() ? QFileDialog::getOpenFileName(
                                                      window_.dialogParent(), "Start from frame", {},
@@ -88,6 +89,29 @@ void RunController::connectDock() {
             : "";
     if (file.isEmpty() || !startRecording(file)) dock_.showRecording(false);
   });
+}
+
+void RunController::solveStatic() {
+  if (!runner_) return;
+  showPlaying(false);
+  StaticStats stats;
+  try {
+    stats = runner_->solveStatic();
+  } catch (const std::exception& e) {
+    window_.fail(QString::fromStdString(e.what()));
+    return;
+  }
+  showLatestState();
+  const QString summary =
+      QString(
+          "static equilibrium: %1 Newton iterations, largest force left %2 N (largest load %3 N)")
+          .arg(stats.iterations)
+          .arg(stats.residual, 0, 'g', 3)
+          .arg(stats.load, 0, 'g', 3);
+  if (stats.converged)
+    window_.succeed(summary);
+  else
+    window_.showStatus("warning: " + summary + ", short of its tolerance (1e-08 of the load)");
 }
 
 void RunController::reset() {

@@ -43,6 +43,10 @@ class RunController : public QObject {
   // Ends a recording (a series holds one run) and starts the simulation
   // again from the dock's settings (nothing without a dataset).
   void reset();
+  // Pauses and moves the run to its static equilibrium (the Simulation
+  // dock's Equilibrium), as `simulate --static` does; its iterations and
+  // force left in the status bar, or its error (a free body under gravity).
+  void solveStatic();
   // Resets, then starts from the positions and velocities of a frame of the
   // simulated level, as `simulate --initial` does; a frame of another level
   // or body is refused with its file and changes nothing.

@@ -34,6 +34,10 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   play_->setCheckable(true);
   QPushButton* step = button("Step", "step");
   QPushButton* reset = button("Reset", "reset");
+  QPushButton* equilibrium = button("Equilibrium", "equilibrium");
+  equilibrium->setToolTip(
+      "Pause and move the body to its static equilibrium under the run's loads, gravity, held "
+      "nodes, floor and obstacles (Newton's method; the velocities become zero)");
   QPushButton* fromFrame = button("From frame...", "fromFrame");
   fromFrame->setToolTip(
       "Reset, then start from the positions and velocities of a frame of this level "
@@ -64,6 +68,7 @@ SimulationDock::SimulationDock(Scene& scene, bool interactive, QWidget* parent)
   connect(play_, &QPushButton::toggled, this, [this](bool on) { Q_EMIT playToggled(on); });
   connect(step, &QPushButton::clicked, this, [this] { Q_EMIT stepRequested(); });
   connect(reset, &QPushButton::clicked, this, [this] { Q_EMIT resetRequested(); });
+  connect(equilibrium, &QPushButton::clicked, this, [this] { Q_EMIT equilibriumRequested(); });
   connect(fromFrame, &QPushButton::clicked, this, [this] { Q_EMIT fromFrameRequested(); });
   connect(record_, &QPushButton::toggled, this, [this](bool on) { Q_EMIT recordToggled(on); });
 

@@ -64,6 +64,7 @@ class SimulationDock : public QWidget {
  Q_SIGNALS:
   void playToggled(bool on);
   void stepRequested();
+  void equilibriumRequested();
   void resetRequested();
   void fromFrameRequested();
   void recordToggled(bool on);

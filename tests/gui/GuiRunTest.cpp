@@ -24,6 +24,31 @@ TEST_F(Gui, StepPlayAndResetTheSimulation) {
   EXPECT_EQ((window_->scene().controlNodes() - rest).norm(), 0.0);
 }
 
+// The Simulation dock's Equilibrium moves the wobble's bunny (its base
+// held) to its static equilibrium: sagged, at rest, the time unchanged, the
+// iterations in the status bar; with nothing held there is none, and the
+// error says so.
+TEST_F(Gui, EquilibriumMovesTheBodyToItsStaticEquilibrium) {
+  openSample();
+  ASSERT_NE(window_->runner(), nullptr);
+  const Points3 rest = window_->scene().dataset().mesh.nodes;
+  child<QPushButton>("step")->click();
+  const Points3 shown = window_->scene().controlNodes();
+  child<QPushButton>("equilibrium")->click();
+  EXPECT_TRUE(window_->statusBar()->currentMessage().startsWith("static equilibrium: "))
+      << window_->statusBar()->currentMessage().toStdString();
+  const SimulationState state = window_->runner()->state();
+  EXPECT_EQ(state.velocities.cwiseAbs().maxCoeff(), 0);
+  EXPECT_EQ(state.steps, 1);
+  EXPECT_LT(state.positions.col(1).mean(), rest.col(1).mean());      // sagged under gravity
+  EXPECT_GT((window_->scene().controlNodes() - shown).norm(), 0.0);  // and shown
+  child<QDoubleSpinBox>("baseShare")->setValue(0);
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  child<QPushButton>("equilibrium")->click();
+  EXPECT_TRUE(window_->lastError().startsWith("there is no static equilibrium: the body is free"))
+      << window_->lastError().toStdString();
+}
+
 // A step that blows up (a load of 1e40 N) pauses the simulation with the
 // simulation's message, whether stepped or playing; the state stays the last
 // good one and the window goes on (the exception used to leave the

@@ -31,6 +31,12 @@ void SimulationRunner::step() {
   if (!playing_) stepOnce();
 }
 
+StaticStats SimulationRunner::solveStatic() {
+  playing_ = false;
+  std::lock_guard<std::mutex> lock(stepMutex_);
+  return session_.solveStatic();
+}
+
 Index SimulationRunner::steps() const {
   return session_.simulation().steps();
 }

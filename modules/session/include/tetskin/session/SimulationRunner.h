@@ -40,6 +40,9 @@ class SimulationRunner {
   bool playing() const { return playing_; }
   // One step now (waits for it); only while paused.
   void step();
+  // Pauses, waits for a step in progress, and moves the run to its static
+  // equilibrium (SimulationSession::solveStatic); throws its Error.
+  StaticStats solveStatic();
   Index steps() const;
   SimulationState state() const { return session_.state(); }
   Simulation& simulation() { return session_.simulation(); }
