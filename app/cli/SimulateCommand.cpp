@@ -248,8 +248,9 @@ void run(SimulateArgs& a, const CLI::App& cmd) {
         formatNumber(stats.load).c_str());
     if (!stats.converged)
       std::fprintf(stderr,
-                   "warning: the static solve stopped short of its tolerance (1e-08 of the "
-                   "largest load); the run starts from the best positions it found\n");
+                   "warning: the static solve stopped short of its tolerance (%s of the largest "
+                   "load); the run starts from the best positions it found\n",
+                   formatNumber(kStaticTolerance).c_str());
   }
   if (a.staticOnly) a.steps = 0;
   session.record(a.output, a.pieces);

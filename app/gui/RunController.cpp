@@ -111,7 +111,8 @@ void RunController::solveStatic() {
   if (stats.converged)
     window_.succeed(summary);
   else
-    window_.showStatus("warning: " + summary + ", short of its tolerance (1e-08 of the load)");
+    window_.showStatus("warning: " + summary + ", short of its tolerance (" +
+                       QString::fromStdString(formatNumber(kStaticTolerance)) + " of the load)");
 }
 
 void RunController::reset() {

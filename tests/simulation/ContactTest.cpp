@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "Shapes.h"
@@ -214,6 +216,17 @@ SkinnedBlock skinnedBlock(double base) {
   return b;
 }
 
+// `body` run for `steps` steps under `options`, its skin colliding: the run
+// and each step's contacts.
+std::pair<std::unique_ptr<Simulation>, std::vector<int>> runSkinned(
+    const SkinnedBlock& body, const SimulationOptions& options, int steps) {
+  auto sim = std::make_unique<Simulation>(body.dataset, 0, options);
+  sim->setContactSkin(body.skin, body.binding);
+  std::vector<int> contacts;
+  for (int i = 0; i < steps; ++i) contacts.push_back(sim->step().contacts);
+  return {std::move(sim), contacts};
+}
+
 TEST(ObstacleContact, TheSkinCollidesThroughItsBinding) {
   const SkinnedBlock body = skinnedBlock(0.012);
   const MultiLevelTetMesh& dataset = body.dataset;
@@ -269,11 +282,7 @@ TEST(ObstacleContact, TheClearanceOfAStaticObstacleSkipsNoContact) {
       end.time = 10;
       options.obstacles[0].motion = {start, end};
     }
-    auto sim = std::make_unique<Simulation>(body.dataset, 0, options);
-    sim->setContactSkin(body.skin, body.binding);
-    std::vector<int> contacts;
-    for (int i = 0; i < 120; ++i) contacts.push_back(sim->step().contacts);
-    return std::make_pair(std::move(sim), contacts);
+    return runSkinned(body, options, 120);
   };
   const auto [cached, cachedContacts] = run(false);
   const auto [full, fullContacts] = run(true);
@@ -334,11 +343,7 @@ TEST(FloorObstacle, TheFloorActsAsASlabAndTheSkinRestsOnIt) {
     } else {
       options.obstacles = {slab(0.5, 0.5)};
     }
-    auto sim = std::make_unique<Simulation>(body.dataset, 0, options);
-    sim->setContactSkin(body.skin, body.binding);
-    std::vector<int> contacts;
-    for (int i = 0; i < 300; ++i) contacts.push_back(sim->step().contacts);
-    return std::make_pair(std::move(sim), contacts);
+    return runSkinned(body, options, 300);
   };
   const auto [onFloor, floorContacts] = run(true);
   const auto [onSlab, slabContacts] = run(false);

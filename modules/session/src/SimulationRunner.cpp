@@ -32,7 +32,7 @@ void SimulationRunner::step() {
 }
 
 StaticStats SimulationRunner::solveStatic() {
-  playing_ = false;
+  pause();
   std::lock_guard<std::mutex> lock(stepMutex_);
   return session_.solveStatic();
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "BodyModels.h"
 
+#include <algorithm>
+
 #include "ElasticForce.h"
 #include "Gravity.h"
 #include "MassDamping.h"
@@ -27,9 +29,13 @@ BodyModels bodyModels(CorotatedFem& fem, const SimulationOptions& options) {
     // Contacts are looked for within a twentieth of the body's size: far
     // deeper than the automatic stiffness lets a node sink.
     Points3 rest = Eigen::Map<const Points3>(fem.restPositions().data(), fem.nodeCount(), 3);
-    auto contact = std::make_unique<ObstacleContact>(std::move(obstacles), fem.lumpedMass(),
-                                                     ObstacleContact::automaticStiffness(fem),
-                                                     0.05 * boundingBox(rest).diagonal());
+    // (The automatic stiffness costs an element pass: only when one asks.)
+    const bool automatic = std::any_of(obstacles.begin(), obstacles.end(),
+                                       [](const Obstacle& o) { return o.stiffness == 0; });
+    auto contact = std::make_unique<ObstacleContact>(
+        std::move(obstacles), fem.lumpedMass(),
+        automatic ? ObstacleContact::automaticStiffness(fem) : 0.0,
+        0.05 * boundingBox(rest).diagonal());
     body.obstacles = contact.get();
     body.models.push_back(std::move(contact));
   }

@@ -24,6 +24,13 @@ void ElasticForce::addMatrix(const StepState& at, StepSystem& system) {
   system.force += force_;
 }
 
+double stiffestRestDiagonal(CorotatedFem& fem) {
+  Eigen::VectorXd force;
+  SparseMatrix stiffness = fem.pattern();
+  fem.update(fem.restPositions(), force, stiffness);
+  return stiffness.diagonal().maxCoeff();
+}
+
 void ElasticForce::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                               Eigen::VectorXd& force) const {
   force += fem_.dampedElasticForce(x, v, beta_);

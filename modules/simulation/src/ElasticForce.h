@@ -29,4 +29,9 @@ class ElasticForce : public ForceModel {
   Eigen::VectorXd force_;  // the element pass's
 };
 
+// The largest diagonal entry of `fem`'s stiffness at its rest positions (an
+// element pass): the scale of the body's stiffness that the contacts'
+// automatic stiffness and the static solve's regularization are set by.
+double stiffestRestDiagonal(CorotatedFem& fem);
+
 }  // namespace tetskin

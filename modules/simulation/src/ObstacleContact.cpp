@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "ElasticForce.h"
 #include "tetskin/core/Parallel.h"
 
 namespace tetskin {
@@ -23,10 +24,7 @@ ObstacleContact::ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::V
 }
 
 double ObstacleContact::automaticStiffness(CorotatedFem& fem) {
-  Eigen::VectorXd force;
-  SparseMatrix stiffness = fem.pattern();
-  fem.update(fem.restPositions(), force, stiffness);
-  return 100.0 * stiffness.diagonal().maxCoeff();
+  return 100.0 * stiffestRestDiagonal(fem);
 }
 
 void ObstacleContact::setSkin(std::unique_ptr<SurfaceDeformer> deformer,

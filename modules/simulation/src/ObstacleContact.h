@@ -50,7 +50,7 @@ class ObstacleContact : public ForceModel {
  public:
   // `obstacles` checked by the caller (obstacleProblem, in Simulation's
   // option check); a stiffness of 0 becomes
-  // `automaticStiffness`. `mass` (lumped, per dof) outlives the model;
+  // `automaticStiffness` (unused when none has 0). `mass` (lumped, per dof) outlives the model;
   // `searchRadius` (model units) > 0. The control nodes are the contact
   // points until setSkin.
   ObstacleContact(std::vector<Obstacle> obstacles, const Eigen::VectorXd& mass,

@@ -17,7 +17,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "ElasticForce.h"
 #include "ImplicitEuler.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
@@ -75,11 +77,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   // diagonal at rest (a millionth kept a cantilever's first dozen steps
   // little more than steps of its dynamics); ten times longer after each
   // full Newton step, up to where M / h^2 is 1e-16 of it.
-  SparseMatrix A = fem_.pattern();
-  Eigen::VectorXd force;
-  fem_.update(fem_.restPositions(), force, A);
-  const double stiffest = A.diagonal().maxCoeff();
-  double h = std::sqrt(mass.maxCoeff() / (1e-10 * stiffest));
+  double h = std::sqrt(mass.maxCoeff() / (1e-10 * stiffestRestDiagonal(fem_)));
   const double longest = 1e3 * h;
   // Driven nodes start on their targets: their elastic pull is part of the
   // first residual.
@@ -101,11 +99,18 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
 
   StaticStats stats;
   stats.load = largestFree(load, held);
+  SparseMatrix A = fem_.pattern();
   Eigen::VectorXd b, dv = rest, trial;
-  ImplicitEuler first(h, mass, true);
-  first.assemble(models_, t, x, rest, external, A, b);  // (also poses the contacts at t)
+  // The Newton system at x with the present h (its assembly also poses the
+  // contacts at t, which the residual's contact forces read).
+  std::optional<ImplicitEuler> newton;
+  const auto assemble = [&] {
+    newton.emplace(h, mass, true);
+    newton->assemble(models_, t, x, rest, external, A, b);
+  };
+  assemble();
   SolverStack solvers(MultiLevelTetMesh{}, 0, internal_, linear,
-                      first.coarseDiscretization(models_), "the static solve");
+                      newton->coarseDiscretization(models_), "the static solve");
   solvers.setFixedNodes(held);
   Eigen::VectorXd r = residual(x);
   const double scale = std::max(stats.load, largestFree(r, held));
@@ -114,12 +119,11 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   int failures = 0;  // line searches in a row that found no decrease
   while (!stats.converged && stats.iterations < maxIterations && failures < 4) {
     ++stats.iterations;
-    ImplicitEuler newton(h, mass, true);
-    newton.assemble(models_, t, x, rest, external, A, b);
+    if (stats.iterations > 1) assemble();  // (x or h changed since: the first is assembled)
     StepStats ignored;
     dv.setZero();
     stats.linearIterations +=
-        solvers.solve(A, b, dv, stats.iterations - 1, {&x, newton.springs()}, ignored).iterations;
+        solvers.solve(A, b, dv, stats.iterations - 1, {&x, newton->springs()}, ignored).iterations;
     const Eigen::VectorXd dx = h * dv;
     // The line search on the energy E, without E itself: the residual is
     // -grad E, so dE/dalpha = -dx . r(x + alpha dx). A step is taken when

@@ -274,6 +274,10 @@ struct SolveShortfall {
 std::string describe(const SolveShortfall& shortfall, const SimulationOptions& options,
                      const std::string& multigrid);
 
+// The static solve's default tolerance: the largest force left on a free
+// node, as a share of the largest load on one.
+inline constexpr double kStaticTolerance = 1e-8;
+
 // The outcome of a static solve (Simulation::solveStatic). Forces are per
 // node (N): the largest force left on a free node, against the largest
 // load (weight and external force) on one.
@@ -367,7 +371,7 @@ class Simulation {
   // false and the best positions found are kept). Throws Error when there
   // is no equilibrium to find: a free body (no held node, floor or
   // obstacle) under a net load.
-  StaticStats solveStatic(double tolerance = 1e-8, int maxIterations = 60);
+  StaticStats solveStatic(double tolerance = kStaticTolerance, int maxIterations = 60);
   SimulationState state() const;
   // The state's time and step count alone (state() converts every node's
   // rows to the level's numbering: too much for a caller that wants these).
