@@ -144,6 +144,9 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
                     : "nodes",
                 totals.contacts, commaSeparated(force.transpose()).c_str());
   }
+  if (const double thickness = sim.skinThickness(); thickness > 0)
+    std::printf("  the skin meets itself: a shell %s thick; at the end %d contacts in all\n",
+                formatNumber(thickness).c_str(), totals.contacts);
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
                 a.steps / std::max(totals.stepSeconds, 1e-12),

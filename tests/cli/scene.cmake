@@ -5,6 +5,10 @@
 tetskin_cli_test(simulate_scene
   STDOUT "scenario free.*\n  1 obstacle met by the skin. at the end [0-9]+ contacts"
   ARGS simulate ${data}/scenes/bunny-in-bowl.json --level 0 --steps 90 -q -o ${cli_out}/scene_run.pvd)
+# A body's skin meeting itself: the run says so, with its shell's thickness.
+tetskin_cli_test(simulate_scene_self_contact
+  STDOUT "\n  the floor met by the skin[^\n]*\n  the skin meets itself: a shell 0.05 thick. at the end [0-9]+ contacts in all\n"
+  ARGS simulate ${tdata}/scenes/self_contact.json --steps 20 -q -o ${cli_out}/self_contact.pvd)
 # The command line's options over the scene's values; the rest the scene's.
 tetskin_cli_test(simulate_scene_overrides
   STDOUT "\"dataset\": \"[^,]*bunny.json\".*\"level\": 0,.*\"contact_points\": \"skin\".*\"friction\": 0.3,.*\"obstacles\": .*\"kinetic_friction\": 0.4,.*\"time_step\": 0.01.*\"scenario\": \"free\""

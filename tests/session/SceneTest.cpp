@@ -99,6 +99,42 @@ TEST(SceneFile, BadScenesNameTheFileAndTheField) {
   expect([](auto& j) { j["bodies"].push_back(j["bodies"][0]); },
          "/bodies: holds 2 bodies; this TetSkin runs one body per scene");
   expect([](auto& j) { j.erase("bodies"); }, "/bodies: is missing");
+  expect([](auto& j) { j["bodies"][0]["self_contact"] = "yes"; },
+         "/bodies/0/self_contact: must be");
+  expect([](auto& j) { j["skin_contact"]["thickness"] = -0.1; }, "/skin_contact/thickness:");
+  expect(
+      [](auto& j) {
+        j["skin_contact"] = {{"static_friction", 0.2}, {"kinetic_friction", 0.3}};
+      },
+      "/skin_contact/kinetic_friction: must not exceed static_friction");
+  expect([](auto& j) { j["skin_contact"]["range"] = 1; },
+         "/skin_contact/range: is not a known field");
+}
+
+// A body's self_contact and the scene's skin_contact reach the run's
+// SkinCollisions; without them, the defaults (no self-contact).
+TEST(SceneFile, SelfContactAndTheSkinsContactReachTheRun) {
+  nlohmann::json json = sceneJson();
+  const Scene plain = parse(json);
+  EXPECT_FALSE(plain.bodies[0].selfContact);
+  EXPECT_FALSE(plain.skinContact);
+  json["bodies"][0]["self_contact"] = true;
+  json["skin_contact"] = {{"thickness", 0.05}, {"stiffness", 2e4}, {"friction", 0.2}};
+  const Scene scene = parse(json);
+  ASSERT_TRUE(scene.bodies[0].selfContact);
+  EXPECT_TRUE(*scene.bodies[0].selfContact);
+  ASSERT_TRUE(scene.skinContact);
+  EXPECT_EQ(scene.skinContact->thickness, 0.05);
+  EXPECT_EQ(scene.skinContact->stiffness, 2e4);
+  EXPECT_EQ(scene.skinContact->staticFriction, 0.2);
+  EXPECT_EQ(scene.skinContact->kineticFriction, 0.2);
+  const SceneRun run = loadScene(scene);
+  const SkinCollisions& skins = run.request.settings.skinCollisions;
+  EXPECT_TRUE(skins.self);
+  EXPECT_EQ(skins.thickness, 0.05);
+  EXPECT_EQ(skins.stiffness, 2e4);
+  EXPECT_EQ(skins.kineticFriction, 0.2);
+  EXPECT_FALSE(loadScene(plain).request.settings.skinCollisions.self);
 }
 
 TEST(SceneRun, MissingAndOpenFilesAreNamedByTheirField) {

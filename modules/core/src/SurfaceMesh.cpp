@@ -46,6 +46,17 @@ double surfaceArea(const SurfaceMesh& mesh) {
   return area;
 }
 
+double meanEdgeLength(const SurfaceMesh& mesh) {
+  if (mesh.triangleCount() == 0) return 0.0;
+  double sum = 0.0;
+  for (Index t = 0; t < mesh.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k)
+      sum += (mesh.positions.row(mesh.triangles(t, k)) -
+              mesh.positions.row(mesh.triangles(t, (k + 1) % 3)))
+                 .norm();
+  return sum / (3.0 * static_cast<double>(mesh.triangleCount()));
+}
+
 double enclosedVolume(const SurfaceMesh& mesh) {
   if (mesh.vertexCount() == 0) return 0.0;
   // Each triangle spans a tetrahedron with the centroid of the vertices;

@@ -85,6 +85,12 @@ nlohmann::json optionsJson(const SimulationOptions& o) {
           {so::kMaxIterations.key, o.maxIterations},
           {"custom_preconditioner", static_cast<bool>(o.preconditioner)},
           {so::kContactPoints.key, toString(o.contactPoints)},
+          {"skin_collisions",
+           {{"self", o.skinCollisions.self},
+            {"thickness", o.skinCollisions.thickness},
+            {"stiffness", o.skinCollisions.stiffness},
+            {"static_friction", o.skinCollisions.staticFriction},
+            {"kinetic_friction", o.skinCollisions.kineticFriction}}},
           {"obstacles", obstaclesJson(o.obstacles)}};
 }
 

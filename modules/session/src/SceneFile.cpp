@@ -64,8 +64,8 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   SceneBody body;
   body.dataset = pathField(f, "dataset", directory);
   for (const char* key : {"level", "surface", "velocity", "held_box", "material", "scenario",
-                          simulation_option::kContactPoints.key, "fixed_nodes", "loads",
-                          "load_curve", "load_seconds"})
+                          simulation_option::kContactPoints.key, "self_contact", "fixed_nodes",
+                          "loads", "load_curve", "load_seconds"})
     f.optional(key);
   if (f.has("level")) body.level = static_cast<int>(f.integer("level", -1000000, 1000000));
   if (f.has("surface")) body.surface = pathField(f, "surface", directory);
@@ -94,12 +94,30 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   }
   if (f.has(simulation_option::kContactPoints.key))
     body.contactPoints = enumField<ContactPoints>(f, simulation_option::kContactPoints.key);
+  if (f.has("self_contact")) body.selfContact = f.boolean("self_contact");
   if (f.has("fixed_nodes")) body.fixedNodes = pathField(f, "fixed_nodes", directory);
   if (f.has("loads")) body.loads = pathField(f, "loads", directory);
   if (f.has("load_curve")) body.loadCurve = pathField(f, "load_curve", directory);
   if (f.has("load_seconds")) body.loadSeconds = schemaNumber(f, scenario_option::kLoadSeconds);
   f.rejectUnknown();
   return body;
+}
+
+// "friction" (both coefficients), or "static_friction" and
+// "kinetic_friction" (mu_k <= mu_s), over the defaults passed in.
+void readFriction(const JsonFields& f, double& staticFriction, double& kineticFriction) {
+  if (f.has("friction")) {
+    if (f.has("static_friction") || f.has("kinetic_friction"))
+      f.fail(f.where("friction"),
+             "give friction, or static_friction and kinetic_friction, not both");
+    staticFriction = kineticFriction = f.number("friction", 0, kLargest);
+  }
+  if (f.has("static_friction")) staticFriction = f.number("static_friction", 0, kLargest);
+  if (f.has("kinetic_friction")) kineticFriction = f.number("kinetic_friction", 0, kLargest);
+  if (kineticFriction > staticFriction)
+    f.fail(f.where("kinetic_friction"), "must not exceed static_friction (" +
+                                            formatNumber(staticFriction) + "), found " +
+                                            formatNumber(kineticFriction));
 }
 
 SceneObstacle readObstacle(const json& value, const std::string& pointer, const std::string& file,
@@ -111,18 +129,7 @@ SceneObstacle readObstacle(const json& value, const std::string& pointer, const 
   o.placement = readPlacement(f);
   for (const char* key : {"friction", "static_friction", "kinetic_friction", "stiffness", "motion"})
     f.optional(key);
-  if (f.has("friction")) {
-    if (f.has("static_friction") || f.has("kinetic_friction"))
-      f.fail(f.where("friction"),
-             "give friction, or static_friction and kinetic_friction, not both");
-    o.staticFriction = o.kineticFriction = f.number("friction", 0, kLargest);
-  }
-  if (f.has("static_friction")) o.staticFriction = f.number("static_friction", 0, kLargest);
-  if (f.has("kinetic_friction")) o.kineticFriction = f.number("kinetic_friction", 0, kLargest);
-  if (o.kineticFriction > o.staticFriction)
-    f.fail(f.where("kinetic_friction"), "must not exceed static_friction (" +
-                                            formatNumber(o.staticFriction) + "), found " +
-                                            formatNumber(o.kineticFriction));
+  readFriction(f, o.staticFriction, o.kineticFriction);
   if (f.has("stiffness")) o.stiffness = f.number("stiffness", 0, kLargest);
   if (f.has("motion")) {
     const json& keys = f.get("motion");
@@ -169,7 +176,8 @@ Scene parseScene(const json& root, const std::filesystem::path& file,
                              std::to_string(kSceneFormatVersion) + ")");
   Scene scene;
   scene.file = file;
-  for (const char* key : {"time_step", "steps", "gravity", "up", "floor", "obstacles"})
+  for (const char* key :
+       {"time_step", "steps", "gravity", "up", "floor", "skin_contact", "obstacles"})
     top.optional(key);
   if (top.has("time_step")) scene.timeStep = schemaNumber(top, simulation_option::kTimeStep);
   if (top.has("steps"))
@@ -188,6 +196,18 @@ Scene parseScene(const json& root, const std::filesystem::path& file,
     if (f.has("stiffness")) floor.stiffness = f.number("stiffness", 0, kLargest);
     f.rejectUnknown();
     scene.floor = floor;
+  }
+  if (top.has("skin_contact")) {
+    JsonFields f(top.get("skin_contact"), "/skin_contact", name);
+    SkinCollisions skins;
+    for (const char* key :
+         {"thickness", "stiffness", "friction", "static_friction", "kinetic_friction"})
+      f.optional(key);
+    if (f.has("thickness")) skins.thickness = f.number("thickness", 0, kLargest);
+    if (f.has("stiffness")) skins.stiffness = f.number("stiffness", 0, kLargest);
+    readFriction(f, skins.staticFriction, skins.kineticFriction);
+    f.rejectUnknown();
+    scene.skinContact = skins;
   }
   const json& bodies = top.get("bodies");
   if (!bodies.is_array() || bodies.empty()) top.fail("/bodies", "must be a non-empty array");

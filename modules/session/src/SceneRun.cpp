@@ -128,6 +128,8 @@ SceneRun loadScene(const Scene& scene) {
     if (scene.floor->stiffness) request.settings.floorStiffness = *scene.floor->stiffness;
   }
   if (body.contactPoints) request.settings.contactPoints = *body.contactPoints;
+  if (scene.skinContact) request.settings.skinCollisions = *scene.skinContact;
+  request.settings.skinCollisions.self = body.selfContact.value_or(false);
 
   // One shape per surface file, however often it is placed.
   std::map<std::filesystem::path, std::shared_ptr<const ClosedSurfaceDistance>> shapes;

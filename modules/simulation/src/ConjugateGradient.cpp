@@ -21,12 +21,13 @@
 namespace tetskin {
 namespace {
 
-// The first pass on nodes [first, last): p = z + beta p, q = A z + beta q
-// (q holds A p_old), and the sum of p.q over these nodes.
+// The first pass on nodes [first, last): p = z + beta p, q = A z + Cz +
+// beta q (q holds A p_old; Cz, if given, the coupling springs' C z), and
+// the sum of p.q over these nodes.
 template <bool kAvx2>
 [[gnu::always_inline]] inline double searchDirection(const NodeBlockMatrix& A, Index first,
                                                      Index last, double beta, const double* z,
-                                                     double* p, double* q) {
+                                                     const double* Cz, double* p, double* q) {
   double pq = 0;
   for (Index v = first; v != last; ++v) {
     double product[3];
@@ -37,7 +38,7 @@ template <bool kAvx2>
     for (Index a = 0; a < 3; ++a) {
       const Index i = 3 * v + a;
       p[i] = z[i] + beta * p[i];
-      q[i] = product[a] + beta * q[i];
+      q[i] = product[a] + (Cz ? Cz[i] : 0.0) + beta * q[i];
       pq += p[i] * q[i];
     }
   }
@@ -45,17 +46,18 @@ template <bool kAvx2>
 }
 
 double searchDirectionBaseline(const NodeBlockMatrix& A, Index first, Index last, double beta,
-                               const double* z, double* p, double* q) {
-  return searchDirection<false>(A, first, last, beta, z, p, q);
+                               const double* z, const double* Cz, double* p, double* q) {
+  return searchDirection<false>(A, first, last, beta, z, Cz, p, q);
 }
 
 TETSKIN_AVX2_TARGET double searchDirectionAvx2(const NodeBlockMatrix& A, Index first, Index last,
-                                               double beta, const double* z, double* p, double* q) {
-  return searchDirection<true>(A, first, last, beta, z, p, q);
+                                               double beta, const double* z, const double* Cz,
+                                               double* p, double* q) {
+  return searchDirection<true>(A, first, last, beta, z, Cz, p, q);
 }
 
 using SearchKernel = double (*)(const NodeBlockMatrix&, Index, Index, double, const double*,
-                                double*, double*);
+                                const double*, double*, double*);
 
 }  // namespace
 
@@ -69,7 +71,8 @@ SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Ei
 
 SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
-                             int maxIterations, std::chrono::steady_clock::time_point deadline) {
+                             int maxIterations, std::chrono::steady_clock::time_point deadline,
+                             const CouplingSprings* coupling) {
   SolveStats stats;
   const bool timed = deadline != std::chrono::steady_clock::time_point::max();
   if (b.size() != A.rows()) throw Error("conjugate gradients: the right-hand side does not fit");
@@ -81,6 +84,14 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
   }
   Eigen::VectorXd r(b.size()), z(b.size());
   multiply(A, x, r);
+  // C's products: zero but where the springs touch, which product() writes.
+  if (coupling && coupling->empty()) coupling = nullptr;
+  Eigen::VectorXd Cz;
+  if (coupling) {
+    Cz.setZero(b.size());
+    coupling->product(x.data(), Cz.data());
+    r += Cz;
+  }
   r = b - r;
   stats.relativeResidual = r.norm() / bNorm;
   if (stats.relativeResidual <= tolerance) return stats;
@@ -113,9 +124,12 @@ SolveStats conjugateGradient(const NodeBlockMatrix& A, const Eigen::VectorXd& b,
       --stats.iterations;  // (this one not begun)
       break;
     }
+    if (coupling) coupling->product(z.data(), Cz.data());
     const double pq = chunks.sum(
         [&](Index first, Index last) {
-          return Eigen::Vector3d(search(A, first, last, beta, z.data(), p.data(), q.data()), 0, 0);
+          return Eigen::Vector3d(search(A, first, last, beta, z.data(),
+                                        coupling ? Cz.data() : nullptr, p.data(), q.data()),
+                                 0, 0);
         },
         Eigen::Vector3d::Zero())[0];
     if (!(pq > 0)) break;  // not positive definite along p (should not happen)

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tetskin/core/Types.h"
+#include "tetskin/simulation/CouplingSprings.h"
 #include "tetskin/simulation/Simulation.h"
 
 namespace tetskin {
@@ -42,7 +43,8 @@ struct StepState {
 // which rediscretized coarse operators restrict) and its f - h K v to
 // `force`; the matrix pass then writes A (the elastic model: its pattern
 // with `diagonal` on the diagonal) and adds blocks to it; b = h force,
-// after which the constraints decide their rows.
+// after which the constraints decide their rows. Springs between nodes the
+// pattern does not couple go to `coupling` (their diagonal blocks to A).
 struct StepSystem {
   Eigen::VectorXd diagonal;  // per dof of A: M + h D + h^2 K of the diagonal models
   Eigen::VectorXd springs;   // the springs' share of `diagonal` (sized when hasSprings)
@@ -50,6 +52,7 @@ struct StepSystem {
   Eigen::VectorXd force;  // f - h K v of every model, and the loads (N)
   SparseMatrix* A = nullptr;
   Eigen::VectorXd* b = nullptr;
+  CouplingSprings coupling;  // h^2 s u u^T of such springs, less their diagonal blocks
 
   // Adds a spring's h^2 k at `dof` to the diagonal and to `springs`.
   void addSpring(Index dof, double value) {

@@ -13,6 +13,7 @@ int ImplicitEuler::assemble(const ForceModels& models, double t, const Eigen::Ve
   system_.diagonal = mass_;
   system_.hasSprings = false;
   system_.force = external;
+  system_.coupling.clear();
   system_.A = &A;
   system_.b = &b;
   int contacts = 0;

@@ -38,6 +38,11 @@ class ImplicitEuler {
   // The springs' share of the last assembled diagonal, per dof (null: no
   // spring acted), for rediscretized coarse operators.
   const Eigen::VectorXd* springs() const { return system_.hasSprings ? &system_.springs : nullptr; }
+  // The last assembled system's springs outside the pattern (null: none),
+  // a part of the system the solve must include.
+  const CouplingSprings* coupling() const {
+    return system_.coupling.empty() ? nullptr : &system_.coupling;
+  }
 
   CoarseDiscretization coarseDiscretization(const ForceModels& models) const;
 

@@ -28,7 +28,7 @@ void NodeConstraints::setTargets(std::vector<int> nodes, Points3 targets) {
 }
 
 void NodeConstraints::impose(SparseMatrix& A, Eigen::VectorXd& b, const Eigen::VectorXd& x,
-                             const Eigen::VectorXd& v, double h) {
+                             const Eigen::VectorXd& v, double h, CouplingSprings* coupling) {
   prescribed_.setZero();
   for (std::size_t d = 0; d < fixedDofs_.size(); ++d)
     if (fixedDofs_[d]) prescribed_[static_cast<Index>(d)] = -v[static_cast<Index>(d)];
@@ -39,6 +39,7 @@ void NodeConstraints::impose(SparseMatrix& A, Eigen::VectorXd& b, const Eigen::V
         (target - x.segment<3>(3 * node)) / h - v.segment<3>(3 * node);
   }
   rows_.apply(A, &b, &prescribed_);
+  if (coupling && !coupling->empty()) coupling->eliminate(fixedDofs_, prescribed_, b);
 }
 
 void NodeConstraints::placeOnTargets(Eigen::VectorXd& x) const {

@@ -27,10 +27,11 @@ class NodeConstraints : public ForceModel {
   void setTargets(std::vector<int> nodes, Points3 targets);
 
   // Imposes the conditions of a step of length h from (x, v) on A dv = b.
+  // (`coupling`, if given, loses the held nodes too.)
   void impose(SparseMatrix& A, Eigen::VectorXd& b, const Eigen::VectorXd& x,
-              const Eigen::VectorXd& v, double h);
+              const Eigen::VectorXd& v, double h, CouplingSprings* coupling = nullptr);
   void constrain(const StepState& at, StepSystem& system) override {
-    impose(*system.A, *system.b, at.x, at.v, at.h);
+    impose(*system.A, *system.b, at.x, at.v, at.h, &system.coupling);
   }
   // The driven nodes of a step's outcome exactly on their targets (free of
   // the solve's round-off).

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <utility>
 
+#include "BodyContact.h"
 #include "BodyModels.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
@@ -77,6 +79,18 @@ void validateOptions(const SimulationOptions& o) {
         "\"dataset\"): the solver's grid levels are no body meshes with an FEM of their own");
   for (const Obstacle& obstacle : o.obstacles)
     if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
+  const SkinCollisions& skins = o.skinCollisions;
+  if (!(skins.thickness >= 0) || !std::isfinite(skins.thickness))
+    throw Error("the skins' contact thickness must be finite and >= 0 (0: automatic), got " +
+                formatNumber(skins.thickness));
+  if (!(skins.stiffness >= 0) || !std::isfinite(skins.stiffness))
+    throw Error("the skins' contact stiffness must be finite and >= 0 (0: automatic), got " +
+                formatNumber(skins.stiffness));
+  if (!(skins.kineticFriction >= 0 && skins.staticFriction >= skins.kineticFriction) ||
+      !std::isfinite(skins.staticFriction))
+    throw Error("the skins' friction needs 0 <= kinetic <= static, got static " +
+                formatNumber(skins.staticFriction) + " and kinetic " +
+                formatNumber(skins.kineticFriction));
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
 }
@@ -131,7 +145,8 @@ const SolverChoice* Simulation::solverChoice() const {
   return solvers_->choice();
 }
 
-void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding) {
+void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding,
+                                const std::vector<int>& vertexBodies) {
   if (binding.level != level_)
     throw Error("the contact skin is bound to level " + std::to_string(binding.level) +
                 ", the simulation runs level " + std::to_string(level_));
@@ -149,10 +164,51 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
                     ", which is not of level " + std::to_string(level_));
       internal.controlIds(v, j) = numbering_->internal(static_cast<int>(node));
     }
-  if (!obstacles_) return;
   const Points3 rest = Eigen::Map<const Points3>(fem_.restPositions().data(), fem_.nodeCount(), 3);
-  obstacles_->setSkin(std::make_unique<SurfaceDeformer>(restSkin, internal, rest), internal,
-                      options_.contactPoints);
+  if (obstacles_)
+    obstacles_->setSkin(std::make_unique<SurfaceDeformer>(restSkin, internal, rest), internal,
+                        options_.contactPoints);
+  // The skins against each other and themselves: a model of its own,
+  // replaced by a new skin.
+  std::vector<int> bodies = vertexBodies;
+  if (bodies.empty()) bodies.assign(static_cast<std::size_t>(restSkin.vertexCount()), 0);
+  if (static_cast<Index>(bodies.size()) != restSkin.vertexCount())
+    throw Error("the contact skin has " + std::to_string(restSkin.vertexCount()) +
+                " vertices, its bodies " + std::to_string(bodies.size()));
+  for (Index t = 0; t < restSkin.triangleCount(); ++t) {
+    const auto bodyOf = [&](int k) {
+      return bodies[static_cast<std::size_t>(restSkin.triangles(t, k))];
+    };
+    if (bodyOf(1) != bodyOf(0) || bodyOf(2) != bodyOf(0))
+      throw Error("the contact skin's triangle " + std::to_string(t) +
+                  " joins vertices of different bodies");
+  }
+  if (bodyContact_) {
+    models_.erase(std::find_if(models_.begin(), models_.end(),
+                               [&](const auto& model) { return model.get() == bodyContact_; }));
+    bodyContact_ = nullptr;
+  }
+  const bool several =
+      std::adjacent_find(bodies.begin(), bodies.end(), std::not_equal_to<>()) != bodies.end();
+  const SkinCollisions& settings = options_.skinCollisions;
+  if (!several && !settings.self) return;
+  double thickness = settings.thickness;
+  if (thickness == 0) thickness = meanEdgeLength(restSkin);
+  // (The obstacles' automatic stiffness, shared out over the skin's
+  // vertices as ObstacleContact shares it.)
+  double stiffness = settings.stiffness;
+  if (stiffness == 0)
+    stiffness = ObstacleContact::automaticStiffness(fem_) * static_cast<double>(fem_.nodeCount()) /
+                static_cast<double>(std::max<Index>(1, restSkin.vertexCount()));
+  auto model = std::make_unique<BodyContact>(
+      std::make_unique<SurfaceDeformer>(restSkin, internal, rest), restSkin, internal,
+      std::move(bodies), fem_.lumpedMass(), *constraints_, settings, thickness, stiffness);
+  bodyContact_ = model.get();
+  models_.push_back(std::move(model));
+}
+
+double Simulation::skinThickness() const {
+  return bodyContact_ ? bodyContact_->thickness() : 0.0;
 }
 
 SkinContact Simulation::skinContact(const SimulationState& state) const {
@@ -235,8 +291,8 @@ StepStats Simulation::step() {
   stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
   stats.assemblySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const SolveStats solve =
-      solvers_->solve(system_, rhs_, dv_, steps_, {&x_, integrator_->springs()}, stats);
+  const SolveStats solve = solvers_->solve(
+      system_, rhs_, dv_, steps_, {&x_, integrator_->springs(), integrator_->coupling()}, stats);
   Eigen::VectorXd x, v;
   integrator_->advance(models_, x_, v_, dv_, x, v);
   // The state stays the last one that was fine. (A solve that overflowed
@@ -348,7 +404,7 @@ FrameFields Simulation::frameFields(const SimulationState& state) const {
           reactionForces(state),
           std::move(measures.vonMisesStress),
           std::move(measures.equivalentStrain),
-          obstacles_ ? contactForces(state) : Points3()};
+          obstacles_ || bodyContact_ ? contactForces(state) : Points3()};
 }
 
 }  // namespace tetskin

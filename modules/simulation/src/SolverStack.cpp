@@ -189,7 +189,7 @@ SolverStack::Outcome SolverStack::solveWith(SolverKind solver, const SparseMatri
                     std::chrono::duration<double>(std::max(0.0, budgetSeconds - amortizedSetup)))
           : std::chrono::steady_clock::time_point::max();
   outcome.solve = conjugateGradient(blockSystem_, b, dv, preconditioner, options_.tolerance,
-                                    options_.maxIterations, deadline);
+                                    options_.maxIterations, deadline, at.coupling);
   outcome.solveSeconds = secondsSince(start);
   outcome.amortizedSeconds = amortizedSetup + outcome.solveSeconds;
   return outcome;

@@ -41,9 +41,12 @@ class SolverStack {
 
   // What a rediscretized coarse operator is built at: the step's positions
   // and the springs' share of its diagonal (null: no spring acted).
+  // And the system's springs outside A's pattern (null: none; a part of
+  // the system, which every solver's products include).
   struct StepPoint {
     const Eigen::VectorXd* positions = nullptr;
     const Eigen::VectorXd* springs = nullptr;
+    const CouplingSprings* coupling = nullptr;
   };
   // Solves A dv = b (dv: the last solution on entry, the new one on
   // return) for the step numbered `step` from 0; fills the stats' solver

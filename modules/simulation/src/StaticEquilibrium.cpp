@@ -19,6 +19,7 @@
 #include <cmath>
 #include <optional>
 
+#include "BodyContact.h"
 #include "ElasticForce.h"
 #include "ImplicitEuler.h"
 #include "NodeConstraints.h"
@@ -72,6 +73,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
         "obstacle) under a net load of " +
         commaSeparated(net) + " N; hold nodes or add a floor");
   if (obstacles_) obstacles_->forgetStep();
+  if (bodyContact_) bodyContact_->forgetStep();
 
   // The pseudo time step: M / h^2 first 1e-10 of the stiffest element
   // diagonal at rest (a millionth kept a cantilever's first dozen steps
@@ -122,8 +124,10 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
     if (stats.iterations > 1) assemble();  // (x or h changed since: the first is assembled)
     StepStats ignored;
     dv.setZero();
-    stats.linearIterations +=
-        solvers.solve(A, b, dv, stats.iterations - 1, {&x, newton->springs()}, ignored).iterations;
+    stats.linearIterations += solvers
+                                  .solve(A, b, dv, stats.iterations - 1,
+                                         {&x, newton->springs(), newton->coupling()}, ignored)
+                                  .iterations;
     const Eigen::VectorXd dx = h * dv;
     // The line search on the energy E, without E itself: the residual is
     // -grad E, so dE/dalpha = -dx . r(x + alpha dx). A step is taken when

@@ -18,6 +18,25 @@ AabbTree::AabbTree(std::span<const Aabb> boxes) {
   build(0, 0, static_cast<int>(boxes.size()), centers);
 }
 
+void AabbTree::refit(std::span<const Aabb> boxes) {
+  for (std::size_t slot = 0; slot < boxes_.size(); ++slot)
+    boxes_[slot] = boxes[static_cast<std::size_t>(ids_[slot])];
+  // Children come after their parent (build appends them): from the last
+  // node back, every child is refitted before its parent.
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    Node& node = nodes_[k];
+    Aabb box;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i)
+        box.extend(boxes_[static_cast<std::size_t>(i)]);
+    } else {
+      box.extend(nodes_[static_cast<std::size_t>(node.first)].box);
+      box.extend(nodes_[static_cast<std::size_t>(node.first + 1)].box);
+    }
+    node.box = box;
+  }
+}
+
 void AabbTree::build(int node, int first, int count, std::vector<Eigen::Vector3d>& centers) {
   Aabb box;
   for (int i = first; i < first + count; ++i) box.extend(boxes_[static_cast<std::size_t>(i)]);

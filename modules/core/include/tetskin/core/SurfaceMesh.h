@@ -30,6 +30,9 @@ void validateSurface(const SurfaceMesh& mesh, const std::string& name);
 BoundingBox boundingBox(const SurfaceMesh& mesh);
 // Sum of the triangle areas.
 double surfaceArea(const SurfaceMesh& mesh);
+// The mean length of the triangles' edges (an edge of two triangles
+// counted twice); 0 without triangles.
+double meanEdgeLength(const SurfaceMesh& mesh);
 // Signed volume the surface encloses (divergence theorem over its
 // triangles): positive for a closed surface wound outward, negative for one
 // wound inward; for an open surface it depends on the origin.

@@ -43,6 +43,7 @@ struct SceneBody {
   MaterialOverrides material;                          // over the dataset config's
   std::string scenario = "free";
   std::optional<ContactPoints> contactPoints;  // nullopt: the schema's default
+  std::optional<bool> selfContact;             // nullopt: SkinCollisions' default (off)
   std::optional<std::filesystem::path> fixedNodes, loads, loadCurve;
   std::optional<double> loadSeconds;
 };
@@ -68,6 +69,9 @@ struct Scene {
   std::optional<Eigen::Vector3d> gravity;  // nullopt: standard gravity down the up axis
   std::optional<UpAxis> up;                // nullopt: the dataset config's
   std::optional<SceneFloor> floor;
+  // The skins' contact with each other and themselves (its `self` unused:
+  // each body's self_contact says); nullopt: SkinCollisions' defaults.
+  std::optional<SkinCollisions> skinContact;
   std::vector<SceneBody> bodies;  // one (several bodies are not yet supported)
   std::vector<SceneObstacle> obstacles;
 };

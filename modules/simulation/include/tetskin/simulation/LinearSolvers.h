@@ -12,6 +12,7 @@
 
 #include "tetskin/core/OptionSchema.h"
 #include "tetskin/simulation/CorotatedFem.h"
+#include "tetskin/simulation/CouplingSprings.h"
 #include "tetskin/simulation/NodeBlockMatrix.h"
 
 namespace tetskin {
@@ -190,10 +191,13 @@ class MultigridPreconditioner : public Preconditioner {
 // With a `deadline`, the solve also stops before an iteration that would
 // start after it (stoppedAtDeadline; x is the last iterate): how the
 // automatic solver cuts a trial off (SolverChoice.h).
+// With `coupling`, the system is A + C, C the springs outside A's pattern
+// (CouplingSprings.h): every product adds theirs.
 SolveStats conjugateGradient(
     const NodeBlockMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
     const Preconditioner& preconditioner, double tolerance, int maxIterations,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max(),
+    const CouplingSprings* coupling = nullptr);
 SolveStats conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                              const Preconditioner& preconditioner, double tolerance,
                              int maxIterations);

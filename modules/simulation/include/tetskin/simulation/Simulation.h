@@ -49,6 +49,7 @@ class Preconditioner;
 class ImplicitEuler;
 class NodeConstraints;
 class ObstacleContact;
+class BodyContact;
 class NodeNumbering;
 class SolverStack;
 
@@ -106,6 +107,17 @@ struct EnumSchema<Tangent> {
 };
 
 inline constexpr double kStandardGravity = 9.81;  // m/s^2
+
+// Contact of the skins with each other and with themselves (BodyContact in
+// the module's src): a run's bodies meet skin to skin whenever its contact
+// skin holds several (Simulation::setContactSkin); a body's skin meets
+// itself when `self` is set. The skins are shells `thickness` thick.
+struct SkinCollisions {
+  bool self = false;
+  double thickness = 0;  // model units; 0: the contact skin's mean edge length
+  double stiffness = 0;  // N/m per skin vertex; 0: automatic, as the obstacles'
+  double staticFriction = 0.5, kineticFriction = 0.4;  // mu_s >= mu_k >= 0
+};
 
 // The number options of a run (OptionSchema.h): their keys, flags, ranges
 // and defaults, read by SimulationOptions' defaults, its checks, the
@@ -187,6 +199,7 @@ struct SimulationOptions {
   // springs and Coulomb friction), each checked by obstacleProblem.
   std::vector<Obstacle> obstacles;
   ContactPoints contactPoints = ContactPoints::Skin;
+  SkinCollisions skinCollisions;
   Tangent tangent = Tangent::Full;
   SolverKind solver = SolverKind::ConjugateGradient;
   double tolerance =
@@ -324,7 +337,15 @@ class Simulation {
   // the obstacles where options.contactPoints is skin or both, and
   // skinContact reports on it in any case. Throws Error when the binding
   // is of another level or does not fit the surface.
-  void setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding);
+  // `vertexBodies` numbers each vertex's body (empty: one body): the
+  // bodies' skins meet each other, and each meets itself where
+  // options.skinCollisions.self says (SkinCollisions); throws Error for a
+  // triangle whose corners are of different bodies.
+  void setContactSkin(const SurfaceMesh& restSkin, const SurfaceBinding& binding,
+                      const std::vector<int>& vertexBodies = {});
+  // The skins' contact thickness (model units; 0: the skins meet neither
+  // each other nor themselves).
+  double skinThickness() const;
   // Per vertex of the contact skin at `state`: its penetration into the
   // obstacles and its contact spring's force (arrays::kPenetration,
   // kContactForce); empty without obstacles or a skin.
@@ -414,6 +435,7 @@ class Simulation {
   std::vector<std::unique_ptr<ForceModel>> models_;
   NodeConstraints* constraints_ = nullptr;  // one of models_
   ObstacleContact* obstacles_ = nullptr;    // one of models_ (null: no obstacles)
+  BodyContact* bodyContact_ = nullptr;      // one of models_ (null: skins do not meet)
   std::unique_ptr<ImplicitEuler> integrator_;
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering

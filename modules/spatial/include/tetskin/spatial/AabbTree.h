@@ -27,6 +27,11 @@ class AabbTree {
   explicit AabbTree(std::span<const Aabb> boxes);
 
   bool empty() const { return nodes_.empty(); }
+  // New boxes for the same primitives (one per primitive, in the order
+  // the tree was built with), the hierarchy kept: a deforming surface's
+  // tree refitted each step instead of built anew. Queries stay exact; they
+  // slow down as the primitives move away from where the tree grouped them.
+  void refit(std::span<const Aabb> boxes);
   std::size_t primitiveCount() const { return ids_.size(); }
   const Aabb& bounds() const { return nodes_.front().box; }
 

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Contact of the skins with each other and with themselves, as a force
+// model: the bodies of a run meet skin to skin, and a body folded onto
+// itself keeps its surfaces apart. Skins are a thin shell of `thickness`:
+// a skin vertex p closer than that to a triangle (closest point q,
+// distance d) is pushed out by a penalty spring k (thickness - d) along
+// n = (p - q) / d, and the triangle's corners by its opposite, shared by
+// q's barycentric weights. A vertex that has gone through the triangle
+// (p - q within 60 degrees of the face's inward normal: skins are closed
+// and wound outward) is pushed back: d counts negative and
+// n = (q - p) / |d|. Every
+// point acts on its control nodes
+// through the binding's weights (the normal's turn with an offset vertex
+// left out, as ObstacleContact does). With a_j the weight of node j in
+// p - q (the vertex's weights, less the corners' times q's barycentric
+// ones; they sum to zero, so no contact pushes the bodies' centre of mass),
+// the spring is k u u^T with u = sum_j a_j e_j (x) n: linearized over the
+// step it adds h^2 k u u^T to the system, its diagonal blocks to A and the
+// rest as coupling springs (CouplingSprings.h: the nodes of two bodies
+// share no element, so the pattern has no place for them), and
+// u k (thickness - d - h u.v) to the force. A contact whose spring that
+// would end negative at the step's start velocities is left out of the
+// step: a penalty spring pushes, it never pulls.
+//
+// Coulomb friction after the solve, per contact in turn: the tangential
+// part of the relative velocity sum_j a_j v_j changes by at most
+// mu h f_n / m (m the contact's effective mass, 1 / sum_j a_j^2 / m_j;
+// f_n its spring at the step's end): all of it within mu_s's allowance
+// (sticking), mu_k's share otherwise (sliding). The impulse on node j is
+// a_j times one vector, so it too leaves the momentum as it was.
+//
+// Which pairs: a vertex and a triangle of another body, or of its own body
+// when self-contact is on and the two lie farther apart in the rest shape
+// than kNeighbourhood thicknesses (the vertex's own neighbourhood never
+// touches it). Candidates come from a bounding-box tree over the skin's
+// triangles, built at rest and refitted each step; a vertex takes its
+// closest triangle only.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "ForceModel.h"
+#include "NodeConstraints.h"
+#include "tetskin/core/SurfaceBinding.h"
+#include "tetskin/core/SurfaceMesh.h"
+#include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/spatial/AabbTree.h"
+
+namespace tetskin {
+
+class BodyContact : public ForceModel {
+ public:
+  // Pairs of one body lying closer than this many thicknesses at rest are
+  // a neighbourhood, not a contact.
+  static constexpr double kNeighbourhood = 3;
+
+  // `restSkin` bound by `binding` (ids: the model's node numbers) and
+  // placed by `deformer`; `vertexBody` its vertices' bodies (a number per
+  // vertex); `mass` (lumped, per dof) and `constraints` (whose held nodes
+  // friction leaves alone) outlive the model. `stiffness` is k per vertex
+  // (N/m); `settings` say whether a body's skin meets itself and the
+  // friction.
+  BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const SurfaceMesh& restSkin,
+              const SurfaceBinding& binding, std::vector<int> vertexBody,
+              const Eigen::VectorXd& mass, const NodeConstraints& constraints,
+              const SkinCollisions& settings, double thickness, double stiffness);
+
+  int addForce(const StepState& at, StepSystem& system) override;
+  void addMatrix(const StepState& at, StepSystem& system) override;
+  void project(Eigen::VectorXd& x, Eigen::VectorXd& v) const override;
+  void addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                  Eigen::VectorXd& force) const override;
+  bool isContact() const override { return true; }
+  // Forgets the last step's contacts and friction (a new start).
+  void forgetStep() {
+    contacts_.clear();
+    frictionForces_.clear();
+  }
+
+  double thickness() const { return thickness_; }
+
+ private:
+  static constexpr int kMaxNodes = 16;  // a vertex's four and three corners' four
+  struct Contact {
+    int vertex, triangle;
+    double gap;              // thickness - d at the step's start (> 0)
+    Eigen::Vector3d normal;  // n
+    std::array<CouplingSprings::Entry, kMaxNodes> entries;  // (node, a_j), nodes distinct
+    int count = 0;
+    double start = 0;  // u.x at the step's start
+
+    double along(const Eigen::VectorXd& values) const;
+  };
+  // The contacts at x; `refit` the step's tree (a query at another state
+  // builds its own).
+  void findContacts(const Eigen::VectorXd& x, std::vector<Contact>& out, AabbTree& tree) const;
+
+  std::unique_ptr<SurfaceDeformer> skin_;
+  Triangles triangles_;
+  Points3 restSkin_;
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> controls_;
+  Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor> weights_;
+  int controlsPerVertex_;
+  std::vector<int> body_;
+  const Eigen::VectorXd& mass_;
+  const NodeConstraints& constraints_;
+  bool self_;
+  double thickness_, stiffness_, staticFriction_, kineticFriction_;
+  AabbTree tree_;  // over the triangles, refitted each step
+  double h_ = 0;
+  std::vector<Contact> contacts_;  // of the step being taken
+  // The last step's friction, m_j dv_j / h, on the nodes it acted on.
+  mutable std::vector<std::pair<Index, Eigen::Vector3d>> frictionForces_;
+};
+
+}  // namespace tetskin
