@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "Shapes.h"
@@ -16,6 +18,7 @@
 #include "tetskin/binding/BindSurface.h"
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/BodyUnion.h"
+#include "tetskin/core/Error.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/spatial/Aabb.h"
@@ -131,6 +134,29 @@ TEST(BodyContact, BodiesApartAndABodyAtRestFindNone) {
   Simulation plain(one.mesh, 0, rubberInSpace());
   plain.setContactSkin(one.skin, one.binding);
   EXPECT_EQ(plain.skinThickness(), 0);
+}
+
+// The skins' coefficients are checked as an obstacle's, and thickness
+// too, before a step: each refused with its value.
+TEST(BodyContact, BadSkinCoefficientsAreRefused) {
+  const BodyUnion one = unite({skinnedBlock({0, 0, 0})});
+  const auto refused = [&](const auto& edit, const std::string& what) {
+    SimulationOptions options = rubberInSpace();
+    edit(options.skinCollisions);
+    try {
+      Simulation sim(one.mesh, 0, options);
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused([](SkinCollisions& s) { s.thickness = -1; },
+          "the skins' contact thickness must be finite and >= 0 (0: automatic), got -1");
+  refused([](SkinCollisions& s) { s.stiffness = std::nan(""); },
+          "the skins' contact: the stiffness must be finite and >= 0");
+  refused([](SkinCollisions& s) { s.kineticFriction = 0.6; },
+          "the skins' contact: friction must satisfy 0 <= kinetic <= static, got static 0.5 and "
+          "kinetic 0.6");
 }
 
 // A U lying on its side: a base (x < 0.1) with two prongs along x, 5 cm

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ContactCoefficients.h"
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -42,18 +43,25 @@ Obstacle placedAt(Obstacle obstacle, const ObstaclePose& placement) {
   return obstacle;
 }
 
+std::optional<std::string> contactCoefficientProblem(double staticFriction, double kineticFriction,
+                                                     double stiffness) {
+  if (!(std::isfinite(staticFriction) && std::isfinite(kineticFriction) && kineticFriction >= 0 &&
+        staticFriction >= kineticFriction))
+    return "friction must satisfy 0 <= kinetic <= static, got static " +
+           formatNumber(staticFriction) + " and kinetic " + formatNumber(kineticFriction);
+  if (!(std::isfinite(stiffness) && stiffness >= 0))
+    return "the stiffness must be finite and >= 0 (0: automatic), got " + formatNumber(stiffness);
+  return std::nullopt;
+}
+
 std::optional<std::string> obstacleProblem(const Obstacle& o) {
   const std::string name = o.name.empty() ? std::string("an obstacle") : o.name;
   if (!o.shape && !o.floor) return name + ": no surface";
   if (o.floor && !std::isfinite(o.floor->height))
     return name + ": the height must be finite, got " + formatNumber(o.floor->height);
-  if (!(std::isfinite(o.staticFriction) && std::isfinite(o.kineticFriction) &&
-        o.kineticFriction >= 0 && o.staticFriction >= o.kineticFriction))
-    return name + ": friction must satisfy 0 <= kinetic <= static, got static " +
-           formatNumber(o.staticFriction) + " and kinetic " + formatNumber(o.kineticFriction);
-  if (!(std::isfinite(o.stiffness) && o.stiffness >= 0))
-    return name + ": the stiffness must be finite and >= 0 (0: automatic), got " +
-           formatNumber(o.stiffness);
+  if (const auto problem =
+          contactCoefficientProblem(o.staticFriction, o.kineticFriction, o.stiffness))
+    return name + ": " + *problem;
   const auto poseProblem = [&](const Eigen::Vector3d& translation,
                                const Eigen::Quaterniond& rotation) -> std::optional<std::string> {
     if (!translation.allFinite()) return name + ": the translation must be finite";

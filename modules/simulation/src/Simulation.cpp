@@ -11,6 +11,7 @@
 
 #include "BodyContact.h"
 #include "BodyModels.h"
+#include "ContactCoefficients.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
 #include "ObstacleContact.h"
@@ -83,14 +84,9 @@ void validateOptions(const SimulationOptions& o) {
   if (!(skins.thickness >= 0) || !std::isfinite(skins.thickness))
     throw Error("the skins' contact thickness must be finite and >= 0 (0: automatic), got " +
                 formatNumber(skins.thickness));
-  if (!(skins.stiffness >= 0) || !std::isfinite(skins.stiffness))
-    throw Error("the skins' contact stiffness must be finite and >= 0 (0: automatic), got " +
-                formatNumber(skins.stiffness));
-  if (!(skins.kineticFriction >= 0 && skins.staticFriction >= skins.kineticFriction) ||
-      !std::isfinite(skins.staticFriction))
-    throw Error("the skins' friction needs 0 <= kinetic <= static, got static " +
-                formatNumber(skins.staticFriction) + " and kinetic " +
-                formatNumber(skins.kineticFriction));
+  if (const auto problem =
+          contactCoefficientProblem(skins.staticFriction, skins.kineticFriction, skins.stiffness))
+    throw Error("the skins' contact: " + *problem);
   if (o.floorHeight && !std::isfinite(*o.floorHeight))
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
 }
