@@ -103,7 +103,11 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
       static_cast<long long>(sim.restMesh().elementCount()), session.scenario().name(),
       toString(options.solver), multigrid.c_str(), toString(options.tangent));
   if (!a.initial.empty()) std::printf("  started from %s\n", a.initial.c_str());
-  std::printf("  material: %s\n", describe(options.material).c_str());
+  if (session.bodies().empty()) std::printf("  material: %s\n", describe(options.material).c_str());
+  for (const RunBody& body : session.bodies())
+    std::printf("  body %s: %lld tetrahedra, %lld skin vertices, material %s\n", body.name.c_str(),
+                static_cast<long long>(body.range.elementCount),
+                static_cast<long long>(body.range.vertexCount), describe(body.material).c_str());
   {
     // (Lengths are read as metres: a model written in millimetres shows
     // here as a body a thousand times too large.)
@@ -144,9 +148,15 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
                     : "nodes",
                 totals.contacts, commaSeparated(force.transpose()).c_str());
   }
-  if (const double thickness = sim.skinThickness(); thickness > 0)
-    std::printf("  the skin meets itself: a shell %s thick; at the end %d contacts in all\n",
+  if (const double thickness = sim.skinThickness(); thickness > 0) {
+    const std::size_t bodies = session.bodies().size();
+    const std::string meets =
+        bodies > 1 ? "the " + std::to_string(bodies) + " bodies' skins meet each other" +
+                         (options.skinCollisions.selfBodies.empty() ? "" : " and themselves")
+                   : std::string("the skin meets itself");
+    std::printf("  %s: a shell %s thick; at the end %d contacts in all\n", meets.c_str(),
                 formatNumber(thickness).c_str(), totals.contacts);
+  }
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",
                 a.steps / std::max(totals.stepSeconds, 1e-12),
@@ -206,6 +216,10 @@ RunInput datasetInput(const SimulateArgs& a, const CLI::App& cmd) {
 RunInput sceneInput(SimulateArgs& a, const CLI::App& cmd) {
   Scene scene = readScene(a.dataset);
   SceneBody& body = scene.bodies.front();
+  if (scene.bodies.size() > 1 && (cmd.count(kLevelOption.flag) > 0 || !a.surface.empty()))
+    throw Error(a.dataset.string() + ": holds " + std::to_string(scene.bodies.size()) +
+                " bodies; each takes its level and surface from the scene, not from " +
+                kLevelOption.flag + " or --surface");
   if (cmd.count(kLevelOption.flag) > 0) body.level = a.level;
   if (!a.surface.empty()) body.surface = std::filesystem::absolute(a.surface);
   SceneRun run = loadScene(scene);
@@ -216,7 +230,8 @@ RunInput sceneInput(SimulateArgs& a, const CLI::App& cmd) {
   RunInput in;
   in.spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
   in.dataset = std::move(run.dataset);
-  in.datasetName = body.dataset.generic_string();
+  in.datasetName =
+      scene.bodies.size() > 1 ? a.dataset.generic_string() : body.dataset.generic_string();
   if (run.surface)
     in.surface.emplace(std::move(run.surface->surface), std::move(run.surface->binding));
   return in;

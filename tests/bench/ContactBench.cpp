@@ -24,12 +24,14 @@
 #include <vector>
 
 #include "CgalClosest.h"
+#include "StepTimes.h"
 #include "tetskin/core/Parallel.h"
 #include "tetskin/session/RunRequest.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
 
 using namespace tetskin;
+using bench::StepTimes;
 
 namespace {
 
@@ -37,31 +39,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-struct StepTimes {
-  double step = 0, assembly = 0, solve = 0;  // ms
-  int contacts = 0, iterations = 0;
-};
-
-StepTimes timeStep(SimulationSession& session) {
-  const auto start = Clock::now();
-  const StepStats s = session.step();
-  return {secondsSince(start) * 1e3, s.assemblySeconds * 1e3, s.solveSeconds * 1e3, s.contacts,
-          s.iterations};
-}
-
-// The median of each column of `steps`.
-StepTimes median(std::vector<StepTimes> steps) {
-  const auto middle = [&](auto field) {
-    std::vector<double> values;
-    for (const StepTimes& t : steps) values.push_back(static_cast<double>(t.*field));
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-  };
-  return {middle(&StepTimes::step), middle(&StepTimes::assembly), middle(&StepTimes::solve),
-          static_cast<int>(middle(&StepTimes::contacts)),
-          static_cast<int>(middle(&StepTimes::iterations))};
 }
 
 // Mean microseconds per point of `query` over `points`, on the threads TBB
@@ -121,12 +98,7 @@ int main(int argc, char** argv) {
   freeSpec.options.obstacles.clear();
   SimulationSession free(run.dataset.mesh, freeSpec);
   free.startFrom({settled.positions, settled.velocities});
-  std::vector<StepTimes> withSteps, withoutSteps;
-  for (int i = 0; i < steps; ++i) {
-    withSteps.push_back(timeStep(contact));
-    withoutSteps.push_back(timeStep(free));
-  }
-  const StepTimes with = median(withSteps), without = median(withoutSteps);
+  const auto [with, without] = bench::stepByTurns(contact, free, steps);
 
   std::printf(
       "\nsteps (ms per step, median of %d, by turns)   step   assembly   solve   contacts   "

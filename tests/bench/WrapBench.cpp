@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // build --wrap's cost: the alpha wrap's time (wrapReady and the wrap, as
-// build runs them) and size against the input's size and alpha, next to TetGen meshing the same surface in the same run
-// (the input itself where it is closed, else the wrap), so the wrap's time
+// build runs them) and size against the input's size and alpha, next to TetGen meshing the same
+// surface in the same run (the input itself where it is closed, else the wrap), so the wrap's time
 // reads against the meshing build does anyway. Prints a table; asserts
 // nothing.
 //

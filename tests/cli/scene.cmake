@@ -9,6 +9,15 @@ tetskin_cli_test(simulate_scene
 tetskin_cli_test(simulate_scene_self_contact
   STDOUT "\n  the floor met by the skin[^\n]*\n  the skin meets itself: a shell 0.05 thick. at the end [0-9]+ contacts in all\n"
   ARGS simulate ${tdata}/scenes/self_contact.json --steps 20 -q -o ${cli_out}/self_contact.pvd)
+# Two bodies, the second dropped onto the first: each body's part and
+# material, and their skins meeting.
+tetskin_cli_test(simulate_scene_two_bodies
+  STDOUT "\n  body /bodies/0: 598 tetrahedra, [0-9]+ skin vertices, material E 200000 Pa[^\n]*\n  body /bodies/1: 598 tetrahedra, [0-9]+ skin vertices, material E 400000 Pa.*\n  the 2 bodies' skins meet each other: a shell [0-9.e-]+ thick. at the end [0-9]+ contacts in all\n"
+  ARGS simulate ${tdata}/scenes/two_bunnies.json --steps 20 -q -o ${cli_out}/two_bunnies.pvd)
+# More than one body: the level and the surface are each body's own.
+tetskin_cli_test(simulate_scene_two_bodies_level FAIL STATUS 1
+  STDERR "two_bunnies.json: holds 2 bodies. each takes its level and surface from the scene, not from --level or --surface"
+  ARGS simulate ${tdata}/scenes/two_bunnies.json --level 1 -o ${cli_out}/two_bunnies_level.pvd)
 # The command line's options over the scene's values; the rest the scene's.
 tetskin_cli_test(simulate_scene_overrides
   STDOUT "\"dataset\": \"[^,]*bunny.json\".*\"level\": 0,.*\"contact_points\": \"skin\".*\"friction\": 0.3,.*\"obstacles\": .*\"kinetic_friction\": 0.4,.*\"time_step\": 0.01.*\"scenario\": \"free\""

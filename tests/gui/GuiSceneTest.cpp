@@ -60,6 +60,34 @@ TEST_F(GuiScene, OpensTheSceneAndRunsItsRun) {
   EXPECT_EQ(child<QComboBox>("scenario")->currentText(), "free");  // (the rows as left)
 }
 
+// A scene of several bodies: one dataset of their levels, one skin of
+// their skins, the run the scene's (each body's material and start); a
+// vertex of the second body is bound to that body's nodes, and the second
+// body, dropped onto the first, meets its skin.
+TEST_F(GuiScene, OpensASceneOfSeveralBodiesAndRunsThemAsOne) {
+  const QString path = QString(TETSKIN_SOURCE_DIR) + "/tests/data/scenes/two_bunnies.json";
+  ASSERT_TRUE(window_->openFile(path)) << window_->lastError().toStdString();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const SceneRun run = loadScene(readScene(path.toStdString()));
+  ASSERT_EQ(run.request.bodies.size(), 2u);
+  Scene& scene = window_->scene();
+  EXPECT_EQ(scene.dataset().mesh.nodes, run.dataset.mesh.nodes);
+  ASSERT_TRUE(scene.hasSurface());
+  EXPECT_EQ(scene.surface().vertexCount(), run.surface->surface.vertexCount());
+  EXPECT_EQ(runSpecJson(window_->simulationDock()->runSpec()),
+            runSpecJson(resolveRun(run.request, run.dataset.mesh, run.dataset.config)));
+  const BodyRange& second = run.request.bodies[1].range;
+  const VertexInfo info = scene.vertexInfo(second.firstVertex + 10);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_GE(info.controlIds[j], second.firstNode);
+    EXPECT_LT(info.controlIds[j], second.firstNode + second.nodeCount);
+  }
+  SimulationRunner& runner = *window_->runner();
+  EXPECT_GT(runner.simulation().skinThickness(), 0);
+  for (int i = 0; i < 60 && runner.lastStats().contacts == 0; ++i) step(1);
+  EXPECT_GT(runner.lastStats().contacts, 0) << "the second bunny lands on the first";
+}
+
 TEST_F(GuiScene, ColoursTheSkinByItsContactAndPlotsTheContacts) {
   openBowlScene();
   child<QSpinBox>("controlLevel");  // (exists; the level stays the scene's)

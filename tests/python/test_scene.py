@@ -73,3 +73,27 @@ def test_bad_scenes_name_the_field():
         tetskin.Scene(bad)
     with pytest.raises(tetskin.Error, match="Scene: unknown option 'stepz'"):
         tetskin.Scene(scene_dict(), stepz=3)
+
+
+def test_several_bodies_step_as_one_and_meet_skin_to_skin():
+    """A bunny dropped onto another comes to lie on it; alone, it falls to
+    the floor. run_spec's bodies say where each body's nodes lie."""
+    bunny = str((DATA / "bunny.json").resolve())
+    lower = {"dataset": bunny, "level": 0}
+    upper = {"dataset": bunny, "level": 0, "translate": [0.5, 10.5, 0], "velocity": [0, -3, 0],
+             "material": {"youngs_modulus": 4e5}}
+    scene = {"format": "tetskin-scene", "version": 1, "floor": {"height": 0},
+             "bodies": [lower, upper]}
+    both = tetskin.Scene(scene, mass_damping=1.0)
+    bodies = both.run_spec["bodies"]
+    assert [b["name"] for b in bodies] == ["/bodies/0", "/bodies/1"]
+    first, count = bodies[1]["nodes"]
+    assert both.positions.shape == (first + count, 3) and first == count
+    assert bodies[1]["material"]["youngs_modulus"] == 4e5
+    assert bodies[0]["material"]["youngs_modulus"] == 2e5
+    both.step(90)
+    resting = both.positions[first:, 1].min()
+    alone = tetskin.Scene(dict(scene, bodies=[upper]), mass_damping=1.0)
+    alone.step(90)
+    fallen = alone.positions[:, 1].min()
+    assert fallen < 3 < 5 < resting, (fallen, resting)

@@ -11,9 +11,13 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "ExpectError.h"
 #include "SampleData.h"
@@ -23,11 +27,13 @@
 #include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Geometry.h"
+#include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/vtkio/PvdSeries.h"
+#include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/VtkFiles.h"
 
@@ -96,8 +102,6 @@ TEST(SceneFile, BadScenesNameTheFileAndTheField) {
         j["obstacles"][0]["motion"] = {{{"time", 1}}, {{"time", 0.5}}};
       },
       "/obstacles/0/motion/1/time: must be later");
-  expect([](auto& j) { j["bodies"].push_back(j["bodies"][0]); },
-         "/bodies: holds 2 bodies; this TetSkin runs one body per scene");
   expect([](auto& j) { j.erase("bodies"); }, "/bodies: is missing");
   expect([](auto& j) { j["bodies"][0]["self_contact"] = "yes"; },
          "/bodies/0/self_contact: must be");
@@ -277,6 +281,132 @@ TEST(SceneRun, TheRecordedRunPosesTheObstaclesAtEachFrame) {
   }
   EXPECT_LT(staticError, 1e-9);
   EXPECT_LT(movedError, 1e-9);
+}
+
+// The bundled scene's bunny twice at level 0 (the second placed 30 m
+// aside, stiffer, heavier, moving and held by a box around its lowest part;
+// the first without a surface: its level's boundary is its skin).
+nlohmann::json twoBunnies() {
+  nlohmann::json json = sceneJson();
+  nlohmann::json& first = json["bodies"][0];
+  first["level"] = 0;
+  first.erase("surface");
+  nlohmann::json second = first;
+  second["surface"] = "../bunny_8k.obj";
+  second["translate"] = {30, 0, 0};
+  second["material"] = {{"youngs_modulus", 5e5}, {"density", 200}};
+  second["velocity"] = {1, 0, 0};
+  second["self_contact"] = true;
+  second["held_box"] = {20, -100, -100, 40, 1, 100};
+  json["bodies"].push_back(second);
+  return json;
+}
+
+// Two bodies become one run: one level of both levels' nodes, one skin of
+// both skins, each body's material over its elements, its velocity on its
+// nodes, its held box's nodes held (numbered in the union), and its
+// recorded parts of its own.
+TEST(SceneRun, SeveralBodiesBecomeOneRunWithTheirOwnMaterialsStartsAndParts) {
+  ScratchDir dir;
+  const Scene scene = parse(twoBunnies());
+  const SceneRun run = loadScene(scene);
+  const Dataset bunny = loadDataset(kSampleData + "bunny.json");
+  const LevelRange& level0 = bunny.mesh.levels[0];
+  ASSERT_EQ(run.dataset.mesh.levels.size(), 1u);
+  EXPECT_EQ(run.dataset.mesh.nodes.rows(), 2 * level0.nodeCount);
+  const std::vector<RunBody>& bodies = run.request.bodies;
+  ASSERT_EQ(bodies.size(), 2u);
+  EXPECT_EQ(bodies[1].name, "/bodies/1");
+  EXPECT_EQ(bodies[1].range.firstNode, level0.nodeCount);
+  EXPECT_EQ(bodies[1].range.firstElement, level0.elementCount);
+  const SurfaceMesh bunny8k = readObj(kSampleData + "bunny_8k.obj");
+  EXPECT_EQ(bodies[1].range.vertexCount, bunny8k.vertexCount());
+  ASSERT_TRUE(run.surface);
+  EXPECT_EQ(run.surface->surface.vertexCount(),
+            bodies[1].range.firstVertex + bunny8k.vertexCount());
+  // The second body placed as the first, 30 m aside and 6 m up (the
+  // first's translate is [0, -6, 0], the second's [30, 0, 0]).
+  const Points3 shift = run.dataset.mesh.nodes.bottomRows(level0.nodeCount) -
+                        run.dataset.mesh.nodes.topRows(level0.nodeCount);
+  EXPECT_LT((shift.rowwise() - Eigen::RowVector3d(30, 6, 0)).cwiseAbs().maxCoeff(), 1e-9);
+  const std::vector<int>& held = run.request.parameters.fixedNodes;
+  ASSERT_FALSE(held.empty());
+  for (const int node : held) {
+    EXPECT_GE(node, level0.nodeCount);
+    EXPECT_LE(run.dataset.mesh.nodes(node, 1), 1);
+  }
+
+  const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  ASSERT_EQ(spec.options.materialRegions.size(), 2u);
+  EXPECT_EQ(spec.options.materialRegions[1].material.youngsModulus, 5e5);
+  EXPECT_EQ(spec.options.materialRegions[1].material.density, 200);
+  EXPECT_EQ(spec.options.materialRegions[0].material.youngsModulus,
+            bunny.config.elasticity.youngsModulus);
+  EXPECT_EQ(spec.options.skinCollisions.selfBodies, std::vector<int>{1});
+  SimulationSession session(run.dataset.mesh, spec);
+  session.bindSurface(run.surface->surface, run.surface->binding, "scene.json");
+  const SimulationState start = session.state();
+  EXPECT_EQ(start.velocities.topRows(level0.nodeCount).cwiseAbs().maxCoeff(), 0);
+  for (Index v = level0.nodeCount; v < 2 * level0.nodeCount; ++v)
+    if (!std::binary_search(held.begin(), held.end(), static_cast<int>(v))) {
+      EXPECT_EQ(start.velocities.row(v), Eigen::RowVector3d(1, 0, 0)) << v;
+    }
+  // Each body's mass is its own density's.
+  const Eigen::VectorXd mass = session.simulation().nodeMasses();
+  EXPECT_NEAR(mass.tail(level0.nodeCount).sum(), 2 * mass.head(level0.nodeCount).sum(),
+              1e-9 * mass.sum());
+
+  session.record(dir / "run.pvd");
+  session.recordFrame();
+  session.run(2, 1);
+  const PvdSeries series = PvdSeries::read(dir / "run.pvd");
+  std::map<int, int> filesOfPart;
+  for (const PvdSeries::Entry& e : series.entries()) ++filesOfPart[e.part];
+  EXPECT_EQ(filesOfPart, (std::map<int, int>{{0, 3}, {1, 3}, {2, 3}, {3, 3}, {4, 3}}));
+  EXPECT_EQ(RunRecorder::firstObstaclePart(2), 4);
+  const auto control = readVtu(dir / "run_frames/control_00002_1.vtu");
+  const auto skin = readVtp(dir / "run_frames/surface_00002_1.vtp");
+  EXPECT_EQ(control->GetNumberOfPoints(), level0.nodeCount);
+  EXPECT_EQ(control->GetNumberOfCells(), level0.elementCount);
+  EXPECT_EQ(skin->GetNumberOfPoints(), bunny8k.vertexCount());
+  // The frame's points are the body's nodes where the run has them.
+  const SimulationState end = session.state();
+  double largest = 0;
+  for (Index v = 0; v < level0.nodeCount; ++v)
+    largest = std::max(largest, (Eigen::Vector3d(control->GetPoint(v)) -
+                                 end.positions.row(level0.nodeCount + v).transpose())
+                                    .norm());
+  EXPECT_LT(largest, 1e-6);
+  // The replays (GUI, render --run, deform) take runs of one level.
+  expectErrorAt([&] { RecordedRun recorded(dir / "run.pvd"); }, (dir / "run.pvd").string(), 0,
+                "records a scene of several bodies");
+}
+
+// What a scene of several bodies refuses, named by the field.
+TEST(SceneRun, SeveralBodiesRefuseWhatTheyCannotShare) {
+  const auto refused = [](const auto& edit, const std::string& what) {
+    nlohmann::json json = twoBunnies();
+    edit(json);
+    expectErrorAt(
+        [&] {
+          const SceneRun run = loadScene(parse(json));
+          resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+        },
+        "scene.json", 0, what);
+  };
+  refused([](auto& j) { j["bodies"][1]["scenario"] = "sag"; },
+          "/bodies/1/scenario: the bodies of a scene of several run free");
+  refused([](auto& j) { j["bodies"][1]["contact_points"] = "cage"; },
+          "/bodies/1/contact_points: must be /bodies/0's");
+  refused([](auto& j) { j["bodies"][1]["held_box"] = {100, 100, 100, 101, 101, 101}; },
+          "/bodies/1/held_box: ");
+  refused([](auto& j) { j["bodies"][1]["level"] = 7; }, "/bodies/1/level: ");
+  nlohmann::json json = twoBunnies();
+  json["bodies"][1]["material"]["mass_damping"] = 0.5;
+  const SceneRun run = loadScene(parse(json));
+  EXPECT_EQ(errorText([&] { resolveRun(run.request, run.dataset.mesh, run.dataset.config); }),
+            "/bodies/1: its damping (0.5, 0.01) is not /bodies/0's (0.1, 0.01): mass_damping and "
+            "stiffness_damping are one for all the bodies of a run");
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <random>
+#include <span>
+#include <string>
 
 #include "Shapes.h"
 #include "tetskin/core/Error.h"
@@ -420,6 +422,76 @@ TEST(CorotatedFem, LumpedMassSumsToTotalMass) {
   m.density = 7;
   const CorotatedFem fem(mesh, m);
   EXPECT_NEAR(fem.lumpedMass().sum(), 3 * 7 * 24.0, 1e-9);
+}
+
+// Two blocks side by side in one mesh, the second of another material (a
+// region): the element pass, the mass, the energy and the stresses are
+// those of two meshes, each of its own material, by both kernels.
+TEST(CorotatedFem, AMaterialRegionActsAsAMeshOfItsOwnMaterial) {
+  const TetMesh a = test::tetGrid(3, 1, 1, {3, 1, 1});
+  TetMesh b = test::tetGrid(2, 2, 1, {2, 2, 1});
+  b.nodes.col(0).array() += 5;
+  TetMesh both;
+  both.nodes.resize(a.nodeCount() + b.nodeCount(), 3);
+  both.nodes << a.nodes, b.nodes;
+  both.elements.resize(a.elementCount() + b.elementCount(), 4);
+  both.elements << a.elements, (b.elements.array() + static_cast<int>(a.nodeCount())).matrix();
+  ElasticMaterial other = material();
+  other.youngsModulus = 7000;
+  other.poissonRatio = 0.45;
+  other.density = 300;
+  const MaterialRegion region{a.elementCount(), b.elementCount(), other};
+  CorotatedFem alone(a, material()), otherAlone(b, other);
+  for (const SimdKernel kernel : {SimdKernel::Fastest, SimdKernel::Baseline}) {
+    CorotatedFem fem(both, material(), std::span(&region, 1));
+    fem.setKernel(kernel);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> noise(0, 0.1);
+    Eigen::VectorXd x = fem.restPositions(), v(fem.dofCount());
+    for (Index i = 0; i < x.size(); ++i) {
+      x[i] += noise(rng);
+      v[i] = noise(rng);
+    }
+    const Index na = 3 * a.nodeCount(), nb = 3 * b.nodeCount();
+    CorotatedFem::SystemTerms terms;
+    terms.stiffnessScale = 0.01;
+    terms.velocity = &v;
+    terms.velocityWeight = 0.2;
+    terms.rotationScale = 0.005;
+    terms.rotationVelocityWeight = 0.1;
+    Eigen::VectorXd f, fa, fb;
+    SparseMatrix A = fem.pattern(), Aa = alone.pattern(), Ab = otherAlone.pattern();
+    fem.update(x, f, A, terms);
+    CorotatedFem::SystemTerms termsA = terms, termsB = terms;
+    const Eigen::VectorXd va = v.head(na), vb = v.tail(nb);
+    termsA.velocity = &va;
+    termsB.velocity = &vb;
+    alone.update(x.head(na), fa, Aa, termsA);
+    otherAlone.update(x.tail(nb), fb, Ab, termsB);
+    EXPECT_LT((f.head(na) - fa).norm(), 1e-12 * fa.norm());
+    EXPECT_LT((f.tail(nb) - fb).norm(), 1e-12 * fb.norm());
+    const Eigen::MatrixXd dense(A);
+    EXPECT_LT((dense.topLeftCorner(na, na) - Eigen::MatrixXd(Aa)).norm(),
+              1e-12 * Eigen::MatrixXd(Aa).norm());
+    EXPECT_LT((dense.bottomRightCorner(nb, nb) - Eigen::MatrixXd(Ab)).norm(),
+              1e-12 * Eigen::MatrixXd(Ab).norm());
+    EXPECT_NEAR(fem.lumpedMass().sum(), 3 * (material().density * 3.0 + 300 * 4.0), 1e-9);
+    EXPECT_NEAR(fem.elasticEnergy(x),
+                alone.elasticEnergy(x.head(na)) + otherAlone.elasticEnergy(x.tail(nb)),
+                1e-12 * fem.elasticEnergy(x));
+    const Eigen::VectorXd stress = fem.elementMeasures(x).vonMisesStress;
+    const Eigen::VectorXd stressB = otherAlone.elementMeasures(x.tail(nb)).vonMisesStress;
+    EXPECT_LT((stress.tail(b.elementCount()) - stressB).norm(), 1e-12 * stressB.norm());
+    EXPECT_TRUE(
+        fem.elementStiffness(a.elementCount()).isApprox(otherAlone.elementStiffness(0), 1e-12));
+  }
+  const MaterialRegion beyond{a.elementCount(), b.elementCount() + 1, other};
+  try {
+    CorotatedFem fem(both, material(), std::span(&beyond, 1));
+    ADD_FAILURE() << "a region beyond the elements was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("material region 0"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -20,17 +20,20 @@ BodyUnion uniteBodies(std::span<const BodyParts> bodies) {
                   "'s skin is bound by another method than body 0's: one binding holds one");
     validateBinding(*body.binding, body.skin->vertexCount(), body.mesh->nodeCount(),
                     "body " + std::to_string(b) + "'s binding");
-    u.firstNode.push_back(nodes);
-    u.firstElement.push_back(elements);
-    u.firstVertex.push_back(vertices);
-    nodes += body.mesh->nodeCount();
-    elements += body.mesh->elementCount();
-    vertices += body.skin->vertexCount();
-    triangles += body.skin->triangleCount();
+    BodyRange& range = u.bodies.emplace_back();
+    range.firstNode = nodes;
+    range.nodeCount = body.mesh->nodeCount();
+    range.firstElement = elements;
+    range.elementCount = body.mesh->elementCount();
+    range.firstVertex = vertices;
+    range.vertexCount = body.skin->vertexCount();
+    range.firstTriangle = triangles;
+    range.triangleCount = body.skin->triangleCount();
+    nodes += range.nodeCount;
+    elements += range.elementCount;
+    vertices += range.vertexCount;
+    triangles += range.triangleCount;
   }
-  u.firstNode.push_back(nodes);
-  u.firstElement.push_back(elements);
-  u.firstVertex.push_back(vertices);
 
   u.mesh.nodes.resize(nodes, 3);
   u.mesh.elements.resize(elements, 4);
@@ -41,19 +44,18 @@ BodyUnion uniteBodies(std::span<const BodyParts> bodies) {
   u.binding.level = 0;
   u.binding.resize(vertices);
   u.vertexBody.resize(static_cast<std::size_t>(vertices));
-  Index triangle = 0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const BodyParts& body = bodies[b];
-    const Index node = u.firstNode[b], element = u.firstElement[b], vertex = u.firstVertex[b];
+    const BodyRange& range = u.bodies[b];
+    const Index node = range.firstNode, element = range.firstElement, vertex = range.firstVertex;
     const int nodeOffset = static_cast<int>(node), vertexOffset = static_cast<int>(vertex);
     u.mesh.nodes.middleRows(node, body.mesh->nodeCount()) = body.mesh->nodes;
     u.mesh.elements.middleRows(element, body.mesh->elementCount()) =
         body.mesh->elements.array() + nodeOffset;
     const Index count = body.skin->vertexCount();
     u.skin.positions.middleRows(vertex, count) = body.skin->positions;
-    u.skin.triangles.middleRows(triangle, body.skin->triangleCount()) =
+    u.skin.triangles.middleRows(range.firstTriangle, range.triangleCount) =
         body.skin->triangles.array() + vertexOffset;
-    triangle += body.skin->triangleCount();
     const SurfaceBinding& from = *body.binding;
     for (Index v = 0; v < count; ++v) {
       for (int j = 0; j < 4; ++j) {
@@ -68,6 +70,61 @@ BodyUnion uniteBodies(std::span<const BodyParts> bodies) {
     }
   }
   return u;
+}
+
+TetMesh bodyPart(const TetMesh& united, const BodyRange& body) {
+  TetMesh part;
+  part.nodes = united.nodes.middleRows(body.firstNode, body.nodeCount);
+  part.elements = united.elements.middleRows(body.firstElement, body.elementCount).array() -
+                  static_cast<int>(body.firstNode);
+  return part;
+}
+
+SurfaceMesh bodyPart(const SurfaceMesh& united, const BodyRange& body) {
+  SurfaceMesh part;
+  part.positions = united.positions.middleRows(body.firstVertex, body.vertexCount);
+  if (united.normals.rows() == united.positions.rows())
+    part.normals = united.normals.middleRows(body.firstVertex, body.vertexCount);
+  part.triangles = united.triangles.middleRows(body.firstTriangle, body.triangleCount).array() -
+                   static_cast<int>(body.firstVertex);
+  return part;
+}
+
+SurfaceBinding bodyPart(const SurfaceBinding& united, const BodyRange& body) {
+  SurfaceBinding part = united;
+  part.resize(body.vertexCount);
+  for (Index v = 0; v < body.vertexCount; ++v) {
+    const Index from = body.firstVertex + v;
+    for (int j = 0; j < united.controlIds.cols(); ++j) {
+      const int id = united.controlIds(from, j);
+      part.controlIds(v, j) = id < 0 ? id : id - static_cast<int>(body.firstNode);
+    }
+    part.weights.row(v) = united.weights.row(from);
+    part.distance[v] = united.distance[from];
+    part.faceId[v] = united.faceId[from] - static_cast<int>(body.firstElement);
+    part.minBarycentric[v] = united.minBarycentric[from];
+  }
+  return part;
+}
+
+FrameFields bodyPart(const FrameFields& united, const BodyRange& body) {
+  const auto nodeRows = [&](const Points3& rows) -> Points3 {
+    if (rows.rows() == 0) return rows;
+    return rows.middleRows(body.firstNode, body.nodeCount);
+  };
+  const auto elementRows = [&](const Eigen::VectorXd& rows) -> Eigen::VectorXd {
+    if (rows.size() == 0) return rows;
+    return rows.segment(body.firstElement, body.elementCount);
+  };
+  FrameFields part;
+  part.positions = nodeRows(united.positions);
+  part.velocities = nodeRows(united.velocities);
+  part.externalForces = nodeRows(united.externalForces);
+  part.reactionForces = nodeRows(united.reactionForces);
+  part.contactForces = nodeRows(united.contactForces);
+  part.vonMisesStress = elementRows(united.vonMisesStress);
+  part.equivalentStrain = elementRows(united.equivalentStrain);
+  return part;
 }
 
 }  // namespace tetskin

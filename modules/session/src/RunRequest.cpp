@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/NumberText.h"
 
 namespace tetskin {
 
@@ -55,6 +56,27 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
   spec.options.floorHeight = request.floorHeight;
   spec.parameters = request.parameters;
   spec.initialVelocity = request.initialVelocity;
+  spec.bodies = request.bodies;
+  spec.options.materialRegions.clear();
+  spec.options.skinCollisions.selfBodies.clear();
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    RunBody& body = spec.bodies[b];
+    body.material = request.material.over(body.material, request.names);
+    const ElasticMaterial& first = spec.bodies.front().material;
+    if (body.material.massDamping != first.massDamping ||
+        body.material.stiffnessDamping != first.stiffnessDamping)
+      throw Error(body.name + ": its damping (" + formatNumber(body.material.massDamping) + ", " +
+                  formatNumber(body.material.stiffnessDamping) + ") is not " +
+                  spec.bodies.front().name + "'s (" + formatNumber(first.massDamping) + ", " +
+                  formatNumber(first.stiffnessDamping) +
+                  "): " + nameOf(material_option::kMassDamping, request.names) + " and " +
+                  nameOf(material_option::kStiffnessDamping, request.names) +
+                  " are one for all the bodies of a run");
+    spec.options.materialRegions.push_back(
+        {body.range.firstElement, body.range.elementCount, body.material});
+    if (body.selfContact) spec.options.skinCollisions.selfBodies.push_back(static_cast<int>(b));
+  }
+  if (!spec.bodies.empty()) spec.options.material = spec.bodies.front().material;
   if (request.fixedBox) {
     const LevelRange& level = mesh.levels[static_cast<std::size_t>(request.level)];
     const Points3 restNodes = mesh.nodes.middleRows(level.firstNode, level.nodeCount);

@@ -62,11 +62,30 @@ nlohmann::json obstaclesJson(const std::vector<Obstacle>& obstacles) {
   return out;
 }
 
+nlohmann::json materialJson(const ElasticMaterial& m) {
+  nlohmann::json material;
+  for (const MaterialField& f : materialFields()) material[f.option->key] = m.*f.field;
+  return material;
+}
+
+// Each body's place in the level and the skin ([first, count]), its
+// material, velocity and self-contact.
+nlohmann::json bodiesJson(const std::vector<RunBody>& bodies) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const RunBody& b : bodies)
+    out.push_back({{"name", b.name},
+                   {"nodes", {b.range.firstNode, b.range.nodeCount}},
+                   {"elements", {b.range.firstElement, b.range.elementCount}},
+                   {"skin_vertices", {b.range.firstVertex, b.range.vertexCount}},
+                   {"material", materialJson(b.material)},
+                   {"velocity", vector(b.velocity)},
+                   {"self_contact", b.selfContact}});
+  return out;
+}
+
 nlohmann::json optionsJson(const SimulationOptions& o) {
   namespace so = simulation_option;
-  nlohmann::json material;
-  for (const MaterialField& f : materialFields()) material[f.option->key] = o.material.*f.field;
-  return {{"material", material},
+  return {{"material", materialJson(o.material)},
           {so::kTimeStep.key, o.timeStep},
           {"gravity", vector(o.gravity)},
           {"up", toString(o.up)},
@@ -102,6 +121,7 @@ std::string runSpecJson(const RunSpec& spec) {
                               {"scenario", spec.scenario},
                               {"parameters", parametersJson(spec.parameters)},
                               {"initial_velocity", vector(spec.initialVelocity)},
+                              {"bodies", bodiesJson(spec.bodies)},
                               {"options", optionsJson(spec.options)}};
   return out.dump(2);
 }

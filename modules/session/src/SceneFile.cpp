@@ -211,9 +211,6 @@ Scene parseScene(const json& root, const std::filesystem::path& file,
   }
   const json& bodies = top.get("bodies");
   if (!bodies.is_array() || bodies.empty()) top.fail("/bodies", "must be a non-empty array");
-  if (bodies.size() > 1)
-    top.fail("/bodies", "holds " + std::to_string(bodies.size()) +
-                            " bodies; this TetSkin runs one body per scene");
   for (std::size_t k = 0; k < bodies.size(); ++k)
     scene.bodies.push_back(readBody(bodies[k], "/bodies/" + std::to_string(k), name, directory));
   if (top.has("obstacles")) {

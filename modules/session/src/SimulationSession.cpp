@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/session/SimulationSession.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -12,7 +13,7 @@
 namespace tetskin {
 
 SimulationSession::SimulationSession(const MultiLevelTetMesh& dataset, const RunSpec& spec)
-    : dataset_(dataset), level_(spec.level), datasetName_(spec.datasetName) {
+    : dataset_(dataset), level_(spec.level), datasetName_(spec.datasetName), bodies_(spec.bodies) {
   const TetMesh rest = extractLevel(dataset, spec.level);
   // An unknown scenario fails before the simulation's work.
   scenario_ = makeScenario(spec.scenario, spec.parameters);
@@ -22,6 +23,14 @@ SimulationSession::SimulationSession(const MultiLevelTetMesh& dataset, const Run
   if (!spec.initialVelocity.isZero()) {
     const SimulationState start = simulation_->state();
     simulation_->setVelocities(start.velocities.rowwise() + spec.initialVelocity.transpose());
+  }
+  if (std::any_of(bodies_.begin(), bodies_.end(),
+                  [](const RunBody& body) { return !body.velocity.isZero(); })) {
+    Points3 velocities = simulation_->state().velocities;
+    for (const RunBody& body : bodies_)
+      velocities.middleRows(body.range.firstNode, body.range.nodeCount).rowwise() +=
+          body.velocity.transpose();
+    simulation_->setVelocities(velocities);
   }
 }
 
@@ -51,7 +60,19 @@ void SimulationSession::bindSurface(SurfaceMesh surface, SurfaceBinding binding,
   bound->dataset = std::move(dataset);
   bound->deformed.emplace();
   deformer_ = std::make_unique<SurfaceDeformer>(bound->surface, bound->binding, dataset_.nodes);
-  simulation_->setContactSkin(bound->surface, bound->binding);
+  std::vector<int> vertexBodies;
+  if (!bodies_.empty()) {
+    const BodyRange& last = bodies_.back().range;
+    if (bound->surface.vertexCount() != last.firstVertex + last.vertexCount)
+      throw Error("the surface has " + std::to_string(bound->surface.vertexCount()) +
+                  " vertices, the run's bodies' skins " +
+                  std::to_string(last.firstVertex + last.vertexCount));
+    vertexBodies.resize(static_cast<std::size_t>(bound->surface.vertexCount()));
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      std::fill_n(vertexBodies.begin() + bodies_[b].range.firstVertex, bodies_[b].range.vertexCount,
+                  static_cast<int>(b));
+  }
+  simulation_->setContactSkin(bound->surface, bound->binding, vertexBodies);
   bound_ = std::move(bound);
   allNodes_ = dataset_.nodes;
 }
@@ -156,8 +177,11 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
   std::vector<PosedSurface> obstacles;
   for (const Obstacle& o : simulation_->options().obstacles)
     obstacles.push_back({&o.shape->surface(), o.poseAt(s.time).affine(), !o.motion.empty()});
+  std::vector<BodyRange> bodies;
+  for (const RunBody& body : bodies_) bodies.push_back(body.range);
   if (!bound_ && !drawnSurface) {
-    recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, nullptr, obstacles);
+    recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, nullptr, obstacles,
+                        bodies);
     return;
   }
   // The surface with the stress and strain on its skin: the front end's
@@ -180,7 +204,7 @@ void SimulationSession::recordFrame(const std::optional<SimulationState>& state,
       surface->deformed->vectors.push_back({arrays::kContactForce, std::move(contact.forces)});
     }
   }
-  recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface, obstacles);
+  recorder_->addFrame(s.time, simulation_->restMesh(), fields, level_, surface, obstacles, bodies);
 }
 
 std::vector<PointScalars> SimulationSession::surfaceFields(const FrameFields& fields,

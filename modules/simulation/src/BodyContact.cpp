@@ -23,6 +23,18 @@ std::vector<Aabb> triangleBoxes(const Points3& positions, const Triangles& trian
   return boxes;
 }
 
+// Per body (numbers from 0 to the largest in `vertexBody`): whether its
+// skin meets itself, as `settings` say.
+std::vector<char> selfContactOfBodies(const std::vector<int>& vertexBody,
+                                      const SkinCollisions& settings) {
+  const int largest =
+      vertexBody.empty() ? 0 : *std::max_element(vertexBody.begin(), vertexBody.end());
+  std::vector<char> self(static_cast<std::size_t>(largest) + 1, settings.self ? 1 : 0);
+  for (int body : settings.selfBodies)
+    if (body >= 0 && body <= largest) self[static_cast<std::size_t>(body)] = 1;
+  return self;
+}
+
 }  // namespace
 
 double BodyContact::Contact::along(const Eigen::VectorXd& values) const {
@@ -47,7 +59,7 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
       body_(std::move(vertexBody)),
       mass_(mass),
       constraints_(constraints),
-      self_(settings.self),
+      selfContact_(selfContactOfBodies(body_, settings)),
       thickness_(thickness),
       stiffness_(stiffness),
       staticFriction_(settings.staticFriction),
@@ -84,7 +96,8 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
         if (a == v || b == v || c == v) return;
         const bool sameBody =
             body_[static_cast<std::size_t>(v)] == body_[static_cast<std::size_t>(a)];
-        if (sameBody && !self_) return;
+        if (sameBody && !selfContact_[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])])
+          return;
         const ClosestPointOnTriangle closest = closestPointOnTriangle(
             p, skin.row(a).transpose(), skin.row(b).transpose(), skin.row(c).transpose());
         if (closest.squaredDistance >= best) return;
@@ -144,14 +157,10 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
 
 int BodyContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
-  findContacts(at.x, contacts_, tree_);
+  // (After releasePulling, the same step again with the contacts kept.)
+  if (!keepContacts_) findContacts(at.x, contacts_, tree_);
+  keepContacts_ = false;
   const double h = at.h, k = stiffness_;
-  // A contact that its present relative velocity would open within the
-  // step is none: linearized, its spring would end the step pulling the
-  // skins together (a pair at the edge of the shell, moving apart, stuck
-  // to each other: two blocks that had bounced apart lost nine tenths of
-  // their parting speed so).
-  std::erase_if(contacts_, [&](const Contact& c) { return c.gap - h * c.along(at.v) <= 0; });
   for (const Contact& c : contacts_) {
     const double spring = k * (c.gap - h * c.along(at.v));
     for (int j = 0; j < c.count; ++j) {
@@ -162,6 +171,15 @@ int BodyContact::addForce(const StepState& at, StepSystem& system) {
     }
   }
   return static_cast<int>(contacts_.size());
+}
+
+int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv) {
+  const Eigen::VectorXd end = v + dv;
+  const std::size_t before = contacts_.size();
+  std::erase_if(contacts_, [&](const Contact& c) { return c.gap - h_ * c.along(end) < 0; });
+  const auto released = static_cast<int>(before - contacts_.size());
+  keepContacts_ = released > 0;
+  return released;
 }
 
 void BodyContact::addMatrix(const StepState& at, StepSystem& system) {
@@ -182,6 +200,10 @@ void BodyContact::addMatrix(const StepState& at, StepSystem& system) {
 }
 
 void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
+  // (Velocities only: moving the nodes too, as the obstacles' friction
+  // does, took them off the solved state; with skins off their cages the
+  // stiff springs between the bodies took that up as energy, and a bunny
+  // dropped onto another went into it and through the floor.)
   frictionForces_.clear();
   for (const Contact& c : contacts_) {
     // The spring at the step's end, as the step linearized it.
@@ -208,7 +230,6 @@ void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
       if (constraints_.isFixed(e.node)) continue;  // (held: as of infinite mass)
       const Eigen::Vector3d dv = e.weight * impulse / mass_[3 * e.node] * direction;
       v.segment<3>(3 * e.node) += dv;
-      x.segment<3>(3 * e.node) += h_ * dv;
       frictionForces_.push_back({e.node, mass_[3 * e.node] * dv / h_});
     }
   }

@@ -19,16 +19,19 @@
 // step it adds h^2 k u u^T to the system, its diagonal blocks to A and the
 // rest as coupling springs (CouplingSprings.h: the nodes of two bodies
 // share no element, so the pattern has no place for them), and
-// u k (thickness - d - h u.v) to the force. A contact whose spring that
-// would end negative at the step's start velocities is left out of the
-// step: a penalty spring pushes, it never pulls.
+// u k (thickness - d - h u.v) to the force. A penalty spring pushes, it
+// never pulls: a contact whose spring ends the solved step pulling (the
+// pair parting faster than the shell lets go) leaves the step, which is
+// solved again without it (releasePulling; an active set, as for
+// one-sided constraints).
 //
 // Coulomb friction after the solve, per contact in turn: the tangential
 // part of the relative velocity sum_j a_j v_j changes by at most
 // mu h f_n / m (m the contact's effective mass, 1 / sum_j a_j^2 / m_j;
 // f_n its spring at the step's end): all of it within mu_s's allowance
 // (sticking), mu_k's share otherwise (sliding). The impulse on node j is
-// a_j times one vector, so it too leaves the momentum as it was.
+// a_j times one vector, so it too leaves the momentum as it was. It
+// changes the velocities only, not the step's positions.
 //
 // Which pairs: a vertex and a triangle of another body, or of its own body
 // when self-contact is on and the two lie farther apart in the rest shape
@@ -73,8 +76,14 @@ class BodyContact : public ForceModel {
   void addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                   Eigen::VectorXd& force) const override;
   bool isContact() const override { return true; }
+  // After the step's solve (its velocity change dv from v): drops the
+  // contacts whose spring would end the step pulling and returns how many;
+  // when some went, the next addForce takes the rest as they are, for the
+  // same step solved again.
+  int releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv);
   // Forgets the last step's contacts and friction (a new start).
   void forgetStep() {
+    keepContacts_ = false;
     contacts_.clear();
     frictionForces_.clear();
   }
@@ -106,7 +115,8 @@ class BodyContact : public ForceModel {
   std::vector<int> body_;
   const Eigen::VectorXd& mass_;
   const NodeConstraints& constraints_;
-  bool self_;
+  std::vector<char> selfContact_;  // per body: whether its skin meets itself
+  bool keepContacts_ = false;      // the next addForce: the same step again
   double thickness_, stiffness_, staticFriction_, kineticFriction_;
   AabbTree tree_;  // over the triangles, refitted each step
   double h_ = 0;

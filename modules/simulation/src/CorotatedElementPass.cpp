@@ -98,10 +98,10 @@ TETSKIN_LANES_INLINE Double4 timesTransposeEntry(const Double4 L[9], const Doubl
 // compression spoils the initial guess from the last solutions.
 TETSKIN_LANES_INLINE void addRotationTerm(const PassArgs& args, const Double4 E[9],
                                           const Double4* velocityGradient, const Double4 R[9],
-                                          const Double4 r[4][3], Double4 volume, Double4 f[4][3],
-                                          Double4 blocks[10][9]) {
+                                          const Double4 r[4][3], Double4 volume, Double4 lambda,
+                                          Double4 mu, Double4 f[4][3], Double4 blocks[10][9]) {
   Double4 h[3], U[9];
-  lanes::rotationTermModes(E, R, args.lambda, args.mu, h, U);
+  lanes::rotationTermModes(E, R, lambda, mu, h, U);
   Double4 z[4][3][3];  // [node][mode][axis]
   for (int m = 0; m < 3; ++m) {
     const Double4 u0 = U[m], u1 = U[3 + m], u2 = U[6 + m];
@@ -235,9 +235,10 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
     for (int k = 0; k < 9; ++k) strain[k] += args.velocityWeight * rate[k];
   }
   const Double4 volume = load(group.volume);
-  const Double4 lambdaTrace = args.lambda * (strain[0] + strain[4] + strain[8]);
+  const Double4 lameLambda = load(group.lambda), lameMu = load(group.mu);
+  const Double4 lambdaTrace = lameLambda * (strain[0] + strain[4] + strain[8]);
   Double4 sigma[9];
-  for (int k = 0; k < 9; ++k) sigma[k] = (2 * args.mu) * strain[k];
+  for (int k = 0; k < 9; ++k) sigma[k] = (2 * lameMu) * strain[k];
   sigma[0] += lambdaTrace;
   sigma[4] += lambdaTrace;
   sigma[8] += lambdaTrace;
@@ -256,8 +257,8 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
     }
   }
   Double4 blocks[10][9];
-  const double lambda = args.stiffnessScale * args.lambda, mu = args.stiffnessScale * args.mu;
-  const Double4 volumeLambda = volume * lambda, volumeMu = volume * mu;
+  const Double4 mu = args.stiffnessScale * lameMu;
+  const Double4 volumeLambda = volume * (args.stiffnessScale * lameLambda), volumeMu = volume * mu;
   for (int i = 0, pair = 0; i < 4; ++i)
     for (int j = i; j < 4; ++j, ++pair) {
       const Double4 isotropic = mu * load(group.gradientDots[pair]);
@@ -269,7 +270,7 @@ TETSKIN_LANES_INLINE void assembleGroup(const PassArgs& args, std::size_t g) {
     }
   if (args.rotationScale != 0 || args.rotationVelocityWeight != 0)
     addRotationTerm(args, elasticStrain, args.velocity ? velocityGradient : nullptr, R, r, volume,
-                    f, blocks);
+                    lameLambda, lameMu, f, blocks);
 
   for (int l = 0; l < elements; ++l) {
     const std::size_t e = 4 * g + static_cast<std::size_t>(l);

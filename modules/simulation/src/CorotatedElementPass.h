@@ -23,7 +23,6 @@ struct PassArgs {
   const double* x;
   const double* velocity;  // null: no velocity term
   double velocityWeight;
-  double lambda, mu;              // the material's Lamé parameters
   double stiffnessScale;          // s: the matrix is s K + D
   double rotationScale;           // q: the matrix gains q K_rot
   double rotationVelocityWeight;  // u: the force gains -u K_rot v

@@ -140,12 +140,27 @@ Eigen::Matrix3d CorotatedFem::rotation(const Eigen::Matrix3d& F, Eigen::Quaterni
   return R;
 }
 
-CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
+CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material,
+                           std::span<const MaterialRegion> regions)
     : material_(material) {
   validateMaterial(material);
   validateTetMesh(rest, "simulation mesh", /*requirePositiveVolume=*/true);
   const Index n = rest.nodeCount();
   const auto count = static_cast<std::size_t>(rest.elementCount());
+  // Each element's material: the mesh's, or the last region's it lies in.
+  std::vector<const ElasticMaterial*> materialOf(count, &material);
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const MaterialRegion& region = regions[r];
+    if (region.firstElement < 0 || region.elementCount < 0 ||
+        region.firstElement + region.elementCount > rest.elementCount())
+      throw Error("material region " + std::to_string(r) + " (elements " +
+                  std::to_string(region.firstElement) + " to " +
+                  std::to_string(region.firstElement + region.elementCount - 1) +
+                  ") lies beyond the mesh's " + std::to_string(rest.elementCount()) + " elements");
+    validateMaterial(region.material);
+    for (Index e = region.firstElement; e < region.firstElement + region.elementCount; ++e)
+      materialOf[static_cast<std::size_t>(e)] = &region.material;
+  }
   restPositions_.resize(3 * n);
   for (Index v = 0; v < n; ++v) restPositions_.segment<3>(3 * v) = rest.nodes.row(v).transpose();
   mass_.setZero(3 * n);
@@ -178,6 +193,9 @@ CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
     for (int k = 0; k < 4; ++k)
       for (int a = 0; a < 3; ++a) group.gradients[k][a][lane] = gradients[k][a];
     group.volume[lane] = volume;
+    const ElasticMaterial& own = *materialOf[static_cast<std::size_t>(e)];
+    group.lambda[lane] = own.lameLambda();
+    group.mu[lane] = own.lameMu();
     for (int i = 0, pair = 0; i < 4; ++i)
       for (int j = i; j < 4; ++j, ++pair)
         group.gradientDots[pair][lane] = volume * gradients[i].dot(gradients[j]);
@@ -190,7 +208,7 @@ CorotatedFem::CorotatedFem(const TetMesh& rest, const ElasticMaterial& material)
           for (int b = 0; b < 3; ++b)
             triplets.emplace_back(3 * rest.elements(e, i) + a, 3 * rest.elements(e, j) + b, 0.0);
     for (int k = 0; k < 4; ++k)
-      mass_.segment<3>(3 * rest.elements(e, k)).array() += material.density * volume / 4.0;
+      mass_.segment<3>(3 * rest.elements(e, k)).array() += own.density * volume / 4.0;
   }
   pattern_.resize(3 * n, 3 * n);
   pattern_.setFromTriplets(triplets.begin(), triplets.end());
@@ -245,15 +263,15 @@ Eigen::Matrix3d CorotatedFem::rotatedFrameStrain(const Eigen::Matrix3d& R,
   return strain;
 }
 
-Eigen::Matrix3d CorotatedFem::linearStress(const Eigen::Matrix3d& strain) const {
-  Eigen::Matrix3d stress = 2 * material_.lameMu() * strain;
-  stress.diagonal().array() += material_.lameLambda() * strain.trace();
+Eigen::Matrix3d CorotatedFem::linearStress(std::size_t e, const Eigen::Matrix3d& strain) const {
+  Eigen::Matrix3d stress = 2 * mu(e) * strain;
+  stress.diagonal().array() += lambda(e) * strain.trace();
   return stress;
 }
 
 Eigen::Matrix<double, 12, 12> CorotatedFem::elementStiffness(Index e) const {
   const auto stored = static_cast<std::size_t>(storedAt_[static_cast<std::size_t>(e)]);
-  const double lambda = material_.lameLambda(), mu = material_.lameMu();
+  const double lambda = this->lambda(stored), mu = this->mu(stored);
   Eigen::Matrix<double, 12, 12> K;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -295,8 +313,6 @@ void CorotatedFem::update(const Eigen::VectorXd& x, Eigen::VectorXd& force, Spar
   args.x = x.data();
   args.velocity = terms.velocity ? terms.velocity->data() : nullptr;
   args.velocityWeight = terms.velocityWeight;
-  args.lambda = material_.lameLambda();
-  args.mu = material_.lameMu();
   args.stiffnessScale = terms.stiffnessScale;
   args.rotationScale = terms.rotationScale;
   args.rotationVelocityWeight = terms.rotationVelocityWeight;
@@ -326,7 +342,7 @@ double CorotatedFem::elasticEnergy(const Eigen::VectorXd& x) const {
         for (std::size_t e = elements.begin(); e < elements.end(); ++e) {
           const Eigen::Matrix3d F = deformationGradient(e, x);
           const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
-          energy += 0.5 * volume(e) * linearStress(strain).cwiseProduct(strain).sum();
+          energy += 0.5 * volume(e) * linearStress(e, strain).cwiseProduct(strain).sum();
         }
         return energy;
       },
@@ -345,7 +361,7 @@ CorotatedFem::ElementMeasures CorotatedFem::elementMeasures(const Eigen::VectorX
       const Eigen::Matrix3d F = deformationGradient(e, x);
       const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
       const int id = scatter_[e].id;
-      m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(strain));
+      m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(e, strain));
       m.equivalentStrain[id] = std::sqrt(2.0 / 3.0) * deviatorNorm(strain);
     }
   });
@@ -369,8 +385,8 @@ Eigen::VectorXd CorotatedFem::dampedElasticForce(const Eigen::VectorXd& x, const
         rate.noalias() += v.segment<3>(3 * node(e, k)) * gradient(e, k).transpose();
       const Eigen::Matrix3d rotatedRate = R.transpose() * rate;
       const Eigen::Matrix3d stress =
-          linearStress(rotatedFrameStrain(R, F)) +
-          beta * linearStress(0.5 * (rotatedRate + rotatedRate.transpose()));
+          linearStress(e, rotatedFrameStrain(R, F)) +
+          beta * linearStress(e, 0.5 * (rotatedRate + rotatedRate.transpose()));
       const Eigen::Matrix3d P = -volume(e) * R * stress;
       for (int k = 0; k < 4; ++k) perElement[e].col(k) = P * gradient(e, k);
     }

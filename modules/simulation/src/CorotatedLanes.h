@@ -252,8 +252,8 @@ inline constexpr double kRotationTermMinimumStretchSum = 0.5;
 // (columns), so that R H R^T = sum_i h_i u_i u_i^T. E is the symmetric
 // rotated-frame strain, R row-major.
 template <typename V>
-TETSKIN_LANES_INLINE void rotationTermModes(const V E[9], const V R[9], double lambda, double mu,
-                                            V h[3], V U[9]) {
+TETSKIN_LANES_INLINE void rotationTermModes(const V E[9], const V R[9], V lambda, V mu, V h[3],
+                                            V U[9]) {
   // Three sweeps: over 1e5 random strains of up to 10%, the H they give
   // differed from the exact decomposition's by at most 6e-6 mu (4e-2 mu
   // after two sweeps).

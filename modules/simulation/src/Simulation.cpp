@@ -31,6 +31,10 @@ SimulationOptions uprightAlong(UpAxis up, SimulationOptions options) {
 
 namespace {
 
+// How often a step is solved again without the skin contacts that would
+// end it pulling (BodyContact::releasePulling), at most.
+constexpr int kReleaseRounds = 3;
+
 // What is wrong with the first node (in `x`'s order) whose new position or
 // velocity is not finite or lies beyond kMaxCoordinate, named by its
 // number in the level (`outsideNode`): "node 12 would get ..."; empty when
@@ -80,6 +84,16 @@ void validateOptions(const SimulationOptions& o) {
         "\"dataset\"): the solver's grid levels are no body meshes with an FEM of their own");
   for (const Obstacle& obstacle : o.obstacles)
     if (const auto problem = obstacleProblem(obstacle)) throw Error(*problem);
+  for (std::size_t r = 0; r < o.materialRegions.size(); ++r) {
+    const ElasticMaterial& m = o.materialRegions[r].material;
+    if (m.massDamping != o.material.massDamping ||
+        m.stiffnessDamping != o.material.stiffnessDamping)
+      throw Error("material region " + std::to_string(r) + ": its damping (" +
+                  formatNumber(m.massDamping) + ", " + formatNumber(m.stiffnessDamping) +
+                  ") is not the run's (" + formatNumber(o.material.massDamping) + ", " +
+                  formatNumber(o.material.stiffnessDamping) +
+                  "): a run damps all its elements alike");
+  }
   const SkinCollisions& skins = o.skinCollisions;
   if (!(skins.thickness >= 0) || !std::isfinite(skins.thickness))
     throw Error("the skins' contact thickness must be finite and >= 0 (0: automatic), got " +
@@ -117,7 +131,7 @@ Simulation::Simulation(const MultiLevelTetMesh& dataset, int level,
       options_(options),
       numbering_(std::make_unique<NodeNumbering>(rest_, levelName(datasetName, level_))),
       internal_(numbering_->renumbered(rest_)),
-      fem_(internal_, options.material) {
+      fem_(internal_, options.material, options.materialRegions) {
   validateOptions(options);
   BodyModels body = bodyModels(fem_, options);
   models_ = std::move(body.models);
@@ -171,6 +185,8 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
   if (static_cast<Index>(bodies.size()) != restSkin.vertexCount())
     throw Error("the contact skin has " + std::to_string(restSkin.vertexCount()) +
                 " vertices, its bodies " + std::to_string(bodies.size()));
+  if (std::any_of(bodies.begin(), bodies.end(), [](int body) { return body < 0; }))
+    throw Error("the contact skin's bodies are numbered from 0");
   for (Index t = 0; t < restSkin.triangleCount(); ++t) {
     const auto bodyOf = [&](int k) {
       return bodies[static_cast<std::size_t>(restSkin.triangles(t, k))];
@@ -187,7 +203,7 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
   const bool several =
       std::adjacent_find(bodies.begin(), bodies.end(), std::not_equal_to<>()) != bodies.end();
   const SkinCollisions& settings = options_.skinCollisions;
-  if (!several && !settings.self) return;
+  if (!several && !settings.self && settings.selfBodies.empty()) return;
   double thickness = settings.thickness;
   if (thickness == 0) thickness = meanEdgeLength(restSkin);
   // (The obstacles' automatic stiffness, shared out over the skin's
@@ -287,8 +303,27 @@ StepStats Simulation::step() {
   stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
   stats.assemblySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const SolveStats solve = solvers_->solve(
-      system_, rhs_, dv_, steps_, {&x_, integrator_->springs(), integrator_->coupling()}, stats);
+  SolveStats solve = solvers_->solve(system_, rhs_, dv_, steps_,
+                                     {&x_, integrator_->springs(), integrator_->coupling()}, stats);
+  // The skins' springs push, never pull: those that would end the step
+  // pulling leave it, and it is solved again without them (a few rounds
+  // at most: letting go can make another pull).
+  for (int round = 0;
+       round < kReleaseRounds && bodyContact_ && bodyContact_->releasePulling(v_, dv_) > 0;
+       ++round) {
+    StepStats again;
+    const auto restart = std::chrono::steady_clock::now();
+    stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
+    stats.assemblySeconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - restart).count();
+    solve = solvers_->solve(system_, rhs_, dv_, steps_,
+                            {&x_, integrator_->springs(), integrator_->coupling()}, again);
+    stats.solver = again.solver;
+    stats.iterations += again.iterations;
+    stats.residual = again.residual;
+    stats.setupSeconds += again.setupSeconds;
+    stats.solveSeconds += again.solveSeconds;
+  }
   Eigen::VectorXd x, v;
   integrator_->advance(models_, x_, v_, dv_, x, v);
   // The state stays the last one that was fine. (A solve that overflowed

@@ -1,13 +1,23 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RecordedRun.h"
 
+#include <regex>
 #include <utility>
+
+#include "tetskin/core/Error.h"
 
 namespace tetskin {
 
 RecordedRun::RecordedRun(const std::filesystem::path& pvd) : path_(pvd) {
   const PvdSeries series = PvdSeries::read(pvd);
   frames_ = series.framesOfPart(0);
+  // A run of several bodies (RunRecorder: control_NNNNN_K.vtu per body) is
+  // no run of one level's nodes.
+  static const std::regex bodyFrame(R"(control_\d{5}_\d+\.vtu)");
+  if (std::regex_match(std::filesystem::path(frames_.front().file).filename().string(), bodyFrame))
+    throw Error(pvd.string(), 0,
+                "records a scene of several bodies (each body's parts of its own); it replays "
+                "in ParaView, not here");
   SimulationFrameFacts facts = simulationFrameFacts(frames_.front().file);
   level_ = facts.level;
   conditions_ = std::move(facts.conditions);

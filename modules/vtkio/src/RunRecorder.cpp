@@ -22,6 +22,37 @@ std::filesystem::path withPvdExtension(std::filesystem::path p) {
   return p;
 }
 
+// `body`'s part of the run's conditions: its prescribed nodes, numbered
+// from its first.
+RunConditions bodyPart(const RunConditions& conditions, const BodyRange& body) {
+  RunConditions part{conditions.floor, {}};
+  for (int node : conditions.prescribedNodes)
+    if (node >= body.firstNode && node < body.firstNode + body.nodeCount)
+      part.prescribedNodes.push_back(node - static_cast<int>(body.firstNode));
+  return part;
+}
+
+// `body`'s part of a deformed surface: its skin, binding and moved state.
+BoundSurface bodyPart(const BoundSurface& surface, const BodyRange& body) {
+  BoundSurface part;
+  part.surface = bodyPart(surface.surface, body);
+  part.binding = bodyPart(surface.binding, body);
+  part.dataset = surface.dataset;
+  if (surface.deformed) {
+    const DeformedState& from = *surface.deformed;
+    const auto rows = [&](const Points3& all) -> Points3 {
+      return all.rows() == 0 ? all : Points3(all.middleRows(body.firstVertex, body.vertexCount));
+    };
+    DeformedState& to = part.deformed.emplace();
+    to.positions = rows(from.positions);
+    to.normals = rows(from.normals);
+    for (const PointScalars& s : from.scalars)
+      to.scalars.push_back({s.name, s.values.segment(body.firstVertex, body.vertexCount)});
+    for (const PointVectors& v : from.vectors) to.vectors.push_back({v.name, rows(v.values)});
+  }
+  return part;
+}
+
 }  // namespace
 
 std::filesystem::path RunRecorder::framesDirectory(const std::filesystem::path& pvd) {
@@ -44,7 +75,7 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions, in
   // ParaView's offer as one series. Only files named as this class names
   // frames go, and the old .pvd, which names them.
   static const std::regex frameName(
-      R"((control_\d{5}\.vtu|surface_\d{5}(_\d+)?(\.vtp|\.pvtp|_piece\d+\.vtp)|obstacle_(\d{5}_)?\d+\.vtp))");
+      R"((control_\d{5}(_\d+)?\.vtu|surface_\d{5}(_\d+)?(\.vtp|\.pvtp|_piece\d+\.vtp)|obstacle_(\d{5}_)?\d+\.vtp))");
   for (const auto& entry : std::filesystem::directory_iterator(framesDirectory_))
     if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), frameName))
       std::filesystem::remove(entry.path());
@@ -53,20 +84,47 @@ RunRecorder::RunRecorder(std::filesystem::path pvd, RunConditions conditions, in
 
 void RunRecorder::addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
                            const BoundSurface* deformedSurface,
-                           std::span<const PosedSurface> obstacles) {
+                           std::span<const PosedSurface> obstacles,
+                           std::span<const BodyRange> bodies) {
   char name[64];
-  std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
   // The series names its files relative to the .pvd, which lies beside the folder.
   const std::string folder = framesDirectory_.filename().string() + "/";
-  writeVtu(framesDirectory_ / name, simulationFrame(rest, fields, level, conditions_));
-  series_.add(time, 0, folder + name);
-  if (deformedSurface) addSurface(time, *deformedSurface);
-  for (std::size_t k = 0; k < obstacles.size(); ++k) addObstacle(time, k, obstacles[k]);
+  if (bodies.size() <= 1) {
+    std::snprintf(name, sizeof name, "control_%05lld.vtu", static_cast<long long>(frames_));
+    writeVtu(framesDirectory_ / name, simulationFrame(rest, fields, level, conditions_));
+    series_.add(time, 0, folder + name);
+    if (deformedSurface) addSurface(time, *deformedSurface);
+  } else {
+    const BodyRange& last = bodies.back();
+    if (rest.nodeCount() != last.firstNode + last.nodeCount ||
+        (deformedSurface &&
+         deformedSurface->surface.vertexCount() != last.firstVertex + last.vertexCount))
+      throw Error(series_.path().string(), 0,
+                  "the frame's mesh or surface is not the union of its " +
+                      std::to_string(bodies.size()) + " bodies");
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const BodyRange& body = bodies[b];
+      std::snprintf(name, sizeof name, "control_%05lld_%zu.vtu", static_cast<long long>(frames_),
+                    b);
+      writeVtu(framesDirectory_ / name,
+               simulationFrame(bodyPart(rest, body), bodyPart(fields, body), level,
+                               bodyPart(conditions_, body)));
+      const int part = 2 * static_cast<int>(b);
+      series_.add(time, part, folder + name);
+      if (!deformedSurface) continue;
+      char stem[64];
+      std::snprintf(stem, sizeof stem, "surface_%05lld_%zu", static_cast<long long>(frames_), b);
+      writeSurface(time, part + 1, stem, bodyPart(*deformedSurface, body));
+    }
+  }
+  const int firstObstacle = firstObstaclePart(static_cast<int>(bodies.size()));
+  for (std::size_t k = 0; k < obstacles.size(); ++k)
+    addObstacle(time, firstObstacle + static_cast<int>(k), k, obstacles[k]);
   series_.write();
   ++frames_;
 }
 
-void RunRecorder::addObstacle(double time, std::size_t k, const PosedSurface& obstacle) {
+void RunRecorder::addObstacle(double time, int part, std::size_t k, const PosedSurface& obstacle) {
   char name[64];
   if (obstacle.moves)
     std::snprintf(name, sizeof name, "obstacle_%05lld_%zu.vtp", static_cast<long long>(frames_), k);
@@ -81,8 +139,7 @@ void RunRecorder::addObstacle(double time, std::size_t k, const PosedSurface& ob
     writeVtp(framesDirectory_ / name, toVtkPolyData(posed));
     staticObstacleWritten_[k] = !obstacle.moves;
   }
-  series_.add(time, kFirstObstaclePart + static_cast<int>(k),
-              framesDirectory_.filename().string() + "/" + name);
+  series_.add(time, part, framesDirectory_.filename().string() + "/" + name);
 }
 
 void RunRecorder::addSurfaceFrame(double time, const BoundSurface& deformedSurface) {

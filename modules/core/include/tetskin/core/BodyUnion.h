@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "tetskin/core/FrameFields.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
@@ -22,16 +23,23 @@ struct BodyParts {
   const SurfaceBinding* binding = nullptr;
 };
 
-struct BodyUnion {
-  MultiLevelTetMesh mesh;           // one level: every body's mesh
-  SurfaceMesh skin;                 // every body's skin
-  SurfaceBinding binding;           // of `skin` to `mesh`'s level 0
-  std::vector<int> vertexBody;      // per skin vertex, its body (from 0)
-  std::vector<Index> firstNode;     // per body, its first node in `mesh`; one more: the count
-  std::vector<Index> firstVertex;   // per body, its first skin vertex; one more: the count
-  std::vector<Index> firstElement;  // per body, its first element; one more: the count
+// Where one body lies in a union: its nodes, elements, skin vertices and
+// skin triangles, each [first, first + count).
+struct BodyRange {
+  Index firstNode = 0, nodeCount = 0;
+  Index firstElement = 0, elementCount = 0;
+  Index firstVertex = 0, vertexCount = 0;
+  Index firstTriangle = 0, triangleCount = 0;
+};
 
-  int bodyCount() const { return static_cast<int>(firstNode.size()) - 1; }
+struct BodyUnion {
+  MultiLevelTetMesh mesh;         // one level: every body's mesh
+  SurfaceMesh skin;               // every body's skin
+  SurfaceBinding binding;         // of `skin` to `mesh`'s level 0
+  std::vector<int> vertexBody;    // per skin vertex, its body (from 0)
+  std::vector<BodyRange> bodies;  // in the order given
+
+  int bodyCount() const { return static_cast<int>(bodies.size()); }
 };
 
 // The union of `bodies` (at least one; each with a mesh, a skin and a
@@ -39,5 +47,14 @@ struct BodyUnion {
 // whose binding does not fit its skin or mesh, or whose method differs
 // from the first body's.
 BodyUnion uniteBodies(std::span<const BodyParts> bodies);
+
+// One body's part of a union, numbered from its own first node and vertex:
+// its control mesh, its skin, its skin's binding (control ids and face ids
+// less the body's first node and element; unbound slots stay -1), a
+// control frame's fields (per node and per element) and per-vertex rows.
+TetMesh bodyPart(const TetMesh& united, const BodyRange& body);
+SurfaceMesh bodyPart(const SurfaceMesh& united, const BodyRange& body);
+SurfaceBinding bodyPart(const SurfaceBinding& united, const BodyRange& body);
+FrameFields bodyPart(const FrameFields& united, const BodyRange& body);
 
 }  // namespace tetskin

@@ -62,13 +62,18 @@ struct RunRequest {
   // The time step, solver, tolerance, ... (the material, up, gravity and
   // floor in it are replaced by the fields above).
   SimulationOptions settings = defaultRunSettings();
+  // Several bodies (a scene's; empty: the level is one body), each with
+  // its material as its dataset and scene give it: `material`'s values go
+  // over each body's instead of over the config's.
+  std::vector<RunBody> bodies;
 };
 
 // The run `request` describes on `mesh` with `config`: the config's
 // material under the given values, upright along the given or the config's
 // up axis, the held box's nodes added. Throws Error for a scenario that does
 // not exist, a level that does not, a material value out of range, or a
-// held box around no node of the level, each named as `names` says.
+// held box around no node of the level, each named as `names` says; for
+// bodies whose damping differs (a run damps all its bodies alike).
 RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
                    const DatasetConfig& config);
 

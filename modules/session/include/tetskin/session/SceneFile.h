@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
-// A scene file (.json, format "tetskin-scene"): the body, the obstacles
+// A scene file (.json, format "tetskin-scene"): the bodies, the obstacles
 // with their placement, motion and friction, the floor, gravity, the time
 // step and the step count; as read, paths resolved against the scene's
 // folder and every value checked, before anything is loaded (SceneRun.h
@@ -72,7 +72,7 @@ struct Scene {
   // The skins' contact with each other and themselves (its `self` unused:
   // each body's self_contact says); nullopt: SkinCollisions' defaults.
   std::optional<SkinCollisions> skinContact;
-  std::vector<SceneBody> bodies;  // one (several bodies are not yet supported)
+  std::vector<SceneBody> bodies;  // at least one
   std::vector<SceneObstacle> obstacles;
 };
 

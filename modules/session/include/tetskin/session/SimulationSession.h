@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "tetskin/core/BodyUnion.h"
 #include "tetskin/core/OptionSchema.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
@@ -45,6 +46,17 @@ inline constexpr NumberOption kEvery{
     atLeast(1), 1};
 }  // namespace recording_option
 
+// One of several bodies a run steps as one (a scene's, BodyUnion.h): where
+// it lies in the run's level and bound skin, its material, its start and
+// whether its skin meets itself.
+struct RunBody {
+  std::string name;  // "/bodies/1": names it in errors and messages
+  BodyRange range;   // nodes and elements of the level (its own numbering), skin vertices
+  ElasticMaterial material;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // at the start, m/s
+  bool selfContact = false;
+};
+
 // What a run is, as a front end has parsed it.
 struct RunSpec {
   int level = 0;  // a resolved level of the dataset
@@ -56,6 +68,11 @@ struct RunSpec {
   std::string datasetName = "dataset";  // names the dataset in errors
   // Every node's velocity at the start (m/s), added to the scenario's.
   Eigen::Vector3d initialVelocity = Eigen::Vector3d::Zero();
+  // Several bodies (empty: the level is one body): their materials are
+  // options.materialRegions, their skins' self-contact options.
+  // skinCollisions.selfBodies; each body's velocity is added to its nodes'
+  // at the start, and a bound skin is theirs, body after body.
+  std::vector<RunBody> bodies;
 };
 
 class SimulationSession {
@@ -146,6 +163,8 @@ class SimulationSession {
   Simulation& simulation() { return *simulation_; }
   const Simulation& simulation() const { return *simulation_; }
   const Scenario& scenario() const { return *scenario_; }
+  // The run's bodies (empty: one body, the whole level).
+  const std::vector<RunBody>& bodies() const { return bodies_; }
   // The options the run uses (the front end's, with the scenario's own).
   const SimulationOptions& options() const { return simulation_->options(); }
   int level() const { return level_; }
@@ -157,6 +176,7 @@ class SimulationSession {
   const MultiLevelTetMesh& dataset_;
   int level_;
   std::string datasetName_;
+  std::vector<RunBody> bodies_;
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<Scenario> scenario_;
   std::unique_ptr<BoundSurface> bound_;

@@ -23,6 +23,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <array>
+#include <span>
 #include <vector>
 
 #include "tetskin/core/ElasticMaterial.h"
@@ -39,6 +40,7 @@ struct alignas(32) ElementGroup {  // what the rest shape fixes
   double gradients[4][3][4];       // [node k][axis][lane]: shape-function gradient g_k
   double volume[4];
   double gradientDots[10][4];  // V g_i . g_j for the pairs i <= j, in row order
+  double lambda[4], mu[4];     // the element's Lame parameters (Pa)
   int nodes[4][4];             // [node k][lane]
 };
 struct alignas(32) RotationEstimates {  // the last rotations, as unit quaternions
@@ -54,17 +56,31 @@ struct ElementScatter {           // where an element's blocks go
 // Row-major so rows can be processed in parallel (SpMV, Dirichlet rows).
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
+// Elements of another material than the mesh's: elements [firstElement,
+// firstElement + elementCount) of the mesh (a body of several a run steps
+// as one). Their Young's modulus, Poisson's ratio and density count; the
+// damping is the run's, one for all its elements.
+struct MaterialRegion {
+  Index firstElement = 0, elementCount = 0;
+  ElasticMaterial material;
+};
+
 class CorotatedFem {
  public:
   // Inputs: the rest mesh (#N x 3 nodes in m, #T x 4 positively oriented
-  // tetrahedra) and its material (Pa, kg/m^3).
-  CorotatedFem(const TetMesh& rest, const ElasticMaterial& material);
+  // tetrahedra) and its material (Pa, kg/m^3), `regions` of other
+  // materials over it (later regions over earlier ones). Throws Error for a
+  // material out of its ranges or a region beyond the elements.
+  CorotatedFem(const TetMesh& rest, const ElasticMaterial& material,
+               std::span<const MaterialRegion> regions = {});
 
   Index nodeCount() const { return restPositions_.size() / 3; }
   Index dofCount() const { return restPositions_.size(); }
   Index elementCount() const { return static_cast<Index>(scatter_.size()); }
   const Eigen::VectorXd& restPositions() const { return restPositions_; }  // xyz per node
   const Eigen::VectorXd& lumpedMass() const { return mass_; }              // per dof
+  // The mesh's material (an element in a region has the region's
+  // elasticity and density).
   const ElasticMaterial& material() const { return material_; }
   // The pattern of the assembled stiffness (values zero), for callers that
   // build systems of the same shape.
@@ -158,10 +174,12 @@ class CorotatedFem {
   double volume(std::size_t e) const { return groups_[e / 4].volume[e % 4]; }
   Eigen::Vector3d gradient(std::size_t e, int k) const;
   Eigen::Matrix3d deformationGradient(std::size_t e, const Eigen::VectorXd& x) const;
-  // The element's strain in its rotated frame, sym(R^T F) - I, and the
-  // linear (Hooke) stress of a strain.
+  double lambda(std::size_t e) const { return groups_[e / 4].lambda[e % 4]; }
+  double mu(std::size_t e) const { return groups_[e / 4].mu[e % 4]; }
+  // The element's strain in its rotated frame, sym(R^T F) - I, and stored
+  // element e's linear (Hooke) stress of a strain.
   static Eigen::Matrix3d rotatedFrameStrain(const Eigen::Matrix3d& R, const Eigen::Matrix3d& F);
-  Eigen::Matrix3d linearStress(const Eigen::Matrix3d& strain) const;
+  Eigen::Matrix3d linearStress(std::size_t e, const Eigen::Matrix3d& strain) const;
   ElasticMaterial material_;
   // Per stored element (Morton order of the centroids; groups padded to
   // four with copies of the last element).

@@ -111,11 +111,13 @@ inline constexpr double kStandardGravity = 9.81;  // m/s^2
 // Contact of the skins with each other and with themselves (BodyContact in
 // the module's src): a run's bodies meet skin to skin whenever its contact
 // skin holds several (Simulation::setContactSkin); a body's skin meets
-// itself when `self` is set. The skins are shells `thickness` thick.
+// itself when `self` is set, or when its number is in `selfBodies`. The
+// skins are shells `thickness` thick.
 struct SkinCollisions {
-  bool self = false;
-  double thickness = 0;  // model units; 0: the contact skin's mean edge length
-  double stiffness = 0;  // N/m per skin vertex; 0: automatic, as the obstacles'
+  bool self = false;            // every body's
+  std::vector<int> selfBodies;  // these bodies' (numbered as the contact skin's)
+  double thickness = 0;         // model units; 0: the contact skin's mean edge length
+  double stiffness = 0;         // N/m per skin vertex; 0: automatic, as the obstacles'
   double staticFriction = 0.5, kineticFriction = 0.4;  // mu_s >= mu_k >= 0
 };
 
@@ -189,6 +191,9 @@ inline constexpr EnumOption<ContactPoints> kContactPoints{"contact_points", "--c
 
 struct SimulationOptions {
   ElasticMaterial material;
+  // Elements (the level's numbering) of other materials: a run of several
+  // bodies. Their damping must be `material`'s: one damping for the run.
+  std::vector<MaterialRegion> materialRegions;
   double timeStep = simulation_option::kTimeStep.defaultValue;
   Eigen::Vector3d gravity{0, -kStandardGravity, 0};
   UpAxis up = UpAxis::Y;              // the floor's normal (and the scenarios' vertical)

@@ -3,7 +3,9 @@
 // A simulation run as a ParaView time series: RUN.pvd plus RUN_frames/ with
 // one control-mesh .vtu (and optionally one bound-surface .vtp) per frame,
 // or the bound surface's frames alone, or several bound surfaces' frames;
-// a run with obstacles adds them as posed at each frame (parts 2, 3, ...).
+// a run of several bodies writes each body's control mesh and skin as parts
+// of their own (2k and 2k + 1 for body k); a run with obstacles adds them
+// as posed at each frame (the parts after the bodies': 2, 3, ... for one).
 // The .pvd is rewritten after every frame, so a run stopped at any point
 // leaves a valid series. Used by `tetskin simulate` and the GUI's recorder.
 
@@ -13,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "tetskin/core/BodyUnion.h"
 #include "tetskin/core/FloorPlane.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/vtkio/BindingFile.h"
@@ -49,12 +52,19 @@ class RunRecorder {
   // The control level's state (level-local nodes; SimulationFrame.h) and,
   // if given, the bound surface already deformed to this frame, and the
   // obstacles posed at it: obstacle K is part 2 + K, in
-  // obstacle_K.vtp (static) or obstacle_NNNNN_K.vtp (moving).
+  // obstacle_K.vtp (static) or obstacle_NNNNN_K.vtp (moving). With
+  // `bodies` (the level and the surface as a union of them, BodyUnion.h),
+  // body k's part of the level is part 2k (control_NNNNN_k.vtu, nodes
+  // numbered from the body's first), its part of the surface part 2k + 1
+  // (surface_NNNNN_k.vtp), and obstacle K part 2 #bodies + K.
   void addFrame(double time, const TetMesh& rest, const FrameFields& fields, int level,
                 const BoundSurface* deformedSurface = nullptr,
-                std::span<const PosedSurface> obstacles = {});
-  // The first part the obstacles take.
+                std::span<const PosedSurface> obstacles = {},
+                std::span<const BodyRange> bodies = {});
+  // The first part the obstacles take: after one body's two, and after
+  // `bodies` bodies' two each.
   static constexpr int kFirstObstaclePart = 2;
+  static constexpr int firstObstaclePart(int bodies) { return bodies > 1 ? 2 * bodies : 2; }
   // A frame of the bound surface alone (part 1, as beside a control frame):
   // `tetskin deform` of a recorded run.
   void addSurfaceFrame(double time, const BoundSurface& deformedSurface);
@@ -78,7 +88,7 @@ class RunRecorder {
   void writeSurface(double time, int part, const std::string& stem, const BoundSurface& surface);
   // Writes obstacle `k` as posed at this frame (a static one the first time
   // only) and adds it to the series.
-  void addObstacle(double time, std::size_t k, const PosedSurface& obstacle);
+  void addObstacle(double time, int part, std::size_t k, const PosedSurface& obstacle);
 };
 
 }  // namespace tetskin

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Several bodies' cost (issue #71's benchmark): three bundled bunnies at
+// their finest level, each with the 64k skin, dropped into a bowl (BOWL.obj
+// from data/tools/make_bowl.py, placed 2.5 times larger; see
+// bodies_bench.sh) and onto each other. In one run: the steps with every
+// contact (the bowl, and the skins against each other) against the same
+// steps of the same three bodies with none, from the same state, the two
+// stepping by turns (medians over the steps). Prints a table; asserts
+// nothing.
+//
+// usage: bodies_bench BOWL.obj [STEPS] [SETTLE]
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "StepTimes.h"
+#include "tetskin/session/RunRequest.h"
+#include "tetskin/session/SceneRun.h"
+#include "tetskin/session/SimulationSession.h"
+
+using namespace tetskin;
+using bench::StepTimes;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void printRow(const char* what, const StepTimes& t) {
+  std::printf("  %-34s %7.2f  %7.1f  %8.2f  %6.2f  %8d  %13d\n", what, t.step, 1e3 / t.step,
+              t.assembly, t.solve, t.contacts, t.iterations);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: bodies_bench BOWL.obj [STEPS] [SETTLE]\n");
+    return 2;
+  }
+  const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+  const int settle = argc > 3 ? std::atoi(argv[3]) : 40;
+  const std::string data = TETSKIN_SOURCE_DIR "/data/";
+  // The bowl's inside reaches down to y = -22.5; each bunny about 10 wide
+  // and 9.5 tall, the lowest 1 above the bowl, the others above it and a
+  // little aside, so that they land on each other.
+  nlohmann::json bodies = nlohmann::json::array();
+  const double places[3][3] = {{0, -21.5, 0}, {2.5, -10.5, 0.5}, {-2, 0.5, -0.5}};
+  for (const auto& place : places)
+    bodies.push_back({{"dataset", data + "bunny.json"},
+                      {"surface", data + "bunny_64k.obj"},
+                      {"translate", {place[0], place[1], place[2]}}});
+  const nlohmann::json json = {
+      {"format", "tetskin-scene"},
+      {"version", 1},
+      {"bodies", bodies},
+      {"obstacles", {{{"surface", argv[1]}, {"scale", 2.5}, {"friction", 0.4}}}}};
+  const auto loadStart = Clock::now();
+  SceneRun run = loadScene(parseScene(json, "bodies_bench", "."));
+  const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  std::printf(
+      "bodies_bench: 3 bodies, %lld tetrahedra and %lld nodes in all, skins %lld vertices in "
+      "all, bowl %lld triangles, %s, %d threads (loaded and bound in %.1f s)\n",
+      static_cast<long long>(run.dataset.mesh.elements.rows()),
+      static_cast<long long>(run.dataset.mesh.nodes.rows()),
+      static_cast<long long>(run.surface->surface.vertexCount()),
+      static_cast<long long>(
+          run.request.settings.obstacles.front().shape->surface().triangleCount()),
+      toString(spec.options.solver), static_cast<int>(tbb::info::default_concurrency()),
+      std::chrono::duration<double>(Clock::now() - loadStart).count());
+
+  // With contact: dropped, then `settle` steps into the fall and the first
+  // impacts; without: the same bodies with no bowl and no skin contact (one
+  // skin, one body: no skin meets another), from the state reached.
+  SimulationSession contact(run.dataset.mesh, spec);
+  contact.bindSurface(run.surface->surface, run.surface->binding, "bodies_bench");
+  for (int i = 0; i < settle; ++i) contact.step();
+  const SimulationState reached = contact.state();
+  RunSpec freeSpec = spec;
+  freeSpec.options.obstacles.clear();
+  freeSpec.bodies.clear();
+  freeSpec.options.skinCollisions.selfBodies.clear();
+  SimulationSession free(run.dataset.mesh, freeSpec);
+  free.bindSurface(run.surface->surface, run.surface->binding, "bodies_bench");
+  free.startFrom({reached.positions, reached.velocities});
+  const auto [with, without] = bench::stepByTurns(contact, free, steps);
+  std::printf(
+      "\nafter %d steps of the drop, %d steps by turns (medians)\n"
+      "                                      step ms  steps/s  assembly   solve  contacts  "
+      "cg iterations\n",
+      settle, steps);
+  printRow("no contact", without);
+  printRow("the bowl and the skins meeting", with);
+  std::printf("  contact's share: %.2f ms per step (%.0f%% of the step with it)\n",
+              with.step - without.step, 100 * (with.step - without.step) / with.step);
+  return 0;
+}
