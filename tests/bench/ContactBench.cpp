@@ -98,7 +98,9 @@ int main(int argc, char** argv) {
   freeSpec.options.obstacles.clear();
   SimulationSession free(run.dataset.mesh, freeSpec);
   free.startFrom({settled.positions, settled.velocities});
-  const auto [with, without] = bench::stepByTurns(contact, free, steps);
+  const std::vector<StepTimes> times = bench::stepByTurns({&contact, &free}, steps);
+  const StepTimes& with = times[0];
+  const StepTimes& without = times[1];
 
   std::printf(
       "\nsteps (ms per step, median of %d, by turns)   step   assembly   solve   contacts   "

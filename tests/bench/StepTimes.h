@@ -36,19 +36,16 @@ inline StepTimes median(const std::vector<StepTimes>& steps) {
           static_cast<int>(middle(&StepTimes::iterations))};
 }
 
-// `steps` steps of `with` and `without` by turns, so that the machine's
-// drift (other load, clock changes) falls on both alike: each one's
-// medians.
-struct ByTurns {
-  StepTimes with, without;
-};
-inline ByTurns stepByTurns(SimulationSession& with, SimulationSession& without, int steps) {
-  std::vector<StepTimes> withSteps, withoutSteps;
-  for (int i = 0; i < steps; ++i) {
-    withSteps.push_back(timeStep(with));
-    withoutSteps.push_back(timeStep(without));
-  }
-  return {median(withSteps), median(withoutSteps)};
+// `steps` steps of each session by turns, so that the machine's drift
+// (other load, clock changes) falls on all alike: each one's medians.
+inline std::vector<StepTimes> stepByTurns(const std::vector<SimulationSession*>& sessions,
+                                          int steps) {
+  std::vector<std::vector<StepTimes>> times(sessions.size());
+  for (int i = 0; i < steps; ++i)
+    for (std::size_t k = 0; k < sessions.size(); ++k) times[k].push_back(timeStep(*sessions[k]));
+  std::vector<StepTimes> medians;
+  for (const std::vector<StepTimes>& t : times) medians.push_back(median(t));
+  return medians;
 }
 
 }  // namespace tetskin::bench

@@ -85,9 +85,24 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
   std::vector<Hit> hits(static_cast<std::size_t>(skin.rows()));
   const double reach2 = thickness_ * thickness_;
   const double neighbourhood2 = kNeighbourhood * kNeighbourhood * reach2;
+  // Each body's skin's box, grown by the thickness: a vertex of a body that
+  // does not meet itself and lies in no other body's box has nothing to
+  // meet (bodies apart cost a box test per vertex, not a tree search).
+  std::vector<Aabb> bodyBoxes(selfContact_.size());
+  for (Index v = 0; v < skin.rows(); ++v)
+    bodyBoxes[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])].extend(
+        skin.row(v).transpose().eval());
+  for (Aabb& box : bodyBoxes) box = box.inflated(thickness_);
+  const auto nearAnother = [&](const Eigen::Vector3d& p, int body) {
+    for (std::size_t b = 0; b < bodyBoxes.size(); ++b)
+      if (static_cast<int>(b) != body && bodyBoxes[b].contains(p)) return true;
+    return false;
+  };
   parallelFor<Index>(0, skin.rows(), 256, [&](const IndexRange<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Eigen::Vector3d p = skin.row(v).transpose();
+      const int body = body_[static_cast<std::size_t>(v)];
+      if (!selfContact_[static_cast<std::size_t>(body)] && !nearAnother(p, body)) continue;
       const Aabb query{p.array() - thickness_, p.array() + thickness_};
       Hit& hit = hits[static_cast<std::size_t>(v)];
       double best = reach2;
