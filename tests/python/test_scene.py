@@ -82,8 +82,10 @@ def test_several_bodies_step_as_one_and_meet_skin_to_skin():
     lower = {"dataset": bunny, "level": 0}
     upper = {"dataset": bunny, "level": 0, "translate": [0.5, 10.5, 0], "velocity": [0, -3, 0],
              "material": {"youngs_modulus": 4e5}}
+    # (The skins are the coarse level's boundaries: their mean edge, the
+    # default shell, is thicker than the ears; a 0.3 shell is not.)
     scene = {"format": "tetskin-scene", "version": 1, "floor": {"height": 0},
-             "bodies": [lower, upper]}
+             "skin_contact": {"thickness": 0.3}, "bodies": [lower, upper]}
     both = tetskin.Scene(scene, mass_damping=1.0)
     bodies = both.run_spec["bodies"]
     assert [b["name"] for b in bodies] == ["/bodies/0", "/bodies/1"]

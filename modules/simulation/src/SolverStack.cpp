@@ -224,4 +224,17 @@ SolveStats SolverStack::solve(const SparseMatrix& A, const Eigen::VectorXd& b, E
   return outcome.solve;
 }
 
+SolveStats SolverStack::resolve(SolverKind solver, const SparseMatrix& A, const Eigen::VectorXd& b,
+                                Eigen::VectorXd& dv, Index step, const StepPoint& at,
+                                StepStats& stats) {
+  blockSystem_.assign(A);  // (solveWith assigns it only where it guesses)
+  const Outcome outcome = solveWith(solver, A, b, dv, step, at, /*guess=*/false,
+                                    std::numeric_limits<double>::infinity());
+  stats.setupSeconds += outcome.setupSeconds;
+  stats.solveSeconds += outcome.solveSeconds;
+  stats.iterations += outcome.solve.iterations;
+  stats.residual = outcome.solve.relativeResidual;
+  return outcome.solve;
+}
+
 }  // namespace tetskin

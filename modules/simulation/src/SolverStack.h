@@ -53,6 +53,12 @@ class SolverStack {
   // and its setup and solve seconds.
   SolveStats solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& dv, Index step,
                    const StepPoint& at, StepStats& stats);
+  // The same step's system again, a little changed (contacts let go): by
+  // `solver` from dv as it is (the first solve's answer, near the new
+  // one), outside the solver choice's trials; its statistics added to
+  // `stats`.
+  SolveStats resolve(SolverKind solver, const SparseMatrix& A, const Eigen::VectorXd& b,
+                     Eigen::VectorXd& dv, Index step, const StepPoint& at, StepStats& stats);
   // A solution the stepper kept (its step did not blow up): the next
   // guesses build on it.
   void remember(const Eigen::VectorXd& dv) { guess_.remember(dv); }
