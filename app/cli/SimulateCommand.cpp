@@ -230,8 +230,7 @@ RunInput sceneInput(SimulateArgs& a, const CLI::App& cmd) {
   RunInput in;
   in.spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
   in.dataset = std::move(run.dataset);
-  in.datasetName =
-      scene.bodies.size() > 1 ? a.dataset.generic_string() : body.dataset.generic_string();
+  in.datasetName = std::filesystem::path(run.request.datasetName).generic_string();
   if (run.surface)
     in.surface.emplace(std::move(run.surface->surface), std::move(run.surface->binding));
   return in;

@@ -141,11 +141,9 @@ void Scene::openScene(const SceneRun& run) {
     binding = run.surface->binding;
     drawing = makeDrawing(loaded, *surface, binding, path_, loaded.config.fur);
   }
-  // (Several bodies are one dataset of the scene's making, named by it.)
-  const std::filesystem::path path =
-      run.scene.bodies.size() > 1 ? run.scene.file : run.scene.bodies.front().dataset;
-  install(std::move(loaded), path, std::move(surface), std::move(binding), run.level,
-          std::move(drawing), run.request.settings.obstacles);
+  // (The dataset as the scene names it: several bodies' union by the scene.)
+  install(std::move(loaded), run.request.datasetName, std::move(surface), std::move(binding),
+          run.level, std::move(drawing), run.request.settings.obstacles);
 }
 
 void Scene::install(Dataset dataset, const std::filesystem::path& path,

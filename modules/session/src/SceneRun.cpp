@@ -193,7 +193,7 @@ void loadOneBody(const Scene& scene, SceneRun& run) {
 // A scene of several bodies: their levels and skins united (BodyUnion.h)
 // into one level and one skin, the run's bodies.
 void loadBodies(const Scene& scene, SceneRun& run) {
-  std::vector<LoadedBody> loaded;
+  std::vector<DatasetConfig> configs;
   std::vector<TetMesh> meshes;
   std::vector<SceneSurface> skins;
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
@@ -210,9 +210,9 @@ void loadBodies(const Scene& scene, SceneRun& run) {
       throw Error(scene.file.string(), 0,
                   at + "/" + simulation_option::kContactPoints.key +
                       ": must be /bodies/0's: the bodies of a scene meet the obstacles alike");
-    LoadedBody& one = loaded.emplace_back(loadBody(scene, k));
+    LoadedBody one = loadBody(scene, k);
     TetMesh mesh = extractLevel(one.dataset.mesh, one.level);
-    const Index firstNode = one.dataset.mesh.levels[static_cast<std::size_t>(one.level)].firstNode;
+    const LevelRange& level = one.dataset.mesh.levels[static_cast<std::size_t>(one.level)];
     SceneSurface skin;
     if (one.surface) {
       skin = std::move(*one.surface);
@@ -222,14 +222,16 @@ void loadBodies(const Scene& scene, SceneRun& run) {
       skin.binding = inScene(
           scene, at, [&] { return bindSurface(skin.surface, one.dataset.mesh, one.level); });
     }
-    // The binding in the level's own numbering, as the union takes it.
-    for (Index v = 0; v < skin.binding.vertexCount(); ++v)
-      for (int j = 0; j < 4; ++j) {
-        int& id = skin.binding.controlIds(v, j);
-        if (id >= 0) id -= static_cast<int>(firstNode);
-      }
-    skin.binding.faceId.array() -=
-        static_cast<int>(one.dataset.mesh.levels[static_cast<std::size_t>(one.level)].firstElement);
+    // The binding in the level's own numbering, as the union takes it: the
+    // level is the dataset's part as a body is the union's.
+    BodyRange levelPart;
+    levelPart.firstNode = level.firstNode;
+    levelPart.nodeCount = level.nodeCount;
+    levelPart.firstElement = level.firstElement;
+    levelPart.elementCount = level.elementCount;
+    levelPart.vertexCount = skin.binding.vertexCount();
+    skin.binding = bodyPart(skin.binding, levelPart);
+    configs.push_back(std::move(one.dataset.config));
     meshes.push_back(std::move(mesh));
     skins.push_back(std::move(skin));
   }
@@ -238,7 +240,7 @@ void loadBodies(const Scene& scene, SceneRun& run) {
     parts.push_back({&meshes[k], &skins[k].surface, &skins[k].binding});
   BodyUnion united = inScene(scene, "/bodies", [&] { return uniteBodies(parts); });
 
-  run.dataset.config = loaded.front().dataset.config;
+  run.dataset.config = configs.front();
   run.dataset.mesh = std::move(united.mesh);
   run.level = 0;
   SceneSurface skin;
@@ -260,7 +262,7 @@ void loadBodies(const Scene& scene, SceneRun& run) {
     runBody.name = "/bodies/" + std::to_string(k);
     runBody.range = range;
     runBody.material = inScene(scene, runBody.name + "/material", [&] {
-      return body.material.over(loaded[k].dataset.config.elasticity, OptionNames::Keys);
+      return body.material.over(configs[k].elasticity, OptionNames::Keys);
     });
     runBody.velocity = body.velocity;
     runBody.selfContact = body.selfContact.value_or(false);

@@ -109,10 +109,8 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
       tree.forEachOverlap(query, [&](int t) {
         const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
         if (a == v || b == v || c == v) return;
-        const bool sameBody =
-            body_[static_cast<std::size_t>(v)] == body_[static_cast<std::size_t>(a)];
-        if (sameBody && !selfContact_[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])])
-          return;
+        const bool sameBody = body == body_[static_cast<std::size_t>(a)];
+        if (sameBody && !selfContact_[static_cast<std::size_t>(body)]) return;
         const ClosestPointOnTriangle closest = closestPointOnTriangle(
             p, skin.row(a).transpose(), skin.row(b).transpose(), skin.row(c).transpose());
         if (closest.squaredDistance >= best) return;
