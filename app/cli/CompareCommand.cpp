@@ -74,6 +74,10 @@ void checkOptions(const CompareArgs& a, const CLI::App& cmd) {
     throw Error(std::string(scenario_option::kLoads.flag) +
                 ": names nodes of one level, and compare runs several: compare recorded runs "
                 "(--runs) whose loads were given per level");
+  if (!a.run.scenario.loadFaces.empty())
+    throw Error(std::string(scenario_option::kLoadFaces.flag) +
+                ": names faces of one level, and compare runs several: select them by " +
+                scenario_option::kLoadBox.flag + ", which takes each level's faces in the box");
   checkRunOptions(a.run, cmd);
   const std::filesystem::path table = tableOf(a);
   requireNotAnInput(a.output, {a.dataset, a.surface});

@@ -43,6 +43,22 @@ void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
                  std::string(kLoads.help) + ": a text file of lines NODE FX FY FZ, # comments")
       ->check(CLI::ExistingFile)
       ->group(kGroup);
+  addFlagOf(cmd, kPressure, a.pressure, kPressure.help, finiteNumber())->group(kGroup);
+  cmd.add_option(kTraction.flag, a.traction, std::string(kTraction.help) + ": X,Y,Z")
+      ->expected(3)
+      ->delimiter(',')
+      ->check(finiteNumber())
+      ->group(kGroup);
+  cmd.add_option(kLoadBox.flag, a.loadBox,
+                 std::string(kLoadBox.help) + ": XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX")
+      ->expected(6)
+      ->delimiter(',')
+      ->check(finiteNumber())
+      ->group(kGroup);
+  cmd.add_option(kLoadFaces.flag, a.loadFaces,
+                 std::string(kLoadFaces.help) + ": a text file of lines A B C, # comments")
+      ->check(CLI::ExistingFile)
+      ->group(kGroup);
   cmd.add_option(kLoadCurve.flag, a.loadCurve,
                  std::string(kLoadCurve.help) +
                      ": a text file of lines TIME FACTOR, and a last line 'repeat' to repeat it, "
@@ -84,8 +100,24 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
       throw Error(*given + ": " + notReadBy(request.scenario, f.parameter));
   std::optional<std::string> withLoads = givenName(cmd, scenario_option::kLoadSeconds);
   if (cmd.count(scenario_option::kLoadCurve.flag) > 0) withLoads = scenario_option::kLoadCurve.flag;
-  if (withLoads && a.loads.empty() && request.parameters.loads.size() == 0)
-    throw Error(*withLoads + ": applies with --loads, which is not given");
+  const bool surfaceLoad = a.pressure || !a.traction.empty();
+  if (withLoads && a.loads.empty() && request.parameters.loads.size() == 0 && !surfaceLoad &&
+      request.surfaceLoads.empty() && request.parameters.surfaceLoads.empty())
+    throw Error(*withLoads +
+                ": applies with --loads or a surface load (--pressure, "
+                "--traction), and none is given");
+  using scenario_option::kLoadBox, scenario_option::kLoadFaces;
+  const bool selected = !a.loadBox.empty() || !a.loadFaces.empty();
+  if (surfaceLoad != selected)
+    throw Error(surfaceLoad
+                    ? std::string("--pressure and --traction need the faces they act on: ") +
+                          kLoadBox.flag + " or " + kLoadFaces.flag
+                    : std::string(!a.loadBox.empty() ? kLoadBox.flag : kLoadFaces.flag) +
+                          ": selects the faces of --pressure or --traction, and neither "
+                          "is given");
+  if (!a.loadBox.empty() && !a.loadFaces.empty())
+    throw Error(std::string(kLoadBox.flag) + " and " + kLoadFaces.flag +
+                ": give the loaded faces one way");
   // (Each number was checked as it was parsed; makeScenario() checks the
   // whole set again for its other callers.)
   ScenarioParameters& p = request.parameters;
@@ -100,6 +132,16 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
     request.fixedBox = box;
   }
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
+  if (surfaceLoad) {
+    SurfaceLoadRequest& load = request.surfaceLoads.emplace_back();
+    load.name = !a.loadBox.empty() ? kLoadBox.flag : kLoadFaces.flag;
+    load.pressure = a.pressure.value_or(0.0);
+    if (!a.traction.empty()) load.traction = {a.traction[0], a.traction[1], a.traction[2]};
+    if (!a.loadBox.empty())
+      load.box = BoundingBox{{a.loadBox[0], a.loadBox[1], a.loadBox[2]},
+                             {a.loadBox[3], a.loadBox[4], a.loadBox[5]}};
+    load.faceFile = a.loadFaces;
+  }
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);
   if (a.gravity.size() == 3)
     request.gravity = Eigen::Vector3d(a.gravity[0], a.gravity[1], a.gravity[2]);

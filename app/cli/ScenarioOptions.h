@@ -22,9 +22,14 @@ struct ScenarioArgs {
   std::vector<double> fixedBox;      // --fixed-box: min x, y, z, max x, y, z; empty: none
   std::filesystem::path loads;       // node forces (io NodeList.h), or empty
   std::filesystem::path loadCurve;   // scales the loads (io LoadCurveFile.h), or empty
-  std::vector<double> gravity;       // x, y, z; empty: the default
-  std::optional<double> floor;       // height of a floor plane
-  std::string up;                    // --up: x, y or z; empty: the dataset's
+  // One surface load: --pressure, --traction (x, y, z) on the faces of
+  // --load-box (min x, y, z, max x, y, z) or --load-faces (a face set).
+  std::optional<double> pressure;
+  std::vector<double> traction, loadBox;
+  std::filesystem::path loadFaces;
+  std::vector<double> gravity;  // x, y, z; empty: the default
+  std::optional<double> floor;  // height of a floor plane
+  std::string up;               // --up: x, y or z; empty: the dataset's
 };
 
 // Adds --scenario, --up and the "Scenario" group of options to `cmd`.
@@ -39,7 +44,7 @@ std::optional<std::string> givenScenarioOption(const CLI::App& cmd);
 
 // Sets in `request` what the command line gives of the scenario and its
 // parameters (the numbers, the held nodes of --fixed-nodes, the loads and
-// their curve read), the held box (--fixed-box), gravity, the floor and
+// their curve read), the held box (--fixed-box), the surface load, gravity, the floor and
 // the up axis, for a level of `nodeCount` nodes; the rest stays as
 // `request` has it (the defaults, or a scene's values). Throws Error for an
 // option of another scenario than the chosen one (e.g. --push-acceleration

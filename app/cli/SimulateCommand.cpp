@@ -136,6 +136,19 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
     std::printf(", floor at %s = %s", toString(options.up),
                 formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
+  for (std::size_t k = 0; k < parameters.surfaceLoads.size(); ++k) {
+    // (At rest: the pressure's total changes as the faces deform.)
+    const SurfaceLoad& load = parameters.surfaceLoads[k];
+    const Eigen::VectorXd rest = sim.restMesh().nodes.reshaped<Eigen::RowMajor>();
+    Eigen::VectorXd forces = Eigen::VectorXd::Zero(rest.size());
+    addSurfaceLoadForces(load, rest, rest, 1.0, forces);
+    std::printf(
+        "  surface load %zu: pressure %s Pa, traction %s Pa on %lld faces of %s m^2 "
+        "(total force at rest %s N)\n",
+        k, formatNumber(load.pressure).c_str(), commaSeparated(load.traction).c_str(),
+        static_cast<long long>(load.faces.rows()), formatNumber(loadedArea(load, rest)).c_str(),
+        commaSeparated(forces.reshaped(3, rest.size() / 3).rowwise().sum()).c_str());
+  }
   if (options.hasContact()) {
     const Eigen::RowVector3d force = sim.contactForces(sim.state()).colwise().sum();
     const std::size_t count = options.obstacles.size();
@@ -175,6 +188,8 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
   std::printf(
       "  final energy: kinetic %.4g, elastic %.4g, gravitational %.4g J (from the rest shape)\n",
       e.kinetic, e.elastic, e.gravitational);
+  if (!parameters.surfaceLoads.empty())
+    std::printf("  the surface loads' potential: %.4g J\n", e.load);
   if (!sim.fixedNodes().empty())
     std::printf("  supports: reaction %s N in all at the end, on the %zu fixed nodes\n",
                 commaSeparated(sim.supportReaction(sim.state())).c_str(), sim.fixedNodes().size());

@@ -31,6 +31,9 @@ tetskin_cli_test(compare_level_twice FAIL STATUS 1
 tetskin_cli_test(compare_node_list FAIL STATUS 1
   STDERR "^error: --fixed-nodes: names nodes of one level, and compare runs several: hold nodes by --fixed-box[^\n]*\n$"
   ARGS compare ${data}/bunny.json ${data}/bunny.obj --fixed-nodes ${tdata}/held_nodes.txt -o ${cli_out}/held.pvd)
+tetskin_cli_test(compare_face_set FAIL STATUS 1
+  STDERR "^error: --load-faces: names faces of one level, and compare runs several: select them by --load-box[^\n]*\n$"
+  ARGS compare ${data}/bunny.json ${data}/bunny.obj --traction 0,-1,0 --load-faces ${tdata}/bunny_base.faces -o ${cli_out}/faces.pvd)
 tetskin_cli_test(compare_runs_and_steps FAIL STATUS 1 REQUIRES compare_runs
   STDERR "^error: --steps: compares simulated levels. --runs compares recorded runs .the first the reference. frame by frame\n$"
   ARGS compare ${data}/bunny.json ${data}/bunny.obj --runs ${cli_out}/compare_a.pvd ${cli_out}/compare_b.pvd

@@ -62,7 +62,7 @@ tetskin_cli_test(simulate_loads
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --loads ${tdata}/loads.txt
        --load-seconds 0.02 --steps 3 -o ${cli_out}/loads.pvd -q)
 tetskin_cli_test(simulate_loads_seconds_alone FAIL STATUS 1
-  STDERR "^error: --load-seconds: applies with --loads, which is not given\n$"
+  STDERR "^error: --load-seconds: applies with --loads or a surface load \\(--pressure, --traction\\), and none is given\n$"
   NOT_EXIST ${cli_out}/alone.pvd
   ARGS simulate ${data}/bunny.json --load-seconds 1 -o ${cli_out}/alone.pvd)
 tetskin_cli_test(simulate_load_curve
@@ -74,7 +74,7 @@ tetskin_cli_test(simulate_repeated_load_curve
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --loads ${tdata}/loads.txt
        --load-curve ${tdata}/pulse_load_curve.txt --steps 3 -o ${cli_out}/pulses.pvd -q)
 tetskin_cli_test(simulate_load_curve_alone FAIL STATUS 1
-  STDERR "^error: --load-curve: applies with --loads, which is not given\n$"
+  STDERR "^error: --load-curve: applies with --loads or a surface load \\(--pressure, --traction\\), and none is given\n$"
   NOT_EXIST ${cli_out}/curve_alone.pvd
   ARGS simulate ${data}/bunny.json --load-curve ${tdata}/load_curve.txt -o ${cli_out}/curve_alone.pvd)
 tetskin_cli_test(simulate_bad_load_curve FAIL STATUS 1
@@ -86,6 +86,27 @@ tetskin_cli_test(simulate_bad_loads FAIL STATUS 1
   STDERR "^error: [^\n]*bad_loads.txt:3: node force \\(NODE FX FY FZ\\): expected 4 values, found 3\n$"
   NOT_EXIST ${cli_out}/bad_loads.pvd
   ARGS simulate ${data}/bunny.json --level 0 --loads ${tdata}/bad_loads.txt -o ${cli_out}/bad_loads.pvd)
+tetskin_cli_test(simulate_pressure
+  STDOUT "  surface load 0: pressure 1000 Pa, traction 0,0,0 Pa on 212 faces of 81.7459 m\\^2 \\(total force at rest -1985.1,-29566,-5388.18 N\\)\n.*  the surface loads' potential: -[0-9.]+ J\n"
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --pressure 1000
+       --load-box -100,4,-100,100,100,100 --steps 3 -o ${cli_out}/pressure.pvd)
+tetskin_cli_test(simulate_traction_on_a_face_set
+  STDOUT "  surface load 0: pressure 0 Pa, traction 0,-100,0 Pa on 2 faces of 1.45634 m\\^2 \\(total force at rest 0,-145.634,0 N\\)\n"
+  ARGS simulate ${data}/bunny.json --level 0 --scenario sag --traction 0,-100,0
+       --load-faces ${tdata}/bunny_base.faces --steps 2 -o ${cli_out}/traction.pvd)
+tetskin_cli_test(simulate_pressure_without_faces FAIL STATUS 1
+  STDERR "^error: --pressure and --traction need the faces they act on: --load-box or --load-faces\n$"
+  NOT_EXIST ${cli_out}/no_faces.pvd
+  ARGS simulate ${data}/bunny.json --level 0 --pressure 5 -o ${cli_out}/no_faces.pvd)
+tetskin_cli_test(simulate_load_box_without_a_load FAIL STATUS 1
+  STDERR "^error: --load-box: selects the faces of --pressure or --traction, and neither is given\n$"
+  NOT_EXIST ${cli_out}/box_alone.pvd
+  ARGS simulate ${data}/bunny.json --level 0 --load-box 0,0,0,1,1,1 -o ${cli_out}/box_alone.pvd)
+tetskin_cli_test(simulate_bad_face_set FAIL STATUS 1
+  STDERR "^error: [^\n]*bad_faces.faces:3: nodes 0, 1, 2 are not a face of the boundary\n$"
+  NOT_EXIST ${cli_out}/bad_faces.pvd
+  ARGS simulate ${data}/bunny.json --level 0 --traction 0,-100,0
+       --load-faces ${tdata}/bad_faces.faces -o ${cli_out}/bad_faces.pvd)
 tetskin_cli_test(simulate_floor_through_the_body
   STDERR "^warning: 126 of 224 nodes start below the floor at y = 5. contact pushes them up at once\n$"
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --floor-height 5 --steps 2 -o ${cli_out}/floor5.pvd -q)

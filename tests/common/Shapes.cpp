@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "Shapes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 #include <vector>
 
 namespace tetskin::test {
@@ -113,6 +116,20 @@ SurfaceMesh soup(const SurfaceMesh& mesh) {
       s.triangles(t, k) = static_cast<int>(3 * t + k);
     }
   return s;
+}
+
+std::array<int, 3> innerFace(const TetMesh& mesh) {
+  std::map<std::array<int, 3>, int> uses;
+  for (Index e = 0; e < mesh.elementCount(); ++e)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> face{};
+      int k = 0;
+      for (int c = 0; c < 4; ++c)
+        if (c != skip) face[static_cast<std::size_t>(k++)] = mesh.elements(e, c);
+      std::sort(face.begin(), face.end());
+      if (++uses[face] == 2) return face;
+    }
+  throw std::runtime_error("the mesh has no inner face");
 }
 
 }  // namespace tetskin::test

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Small synthetic meshes shared by the test suites.
+#include <array>
+
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/core/TetMesh.h"
 
@@ -11,6 +13,10 @@ TetMesh unitTetrahedron();
 
 // A box [0,size] split into nx*ny*nz cubes of 6 positive tetrahedra each.
 TetMesh tetGrid(int nx, int ny, int nz, const Eigen::Vector3d& size);
+
+// A face two elements of `mesh` share (none on its boundary); throws
+// std::runtime_error for a mesh without one.
+std::array<int, 3> innerFace(const TetMesh& mesh);
 
 // Closed axis-aligned box, 8 vertices, 12 outward triangles.
 SurfaceMesh box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);

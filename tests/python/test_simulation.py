@@ -109,6 +109,41 @@ def test_a_fixed_box_and_a_load_curve(bunny):
     tetskin.Simulation(bunny, level=0, loads=loads, load_curve=[[0, 0], [1, 1]]).step(2)
 
 
+def test_surface_loads_by_box_and_by_faces(bunny):
+    level = bunny.level(0)
+    top = level.nodes[:, 1].max()
+    box = [[-100, top - 1.5, -100], [100, top + 1, 100]]
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag", pressure=1000.0, load_box=box)
+    forces = sim.surface_load_forces()
+    assert forces.shape == (len(level.nodes), 3)
+    loaded = np.flatnonzero(np.abs(forces).sum(axis=1) > 0)
+    assert len(loaded) > 0 and (level.nodes[loaded, 1] >= top - 1.5).all()
+    assert forces[:, 1].sum() < 0  # the top pressed down
+    sim.step(3)
+    assert "load" in sim.energies() and sim.stress().shape == (len(level.elements), 6)
+
+    # A traction on the whole boundary, its faces given as rows of node ids
+    # in any order: its total is the traction times the area.
+    faces = level.boundary_faces
+    corners = level.nodes[faces]
+    area = 0.5 * np.linalg.norm(
+        np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
+    traction = np.array([0.0, -10.0, 2.0])
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag", traction=traction,
+                             load_faces=faces[:, ::-1])
+    total = sim.surface_load_forces().sum(axis=0)
+    assert np.abs(total - traction * area).max() <= 1e-12 * np.abs(traction).max() * area
+
+    with pytest.raises(tetskin.Error, match="pressure and traction need load_box or load_faces"):
+        tetskin.Simulation(bunny, level=0, pressure=5.0)
+    with pytest.raises(tetskin.Error, match="load_faces: row 0: node -1 does not exist"):
+        tetskin.Simulation(bunny, level=0, pressure=5.0, load_faces=[[-1, 0, 1]])
+    with pytest.raises(tetskin.Error, match="load_faces"):
+        tetskin.Simulation(bunny, level=0, pressure=5.0, load_faces=[[0, 1]])
+    with pytest.raises(tetskin.Error, match="traction: expected 3 numbers"):
+        tetskin.Simulation(bunny, level=0, traction=[1, 2], load_box=box)
+
+
 def test_forces_push_and_state_can_be_set(bunny):
     sim = tetskin.Simulation(bunny, level=0, gravity=[0, 0, 0], scenario="sag")
     rest = sim.positions

@@ -12,6 +12,8 @@
 
 #include "BlockRun.h"
 #include "ExpectError.h"
+#include "Shapes.h"
+#include "TestFiles.h"
 #include "tetskin/core/Appearance.h"
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfacePieces.h"
@@ -156,6 +158,79 @@ TEST(RunRequest, AHeldBoxAddsTheNodesInside) {
   for (Index i = 0; i < mesh.nodes.rows(); ++i)
     if (mesh.nodes(i, 1) >= 0.35) expected.push_back(static_cast<int>(i));
   EXPECT_EQ(spec.parameters.fixedNodes, expected);
+}
+
+// The block's top (y = 0.4, 0.2 x 0.2: 2 x 2 cells, 8 faces) by a box and
+// by a face set; errors name the request, the file and line, or the row.
+TEST(RunRequest, SurfaceLoadsSelectBoundaryFacesByABoxOrAFaceSet) {
+  const MultiLevelTetMesh mesh = uprightBlock();
+  RunRequest request;
+  SurfaceLoadRequest top;
+  top.name = "--load-box";
+  top.pressure = 100;
+  top.box = BoundingBox{{-1, 0.39, -1}, {1, 1, 1}};
+  request.surfaceLoads = {top};
+  const RunSpec spec = resolveRun(request, mesh, {});
+  ASSERT_EQ(spec.parameters.surfaceLoads.size(), 1u);
+  const SurfaceLoad& load = spec.parameters.surfaceLoads[0];
+  ASSERT_EQ(load.faces.rows(), 8);
+  const Eigen::VectorXd rest = mesh.nodes.reshaped<Eigen::RowMajor>();
+  EXPECT_NEAR(loadedArea(load, rest), 0.04, 1e-15);
+  // Wound outward: the pressure pushes down, into the block.
+  Eigen::VectorXd forces = Eigen::VectorXd::Zero(rest.size());
+  addSurfaceLoadForces(load, rest, rest, 1.0, forces);
+  EXPECT_NEAR(forces.reshaped(3, rest.size() / 3).rowwise().sum().y(), -4, 1e-13);
+
+  // The same faces from a file, each corner order any, gives the same load.
+  ScratchDir dir;
+  std::string lines = "# the top\n";
+  for (Index f = 0; f < load.faces.rows(); ++f)
+    lines += std::to_string(load.faces(f, 2)) + " " + std::to_string(load.faces(f, 0)) + " " +
+             std::to_string(load.faces(f, 1)) + "\n";
+  SurfaceLoadRequest byFile = top;
+  byFile.box.reset();
+  byFile.faceFile = dir.write("top.faces", lines);
+  request.surfaceLoads = {byFile};
+  EXPECT_EQ(resolveRun(request, mesh, {}).parameters.surfaceLoads[0].faces, load.faces);
+
+  // An inner face, a face named twice, a line that is no face.
+  const TetMesh level = extractLevel(mesh, 0);
+  const auto refusal = [&](const std::string& content) {
+    SurfaceLoadRequest bad = byFile;
+    bad.faceFile = dir.write("bad.faces", content);
+    return errorText([&] { selectSurfaceLoad(bad, level); });
+  };
+  const std::string file = (dir / "bad.faces").string();
+  const std::array<int, 3> inner = innerFace(level);
+  EXPECT_EQ(refusal(std::to_string(load.faces(0, 0)) + " " + std::to_string(load.faces(0, 1)) +
+                    " " + std::to_string(load.faces(0, 2)) + "\n" + std::to_string(inner[0]) + " " +
+                    std::to_string(inner[1]) + " " + std::to_string(inner[2]) + "\n"),
+            file + ":2: nodes " + std::to_string(inner[0]) + ", " + std::to_string(inner[1]) +
+                ", " + std::to_string(inner[2]) + " are not a face of the boundary");
+  const std::string first = std::to_string(load.faces(0, 0)) + " " +
+                            std::to_string(load.faces(0, 1)) + " " +
+                            std::to_string(load.faces(0, 2)) + "\n";
+  EXPECT_EQ(refusal(first + "# again\n" + first), file + ":3: names the face of line 1 again");
+  EXPECT_EQ(refusal("1 2\n"), file + ":1: face (three node numbers): expected 3 values, found 2");
+  // A box around no boundary face, and no selection.
+  SurfaceLoadRequest nowhere = top;
+  nowhere.box = BoundingBox{{5, 5, 5}, {6, 6, 6}};
+  EXPECT_EQ(errorText([&] { selectSurfaceLoad(nowhere, level); }),
+            "--load-box: no face of the boundary lies in 5,5,5 .. 6,6,6 (the body spans 0,0,0 .. "
+            "0.2,0.4,0.2)");
+  nowhere.box.reset();
+  EXPECT_EQ(errorText([&] { selectSurfaceLoad(nowhere, level); }),
+            "--load-box: no faces are selected (give a box or a face set)");
+  // Rows of node ids, as Python gives them.
+  SurfaceLoadRequest rows = top;
+  rows.box.reset();
+  rows.name = "load_faces";
+  rows.faceNodes = load.faces;
+  EXPECT_EQ(selectSurfaceLoad(rows, level).faces, load.faces);
+  rows.faceNodes.row(1) << 0, 1, 999;
+  EXPECT_EQ(errorText([&] { selectSurfaceLoad(rows, level); }),
+            "load_faces: row 1: node 999 does not exist (the body has " +
+                std::to_string(level.nodeCount()) + " nodes)");
 }
 
 TEST(RunRequest, WarningsComeOnceThroughTheSession) {

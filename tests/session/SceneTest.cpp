@@ -383,6 +383,58 @@ TEST(SceneRun, SeveralBodiesBecomeOneRunWithTheirOwnMaterialsStartsAndParts) {
 }
 
 // What a scene of several bodies refuses, named by the field.
+// A body's surface loads act on its own boundary: a box around both
+// bodies selects the first's faces alone, and a face set's node ids count
+// from the body's first node.
+TEST(SceneRun, SurfaceLoadsActOnTheirBodysOwnFaces) {
+  ScratchDir dir;
+  const Dataset bunny = loadDataset(kSampleData + "bunny.json");
+  const TetMesh level0 = extractLevel(bunny.mesh, 0);
+  const BoundaryFaces boundary = boundaryFaces(level0);
+  nlohmann::json json = twoBunnies();
+  json["bodies"][0]["surface_loads"] = {
+      {{"traction", {0, -1, 0}}, {"load_box", {-1e3, -1e3, -1e3, 1e3, 1e3, 1e3}}}};
+  const std::string faces =
+      std::to_string(boundary.faces(3, 1)) + " " + std::to_string(boundary.faces(3, 2)) + " " +
+      std::to_string(boundary.faces(3, 0)) + "\n" + std::to_string(boundary.faces(7, 0)) + " " +
+      std::to_string(boundary.faces(7, 1)) + " " + std::to_string(boundary.faces(7, 2)) + "\n";
+  json["bodies"][1]["surface_loads"] = {
+      {{"pressure", 50}, {"load_faces", dir.write("two.faces", faces).string()}}};
+  const SceneRun run = loadScene(parse(json));
+  const RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  ASSERT_EQ(spec.parameters.surfaceLoads.size(), 2u);
+  const SurfaceLoad& first = spec.parameters.surfaceLoads[0];
+  EXPECT_EQ(first.faces.rows(), boundary.faces.rows());
+  EXPECT_LT(first.faces.maxCoeff(), level0.nodeCount());
+  EXPECT_EQ(first.traction, Eigen::Vector3d(0, -1, 0));
+  const SurfaceLoad& second = spec.parameters.surfaceLoads[1];
+  ASSERT_EQ(second.faces.rows(), 2);
+  const int shift = static_cast<int>(level0.nodeCount());
+  EXPECT_EQ(second.faces.row(0), (boundary.faces.row(3).array() + shift).matrix());
+  EXPECT_EQ(second.faces.row(1), (boundary.faces.row(7).array() + shift).matrix());
+  EXPECT_EQ(second.pressure, 50);
+
+  // Refused: no value, faces both ways, and a face set's line no face.
+  nlohmann::json bad = twoBunnies();
+  bad["bodies"][1]["surface_loads"] = {{{"load_box", {0, 0, 0, 1, 1, 1}}}};
+  EXPECT_EQ(errorText([&] { parse(bad); }),
+            "scene.json: /bodies/1/surface_loads/0: give a pressure, a traction or both");
+  bad["bodies"][1]["surface_loads"][0]["pressure"] = 1;
+  bad["bodies"][1]["surface_loads"][0]["load_faces"] = "x.faces";
+  EXPECT_EQ(errorText([&] { parse(bad); }),
+            "scene.json: /bodies/1/surface_loads/0: give its faces by load_box or by load_faces, "
+            "one of them");
+  const std::array<int, 3> inner = innerFace(level0);
+  bad["bodies"][1]["surface_loads"][0].erase("load_box");
+  bad["bodies"][1]["surface_loads"][0]["load_faces"] =
+      dir.write("inner.faces", std::to_string(inner[0]) + " " + std::to_string(inner[1]) + " " +
+                                   std::to_string(inner[2]) + "\n")
+          .string();
+  const SceneRun badRun = loadScene(parse(bad));
+  expectErrorAt([&] { resolveRun(badRun.request, badRun.dataset.mesh, badRun.dataset.config); },
+                (dir / "inner.faces").string(), 1, "are not a face of the boundary");
+}
+
 TEST(SceneRun, SeveralBodiesRefuseWhatTheyCannotShare) {
   const auto refused = [](const auto& edit, const std::string& what) {
     nlohmann::json json = twoBunnies();

@@ -139,9 +139,50 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
       throw Error(named(kLoads) + ": expected one row per node of " + level + ", got " +
                   std::to_string(p.loads.rows()));
   }
+  // One surface load: pressure and traction on the faces of load_box or
+  // load_faces (a face-set file's path, or an (n, 3) array of node ids).
+  SurfaceLoadRequest surface;
+  const std::optional<double> pressure = k.number(kPressure);
+  const std::optional<py::object> traction = k.take(kTraction.key);
+  const std::optional<py::object> loadBox = k.take(kLoadBox.key);
+  const std::optional<py::object> loadFaces = k.take(kLoadFaces.key);
+  if ((pressure || traction) != (loadBox || loadFaces))
+    throw Error(k.call() + ": " +
+                (pressure || traction
+                     ? std::string(kPressure.key) + " and " + kTraction.key + " need " +
+                           kLoadBox.key + " or " + kLoadFaces.key + ": the faces they act on"
+                     : std::string(loadBox ? kLoadBox.key : kLoadFaces.key) +
+                           ": selects the faces of a pressure or traction, and neither is given"));
+  if (loadBox && loadFaces)
+    throw Error(k.call() + ": " + kLoadBox.key + " and " + kLoadFaces.key +
+                ": give the loaded faces one way");
+  if (pressure || traction) {
+    surface.name = named(loadBox ? kLoadBox : kLoadFaces);
+    surface.pressure = pressure.value_or(0.0);
+    if (traction) {
+      const py::array given = py::array::ensure(*traction);
+      if (!given) PyErr_Clear();
+      if (!given || given.size() != 3)
+        throw Error(named(kTraction) + ": expected 3 numbers (x, y, z)");
+      surface.traction = points3(given.attr("reshape")(1, 3), kTraction.key).row(0).transpose();
+    }
+    if (loadBox) {
+      const Points3 corners = points3(*loadBox, kLoadBox.key);
+      if (corners.rows() != 2)
+        throw Error(named(kLoadBox) + ": expected 2 corners (min, max), got " +
+                    std::to_string(corners.rows()));
+      surface.box = BoundingBox{corners.row(0).transpose(), corners.row(1).transpose()};
+    } else if (py::isinstance<py::str>(*loadFaces) ||
+               py::isinstance(*loadFaces, py::module_::import("pathlib").attr("PurePath"))) {
+      surface.faceFile = py::str(*loadFaces).cast<std::string>();
+    } else {
+      surface.faceNodes = intRows(*loadFaces, kLoadFaces.key, 3);
+    }
+    r.surfaceLoads.push_back(std::move(surface));
+  }
   for (const char* key : {kLoadSeconds.key, kLoadCurve.key})
-    if (k.given(key) && p.loads.rows() == 0)
-      throw Error(k.call() + ": " + key + ": applies with " + kLoads.key);
+    if (k.given(key) && p.loads.rows() == 0 && r.surfaceLoads.empty())
+      throw Error(k.call() + ": " + key + ": applies with " + kLoads.key + " or a surface load");
   if (const auto seconds = k.number(kLoadSeconds)) p.loadSeconds = *seconds;
   if (const auto curve = k.take(kLoadCurve.key)) {
     // (Finite or not, each point is LoadCurve's to check, naming it.)

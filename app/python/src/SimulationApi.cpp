@@ -223,11 +223,12 @@ void addSimulationApi(py::module_& m) {
             d["kinetic"] = e.kinetic;
             d["elastic"] = e.elastic;
             d["gravitational"] = e.gravitational;
+            d["load"] = e.load;
             d["total"] = e.total();
             return d;
           },
-          "Kinetic, elastic, gravitational and total energy now, joules (gravitational from the "
-          "rest shape).")
+          "Kinetic, elastic, gravitational, the surface loads' potential and the total energy "
+          "now, joules (the potentials from the rest shape).")
       .def(
           "contact_forces",
           [](const Object& s) {
@@ -243,6 +244,22 @@ void addSimulationApi(py::module_& m) {
             return owning(sim.frameFields(sim.state()).vonMisesStress);
           },
           "The von Mises stress per element now, pascals, float64 (m,).")
+      .def(
+          "stress",
+          [](const Object& s) {
+            const Simulation& sim = s.session->simulation();
+            return owning(sim.frameFields(sim.state()).stress);
+          },
+          "The stress tensor per element now, pascals, float64 (m, 6): xx, yy, zz, xy, yz, xz "
+          "in the world's axes (the corotated material's stress turned with the element).")
+      .def(
+          "surface_load_forces",
+          [](const Object& s) {
+            const Simulation& sim = s.session->simulation();
+            return owning(sim.surfaceLoadForces(sim.state()));
+          },
+          "The surface loads' (pressure's and traction's) consistent force on each node now, at "
+          "their present factor, newtons, float64 (n, 3).")
       .def(
           "record",
           [](Object& s, const std::filesystem::path& path, std::shared_ptr<BindingObject> surface,

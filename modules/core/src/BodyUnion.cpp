@@ -124,6 +124,8 @@ FrameFields bodyPart(const FrameFields& united, const BodyRange& body) {
   part.contactForces = nodeRows(united.contactForces);
   part.vonMisesStress = elementRows(united.vonMisesStress);
   part.equivalentStrain = elementRows(united.equivalentStrain);
+  if (united.stress.rows() > 0)
+    part.stress = united.stress.middleRows(body.firstElement, body.elementCount);
   return part;
 }
 

@@ -52,4 +52,19 @@ Points3 readNodeForces(const std::filesystem::path& path, Index nodeCount) {
   return forces;
 }
 
+std::vector<FaceSetLine> readFaceSet(const std::filesystem::path& path, Index nodeCount) {
+  const std::string content = detail::readWholeFile(path);
+  detail::TextLines lines(content, path.string());
+  std::vector<FaceSetLine> faces;
+  while (lines.next()) {
+    lines.expectTokens(3, 3, "face (three node numbers)");
+    FaceSetLine face;
+    for (std::size_t k = 0; k < 3; ++k) face.nodes[k] = nodeNumber(lines, lines[k], nodeCount);
+    face.line = lines.lineNumber();
+    faces.push_back(face);
+  }
+  if (faces.empty()) throw Error(path.string(), 0, "no faces in the file (lines A B C)");
+  return faces;
+}
+
 }  // namespace tetskin

@@ -87,6 +87,11 @@ RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
       throw Error(nameOf(scenario_option::kFixedBox, request.names) + ": " + e.what());
     }
   }
+  if (!request.surfaceLoads.empty()) {
+    const TetMesh level = extractLevel(mesh, request.level);
+    for (const SurfaceLoadRequest& load : request.surfaceLoads)
+      spec.parameters.surfaceLoads.push_back(selectSurfaceLoad(load, level));
+  }
   return spec;
 }
 

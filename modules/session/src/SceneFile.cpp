@@ -49,6 +49,35 @@ ScenePlacement readPlacement(const JsonFields& f) {
   return p;
 }
 
+// One of a body's surface_loads: {"pressure": P, "traction": [X, Y, Z],
+// "load_box": [xmin, ymin, zmin, xmax, ymax, zmax] or "load_faces": FILE}.
+SurfaceLoadRequest readSurfaceLoad(const json& value, const std::string& pointer,
+                                   const std::string& file,
+                                   const std::filesystem::path& directory) {
+  using namespace scenario_option;
+  JsonFields f(value, pointer, file);
+  SurfaceLoadRequest load;
+  load.name = file + ": " + pointer;
+  for (const char* key : {kPressure.key, kTraction.key, kLoadBox.key, kLoadFaces.key})
+    f.optional(key);
+  if (!f.has(kPressure.key) && !f.has(kTraction.key))
+    f.fail(pointer, "give a pressure, a traction or both");
+  if (f.has(kPressure.key)) load.pressure = schemaNumber(f, kPressure);
+  if (f.has(kTraction.key)) load.traction = f.vector3(kTraction.key);
+  if (f.has(kLoadBox.key) == f.has(kLoadFaces.key))
+    f.fail(pointer, std::string("give its faces by ") + kLoadBox.key + " or by " + kLoadFaces.key +
+                        ", one of them");
+  if (f.has(kLoadBox.key)) {
+    const Eigen::VectorXd box = f.numbers(kLoadBox.key, 6);
+    load.box = BoundingBox{box.head<3>(), box.tail<3>()};
+    if (load.box->empty())
+      f.fail(f.where(kLoadBox.key), "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min <= max");
+  }
+  if (f.has(kLoadFaces.key)) load.faceFile = pathField(f, kLoadFaces.key, directory);
+  f.rejectUnknown();
+  return load;
+}
+
 template <SchemaEnum E>
 E enumField(const JsonFields& f, const char* key) {
   const std::string name = f.string(key);
@@ -65,7 +94,7 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   body.dataset = pathField(f, "dataset", directory);
   for (const char* key : {"level", "surface", "velocity", "held_box", "material", "scenario",
                           simulation_option::kContactPoints.key, "self_contact", "fixed_nodes",
-                          "loads", "load_curve", "load_seconds"})
+                          "loads", "load_curve", "load_seconds", "surface_loads"})
     f.optional(key);
   if (f.has("level")) body.level = static_cast<int>(f.integer("level", -1000000, 1000000));
   if (f.has("surface")) body.surface = pathField(f, "surface", directory);
@@ -99,6 +128,14 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   if (f.has("loads")) body.loads = pathField(f, "loads", directory);
   if (f.has("load_curve")) body.loadCurve = pathField(f, "load_curve", directory);
   if (f.has("load_seconds")) body.loadSeconds = schemaNumber(f, scenario_option::kLoadSeconds);
+  if (f.has("surface_loads")) {
+    const json& loads = f.get("surface_loads");
+    if (!loads.is_array() || loads.empty())
+      f.fail(f.where("surface_loads"), "must be a non-empty array");
+    for (std::size_t k = 0; k < loads.size(); ++k)
+      body.surfaceLoads.push_back(readSurfaceLoad(
+          loads[k], f.where("surface_loads") + "/" + std::to_string(k), file, directory));
+  }
   f.rejectUnknown();
   return body;
 }

@@ -186,6 +186,7 @@ void loadOneBody(const Scene& scene, SceneRun& run) {
                     0, level.nodeCount, /*heldBoxToo=*/false, request.parameters, loadedBody);
   // (The held box stays a box: the front ends show and edit it as one.)
   request.fixedBox = body.heldBox;
+  request.surfaceLoads = body.surfaceLoads;
   if (body.contactPoints) request.settings.contactPoints = *body.contactPoints;
   request.settings.skinCollisions.self = body.selfContact.value_or(false);
 }
@@ -268,6 +269,11 @@ void loadBodies(const Scene& scene, SceneRun& run) {
     runBody.selfContact = body.selfContact.value_or(false);
     addBodyConditions(scene, k, meshes[k].nodes, range.firstNode, levelNodes,
                       /*heldBoxToo=*/true, request.parameters, loadedBody);
+    for (SurfaceLoadRequest load : body.surfaceLoads) {
+      load.firstNode = range.firstNode;
+      load.nodeCount = range.nodeCount;
+      request.surfaceLoads.push_back(std::move(load));
+    }
   }
   if (scene.bodies.front().contactPoints)
     request.settings.contactPoints = *scene.bodies.front().contactPoints;

@@ -353,15 +353,21 @@ CorotatedFem::ElementMeasures CorotatedFem::elementMeasures(const Eigen::VectorX
   ElementMeasures m;
   m.vonMisesStress.resize(elementCount());
   m.equivalentStrain.resize(elementCount());
+  m.stress.resize(elementCount(), 6);
   const auto deviatorNorm = [](const Eigen::Matrix3d& t) {
     return (t - t.trace() / 3.0 * Eigen::Matrix3d::Identity()).norm();
   };
   parallelFor<std::size_t>(0, scatter_.size(), 1024, [&](const auto& range) {
     for (std::size_t e = range.begin(); e < range.end(); ++e) {
       const Eigen::Matrix3d F = deformationGradient(e, x);
-      const Eigen::Matrix3d strain = rotatedFrameStrain(rotation(F), F);
+      const Eigen::Matrix3d R = rotation(F);
+      const Eigen::Matrix3d strain = rotatedFrameStrain(R, F);
+      const Eigen::Matrix3d rotated = linearStress(e, strain);
+      const Eigen::Matrix3d world = R * rotated * R.transpose();
       const int id = scatter_[e].id;
-      m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(linearStress(e, strain));
+      m.stress.row(id) << world(0, 0), world(1, 1), world(2, 2), world(0, 1), world(1, 2),
+          world(0, 2);
+      m.vonMisesStress[id] = std::sqrt(1.5) * deviatorNorm(rotated);
       m.equivalentStrain[id] = std::sqrt(2.0 / 3.0) * deviatorNorm(strain);
     }
   });

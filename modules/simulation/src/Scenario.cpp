@@ -143,7 +143,7 @@ void validateScenarioParameters(const ScenarioParameters& p) {
         std::pair{&kTwistDegrees, p.twistDegrees}, std::pair{&kTwistSeconds, p.twistSeconds}})
     if (const auto problem = option->problem(value)) throw Error(*problem);
   if (!p.loads.allFinite()) throw Error("the loads must be finite");
-  if (!p.loadCurve.empty() && p.loads.size() == 0)
+  if (!p.loadCurve.empty() && p.loads.size() == 0 && p.surfaceLoads.empty())
     throw Error("a load curve scales the loads, but there are none");
   // (Infinite: the whole run.)
   if (!(p.loadSeconds > 0))
@@ -161,6 +161,7 @@ void Scenario::setUp(Simulation& sim) {
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   sim.setFixedNodes(fixed);
+  sim.setSurfaceLoads(p_.surfaceLoads);
 }
 
 void Scenario::beforeStep(Simulation& sim, double time) {
@@ -171,6 +172,8 @@ void Scenario::beforeStep(Simulation& sim, double time) {
     forces_.setZero(sim.restMesh().nodeCount(), 3);
   drive(sim, time, forces_);
   sim.setExternalForces(forces_);
+  if (!p_.surfaceLoads.empty())
+    sim.setSurfaceLoadFactor(time < p_.loadSeconds ? p_.loadCurve.factorAt(time) : 0.0);
 }
 
 std::vector<int> fixedWithNodesInBox(const std::vector<int>& held, const Points3& restNodes,

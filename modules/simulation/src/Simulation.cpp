@@ -16,6 +16,7 @@
 #include "NodeNumbering.h"
 #include "ObstacleContact.h"
 #include "SolverStack.h"
+#include "SurfaceLoadForce.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
@@ -413,6 +414,44 @@ Points3 Simulation::reactionForces(const SimulationState& state) const {
   return reactions;
 }
 
+void Simulation::setSurfaceLoads(const std::vector<SurfaceLoad>& loads) {
+  std::vector<SurfaceLoad> internal = loads;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    if (const auto problem = surfaceLoadProblem(loads[k], rest_.nodeCount()))
+      throw Error("surface load " + std::to_string(k) + ": " + *problem);
+    for (Index f = 0; f < loads[k].faces.rows(); ++f)
+      for (int c = 0; c < 3; ++c)
+        internal[k].faces(f, c) = numbering_->internal(loads[k].faces(f, c));
+  }
+  const double factor = surfaceLoadForce_ ? surfaceLoadForce_->factor() : 1.0;
+  if (surfaceLoadForce_) {
+    models_.erase(std::find_if(models_.begin(), models_.end(), [&](const auto& model) {
+      return model.get() == surfaceLoadForce_;
+    }));
+    surfaceLoadForce_ = nullptr;
+  }
+  surfaceLoads_ = loads;
+  if (loads.empty()) return;
+  auto model = std::make_unique<SurfaceLoadForce>(std::move(internal), fem_.restPositions());
+  model->setFactor(factor);
+  surfaceLoadForce_ = model.get();
+  models_.push_back(std::move(model));
+}
+
+void Simulation::setSurfaceLoadFactor(double factor) {
+  if (!std::isfinite(factor))
+    throw Error("the surface loads' factor must be finite, got " + formatNumber(factor));
+  if (surfaceLoadForce_) surfaceLoadForce_->setFactor(factor);
+}
+
+Points3 Simulation::surfaceLoadForces(const SimulationState& state) const {
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(fem_.dofCount());
+  if (surfaceLoadForce_)
+    surfaceLoadForce_->addForceAt(numbering_->toInternal(state.positions),
+                                  numbering_->toInternal(state.velocities), force);
+  return numbering_->toOutside(force);
+}
+
 Points3 Simulation::contactForces(const SimulationState& state) const {
   return numbering_->toOutside(forcesAt(models_, *numbering_, state, true));
 }
@@ -424,13 +463,17 @@ Eigen::Vector3d Simulation::supportReaction(const SimulationState& state) const 
 FrameFields Simulation::frameFields(const SimulationState& state) const {
   CorotatedFem::ElementMeasures measures =
       fem_.elementMeasures(numbering_->toInternal(state.positions));
+  // (The surface loads' nodal forces are external forces as the loads on
+  // nodes are.)
   return {state.positions,
           state.velocities,
-          state.externalForces,
+          surfaceLoadForce_ ? Points3(state.externalForces + surfaceLoadForces(state))
+                            : state.externalForces,
           reactionForces(state),
           std::move(measures.vonMisesStress),
           std::move(measures.equivalentStrain),
-          obstacles_ || bodyContact_ ? contactForces(state) : Points3()};
+          obstacles_ || bodyContact_ ? contactForces(state) : Points3(),
+          std::move(measures.stress)};
 }
 
 }  // namespace tetskin

@@ -26,6 +26,7 @@
 #include "NodeNumbering.h"
 #include "ObstacleContact.h"
 #include "SolverStack.h"
+#include "SurfaceLoadForce.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/core/Geometry.h"
 #include "tetskin/simulation/Simulation.h"
@@ -60,6 +61,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   for (int v : fixedNodes_) held[static_cast<std::size_t>(numbering_->internal(v))] = 1;
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   Eigen::VectorXd load = external;
+  if (surfaceLoadForce_) surfaceLoadForce_->addForceAt(x, Eigen::VectorXd::Zero(x.size()), load);
   Eigen::Vector3d net = Eigen::Vector3d::Zero();
   double total = 0;
   for (Index node = 0; node < nodes; ++node) {

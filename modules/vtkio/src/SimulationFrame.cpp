@@ -93,6 +93,17 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
   grid->GetCellData()->AddArray(strain);
   grid->GetCellData()->AddArray(ratio);
   grid->GetCellData()->AddArray(levels);
+  if (fields.stress.rows() > 0) {
+    requireRows("the frame's stress tensors", fields.stress.rows(), rest.elementCount(),
+                "elements");
+    auto tensors = vtkSmartPointer<vtkDoubleArray>::New();
+    tensors->SetName(arrays::kStress);
+    tensors->SetNumberOfComponents(6);
+    tensors->SetNumberOfTuples(rest.elementCount());
+    for (Index e = 0; e < rest.elementCount(); ++e)
+      tensors->SetTypedTuple(e, fields.stress.row(e).data());
+    grid->GetCellData()->AddArray(tensors);
+  }
   if (const std::optional<FloorPlane>& floor = conditions.floor) {
     // As a plane ParaView's users can read: its normal and its height
     // along it.

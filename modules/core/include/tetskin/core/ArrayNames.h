@@ -23,6 +23,9 @@ inline constexpr const char* kContactForce = "ContactForce";
 inline constexpr const char* kPenetration = "Penetration";
 inline constexpr const char* kPrescribed = "Prescribed";          // point 0/1: held or driven
 inline constexpr const char* kVonMisesStress = "VonMisesStress";  // cell scalars, Pa
+// Cell tensors of six components (xx, yy, zz, xy, yz, xz, as VTK orders a
+// symmetric tensor), Pa: the stress in the world's axes.
+inline constexpr const char* kStress = "Stress";
 // Cell scalars: the von Mises equivalent strain (CorotatedFem::elementMeasures).
 inline constexpr const char* kEquivalentStrain = "EquivalentStrain";
 inline constexpr const char* kLevel = "Level";  // cell data of a level, field data of a binding

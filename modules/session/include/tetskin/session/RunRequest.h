@@ -17,6 +17,7 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/io/DatasetConfig.h"
 #include "tetskin/session/SimulationSession.h"
+#include "tetskin/session/SurfaceLoadSelection.h"
 #include "tetskin/simulation/Scenario.h"
 #include "tetskin/simulation/Simulation.h"
 
@@ -53,6 +54,9 @@ struct RunRequest {
   // seconds (Scenario.h); the nodes in fixedBox are held too.
   ScenarioParameters parameters;
   std::optional<BoundingBox> fixedBox;
+  // Pressures and tractions on faces of the level, selected as each says
+  // (added to parameters.surfaceLoads, which may hold some already).
+  std::vector<SurfaceLoadRequest> surfaceLoads;
   OptionNames names = OptionNames::Keys;  // how errors name the options
   MaterialOverrides material;
   std::optional<UpAxis> up;                // nullopt: the dataset config's
@@ -70,10 +74,11 @@ struct RunRequest {
 
 // The run `request` describes on `mesh` with `config`: the config's
 // material under the given values, upright along the given or the config's
-// up axis, the held box's nodes added. Throws Error for a scenario that does
-// not exist, a level that does not, a material value out of range, or a
-// held box around no node of the level, each named as `names` says; for
-// bodies whose damping differs (a run damps all its bodies alike).
+// up axis, the held box's nodes added, the surface loads' faces selected.
+// Throws Error for a scenario that does not exist, a level that does not, a
+// material value out of range, or a held box around no node of the level,
+// each named as `names` says; for bodies whose damping differs (a run damps
+// all its bodies alike); for a surface load selectSurfaceLoad refuses.
 RunSpec resolveRun(const RunRequest& request, const MultiLevelTetMesh& mesh,
                    const DatasetConfig& config);
 

@@ -17,6 +17,7 @@
 
 #include "tetskin/core/Geometry.h"
 #include "tetskin/session/RunRequest.h"
+#include "tetskin/session/SurfaceLoadSelection.h"
 #include "tetskin/simulation/Obstacle.h"
 
 namespace tetskin {
@@ -46,6 +47,10 @@ struct SceneBody {
   std::optional<bool> selfContact;             // nullopt: SkinCollisions' default (off)
   std::optional<std::filesystem::path> fixedNodes, loads, loadCurve;
   std::optional<double> loadSeconds;
+  // Pressures and tractions on the body's boundary (each named by its
+  // pointer; a box in the placed body's coordinates, a face set's node ids
+  // the level's).
+  std::vector<SurfaceLoadRequest> surfaceLoads;
 };
 
 struct SceneObstacle {

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "tetskin/core/ElasticMaterial.h"
+#include "tetskin/core/FrameFields.h"
 #include "tetskin/core/TetMesh.h"
 #include "tetskin/simulation/SimdKernel.h"
 
@@ -132,12 +133,16 @@ class CorotatedFem {
   // Elastic energy sum 1/2 z^T K_e z, z = R^T x_e - X_e, R from x.
   double elasticEnergy(const Eigen::VectorXd& x) const;
 
-  // Per element at positions x: the von Mises stress of the rotated-frame
-  // stress (Pa), and the equivalent (von Mises) strain of the rotated-frame
-  // strain e = sym(R^T F) - I, sqrt(2/3 dev(e) : dev(e)) (dimensionless: 0.01
-  // is 1% in a uniaxial stretch of an incompressible body).
+  // Per element at positions x: the stress R sigma(e) R^T (Pa; xx, yy, zz,
+  // xy, yz, xz), the rotated-frame stress turned into the world's axes: the
+  // Cauchy stress of the corotated material, whose strains are small; its
+  // von Mises stress; and the equivalent (von Mises) strain of the
+  // rotated-frame strain e = sym(R^T F) - I, sqrt(2/3 dev(e) : dev(e))
+  // (dimensionless: 0.01 is 1% in a uniaxial stretch of an incompressible
+  // body).
   struct ElementMeasures {
     Eigen::VectorXd vonMisesStress, equivalentStrain;
+    SymmetricTensors stress;
   };
   ElementMeasures elementMeasures(const Eigen::VectorXd& x) const;
 

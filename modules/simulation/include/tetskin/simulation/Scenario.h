@@ -18,6 +18,7 @@
 #include "tetskin/core/Geometry.h"
 #include "tetskin/core/LoadCurve.h"
 #include "tetskin/simulation/Simulation.h"
+#include "tetskin/simulation/SurfaceLoad.h"
 
 namespace tetskin {
 
@@ -85,16 +86,41 @@ inline constexpr ListOption kFixedBox{
     "coordinates (a beam's end, say)"};
 inline constexpr ListOption kLoads{"loads", "--loads", "the loads",
                                    "forces (newtons) on nodes of the level"};
+// A surface load (SurfaceLoad.h): a pressure, a traction or both, on the
+// boundary faces a box or a face set selects.
+inline constexpr NumberOption kPressure{
+    "pressure",
+    "--pressure",
+    "",
+    "the pressure",
+    "a pressure (Pa) on the loaded faces, along their inward normal as they deform (negative: "
+    "suction)",
+    NumberRange{},
+    0};
+inline constexpr ListOption kTraction{
+    "traction", "--traction", "the traction",
+    "a traction X, Y, Z (Pa: newtons per square metre of the loaded faces at rest), a fixed "
+    "force per area"};
+inline constexpr ListOption kLoadBox{
+    "load_box", "--load-box", "the loaded faces' box",
+    "the pressure and traction act on the faces of the level's boundary whose corners all lie "
+    "in this box, faces included"};
+inline constexpr ListOption kLoadFaces{
+    "load_faces", "--load-faces", "the loaded faces",
+    "the pressure and traction act on these faces of the level's boundary, each three node "
+    "ids (from 0) in any order"};
 inline constexpr ListOption kLoadCurve{
     "load_curve", "--load-curve", "the load curve",
-    "with loads: scales them over time by points TIME FACTOR (seconds, increasing; linear "
+    "with loads or surface loads: scales them over time by points TIME FACTOR (seconds, "
+    "increasing; linear "
     "between, held before the first and after the last, or repeated after it)"};
 inline constexpr NumberOption kLoadSeconds{
     "load_seconds",
     "--load-seconds",
     "--loads-seconds",
     "the loads' duration",
-    "with loads: they act for this many seconds, then let go (default: the whole run)",
+    "with loads or surface loads: they act for this many seconds, then let go (default: the "
+    "whole run)",
     above(0),
     std::numeric_limits<double>::infinity()};
 inline constexpr ListOption kGravity{
@@ -125,7 +151,10 @@ struct ScenarioParameters {
   std::vector<int> fixedNodes;  // every scenario: also fixed (the level's node ids)
   Points3 loads;                // every scenario: a force on each node of the level
                                 // (N; nodeCount rows), or empty for none
-  LoadCurve loadCurve;          // scales the loads over time (empty: by 1)
+  // Every scenario: pressures and tractions on faces of the level
+  // (SurfaceLoad.h), or none.
+  std::vector<SurfaceLoad> surfaceLoads;
+  LoadCurve loadCurve;  // scales the loads and surface loads over time (empty: by 1)
   double loadSeconds =
       std::numeric_limits<double>::infinity();  // the loads act in the
                                                 // steps that start before this time, then let go
@@ -176,8 +205,8 @@ class Scenario {
   // state: called once before the first step.
   void setUp(Simulation& simulation);
   // Sets the external forces (the scenario's, and the loads times the load
-  // curve's factor at `time`) and kinematic targets for the step that
-  // starts at `time`.
+  // curve's factor at `time`), the surface loads' factor and the kinematic
+  // targets for the step that starts at `time`.
   void beforeStep(Simulation& simulation, double time);
 
  protected:
@@ -205,7 +234,7 @@ std::string nodesBelowFloor(const Simulation& simulation);
 // Throws Error for an unknown name, or naming the parameter whose value no
 // scenario can use (e.g. a base share outside [0, 1), a twist time <= 0,
 // anything not finite, a load curve without loads; loads of another level:
-// setUp() checks their count).
+// setUp() checks their count, and the surface loads' nodes).
 std::unique_ptr<Scenario> makeScenario(std::string_view name,
                                        const ScenarioParameters& parameters = {});
 std::vector<std::string> scenarioNames();

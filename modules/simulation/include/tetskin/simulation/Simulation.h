@@ -41,6 +41,7 @@
 #include "tetskin/simulation/LinearSolvers.h"
 #include "tetskin/simulation/Obstacle.h"
 #include "tetskin/simulation/SolverChoice.h"
+#include "tetskin/simulation/SurfaceLoad.h"
 
 namespace tetskin {
 
@@ -50,6 +51,7 @@ class ImplicitEuler;
 class NodeConstraints;
 class ObstacleContact;
 class BodyContact;
+class SurfaceLoadForce;
 class NodeNumbering;
 class SolverStack;
 
@@ -308,13 +310,15 @@ struct StaticStats {
 };
 
 // Joules. The gravitational energy is measured from the rest shape where
-// the dataset puts it: the body at rest there has none of the three, any
-// state of a run has the same zero whichever state the run started from
-// (a run continued from a frame carries its energies on), and a body far
-// from the origin does not swamp the others with its height's energy.
+// the dataset puts it: the body at rest there has none of the potentials,
+// any state of a run has the same zero whichever state the run started
+// from (a run continued from a frame carries its energies on), and a body
+// far from the origin does not swamp the others with its height's energy.
+// `load` is the surface loads' potential (surfaceLoadEnergy, SurfaceLoad.h;
+// zero without them).
 struct Energies {
-  double kinetic = 0, elastic = 0, gravitational = 0;
-  double total() const { return kinetic + elastic + gravitational; }
+  double kinetic = 0, elastic = 0, gravitational = 0, load = 0;
+  double total() const { return kinetic + elastic + gravitational + load; }
 };
 
 class Simulation {
@@ -375,6 +379,18 @@ class Simulation {
   // must not reach a step.
   void setExternalForces(const Points3& forces);
   Points3 externalForces() const;
+  // Pressures and tractions on faces of the level (SurfaceLoad.h; node ids
+  // the level's), replacing any given before; they act from the next step
+  // on, times the factor below. Throws Error naming the load (from 0) and
+  // its problem (surfaceLoadProblem).
+  void setSurfaceLoads(const std::vector<SurfaceLoad>& loads);
+  const std::vector<SurfaceLoad>& surfaceLoads() const { return surfaceLoads_; }
+  // Scales the surface loads from the next step on (a load curve's factor;
+  // 1 at the start, 0 once they let go).
+  void setSurfaceLoadFactor(double factor);
+  // Their consistent nodal forces at `state` (#nodes x 3, N; zero rows
+  // where none acts), at the present factor.
+  Points3 surfaceLoadForces(const SimulationState& state) const;
   // #N x 3 positions (m) or velocities (m/s), level-local: a new start.
   void setPositions(const Points3& positions);
   void setVelocities(const Points3& velocities);
@@ -438,9 +454,11 @@ class Simulation {
   TetMesh internal_;  // rest_ renumbered
   CorotatedFem fem_;  // on internal_
   std::vector<std::unique_ptr<ForceModel>> models_;
-  NodeConstraints* constraints_ = nullptr;  // one of models_
-  ObstacleContact* obstacles_ = nullptr;    // one of models_ (null: no obstacles)
-  BodyContact* bodyContact_ = nullptr;      // one of models_ (null: skins do not meet)
+  NodeConstraints* constraints_ = nullptr;        // one of models_
+  ObstacleContact* obstacles_ = nullptr;          // one of models_ (null: no obstacles)
+  BodyContact* bodyContact_ = nullptr;            // one of models_ (null: skins do not meet)
+  SurfaceLoadForce* surfaceLoadForce_ = nullptr;  // one of models_ (null: no surface loads)
+  std::vector<SurfaceLoad> surfaceLoads_;         // as given (level numbering)
   std::unique_ptr<ImplicitEuler> integrator_;
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering
