@@ -90,6 +90,23 @@ def test_a_level_and_material_given_resolve_the_same_run(cli):
     assert from_cli["level"] == 0
 
 
+def test_surface_loads_resolve_to_the_same_faces(cli):
+    """A pressure by box and a traction by face set: the same faces, values
+    and winding from the command line and from Python."""
+    faces_file = str(DATA.parent / "tests" / "data" / "bunny_base.faces")
+    for cli_args, keywords in [
+            (["--pressure", "1000", "--load-box", "-100,4,-100,100,100,100"],
+             {"pressure": 1000.0, "load_box": [[-100, 4, -100], [100, 100, 100]]}),
+            (["--traction", "0,-100,0", "--load-faces", faces_file],
+             {"traction": [0, -100, 0], "load_faces": faces_file})]:
+        from_cli = json.loads(cli("simulate", DATASET, "--print-run", "--level", "0", *cli_args))
+        from_python = tetskin.Simulation(tetskin.load_dataset(DATASET), level=0,
+                                         **keywords).run_spec
+        assert differences(from_cli, from_python) == []
+        loads = from_cli["parameters"]["surface_loads"]
+        assert len(loads) == 1 and len(loads[0]["faces"]) > 0
+    assert len(loads[0]["faces"]) == 2 and loads[0]["traction"] == [0, -100, 0]
+
 
 def test_a_scene_resolves_the_same_run_in_every_front_end(cli):
     """A scene file (bodies, obstacles, contact) is one run for simulate,

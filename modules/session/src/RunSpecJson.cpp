@@ -33,6 +33,16 @@ nlohmann::json parametersJson(const ScenarioParameters& p) {
       {"points", curve},
       {"after", p.loadCurve.after() == LoadCurve::After::Repeat ? "repeat" : "hold"}};
   out["load_seconds"] = number(p.loadSeconds);
+  nlohmann::json surface = nlohmann::json::array();
+  for (const SurfaceLoad& load : p.surfaceLoads) {
+    nlohmann::json faces = nlohmann::json::array();
+    for (Eigen::Index f = 0; f < load.faces.rows(); ++f)
+      faces.push_back({load.faces(f, 0), load.faces(f, 1), load.faces(f, 2)});
+    surface.push_back({{"pressure", load.pressure},
+                       {"traction", {load.traction.x(), load.traction.y(), load.traction.z()}},
+                       {"faces", faces}});
+  }
+  out["surface_loads"] = surface;
   return out;
 }
 

@@ -12,7 +12,9 @@
 //   dataset, level, scenario, initial_velocity [x, y, z] (m/s)
 //   parameters: the scenario's numbers by key, fixed_nodes (ids), loads
 //     (nodeCount x 3 rows, N; [] for none), load_curve ({points: [[t, f]],
-//     after: "hold"|"repeat"}), load_seconds (null: for ever)
+//     after: "hold"|"repeat"}), load_seconds (null: for ever),
+//     surface_loads ([{pressure (Pa), traction [x, y, z] (Pa), faces
+//     [[a, b, c]] (the level's node ids, wound outward)}])
 //   options: material (by key), time_step, gravity [x, y, z] (m/s^2), up,
 //     floor_height (null: no floor), floor_stiffness, friction, tangent,
 //     solver, tolerance, guess_solutions, coarse_reuse, coarse_operators,
