@@ -83,7 +83,9 @@ TEST(BodyUnion, BodiesAreNumberedOneAfterAnotherAndComeBackAsTheyWere) {
   fields.reactionForces = Points3::Random(nodes, 3);
   fields.vonMisesStress = Eigen::VectorXd::Random(elements);
   fields.equivalentStrain = Eigen::VectorXd::Random(elements);
+  fields.stress = SymmetricTensors::Random(elements, 6);
   const FrameFields part = bodyPart(fields, second);
+  EXPECT_EQ(part.stress, fields.stress.bottomRows(second.elementCount));
   EXPECT_EQ(part.positions, fields.positions.bottomRows(second.nodeCount));
   EXPECT_EQ(part.reactionForces, fields.reactionForces.bottomRows(second.nodeCount));
   EXPECT_EQ(part.vonMisesStress, fields.vonMisesStress.tail(second.elementCount));

@@ -127,6 +127,24 @@ TEST(SimulationFrame, EachFieldGoesIntoTheArrayOfItsName) {
   ASSERT_NE(strain, nullptr);
   ASSERT_EQ(strain->GetNumberOfTuples(), elements);
   for (Index e = 0; e < elements; ++e) EXPECT_EQ(strain->GetTuple1(e), fields.equivalentStrain[e]);
+  // The stress tensor, when the frame has one: six components in VTK's
+  // order.
+  EXPECT_EQ(grid->GetCellData()->GetArray("Stress"), nullptr);
+  FrameFields stressed = fields;
+  stressed.stress.resize(elements, 6);
+  for (Index e = 0; e < elements; ++e)
+    for (int c = 0; c < 6; ++c) stressed.stress(e, c) = 10.0 * static_cast<double>(e) + c;
+  const vtkSmartPointer<vtkUnstructuredGrid> withStress = simulationFrame(f.rest, stressed, 2);
+  vtkDataArray* tensors = withStress->GetCellData()->GetArray("Stress");
+  ASSERT_NE(tensors, nullptr);
+  ASSERT_EQ(tensors->GetNumberOfComponents(), 6);
+  ASSERT_EQ(tensors->GetNumberOfTuples(), elements);
+  for (Index e = 0; e < elements; ++e)
+    for (int c = 0; c < 6; ++c) EXPECT_EQ(tensors->GetComponent(e, c), stressed.stress(e, c));
+  stressed.stress.conservativeResize(elements - 1, 6);
+  EXPECT_EQ(test::errorText([&] { simulationFrame(f.rest, stressed, 2); }),
+            "the frame's stress tensors: " + std::to_string(elements - 1) + " rows for " +
+                std::to_string(elements) + " elements");
 
   const std::string counts = std::to_string(nodes) + " nodes";
   FrameFields shortReactions = fields;
