@@ -119,6 +119,7 @@ void RunController::reset() {
   stopRecording();  // the new run's time starts again at 0
   runner_.reset();
   scene_.setRunConditions({});  // (the new simulation's, if it starts)
+  scene_.setLoadArrows({});
   energyPlot_->clear();
   contactSamples_.clear();
   dock_.contactPlot()->setSeries({}, {}, kContactTitle);
@@ -286,6 +287,7 @@ void RunController::showLatestState() {
   scene_.poseObstacles(state.time);
   if (scene_.wantsSkinContact()) scene_.setSkinContact(runner_->simulation().skinContact(state));
   lastTimes_ = scene_.showControlState(state.positions);
+  scene_.setLoadArrows(runner_->simulation().surfaceLoadForces(state));
   if (scene_.colorsBySimulation()) {
     const FrameFields fields = runner_->simulation().frameFields(state);
     showOnSkin(fields.vonMisesStress, fields.equivalentStrain);

@@ -2,7 +2,10 @@
 #include "Scene.h"
 
 #include <vtkActor.h>
+#include <vtkArrowSource.h>
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkGlyph3D.h>
 #include <vtkLookupTable.h>
 #include <vtkMapper.h>
 #include <vtkPointData.h>
@@ -96,6 +99,24 @@ Scene::Scene(vtkRenderer* renderer) : renderer_(renderer) {
   renderer_->AddActor(problems_);
   renderer_->AddActor(triangle_);
   renderer_->AddActor(prescribed_);
+  // The surface loads' arrows, orange: glyphs of an arrow along each
+  // node's force (setLoadArrows).
+  auto arrow = vtkSmartPointer<vtkArrowSource>::New();
+  arrow->SetTipResolution(12);
+  arrow->SetShaftResolution(12);
+  loadGlyphs_ = vtkSmartPointer<vtkGlyph3D>::New();
+  loadGlyphs_->SetSourceConnection(arrow->GetOutputPort());
+  loadGlyphs_->SetVectorModeToUseVector();
+  loadGlyphs_->SetScaleModeToScaleByVector();
+  loadGlyphs_->OrientOn();
+  auto glyphMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  glyphMapper->SetInputConnection(loadGlyphs_->GetOutputPort());
+  glyphMapper->ScalarVisibilityOff();
+  loadArrows_ = vtkSmartPointer<vtkActor>::New();
+  loadArrows_->SetMapper(glyphMapper);
+  loadArrows_->GetProperty()->SetColor(1.0, 0.55, 0.1);
+  loadArrows_->VisibilityOff();
+  renderer_->AddActor(loadArrows_);
   legend_ = vtkSmartPointer<vtkScalarBarActor>::New();
   legend_->SetNumberOfLabels(5);
   legend_->SetWidth(0.08);
@@ -157,6 +178,7 @@ void Scene::install(Dataset dataset, const std::filesystem::path& path,
   level_ = controlLevel_ = level;
   nodes_ = dataset_->mesh.nodes;
   setRunConditions({});  // (another body's)
+  setLoadArrows({});
   previousSummary_.reset();
   picked_.reset();
   skinContact_ = {};
@@ -509,6 +531,36 @@ void Scene::setRunConditions(const RunConditions& conditions) {
   if (conditions.prescribedNodes == prescribedNodes_) return;  // (each frame shown sets them)
   prescribedNodes_ = conditions.prescribedNodes;
   updatePrescribedMarks();
+}
+
+void Scene::setLoadArrows(const Points3& forces) {
+  loadArrowCount_ = 0;
+  const double largest = forces.rows() > 0 ? forces.rowwise().norm().maxCoeff() : 0.0;
+  if (!dataset_ || !(largest > 0) || !std::isfinite(largest)) {
+    loadArrows_->VisibilityOff();
+    return;
+  }
+  const LevelRange& r = dataset_->mesh.levels[static_cast<std::size_t>(level_)];
+  const double scale = 0.1 * restBox().diagonal() / largest;  // metres per newton
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto vectors = vtkSmartPointer<vtkDoubleArray>::New();
+  vectors->SetNumberOfComponents(3);
+  vectors->SetName("LoadForce");
+  for (Index node = 0; node < std::min<Index>(forces.rows(), r.nodeCount); ++node) {
+    const Eigen::Vector3d f = forces.row(node).transpose();
+    if (f.squaredNorm() == 0) continue;
+    // The arrow's tail: it ends on the node, pushing it.
+    const Eigen::Vector3d tail = nodes_.row(r.firstNode + node).transpose() - scale * f;
+    points->InsertNextPoint(tail.data());
+    vectors->InsertNextTuple(f.data());
+    ++loadArrowCount_;
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->GetPointData()->SetVectors(vectors);
+  loadGlyphs_->SetInputData(poly);
+  loadGlyphs_->SetScaleFactor(scale);
+  loadArrows_->SetVisibility(loadArrowCount_ > 0);
 }
 
 void Scene::setPrescribedNodesShown(bool shown) {

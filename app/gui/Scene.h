@@ -34,6 +34,7 @@
 #include "tetskin/vtkio/BindingFile.h"
 
 class vtkActor;
+class vtkGlyph3D;
 class vtkRenderer;
 class vtkScalarBarActor;
 class vtkTextActor;
@@ -213,6 +214,14 @@ class Scene {
   bool prescribedNodesShown() const { return prescribedShown_; }
   // The nodes marked this frame (0 while the marks are off).
   Index markedPrescribedCount() const { return markedPrescribed_; }
+  // Arrows at the nodes of the bound level where `forces` (level numbering,
+  // N: the surface loads' consistent forces) act, each along its force and
+  // ending at its node, the longest a tenth of the body's diagonal at rest;
+  // none where a row is zero, and hidden for empty `forces`. Drawn at the
+  // nodes' present positions: call after showControlState.
+  void setLoadArrows(const Points3& forces);
+  // The arrows drawn this frame.
+  Index loadArrowCount() const { return loadArrowCount_; }
   // A simulated frame: the bound level's node positions (level-local).
   FrameTimes showControlState(const Points3& levelPositions);
   // The current state in the dataset's numbering, and the deformed surface.
@@ -290,7 +299,9 @@ class Scene {
   // Shown level's nodes x simulated level's nodes (empty when they are one
   // level): nodalProlongation at the shown level's rest nodes.
   SparseMatrix controlTransfer_;
-  vtkSmartPointer<vtkActor> problems_, triangle_, prescribed_;
+  vtkSmartPointer<vtkActor> problems_, triangle_, prescribed_, loadArrows_;
+  vtkSmartPointer<vtkGlyph3D> loadGlyphs_;  // loadArrows_' input
+  Index loadArrowCount_ = 0;
   // Stress or strain on the skin this frame (setSurfaceScalars), and the
   // comparison shown in place of the surface.
   Eigen::VectorXd simulationScalars_;

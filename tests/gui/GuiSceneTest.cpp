@@ -88,6 +88,27 @@ TEST_F(GuiScene, OpensASceneOfSeveralBodiesAndRunsThemAsOne) {
   EXPECT_GT(runner.lastStats().contacts, 0) << "the second bunny lands on the first";
 }
 
+// A scene's pressure on the bunny's upper half: arrows at the loaded nodes
+// (none elsewhere), and none once a run without surface loads is open.
+TEST_F(GuiScene, DrawsTheSurfaceLoadsAsArrows) {
+  const QString path = QString(TETSKIN_SOURCE_DIR) + "/tests/data/scenes/pressed_bunny.json";
+  ASSERT_TRUE(window_->openFile(path)) << window_->lastError().toStdString();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  step(2);
+  SimulationRunner& runner = *window_->runner();
+  const Points3 forces = runner.simulation().surfaceLoadForces(runner.state());
+  const Index loaded = (forces.rowwise().squaredNorm().array() > 0).count();
+  ASSERT_GT(loaded, 0);
+  Scene& scene = window_->scene();
+  EXPECT_EQ(scene.loadArrowCount(), loaded);
+  EXPECT_LT(loaded, forces.rows());  // the upper half's nodes only
+  // The pressure pushes the top down overall.
+  EXPECT_LT(forces.col(1).sum(), 0);
+  ASSERT_TRUE(window_->openFile(kBowlScene)) << window_->lastError().toStdString();
+  step(1);
+  EXPECT_EQ(window_->scene().loadArrowCount(), 0);
+}
+
 TEST_F(GuiScene, ColoursTheSkinByItsContactAndPlotsTheContacts) {
   openBowlScene();
   child<QSpinBox>("controlLevel");  // (exists; the level stays the scene's)
