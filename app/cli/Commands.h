@@ -18,5 +18,6 @@ void addSimulateCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addProbeCommand(CLI::App& app);
 
 }  // namespace tetskin::cli

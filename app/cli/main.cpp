@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   tetskin::cli::addCompareCommand(app);
   tetskin::cli::addRenderCommand(app);
   tetskin::cli::addBenchCommand(app);
+  tetskin::cli::addProbeCommand(app);
   tetskin::cli::addInfoCommand(app);
   tetskin::cli::addConvertCommand(app);
   try {

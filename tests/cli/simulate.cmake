@@ -86,7 +86,7 @@ tetskin_cli_test(simulate_bad_loads FAIL STATUS 1
   STDERR "^error: [^\n]*bad_loads.txt:3: node force \\(NODE FX FY FZ\\): expected 4 values, found 3\n$"
   NOT_EXIST ${cli_out}/bad_loads.pvd
   ARGS simulate ${data}/bunny.json --level 0 --loads ${tdata}/bad_loads.txt -o ${cli_out}/bad_loads.pvd)
-tetskin_cli_test(simulate_pressure
+tetskin_cli_test(simulate_pressure SETUP pressed_run
   STDOUT "  surface load 0: pressure 1000 Pa, traction 0,0,0 Pa on 212 faces of 81.7459 m\\^2 \\(total force at rest -1985.1,-29566,-5388.18 N\\)\n.*  the surface loads' potential: -[0-9.]+ J\n"
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --pressure 1000
        --load-box -100,4,-100,100,100,100 --steps 3 -o ${cli_out}/pressure.pvd)
@@ -418,3 +418,15 @@ tetskin_cli_test(simulate_static_free_body FAIL STATUS 1
   STDERR "^error: there is no static equilibrium: the body is free .no held node, floor or obstacle. under a net load of [^ ]+ N. hold nodes or add a floor\n$"
   NOT_EXIST ${cli_out}/static_free.pvd
   ARGS simulate ${data}/bunny.json --level 0 --scenario sag --base-share 0 --static -o ${cli_out}/static_free.pvd)
+# A recorded run read at points: one row per frame and point, the
+# displacement 0 at the start, the stress with six components.
+tetskin_cli_test(probe_a_run REQUIRES pressed_run
+  STDOUT "^time,point,x,y,z,element,displacement_x,displacement_y,displacement_z,stress_xx,stress_yy,stress_zz,stress_xy,stress_yz,stress_xz,von_mises\n0,0,0,5,0,[0-9]+,0,0,0,[^\n]*\n0,1,1,2,0.5,[0-9]+,0,0,0,[^\n]*\n0.016666666666666666,0,0,5,0,[0-9]+,-?[0-9.e-]+,-0.00[0-9]+,[^\n]*\n([^\n]*\n)([^\n]*\n)([^\n]*\n)([^\n]*\n)([^\n]*\n)$"
+  ARGS probe ${cli_out}/pressure.pvd --points ${tdata}/probe_points.txt)
+tetskin_cli_test(probe_to_a_table REQUIRES pressed_run
+  STDOUT "^wrote [^\n]*probe.csv \\(4 frames x 2 points\\)\n$"
+  ARGS probe ${cli_out}/pressure.pvd --points ${tdata}/probe_points.txt -o ${cli_out}/probe.csv)
+tetskin_cli_test(probe_outside_the_body FAIL STATUS 1 REQUIRES pressed_run
+  STDERR "^error: [^\n]*probe_outside.txt:2: the point 0,50,0 lies outside the run's control mesh \\(40.5[0-9]* from its nearest element\\)\n$"
+  NOT_EXIST ${cli_out}/outside.csv
+  ARGS probe ${cli_out}/pressure.pvd --points ${tdata}/probe_outside.txt -o ${cli_out}/outside.csv)

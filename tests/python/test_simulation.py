@@ -144,6 +144,25 @@ def test_surface_loads_by_box_and_by_faces(bunny):
         tetskin.Simulation(bunny, level=0, traction=[1, 2], load_box=box)
 
 
+def test_probe_reads_a_recorded_run_at_points(tmp_path, bunny):
+    # A recorded run read at two nodes of the level: the displacement there
+    # is the node's own, frame by frame.
+    level = bunny.level(0)
+    sim = tetskin.Simulation(bunny, level=0, scenario="sag")
+    sim.record(tmp_path / "run.pvd")
+    sim.step(3)
+    sim.stop_recording()
+    nodes = [40, 170]
+    probe = tetskin.probe(tmp_path / "run.pvd", level.nodes[nodes])
+    assert probe["times"].shape == (4,) and probe["displacement"].shape == (4, 2, 3)
+    assert probe["stress"].shape == (4, 2, 6) and probe["von_mises"].shape == (4, 2)
+    assert np.abs(probe["displacement"][0]).max() == 0
+    last = probe["displacement"][-1]
+    assert np.abs(last - (sim.positions[nodes] - level.nodes[nodes])).max() < 1e-12
+    with pytest.raises(tetskin.Error, match=r"points\[1\]: the point .* lies outside"):
+        tetskin.probe(tmp_path / "run.pvd", [[0, 5, 0], [0, 500, 0]])
+
+
 def test_forces_push_and_state_can_be_set(bunny):
     sim = tetskin.Simulation(bunny, level=0, gravity=[0, 0, 0], scenario="sag")
     rest = sim.positions

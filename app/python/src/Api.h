@@ -12,6 +12,7 @@ void addDatasetApi(pybind11::module_& m);     // Dataset, Level, load_dataset, b
 void addBindingApi(pybind11::module_& m);     // Binding, bind, load_binding, deform
 void addSimulationApi(pybind11::module_& m);  // Simulation
 void addSceneApi(pybind11::module_& m);       // Scene (a Simulation)
+void addProbeApi(pybind11::module_& m);       // probe
 void addNativeTiming(pybind11::module_& m);   // _native: C++ timings for the overhead benchmark
 
 }  // namespace tetskin::python

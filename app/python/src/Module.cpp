@@ -33,5 +33,6 @@ PYBIND11_MODULE(_tetskin, m) {
   tetskin::python::addBindingApi(m);
   tetskin::python::addSimulationApi(m);
   tetskin::python::addSceneApi(m);
+  tetskin::python::addProbeApi(m);
   tetskin::python::addNativeTiming(m);
 }

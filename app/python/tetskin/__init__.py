@@ -27,6 +27,7 @@ from ._tetskin import (
     deform,
     load_binding,
     load_dataset,
+    probe,
     read_surface,
     write_surface,
 )
@@ -43,6 +44,7 @@ __all__ = [
     "deform",
     "load_binding",
     "load_dataset",
+    "probe",
     "read_surface",
     "write_surface",
 ]

@@ -157,7 +157,23 @@ FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh&
   };
   state.vonMisesStress = elementValues(arrays::kVonMisesStress);
   state.equivalentStrain = elementValues(arrays::kEquivalentStrain);
+  if (vtkDataArray* tensors = grid->GetCellData()->GetArray(arrays::kStress);
+      tensors && tensors->GetNumberOfComponents() == 6 &&
+      tensors->GetNumberOfTuples() == rest.elementCount()) {
+    state.stress.resize(rest.elementCount(), 6);
+    for (Index e = 0; e < rest.elementCount(); ++e)
+      for (int c = 0; c < 6; ++c) state.stress(e, c) = tensors->GetComponent(e, c);
+    if (!state.stress.allFinite()) state.stress.resize(0, 6);
+  }
   return state;
+}
+
+TetMesh readFrameRest(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
+  TetMesh frame = fromVtkUnstructuredGrid(grid, source);
+  frame.nodes -= pointVectors(grid, arrays::kDisplacement, source);
+  return frame;
 }
 
 SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {

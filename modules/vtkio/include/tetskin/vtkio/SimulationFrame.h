@@ -39,6 +39,7 @@ vtkSmartPointer<vtkUnstructuredGrid> simulationFrame(const TetMesh& rest, const 
 struct FrameState {
   Points3 positions, velocities;
   Eigen::VectorXd vonMisesStress = {}, equivalentStrain = {};
+  SymmetricTensors stress = {};  // empty for a frame without the Stress array
 };
 
 // The state in the frame file `path` (a .vtu simulationFrame wrote) of the
@@ -49,6 +50,11 @@ struct FrameState {
 // missing, or a value not finite.
 FrameState readSimulationFrame(const std::filesystem::path& path, const TetMesh& rest,
                                const std::string& restName);
+
+// The rest mesh a frame file was taken from: its tetrahedra, at its points
+// less their Displacement. Throws Error naming the file when it is no
+// simulation frame (no tetrahedra, no Displacement).
+TetMesh readFrameRest(const std::filesystem::path& path);
 
 // What a frame file says of its run: the dataset level it is of (its
 // Level cell array), the run's floor (its FloorNormal and FloorHeight),
