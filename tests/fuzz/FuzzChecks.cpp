@@ -20,6 +20,7 @@
 #include "tetskin/io/NodeList.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/PlyFormat.h"
+#include "tetskin/io/PointList.h"
 #include "tetskin/io/TetGenFormat.h"
 #include "tetskin/vtkio/BindingFile.h"
 #include "tetskin/vtkio/PvdSeries.h"
@@ -214,25 +215,47 @@ void checkLoadCurve(const std::uint8_t* data, std::size_t size) {
     require(std::isfinite(curve.factorAt(t)), "load curve factor not finite");
 }
 
-// The node lists of --fixed-nodes and --loads, of a mesh of 1000 nodes;
-// the first byte chooses which.
+// The node files of a level of 1000 nodes: --fixed-nodes, --loads,
+// --load-faces (face sets) and probe's --points; the first byte chooses
+// which.
 void checkNodeList(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return;
   const std::filesystem::path path = written("fuzz_nodes.txt", text(data + 1, size - 1));
   constexpr Index kNodes = 1000;
-  if (data[0] % 2 == 0) {
-    std::vector<int> nodes;
-    if (!accepted([&] { nodes = readNodeList(path, kNodes); })) return;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      require(nodes[i] >= 0 && nodes[i] < kNodes, "listed node in range");
-      require(i == 0 || nodes[i - 1] < nodes[i], "node list sorted, each once");
+  switch (data[0] % 4) {
+    case 0: {
+      std::vector<int> nodes;
+      if (!accepted([&] { nodes = readNodeList(path, kNodes); })) return;
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        require(nodes[i] >= 0 && nodes[i] < kNodes, "listed node in range");
+        require(i == 0 || nodes[i - 1] < nodes[i], "node list sorted, each once");
+      }
+      return;
     }
-    return;
+    case 1: {
+      Points3 forces;
+      if (!accepted([&] { forces = readNodeForces(path, kNodes); })) return;
+      require(forces.rows() == kNodes, "a force per node");
+      requireFinite(forces, "node forces");
+      return;
+    }
+    case 2: {
+      std::vector<FaceSetLine> faces;
+      if (!accepted([&] { faces = readFaceSet(path, kNodes); })) return;
+      require(!faces.empty(), "a face set has faces");
+      for (const FaceSetLine& face : faces)
+        for (int node : face.nodes) require(node >= 0 && node < kNodes, "face node in range");
+      return;
+    }
+    default: {
+      PointList points;
+      if (!accepted([&] { points = readPointList(path); })) return;
+      require(points.points.rows() > 0 &&
+                  static_cast<std::size_t>(points.points.rows()) == points.lines.size(),
+              "a point per line named");
+      requireFinite(points.points, "points");
+    }
   }
-  Points3 forces;
-  if (!accepted([&] { forces = readNodeForces(path, kNodes); })) return;
-  require(forces.rows() == kNodes, "a force per node");
-  requireFinite(forces, "node forces");
 }
 
 // A time series: every entry with a file and a finite time, and the series
