@@ -15,7 +15,8 @@ BUILD_DIR=${BUILD_DIR:-build}
 export CCACHE_BASEDIR="$ROOT"
 JOBS=${JOBS:-$(nproc)}
 
-# (libsuitesparse-dev, libhypre-dev: solver_bench's baselines, CHOLMOD and
+# (python3-matplotlib: the verification suite's convergence plot;
+# libsuitesparse-dev, libhypre-dev: solver_bench's baselines, CHOLMOD and
 # BoomerAMG; libopenblas0-pthread: the BLAS CHOLMOD's factorization runs on;
 # clang, libclang-rt-14-dev: the readers' fuzzers, libFuzzer; mpi-default-bin:
 # mpiexec, for the ParaView filters under pvbatch on several ranks.)
@@ -27,7 +28,7 @@ DEPS=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth assimp-testmodels netgen-doc paraview mpi-default-bin
   paraview-dev qtxmlpatterns5-dev-tools
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-vtk9 python3-matplotlib
   libsuitesparse-dev libhypre-dev libopenblas0-pthread
   clang libclang-rt-14-dev
 )
