@@ -91,6 +91,7 @@ py::dict solveStatic(Object& s) {
   d["linear_iterations"] = stats.linearIterations;
   d["residual"] = stats.residual;
   d["load"] = stats.load;
+  d["floor"] = stats.floor;
   return d;
 }
 

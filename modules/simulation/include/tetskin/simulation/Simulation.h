@@ -300,13 +300,18 @@ inline constexpr double kStaticTolerance = 1e-8;
 
 // The outcome of a static solve (Simulation::solveStatic). Forces are per
 // node (N): the largest force left on a free node, against the largest
-// load (weight and external force) on one.
+// load (weight and external force) on one, and the forces' round-off
+// floor: eps |x|max K_max, the elastic force's round-off at positions
+// as large as the body's (the forces are computed from positions, not
+// displacements, and a load spread thin over a fine mesh can ask for less
+// than that).
 struct StaticStats {
-  bool converged = false;    // residual <= tolerance * load
+  bool converged = false;    // residual <= max(tolerance * load, floor)
   int iterations = 0;        // Newton iterations
   int linearIterations = 0;  // the linear solver's, over all of them
   double residual = 0;
   double load = 0;
+  double floor = 0;
 };
 
 // Joules. The gravitational energy is measured from the rest shape where
@@ -408,7 +413,8 @@ class Simulation {
   // present positions; on return the body rests there (velocities zero,
   // time unchanged), unless it threw. Stops when the largest force left on
   // a free node is at most `tolerance` times the largest load on one (or,
-  // with no load, the largest force at the start), or after `maxIterations`
+  // with no load, the largest force at the start) or at the forces'
+  // round-off floor (StaticStats), or after `maxIterations`
   // or when four line searches in a row find no decrease (then converged is
   // false and the best positions found are kept). Throws Error when there
   // is no equilibrium to find: a free body (no held node, floor or
