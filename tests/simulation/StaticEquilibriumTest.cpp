@@ -7,10 +7,13 @@
 // no equilibrium and is refused.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "SimulationBodies.h"
+#include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/simulation/SurfaceLoad.h"
 
 namespace tetskin::test {
 namespace {
@@ -119,6 +122,67 @@ TEST(StaticSolve, RefusesAFreeBodyUnderGravity) {
                 .find("there is no static equilibrium: the body is free (no held node, floor "
                       "or obstacle) under a net load of 0,-"),
             std::string::npos);
+}
+
+// Rollers (Simulation::setHeldAxes): a block whose base slides on its
+// plane, pressed by a traction on its top, is under a uniaxial stress and
+// free to bulge: every element at -t along y alone, the width grown by
+// nu t / E, the base's reactions along y alone carrying the load. Held
+// whole instead, the base would hold the bulge back.
+TEST(StaticSolve, ABlockOnRollersIsUnderAUniaxialStress) {
+  const TetMesh block = tetGrid(2, 4, 2, {1, 2, 1});
+  SimulationOptions options;
+  options.gravity.setZero();
+  options.material.youngsModulus = 1e6;
+  options.material.poissonRatio = 0.3;
+  options.solver = SolverKind::ConjugateGradient;
+  options.tolerance = 1e-12;
+  Simulation sim(oneLevel(block), 0, options);
+  std::vector<int> held;
+  std::vector<std::array<bool, 3>> axes;
+  for (Index v = 0; v < block.nodeCount(); ++v) {
+    if (block.nodes(v, 1) > 1e-9) continue;
+    // The base slides; its corner at the origin is held along x and z
+    // too, and the one at (1, 0, 0) along z, against a rigid drift and turn.
+    const bool origin = block.nodes.row(v).norm() < 1e-9;
+    const bool corner = (block.nodes.row(v) - Eigen::RowVector3d(1, 0, 0)).norm() < 1e-9;
+    held.push_back(static_cast<int>(v));
+    axes.push_back({origin, true, origin || corner});
+  }
+  sim.setHeldAxes(held, axes);
+  const double t = 1e3;
+  SurfaceLoad top;
+  std::vector<Index> faces;
+  const BoundaryFaces boundary = boundaryFaces(block);
+  for (Index f = 0; f < boundary.faces.rows(); ++f)
+    if (block.nodes(boundary.faces(f, 0), 1) > 2 - 1e-9 &&
+        block.nodes(boundary.faces(f, 1), 1) > 2 - 1e-9 &&
+        block.nodes(boundary.faces(f, 2), 1) > 2 - 1e-9)
+      faces.push_back(f);
+  top.faces.resize(static_cast<Index>(faces.size()), 3);
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    top.faces.row(static_cast<Index>(i)) = boundary.faces.row(faces[i]);
+  top.traction = {0, -t, 0};
+  sim.setSurfaceLoads({top});
+  ASSERT_TRUE(sim.solveStatic().converged);
+  const SimulationState state = sim.state();
+  const FrameFields fields = sim.frameFields(state);
+  for (Index e = 0; e < block.elementCount(); ++e)
+    for (int c = 0; c < 6; ++c)
+      ASSERT_NEAR(fields.stress(e, c), c == 1 ? -t : 0.0, 1e-6 * t) << "element " << e;
+  const double width = state.positions.col(0).maxCoeff() - state.positions.col(0).minCoeff();
+  EXPECT_NEAR(width - 1, 0.3 * t / 1e6, 1e-6 * 0.3 * t / 1e6);
+  const Eigen::Vector3d reaction = sim.supportReaction(state);
+  EXPECT_NEAR(reaction.y(), t * 1.0, 1e-8 * t);
+  EXPECT_NEAR(reaction.x(), 0, 1e-8 * t);
+  EXPECT_NEAR(reaction.z(), 0, 1e-8 * t);
+  // Every base node is a prescribed one; a node held along no axis is
+  // refused.
+  EXPECT_EQ(sim.conditions().prescribedNodes.size(), held.size());
+  EXPECT_EQ(errorText([&] {
+              sim.setHeldAxes({0}, {{false, false, false}});
+            }),
+            "held node 0 is held along no axis");
 }
 
 }  // namespace

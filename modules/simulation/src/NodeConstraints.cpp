@@ -16,8 +16,8 @@ NodeConstraints::NodeConstraints(const SparseMatrix& pattern)
       fixedDofs_(static_cast<std::size_t>(pattern.rows()), 0),
       prescribed_(Eigen::VectorXd::Zero(pattern.rows())) {}
 
-void NodeConstraints::setFixed(const std::vector<char>& fixedNodes) {
-  fixedDofs_ = dofsOf(fixedNodes);
+void NodeConstraints::setFixedDofs(std::vector<char> fixedDofs) {
+  fixedDofs_ = std::move(fixedDofs);
   rows_ = DirichletRows(pattern_, fixedDofs_);
   targetNodes_.clear();
 }

@@ -14,14 +14,24 @@
 
 namespace tetskin {
 
+// Per node of `fixedNodes` (a flag each), per dof.
+std::vector<char> dofsOf(const std::vector<char>& fixedNodes);
+
 class NodeConstraints : public ForceModel {
  public:
   // For systems of `pattern`'s shape (3 dofs per node).
   explicit NodeConstraints(const SparseMatrix& pattern);
 
   // One flag per node, 1 = fixed; drops the targets.
-  void setFixed(const std::vector<char>& fixedNodes);
-  bool isFixed(Index node) const { return fixedDofs_[3 * static_cast<std::size_t>(node)] != 0; }
+  void setFixed(const std::vector<char>& fixedNodes) { setFixedDofs(dofsOf(fixedNodes)); }
+  // One flag per dof (a node held along some axes only); drops the targets.
+  void setFixedDofs(std::vector<char> fixedDofs);
+  // Whether all three of the node's dofs are held.
+  bool isFixed(Index node) const {
+    const auto d = 3 * static_cast<std::size_t>(node);
+    return fixedDofs_[d] && fixedDofs_[d + 1] && fixedDofs_[d + 2];
+  }
+  const std::vector<char>& fixedDofs() const { return fixedDofs_; }
   // Fixed nodes that must reach `targets` (a row each) at the end of the
   // next step; the caller checked that each is fixed.
   void setTargets(std::vector<int> nodes, Points3 targets);
@@ -46,8 +56,5 @@ class NodeConstraints : public ForceModel {
   Points3 targets_;
   Eigen::VectorXd prescribed_;  // dv of the fixed dofs
 };
-
-// Per node of `fixedNodes` (a flag each), per dof.
-std::vector<char> dofsOf(const std::vector<char>& fixedNodes);
 
 }  // namespace tetskin

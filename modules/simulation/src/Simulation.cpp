@@ -245,10 +245,52 @@ void Simulation::setFixedNodes(const std::vector<int>& nodes) {
     if (v < 0 || v >= rest_.nodeCount())
       throw Error("fixed node " + std::to_string(v) + " does not exist");
   fixedNodes_ = nodes;
-  std::vector<char> fixed(static_cast<std::size_t>(rest_.nodeCount()), 0);
-  for (int v : nodes) fixed[static_cast<std::size_t>(numbering_->internal(v))] = 1;
-  constraints_->setFixed(fixed);
-  solvers_->setFixedNodes(fixed);
+  applyHolds();
+}
+
+void Simulation::setHeldAxes(const std::vector<int>& nodes,
+                             const std::vector<std::array<bool, 3>>& axes) {
+  if (nodes.size() != axes.size())
+    throw Error("held axes: " + std::to_string(nodes.size()) + " nodes, " +
+                std::to_string(axes.size()) + " sets of axes");
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i] < 0 || nodes[i] >= rest_.nodeCount())
+      throw Error("held node " + std::to_string(nodes[i]) + " does not exist");
+    if (!axes[i][0] && !axes[i][1] && !axes[i][2])
+      throw Error("held node " + std::to_string(nodes[i]) + " is held along no axis");
+  }
+  if (!nodes.empty() && bodyContact_)
+    throw Error(
+        "nodes held along some axes only and skins that meet each other do not go together yet "
+        "(the skins' coupling springs hold whole nodes)");
+  axisNodes_ = nodes;
+  axes_ = axes;
+  applyHolds();
+}
+
+void Simulation::applyHolds() {
+  const auto n = static_cast<std::size_t>(rest_.nodeCount());
+  std::vector<char> whole(n, 0), dofs(3 * n, 0);
+  for (int v : fixedNodes_) whole[static_cast<std::size_t>(numbering_->internal(v))] = 1;
+  for (std::size_t node = 0; node < n; ++node)
+    for (std::size_t k = 0; k < 3; ++k) dofs[3 * node + k] = whole[node];
+  for (std::size_t i = 0; i < axisNodes_.size(); ++i) {
+    const auto node = static_cast<std::size_t>(numbering_->internal(axisNodes_[i]));
+    for (std::size_t k = 0; k < 3; ++k)
+      if (axes_[i][k]) dofs[3 * node + k] = 1;
+  }
+  for (std::size_t node = 0; node < n; ++node)
+    whole[node] = dofs[3 * node] && dofs[3 * node + 1] && dofs[3 * node + 2];
+  constraints_->setFixedDofs(std::move(dofs));
+  solvers_->setFixedNodes(whole);
+}
+
+RunConditions Simulation::conditions() const {
+  std::vector<int> prescribed = fixedNodes_;
+  prescribed.insert(prescribed.end(), axisNodes_.begin(), axisNodes_.end());
+  std::sort(prescribed.begin(), prescribed.end());
+  prescribed.erase(std::unique(prescribed.begin(), prescribed.end()), prescribed.end());
+  return {options_.floor(), prescribed};
 }
 
 void Simulation::setKinematicTargets(const std::vector<int>& nodes, const Points3& targets) {
@@ -399,18 +441,25 @@ Energies Simulation::energies() const {
 
 Points3 Simulation::reactionForces(const SimulationState& state) const {
   Points3 reactions = Points3::Zero(rest_.nodeCount(), 3);
-  if (fixedNodes_.empty()) return reactions;
+  if (fixedNodes_.empty() && axisNodes_.empty()) return reactions;
   // What holds a node: its inertia less every force model's force and
   // the loads.
   const Eigen::VectorXd force = forcesAt(models_, *numbering_, state, false);
   const Eigen::VectorXd& mass = fem_.lumpedMass();
-  for (int node : fixedNodes_) {
+  const auto reaction = [&](int node) -> Eigen::RowVector3d {
     const Index i = 3 * numbering_->internal(node);
     const Eigen::Vector3d inertia =
         mass.segment<3>(i).cwiseProduct(state.accelerations.row(node).transpose());
-    reactions.row(node) =
-        inertia.transpose() - force.segment<3>(i).transpose() - state.externalForces.row(node);
+    return inertia.transpose() - force.segment<3>(i).transpose() - state.externalForces.row(node);
+  };
+  // (A node held along some axes: its reaction along those; along the
+  // others nothing holds it.)
+  for (std::size_t k = 0; k < axisNodes_.size(); ++k) {
+    const Eigen::RowVector3d r = reaction(axisNodes_[k]);
+    for (int axis = 0; axis < 3; ++axis)
+      if (axes_[k][static_cast<std::size_t>(axis)]) reactions(axisNodes_[k], axis) = r[axis];
   }
+  for (int node : fixedNodes_) reactions.row(node) = reaction(node);
   return reactions;
 }
 

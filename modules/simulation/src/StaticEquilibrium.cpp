@@ -35,12 +35,18 @@
 namespace tetskin {
 namespace {
 
-// The largest per-node norm of `force` over the nodes not flagged `held`.
+// The largest per-node norm of `force` along the dofs not flagged `held`
+// (a node held along some axes counts along the others).
 double largestFree(const Eigen::VectorXd& force, const std::vector<char>& held) {
   double largest = 0;
-  for (std::size_t node = 0; node < held.size(); ++node)
-    if (!held[node])
-      largest = std::max(largest, force.segment<3>(3 * static_cast<Index>(node)).norm());
+  for (std::size_t node = 0; 3 * node < held.size(); ++node) {
+    double squared = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      if (!held[3 * node + k])
+        squared +=
+            force[static_cast<Index>(3 * node + k)] * force[static_cast<Index>(3 * node + k)];
+    largest = std::max(largest, std::sqrt(squared));
+  }
   return largest;
 }
 
@@ -58,8 +64,10 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
     t = time_;
   }
   const Index nodes = fem_.nodeCount();
-  std::vector<char> held(static_cast<std::size_t>(nodes), 0);
-  for (int v : fixedNodes_) held[static_cast<std::size_t>(numbering_->internal(v))] = 1;
+  const std::vector<char>& held = constraints_->fixedDofs();  // per dof
+  std::vector<char> wholeNodes(static_cast<std::size_t>(nodes), 0);
+  for (Index node = 0; node < nodes; ++node)
+    wholeNodes[static_cast<std::size_t>(node)] = constraints_->isFixed(node);
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   Eigen::VectorXd load = external;
   if (surfaceLoadForce_) surfaceLoadForce_->addForceAt(x, Eigen::VectorXd::Zero(x.size()), load);
@@ -70,7 +78,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
     net += load.segment<3>(3 * node);
     total += load.segment<3>(3 * node).norm();
   }
-  if (fixedNodes_.empty() && !obstacles_ && net.norm() > 1e-9 * total)
+  if (fixedNodes_.empty() && axisNodes_.empty() && !obstacles_ && net.norm() > 1e-9 * total)
     throw Error(
         "there is no static equilibrium: the body is free (no held node, floor or "
         "obstacle) under a net load of " +
@@ -116,7 +124,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   assemble();
   SolverStack solvers(MultiLevelTetMesh{}, 0, internal_, linear,
                       newton->coarseDiscretization(models_), "the static solve");
-  solvers.setFixedNodes(held);
+  solvers.setFixedNodes(wholeNodes);
   Eigen::VectorXd r = residual(x);
   const double scale = std::max(stats.load, largestFree(r, held));
   // Below eps |x| K no Newton step can go: the elastic forces come from

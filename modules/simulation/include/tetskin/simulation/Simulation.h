@@ -23,6 +23,7 @@
 // frameFields() and reactionForces() of a state taken before, which read
 // nothing a step changes. Two threads must not call step() at the same time.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -374,8 +375,18 @@ class Simulation {
   // a kinematic target.
   void setFixedNodes(const std::vector<int>& nodes);
   const std::vector<int>& fixedNodes() const { return fixedNodes_; }
-  // The floor and the fixed nodes: what a recorded run keeps of them.
-  RunConditions conditions() const { return {options_.floor(), fixedNodes_}; }
+  // Nodes held along some axes only and free along the others (a symmetry
+  // plane holds its nodes along its normal): level ids, each with the axes
+  // (x, y, z) it is held along; replaces those given before. A node also
+  // given to setFixedNodes is held whole. For the static solve and steps
+  // alike; the multigrid's coarse corrections still reach such a node (CG
+  // keeps its held axes). Throws Error for a node the level lacks, one
+  // held along no axis, sizes that differ, and while the skins meet each
+  // other (their coupling springs hold whole nodes only).
+  void setHeldAxes(const std::vector<int>& nodes, const std::vector<std::array<bool, 3>>& axes);
+  // The floor and the prescribed nodes (fixed, or held along an axis):
+  // what a recorded run keeps of them.
+  RunConditions conditions() const;
   // Positions (#nodes x 3, m) the given fixed nodes must reach at the end
   // of the next step.
   void setKinematicTargets(const std::vector<int>& nodes, const Points3& targets);
@@ -468,6 +479,11 @@ class Simulation {
   std::unique_ptr<ImplicitEuler> integrator_;
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering
+  std::vector<int> axisNodes_;   // level numbering, held along axes_
+  std::vector<std::array<bool, 3>> axes_;
+  // The fixed nodes' and the held axes' dofs to the constraints and the
+  // solvers.
+  void applyHolds();
 
   mutable std::mutex mutex_;  // guards x_, v_, acceleration_, time_, steps_, external_,
                               // appliedExternal_, shortfall_
