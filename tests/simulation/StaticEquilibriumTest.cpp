@@ -11,8 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "BoundarySelection.h"
 #include "SimulationBodies.h"
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/SurfaceLoad.h"
 
 namespace tetskin::test {
@@ -152,16 +152,7 @@ TEST(StaticSolve, ABlockOnRollersIsUnderAUniaxialStress) {
   sim.setHeldAxes(held, axes);
   const double t = 1e3;
   SurfaceLoad top;
-  std::vector<Index> faces;
-  const BoundaryFaces boundary = boundaryFaces(block);
-  for (Index f = 0; f < boundary.faces.rows(); ++f)
-    if (block.nodes(boundary.faces(f, 0), 1) > 2 - 1e-9 &&
-        block.nodes(boundary.faces(f, 1), 1) > 2 - 1e-9 &&
-        block.nodes(boundary.faces(f, 2), 1) > 2 - 1e-9)
-      faces.push_back(f);
-  top.faces.resize(static_cast<Index>(faces.size()), 3);
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    top.faces.row(static_cast<Index>(i)) = boundary.faces.row(faces[i]);
+  top.faces = boundaryFacesWhere(block, [&](Index v) { return block.nodes(v, 1) > 2 - 1e-9; });
   top.traction = {0, -t, 0};
   sim.setSurfaceLoads({top});
   ASSERT_TRUE(sim.solveStatic().converged);

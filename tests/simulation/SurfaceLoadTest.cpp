@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "BoundarySelection.h"
 #include "SimulationBodies.h"
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/SurfaceLoad.h"
 
 namespace tetskin::test {
@@ -27,20 +27,12 @@ Eigen::Vector3d total(const Eigen::VectorXd& forces) {
   return forces.reshaped(3, forces.size() / 3).rowwise().sum();
 }
 
-// The boundary faces of `mesh` (wound outward) whose corners all satisfy
-// `keep`, as a load with no value yet.
+// The boundary faces whose corners' positions all satisfy `keep`, as a
+// load with no value yet.
 template <class Keep>
 SurfaceLoad facesWhere(const TetMesh& mesh, Keep keep) {
-  const BoundaryFaces boundary = boundaryFaces(mesh);
-  std::vector<Index> chosen;
-  for (Index f = 0; f < boundary.faces.rows(); ++f)
-    if (keep(mesh.nodes.row(boundary.faces(f, 0))) && keep(mesh.nodes.row(boundary.faces(f, 1))) &&
-        keep(mesh.nodes.row(boundary.faces(f, 2))))
-      chosen.push_back(f);
   SurfaceLoad load;
-  load.faces.resize(static_cast<Index>(chosen.size()), 3);
-  for (std::size_t k = 0; k < chosen.size(); ++k)
-    load.faces.row(static_cast<Index>(k)) = boundary.faces.row(chosen[k]);
+  load.faces = boundaryFacesWhere(mesh, [&](Index node) { return keep(mesh.nodes.row(node)); });
   return load;
 }
 

@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "BoundarySelection.h"
 #include "Shapes.h"
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/simulation/SurfaceLoad.h"
 
@@ -47,18 +47,8 @@ double tipDeflection(int k, double t) {
     if (beam.nodes(v, 0) > kLength - 1e-9) free.push_back(static_cast<int>(v));
   }
   sim.setFixedNodes(clamped);
-  const BoundaryFaces boundary = boundaryFaces(beam);
   SurfaceLoad end;
-  std::vector<Index> faces;
-  for (Index f = 0; f < boundary.faces.rows(); ++f)
-    if ((boundary.faces.row(f).array() >= 0).all() &&
-        beam.nodes(boundary.faces(f, 0), 0) > kLength - 1e-9 &&
-        beam.nodes(boundary.faces(f, 1), 0) > kLength - 1e-9 &&
-        beam.nodes(boundary.faces(f, 2), 0) > kLength - 1e-9)
-      faces.push_back(f);
-  end.faces.resize(static_cast<Index>(faces.size()), 3);
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    end.faces.row(static_cast<Index>(i)) = boundary.faces.row(faces[i]);
+  end.faces = boundaryFacesWhere(beam, [&](Index v) { return beam.nodes(v, 0) > kLength - 1e-9; });
   end.traction = {0, -t, 0};
   sim.setSurfaceLoads({end});
   const StaticStats stats = sim.solveStatic();

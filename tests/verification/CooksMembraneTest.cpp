@@ -16,8 +16,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "BoundarySelection.h"
 #include "Shapes.h"
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/simulation/SurfaceLoad.h"
 
@@ -65,17 +65,8 @@ double midEdgeDisplacement(int k) {
   }
   sim.setFixedNodes(clamped);
   // The sheared edge's faces: 16 x 1, so 1/16 Pa is 1 N.
-  const BoundaryFaces boundary = boundaryFaces(mesh);
-  std::vector<Index> edge;
-  for (Index f = 0; f < boundary.faces.rows(); ++f)
-    if (mesh.nodes(boundary.faces(f, 0), 0) > 48 - 1e-9 &&
-        mesh.nodes(boundary.faces(f, 1), 0) > 48 - 1e-9 &&
-        mesh.nodes(boundary.faces(f, 2), 0) > 48 - 1e-9)
-      edge.push_back(f);
   SurfaceLoad shear;
-  shear.faces.resize(static_cast<Index>(edge.size()), 3);
-  for (std::size_t i = 0; i < edge.size(); ++i)
-    shear.faces.row(static_cast<Index>(i)) = boundary.faces.row(edge[i]);
+  shear.faces = boundaryFacesWhere(mesh, [&](Index v) { return mesh.nodes(v, 0) > 48 - 1e-9; });
   shear.traction = {0, 1.0 / (16 * kThickness), 0};
   sim.setSurfaceLoads({shear});
   const StaticStats stats = sim.solveStatic();

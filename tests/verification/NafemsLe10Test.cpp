@@ -18,8 +18,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "BoundarySelection.h"
 #include "Shapes.h"
-#include "tetskin/binding/BoundaryFaces.h"
 #include "tetskin/simulation/Simulation.h"
 #include "tetskin/simulation/SurfaceLoad.h"
 
@@ -83,16 +83,8 @@ double stressAtD(int k) {
   }
   EXPECT_GE(d, 0);
   sim.setHeldAxes(held, axes);
-  const BoundaryFaces boundary = boundaryFaces(mesh);
-  std::vector<Index> upper;
-  for (Index f = 0; f < boundary.faces.rows(); ++f)
-    if (at(p.grid(boundary.faces(f, 0), 2), 1) && at(p.grid(boundary.faces(f, 1), 2), 1) &&
-        at(p.grid(boundary.faces(f, 2), 2), 1))
-      upper.push_back(f);
   SurfaceLoad pressure;
-  pressure.faces.resize(static_cast<Index>(upper.size()), 3);
-  for (std::size_t i = 0; i < upper.size(); ++i)
-    pressure.faces.row(static_cast<Index>(i)) = boundary.faces.row(upper[i]);
+  pressure.faces = boundaryFacesWhere(mesh, [&](Index v) { return at(p.grid(v, 2), 1); });
   pressure.pressure = 1;
   sim.setSurfaceLoads({pressure});
   const StaticStats stats = sim.solveStatic();
