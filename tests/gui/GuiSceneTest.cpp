@@ -88,6 +88,38 @@ TEST_F(GuiScene, OpensASceneOfSeveralBodiesAndRunsThemAsOne) {
   EXPECT_GT(runner.lastStats().contacts, 0) << "the second bunny lands on the first";
 }
 
+// Any body of a scene can be pulled: shift-dragging the second bunny's
+// highest skin vertex picks that vertex and pulls its own nodes, none of
+// the first bunny's.
+TEST_F(GuiScene, PullsTheSecondBodyOfAScene) {
+  const QString path = QString(TETSKIN_SOURCE_DIR) + "/tests/data/scenes/two_bunnies.json";
+  ASSERT_TRUE(window_->openFile(path)) << window_->lastError().toStdString();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const SceneRun run = loadScene(readScene(path.toStdString()));
+  const BodyRange& second = run.request.bodies[1].range;
+  window_->grabImage();
+  Scene& scene = window_->scene();
+  Index top = second.firstVertex;
+  for (Index v = second.firstVertex; v < second.firstVertex + second.vertexCount; ++v)
+    if (scene.surface().positions(v, 1) > scene.surface().positions(top, 1)) top = v;
+  const Eigen::Vector2d at = project(scene.vertexInfo(top).position);
+  QWidget* view = window_->view();
+  const QPoint from(static_cast<int>(at.x()), view->height() - 1 - static_cast<int>(at.y()));
+  mouse(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::ShiftModifier);
+  const std::optional<Index> grabbed = scene.pickedVertex();
+  ASSERT_TRUE(grabbed.has_value());
+  EXPECT_GE(*grabbed, second.firstVertex);
+  EXPECT_LT(*grabbed, second.firstVertex + second.vertexCount);
+  mouse(QEvent::MouseMove, from + QPoint(60, 0), Qt::LeftButton, Qt::ShiftModifier);
+  SimulationRunner& runner = *window_->runner();
+  const Index start = runner.steps();
+  EXPECT_TRUE(QTest::qWaitFor([&] { return runner.steps() >= start + 3; }, 30000));
+  const Points3 pulled = runner.simulation().externalForces();
+  mouse(QEvent::MouseButtonRelease, from + QPoint(60, 0), Qt::NoButton, Qt::ShiftModifier);
+  EXPECT_GT(pulled.middleRows(second.firstNode, second.nodeCount).norm(), 0);
+  EXPECT_EQ(pulled.topRows(second.firstNode).norm(), 0);
+}
+
 // A scene's pressure on the bunny's upper half: arrows at the loaded nodes
 // (none elsewhere), and none once a run without surface loads is open.
 TEST_F(GuiScene, DrawsTheSurfaceLoadsAsArrows) {
