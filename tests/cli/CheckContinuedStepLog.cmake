@@ -2,7 +2,8 @@
 # a run continued with --initial from the frame after step K of another run
 # starts (its step 0) with the energies that run logged for step K:
 # kinetic, elastic, gravitational (from the rest shape, whatever the
-# run's start) and total, fields 11 to 14, the same to the digit.
+# run's start), the surface loads' potential and total, fields 11 to 15,
+# the same to the digit.
 cmake_policy(SET CMP0007 NEW)  # (empty list items count: the start row's empty fields)
 function(energies_of file index out)
   file(STRINGS "${file}" lines)
@@ -10,10 +11,10 @@ function(energies_of file index out)
   list(GET lines ${line} row)
   string(REPLACE "," ";" fields "${row}")
   list(LENGTH fields count)
-  if(NOT count EQUAL 17)
-    message(FATAL_ERROR "${file}: step ${index}: not 17 fields in '${row}'")
+  if(NOT count EQUAL 18)
+    message(FATAL_ERROR "${file}: step ${index}: not 18 fields in '${row}'")
   endif()
-  list(SUBLIST fields 10 4 energies)
+  list(SUBLIST fields 10 5 energies)
   string(REPLACE ";" "," energies "${energies}")
   set(${out} "${energies}" PARENT_SCOPE)
 endfunction()
@@ -25,7 +26,7 @@ if(NOT first STREQUAL continued)
 endif()
 # The drop starts lifted above its rest shape: gravitational energy to lose.
 energies_of("${FIRST}" 0 start)
-if(NOT start MATCHES "^0,[^,]+,[1-9][0-9.]*(e\\+[0-9]+)?,[1-9]")
+if(NOT start MATCHES "^0,[^,]+,[1-9][0-9.]*(e\\+[0-9]+)?,0,[1-9]")
   message(FATAL_ERROR "${FIRST}: a drop's start has energies ${start}")
 endif()
 message(STATUS "${CONTINUED} starts with ${FIRST}'s step ${STEP}: ${first}")

@@ -28,13 +28,14 @@ TEST(StepLogFile, WritesTheStartAndEachStep) {
   step.kinetic = 1.5;
   step.elastic = 2;
   step.gravitational = -0.25;
+  step.load = -0.5;
   step.reaction = {0.5, 1962, -3e-9};
   writeStepLog(dir / "log.csv", {start, step});
   EXPECT_EQ(test::readText(dir / "log.csv"),
             stepLogHeader() +
                 "\n"
-                "0,0,,,,,,,,,0,0.5,0,0.5,0,0,0\n"
-                "1,0.25,multigrid,7,8.5e-07,3,2,0.5,4,7.5,1.5,2,-0.25,3.25,0.5,1962,-3e-09\n");
+                "0,0,,,,,,,,,0,0.5,0,0,0.5,0,0,0\n"
+                "1,0.25,multigrid,7,8.5e-07,3,2,0.5,4,7.5,1.5,2,-0.25,-0.5,2.75,0.5,1962,-3e-09\n");
 }
 
 }  // namespace

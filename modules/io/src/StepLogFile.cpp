@@ -20,7 +20,8 @@ std::string number(double value) {
 
 std::string stepLogHeader() {
   return "step,time_s,solver,iterations,relative_residual,contacts,assembly_ms,setup_ms,"
-         "solve_ms,step_ms,kinetic_J,elastic_J,gravitational_J,total_J,reaction_x_N,reaction_y_N,"
+         "solve_ms,step_ms,kinetic_J,elastic_J,gravitational_J,load_J,total_J,reaction_x_N,"
+         "reaction_y_N,"
          "reaction_z_N";
 }
 
@@ -36,8 +37,9 @@ void writeStepLog(const std::filesystem::path& path, const std::vector<StepLogRo
             << ',' << number(1e3 * r.assemblySeconds) << ',' << number(1e3 * r.setupSeconds) << ','
             << number(1e3 * r.solveSeconds) << ',' << number(1e3 * r.stepSeconds) << ',';
       out << number(r.kinetic) << ',' << number(r.elastic) << ',' << number(r.gravitational) << ','
-          << number(r.kinetic + r.elastic + r.gravitational) << ',' << number(r.reaction.x()) << ','
-          << number(r.reaction.y()) << ',' << number(r.reaction.z()) << '\n';
+          << number(r.load) << ',' << number(r.kinetic + r.elastic + r.gravitational + r.load)
+          << ',' << number(r.reaction.x()) << ',' << number(r.reaction.y()) << ','
+          << number(r.reaction.z()) << '\n';
     }
   });
 }

@@ -160,6 +160,7 @@ void SimulationSession::logRow(Index step, const StepStats* stats, double second
   row.kinetic = e.kinetic;
   row.elastic = e.elastic;
   row.gravitational = e.gravitational;
+  row.load = e.load;
   row.reaction = simulation_->supportReaction(simulation_->state());
   log_.push_back(row);
 }

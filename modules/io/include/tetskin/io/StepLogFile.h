@@ -25,7 +25,8 @@ struct StepLogRow {
   double assemblySeconds = 0, setupSeconds = 0, solveSeconds = 0, stepSeconds = 0;
   // Joules after the step (gravitational: from whatever zero the caller
   // measures it; simulate's log from the rest shape, as Simulation does).
-  double kinetic = 0, elastic = 0, gravitational = 0;
+  // load: the surface loads' potential (zero without them).
+  double kinetic = 0, elastic = 0, gravitational = 0, load = 0;
   // Newtons after the step: the supports' reactions summed over the
   // prescribed nodes (zero where none is).
   Eigen::Vector3d reaction = Eigen::Vector3d::Zero();
