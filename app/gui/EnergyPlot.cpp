@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
+#include <vector>
 
 #include "tetskin/core/NumberText.h"
 
@@ -19,13 +21,25 @@ struct Curve {
   qreal width;
 };
 
-const std::array<Curve, 4> kCurves{{
+const std::array<Curve, 5> kCurves{{
     {"kinetic", [](const EnergyPlot::Sample& s) { return s.kinetic; }, QColor(70, 130, 200), 1.5},
     {"elastic", [](const EnergyPlot::Sample& s) { return s.elastic; }, QColor(220, 130, 40), 1.5},
     {"gravitational", [](const EnergyPlot::Sample& s) { return s.gravitational; },
      QColor(60, 160, 80), 1.5},
+    {"load", [](const EnergyPlot::Sample& s) { return s.load; }, QColor(200, 90, 170), 1.5},
     {"total", [](const EnergyPlot::Sample& s) { return s.total(); }, QColor(90, 90, 90), 2.0},
 }};
+
+// The curves drawn: the load's only where a sample has one (a run with
+// surface loads).
+std::vector<const Curve*> shownCurves(const std::deque<EnergyPlot::Sample>& samples) {
+  const bool loaded = std::any_of(samples.begin(), samples.end(),
+                                  [](const EnergyPlot::Sample& s) { return s.load != 0; });
+  std::vector<const Curve*> shown;
+  for (const Curve& c : kCurves)
+    if (loaded || std::string_view(c.name) != "load") shown.push_back(&c);
+  return shown;
+}
 
 // Three digits of the plot's scale (its largest magnitude or the noise floor).
 QString number(double value, double scale) {
@@ -37,8 +51,9 @@ QString number(double value, double scale) {
 EnergyPlot::EnergyPlot(QWidget* parent) : QWidget(parent) {
   setMinimumHeight(110);
   setToolTip(
-      "kinetic, elastic and gravitational energy and their total (J) over the last seconds of "
-      "simulated time; the gravitational energy is measured from the rest shape");
+      "kinetic, elastic and gravitational energy, the surface loads' potential (with surface "
+      "loads) and their total (J) over the last seconds of simulated time; the potentials are "
+      "measured from the rest shape");
 }
 
 void EnergyPlot::add(const Sample& sample) {
@@ -62,10 +77,11 @@ std::pair<double, double> EnergyPlot::range() const {
   // One scale for all curves, with 0 in it: their sizes compare at a
   // glance, and the gravitational energy falls below 0 as a body sinks.
   double lowest = 0, highest = 0;
+  const std::vector<const Curve*> curves = shownCurves(samples_);
   for (const Sample& s : samples_)
-    for (const Curve& c : kCurves) {
-      lowest = std::min(lowest, c.value(s));
-      highest = std::max(highest, c.value(s));
+    for (const Curve* c : curves) {
+      lowest = std::min(lowest, c->value(s));
+      highest = std::max(highest, c->value(s));
     }
   // Noise is drawn flat, not magnified to the plot's height.
   if (!(highest - lowest > noiseFloor_)) highest = lowest + (noiseFloor_ > 0 ? noiseFloor_ : 1);
@@ -77,8 +93,8 @@ QStringList EnergyPlot::legend() const {
   if (samples_.empty()) return labels;
   const auto [lowest, highest] = range();
   const double scale = std::max({std::abs(lowest), std::abs(highest), noiseFloor_});
-  for (const Curve& c : kCurves)
-    labels << QString("%1 %2").arg(c.name, number(c.value(samples_.back()), scale));
+  for (const Curve* c : shownCurves(samples_))
+    labels << QString("%1 %2").arg(c->name, number(c->value(samples_.back()), scale));
   return labels;
 }
 
@@ -101,9 +117,10 @@ void EnergyPlot::paintEvent(QPaintEvent*) {
              QString("energy (J), %1 to %2").arg(number(lowest, scale), number(highest, scale)));
   // The legend, with each curve's latest value, wrapped in a narrow dock.
   const QStringList labels = legend();
+  const std::vector<const Curve*> curves = shownCurves(samples_);
   int x = left, baseline = 2 * line;
-  for (std::size_t i = 0; i < kCurves.size(); ++i) {
-    const Curve& c = kCurves[i];
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const Curve& c = *curves[i];
     const QString& label = labels[static_cast<int>(i)];
     const int advance = metrics.horizontalAdvance(label + "  ");
     if (x > left && x + metrics.horizontalAdvance(label) > right) {
@@ -124,7 +141,8 @@ void EnergyPlot::paintEvent(QPaintEvent*) {
   }
   const double start = std::max(samples_.front().time, last.time - window_);
   const double span = std::max(last.time - start, 1e-12);
-  for (const Curve& c : kCurves) {
+  for (const Curve* shown : curves) {
+    const Curve& c = *shown;
     QPainterPath path;
     for (std::size_t i = 0; i < samples_.size(); ++i) {
       const Sample& s = samples_[i];

@@ -2,7 +2,8 @@
 #pragma once
 // The running simulation's energies over its last seconds of simulated
 // time: kinetic, elastic, gravitational (from the rest shape, as
-// Simulation measures it) and their sum. A researcher sees a drop trade
+// Simulation measures it), the surface loads' potential where a run has
+// surface loads, and their sum. A researcher sees a drop trade
 // height for speed and the landing's losses, the body settle under
 // damping, or a step size grow unstable, as it happens.
 
@@ -17,8 +18,8 @@ class EnergyPlot : public QWidget {
   Q_OBJECT
  public:
   struct Sample {
-    double time = 0, kinetic = 0, elastic = 0, gravitational = 0;
-    double total() const { return kinetic + elastic + gravitational; }
+    double time = 0, kinetic = 0, elastic = 0, gravitational = 0, load = 0;
+    double total() const { return kinetic + elastic + gravitational + load; }
   };
   explicit EnergyPlot(QWidget* parent = nullptr);
   // A sample at simulated `time`; one at an earlier time than the last
@@ -32,7 +33,8 @@ class EnergyPlot : public QWidget {
   // this. The window sets it from the body (MainWindow::resetSimulation).
   void setNoiseFloor(double joules);
   // The legend as drawn: each curve's name and latest value, to the digits
-  // that mean something beside the largest value shown ("elastic 0" at rest).
+  // that mean something beside the largest value shown ("elastic 0" at rest;
+  // "load" only while a sample has a surface loads' potential).
   QStringList legend() const;
   double window() const { return window_; }
   QSize sizeHint() const override { return {260, 130}; }

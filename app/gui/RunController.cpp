@@ -315,7 +315,7 @@ void RunController::plotEnergy(const SimulationState& state) {
   if (runner_->playing() && now - lastEnergySample_ < std::chrono::milliseconds(100)) return;
   const Simulation& sim = runner_->simulation();
   const Energies e = sim.energies();
-  energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational});
+  energyPlot_->add({state.time, e.kinetic, e.elastic, e.gravitational, e.load});
   const SimulationOptions& options = sim.options();
   if (state.steps > 0 && options.hasContact()) {
     // The contacts of the last step, over the energy plot's window.

@@ -136,6 +136,14 @@ TEST_F(GuiScene, DrawsTheSurfaceLoadsAsArrows) {
   EXPECT_LT(loaded, forces.rows());  // the upper half's nodes only
   // The pressure pushes the top down overall.
   EXPECT_LT(forces.col(1).sum(), 0);
+  // The energy plot shows the loads' potential, in its total too.
+  auto* plot = child<EnergyPlot>("energyPlot");
+  ASSERT_FALSE(plot->samples().empty());
+  const Energies now = runner.simulation().energies();
+  EXPECT_EQ(plot->samples().back().load, now.load);
+  EXPECT_NE(now.load, 0);
+  EXPECT_EQ(plot->legend().size(), 5);
+  EXPECT_TRUE(plot->legend()[3].startsWith("load "));
   ASSERT_TRUE(window_->openFile(kBowlScene)) << window_->lastError().toStdString();
   step(1);
   EXPECT_EQ(window_->scene().loadArrowCount(), 0);
