@@ -16,6 +16,11 @@ namespace {
 
 constexpr const char* kGroup = "Scenario";
 
+// A box flag's six numbers, XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX.
+BoundingBox boxOf(const std::vector<double>& n) {
+  return BoundingBox{{n[0], n[1], n[2]}, {n[3], n[4], n[5]}};
+}
+
 }  // namespace
 
 void addScenarioOptions(CLI::App& cmd, ScenarioArgs& a) {
@@ -125,21 +130,14 @@ void fillScenario(const CLI::App& cmd, const ScenarioArgs& a, Index nodeCount,
     if (givenName(cmd, *f.option)) p.*f.field = a.parameters.*f.field;
   if (givenName(cmd, scenario_option::kLoadSeconds)) p.loadSeconds = a.parameters.loadSeconds;
   if (!a.fixedNodes.empty()) p.fixedNodes = readNodeList(a.fixedNodes, nodeCount);
-  if (a.fixedBox.size() == 6) {
-    BoundingBox box;
-    box.min = {a.fixedBox[0], a.fixedBox[1], a.fixedBox[2]};
-    box.max = {a.fixedBox[3], a.fixedBox[4], a.fixedBox[5]};
-    request.fixedBox = box;
-  }
+  if (a.fixedBox.size() == 6) request.fixedBox = boxOf(a.fixedBox);
   if (!a.loads.empty()) p.loads = readNodeForces(a.loads, nodeCount);
   if (surfaceLoad) {
     SurfaceLoadRequest& load = request.surfaceLoads.emplace_back();
     load.name = !a.loadBox.empty() ? kLoadBox.flag : kLoadFaces.flag;
     load.pressure = a.pressure.value_or(0.0);
     if (!a.traction.empty()) load.traction = {a.traction[0], a.traction[1], a.traction[2]};
-    if (!a.loadBox.empty())
-      load.box = BoundingBox{{a.loadBox[0], a.loadBox[1], a.loadBox[2]},
-                             {a.loadBox[3], a.loadBox[4], a.loadBox[5]}};
+    if (!a.loadBox.empty()) load.box = boxOf(a.loadBox);
     load.faceFile = a.loadFaces;
   }
   if (!a.loadCurve.empty()) p.loadCurve = readLoadCurve(a.loadCurve);

@@ -136,18 +136,20 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
     std::printf(", floor at %s = %s", toString(options.up),
                 formatNumber(*options.floorHeight).c_str());
   std::printf("\n");
-  for (std::size_t k = 0; k < parameters.surfaceLoads.size(); ++k) {
+  if (!parameters.surfaceLoads.empty()) {
     // (At rest: the pressure's total changes as the faces deform.)
-    const SurfaceLoad& load = parameters.surfaceLoads[k];
     const Eigen::VectorXd rest = sim.restMesh().nodes.reshaped<Eigen::RowMajor>();
-    Eigen::VectorXd forces = Eigen::VectorXd::Zero(rest.size());
-    addSurfaceLoadForces(load, rest, rest, 1.0, forces);
-    std::printf(
-        "  surface load %zu: pressure %s Pa, traction %s Pa on %lld faces of %s m^2 "
-        "(total force at rest %s N)\n",
-        k, formatNumber(load.pressure).c_str(), commaSeparated(load.traction).c_str(),
-        static_cast<long long>(load.faces.rows()), formatNumber(loadedArea(load, rest)).c_str(),
-        commaSeparated(forces.reshaped(3, rest.size() / 3).rowwise().sum()).c_str());
+    for (std::size_t k = 0; k < parameters.surfaceLoads.size(); ++k) {
+      const SurfaceLoad& load = parameters.surfaceLoads[k];
+      Eigen::VectorXd forces = Eigen::VectorXd::Zero(rest.size());
+      addSurfaceLoadForces(load, rest, rest, 1.0, forces);
+      std::printf(
+          "  surface load %zu: pressure %s Pa, traction %s Pa on %lld faces of %s m^2 "
+          "(total force at rest %s N)\n",
+          k, formatNumber(load.pressure).c_str(), commaSeparated(load.traction).c_str(),
+          static_cast<long long>(load.faces.rows()), formatNumber(loadedArea(load, rest)).c_str(),
+          commaSeparated(forces.reshaped(3, rest.size() / 3).rowwise().sum()).c_str());
+    }
   }
   if (options.hasContact()) {
     const Eigen::RowVector3d force = sim.contactForces(sim.state()).colwise().sum();

@@ -287,7 +287,8 @@ void RunController::showLatestState() {
   scene_.poseObstacles(state.time);
   if (scene_.wantsSkinContact()) scene_.setSkinContact(runner_->simulation().skinContact(state));
   lastTimes_ = scene_.showControlState(state.positions);
-  scene_.setLoadArrows(runner_->simulation().surfaceLoadForces(state));
+  const Simulation& sim = runner_->simulation();
+  scene_.setLoadArrows(sim.hasSurfaceLoads() ? sim.surfaceLoadForces(state) : Points3());
   if (scene_.colorsBySimulation()) {
     const FrameFields fields = runner_->simulation().frameFields(state);
     showOnSkin(fields.vonMisesStress, fields.equivalentStrain);

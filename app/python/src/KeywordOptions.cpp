@@ -71,6 +71,28 @@ void Keywords::finish() const {
   throw Error(call_ + ": unknown option '" + unknown + "' (known: " + listed(known) + ")");
 }
 
+namespace {
+
+// A keyword's (2, 3) corners, min and max.
+BoundingBox boxOf(Keywords& k, const py::object& value, const ListOption& option) {
+  const Points3 corners = points3(value, option.key);
+  if (corners.rows() != 2)
+    throw Error(k.call() + ": " + option.key + ": expected 2 corners (min, max), got " +
+                std::to_string(corners.rows()));
+  return BoundingBox{corners.row(0).transpose(), corners.row(1).transpose()};
+}
+
+// A keyword's three numbers, x, y, z.
+Eigen::Vector3d vectorOf(Keywords& k, const py::object& value, const ListOption& option) {
+  const py::array given = py::array::ensure(value);
+  if (!given) PyErr_Clear();
+  if (!given || given.size() != 3)
+    throw Error(k.call() + ": " + option.key + ": expected 3 numbers (x, y, z)");
+  return points3(given.attr("reshape")(1, 3), option.key).row(0).transpose();
+}
+
+}  // namespace
+
 RunRequest runRequest(Keywords& k) {
   RunRequest r;
   applyRunKeywords(k, r);
@@ -96,13 +118,7 @@ void applyRunKeywords(Keywords& k, RunRequest& r) {
   if (const auto v = k.choice(kCoarseLevels)) o.coarseLevels = *v;
   if (const auto up = k.choice(kUpOption)) r.up = up;
   using scenario_option::kGravity;
-  if (const auto gravity = k.take(kGravity.key)) {
-    const py::array given = py::array::ensure(*gravity);
-    if (!given) PyErr_Clear();
-    if (!given || given.size() != 3)
-      throw Error(k.call() + ": " + kGravity.key + ": expected 3 numbers (x, y, z)");
-    r.gravity = points3(given.attr("reshape")(1, 3), kGravity.key).row(0).transpose();
-  }
+  if (const auto gravity = k.take(kGravity.key)) r.gravity = vectorOf(k, *gravity, kGravity);
   if (const auto height = k.number(scenario_option::kFloorHeight)) r.floorHeight = *height;
 }
 
@@ -123,16 +139,7 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
   const std::optional<py::object> fixed =
       k.orOtherName(k.take(kFixedNodes.key), fixedName, "held_nodes", true);
   if (fixed) p.fixedNodes = idList(*fixed, kFixedNodes.key, levelNodes, level);
-  if (const auto box = k.take(kFixedBox.key)) {
-    const Points3 corners = points3(*box, kFixedBox.key);
-    if (corners.rows() != 2)
-      throw Error(named(kFixedBox) + ": expected 2 corners (min, max), got " +
-                  std::to_string(corners.rows()));
-    BoundingBox fixedBox;
-    fixedBox.min = corners.row(0).transpose();
-    fixedBox.max = corners.row(1).transpose();
-    r.fixedBox = fixedBox;
-  }
+  if (const auto box = k.take(kFixedBox.key)) r.fixedBox = boxOf(k, *box, kFixedBox);
   if (const auto loads = k.take(kLoads.key)) {
     p.loads = points3(*loads, kLoads.key);
     if (p.loads.rows() != levelNodes)
@@ -159,19 +166,9 @@ void readScenarioParameters(Keywords& k, Index levelNodes, RunRequest& r) {
   if (pressure || traction) {
     surface.name = named(loadBox ? kLoadBox : kLoadFaces);
     surface.pressure = pressure.value_or(0.0);
-    if (traction) {
-      const py::array given = py::array::ensure(*traction);
-      if (!given) PyErr_Clear();
-      if (!given || given.size() != 3)
-        throw Error(named(kTraction) + ": expected 3 numbers (x, y, z)");
-      surface.traction = points3(given.attr("reshape")(1, 3), kTraction.key).row(0).transpose();
-    }
+    if (traction) surface.traction = vectorOf(k, *traction, kTraction);
     if (loadBox) {
-      const Points3 corners = points3(*loadBox, kLoadBox.key);
-      if (corners.rows() != 2)
-        throw Error(named(kLoadBox) + ": expected 2 corners (min, max), got " +
-                    std::to_string(corners.rows()));
-      surface.box = BoundingBox{corners.row(0).transpose(), corners.row(1).transpose()};
+      surface.box = boxOf(k, *loadBox, kLoadBox);
     } else if (py::isinstance<py::str>(*loadFaces) ||
                py::isinstance(*loadFaces, py::module_::import("pathlib").attr("PurePath"))) {
       surface.faceFile = py::str(*loadFaces).cast<std::string>();

@@ -49,6 +49,15 @@ ScenePlacement readPlacement(const JsonFields& f) {
   return p;
 }
 
+// A box field, [xmin, ymin, zmin, xmax, ymax, zmax] with min <= max.
+BoundingBox boxField(const JsonFields& f, const char* key) {
+  const Eigen::VectorXd numbers = f.numbers(key, 6);
+  const BoundingBox box{numbers.head<3>(), numbers.tail<3>()};
+  if (box.empty())
+    f.fail(f.where(key), "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min <= max");
+  return box;
+}
+
 // One of a body's surface_loads: {"pressure": P, "traction": [X, Y, Z],
 // "load_box": [xmin, ymin, zmin, xmax, ymax, zmax] or "load_faces": FILE}.
 SurfaceLoadRequest readSurfaceLoad(const json& value, const std::string& pointer,
@@ -67,12 +76,7 @@ SurfaceLoadRequest readSurfaceLoad(const json& value, const std::string& pointer
   if (f.has(kLoadBox.key) == f.has(kLoadFaces.key))
     f.fail(pointer, std::string("give its faces by ") + kLoadBox.key + " or by " + kLoadFaces.key +
                         ", one of them");
-  if (f.has(kLoadBox.key)) {
-    const Eigen::VectorXd box = f.numbers(kLoadBox.key, 6);
-    load.box = BoundingBox{box.head<3>(), box.tail<3>()};
-    if (load.box->empty())
-      f.fail(f.where(kLoadBox.key), "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min <= max");
-  }
+  if (f.has(kLoadBox.key)) load.box = boxField(f, kLoadBox.key);
   if (f.has(kLoadFaces.key)) load.faceFile = pathField(f, kLoadFaces.key, directory);
   f.rejectUnknown();
   return load;
@@ -100,12 +104,7 @@ SceneBody readBody(const json& value, const std::string& pointer, const std::str
   if (f.has("surface")) body.surface = pathField(f, "surface", directory);
   body.placement = readPlacement(f);
   if (f.has("velocity")) body.velocity = f.vector3("velocity");
-  if (f.has("held_box")) {
-    const Eigen::VectorXd box = f.numbers("held_box", 6);
-    body.heldBox = BoundingBox{box.head<3>(), box.tail<3>()};
-    if ((body.heldBox->max.array() < body.heldBox->min.array()).any())
-      f.fail(f.where("held_box"), "must be [xmin, ymin, zmin, xmax, ymax, zmax] with min <= max");
-  }
+  if (f.has("held_box")) body.heldBox = boxField(f, "held_box");
   if (f.has("material")) {
     JsonFields m(f.get("material"), f.where("material"), file);
     for (const MaterialField& field : materialFields()) {

@@ -46,10 +46,9 @@ SurfaceLoad selectSurfaceLoad(const SurfaceLoadRequest& request, const TetMesh& 
   if (request.box) {
     const BoundingBox& box = *request.box;
     if (box.empty()) fail("its box's minimum exceeds its maximum along an axis");
-    const auto inside = [&](int node) {
-      const Eigen::Vector3d p = level.nodes.row(node).transpose();
-      return (p.array() >= box.min.array()).all() && (p.array() <= box.max.array()).all();
-    };
+    std::vector<char> in(static_cast<std::size_t>(level.nodeCount()), 0);
+    for (int node : pointsInBox(level.nodes, box)) in[static_cast<std::size_t>(node)] = 1;
+    const auto inside = [&](int node) { return in[static_cast<std::size_t>(node)] != 0; };
     for (Index f : faces)
       if (inside(boundary.faces(f, 0)) && inside(boundary.faces(f, 1)) &&
           inside(boundary.faces(f, 2)))

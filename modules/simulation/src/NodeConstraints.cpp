@@ -22,6 +22,13 @@ void NodeConstraints::setFixedDofs(std::vector<char> fixedDofs) {
   targetNodes_.clear();
 }
 
+std::vector<char> NodeConstraints::wholeNodes() const {
+  std::vector<char> whole(fixedDofs_.size() / 3);
+  for (std::size_t node = 0; node < whole.size(); ++node)
+    whole[node] = isFixed(static_cast<Index>(node));
+  return whole;
+}
+
 void NodeConstraints::setTargets(std::vector<int> nodes, Points3 targets) {
   targetNodes_ = std::move(nodes);
   targets_ = std::move(targets);

@@ -32,6 +32,9 @@ class NodeConstraints : public ForceModel {
     return fixedDofs_[d] && fixedDofs_[d + 1] && fixedDofs_[d + 2];
   }
   const std::vector<char>& fixedDofs() const { return fixedDofs_; }
+  // One flag per node: held along all three axes (what the solvers'
+  // multigrid keeps out of its corrections).
+  std::vector<char> wholeNodes() const;
   // Fixed nodes that must reach `targets` (a row each) at the end of the
   // next step; the caller checked that each is fixed.
   void setTargets(std::vector<int> nodes, Points3 targets);

@@ -269,20 +269,17 @@ void Simulation::setHeldAxes(const std::vector<int>& nodes,
 }
 
 void Simulation::applyHolds() {
-  const auto n = static_cast<std::size_t>(rest_.nodeCount());
-  std::vector<char> whole(n, 0), dofs(3 * n, 0);
-  for (int v : fixedNodes_) whole[static_cast<std::size_t>(numbering_->internal(v))] = 1;
-  for (std::size_t node = 0; node < n; ++node)
-    for (std::size_t k = 0; k < 3; ++k) dofs[3 * node + k] = whole[node];
-  for (std::size_t i = 0; i < axisNodes_.size(); ++i) {
-    const auto node = static_cast<std::size_t>(numbering_->internal(axisNodes_[i]));
+  std::vector<char> dofs(3 * static_cast<std::size_t>(rest_.nodeCount()), 0);
+  const auto hold = [&](int node, std::size_t axis) {
+    dofs[3 * static_cast<std::size_t>(numbering_->internal(node)) + axis] = 1;
+  };
+  for (int v : fixedNodes_)
+    for (std::size_t k = 0; k < 3; ++k) hold(v, k);
+  for (std::size_t i = 0; i < axisNodes_.size(); ++i)
     for (std::size_t k = 0; k < 3; ++k)
-      if (axes_[i][k]) dofs[3 * node + k] = 1;
-  }
-  for (std::size_t node = 0; node < n; ++node)
-    whole[node] = dofs[3 * node] && dofs[3 * node + 1] && dofs[3 * node + 2];
+      if (axes_[i][k]) hold(axisNodes_[i], k);
   constraints_->setFixedDofs(std::move(dofs));
-  solvers_->setFixedNodes(whole);
+  solvers_->setFixedNodes(constraints_->wholeNodes());
 }
 
 RunConditions Simulation::conditions() const {
@@ -479,7 +476,6 @@ void Simulation::setSurfaceLoads(const std::vector<SurfaceLoad>& loads) {
     }));
     surfaceLoadForce_ = nullptr;
   }
-  surfaceLoads_ = loads;
   if (loads.empty()) return;
   auto model = std::make_unique<SurfaceLoadForce>(std::move(internal), fem_.restPositions());
   model->setFactor(factor);

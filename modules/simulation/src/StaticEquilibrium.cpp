@@ -65,9 +65,6 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   }
   const Index nodes = fem_.nodeCount();
   const std::vector<char>& held = constraints_->fixedDofs();  // per dof
-  std::vector<char> wholeNodes(static_cast<std::size_t>(nodes), 0);
-  for (Index node = 0; node < nodes; ++node)
-    wholeNodes[static_cast<std::size_t>(node)] = constraints_->isFixed(node);
   const Eigen::VectorXd& mass = fem_.lumpedMass();
   Eigen::VectorXd load = external;
   if (surfaceLoadForce_) surfaceLoadForce_->addForceAt(x, Eigen::VectorXd::Zero(x.size()), load);
@@ -124,7 +121,7 @@ StaticStats Simulation::solveStatic(double tolerance, int maxIterations) {
   assemble();
   SolverStack solvers(MultiLevelTetMesh{}, 0, internal_, linear,
                       newton->coarseDiscretization(models_), "the static solve");
-  solvers.setFixedNodes(wholeNodes);
+  solvers.setFixedNodes(constraints_->wholeNodes());
   Eigen::VectorXd r = residual(x);
   const double scale = std::max(stats.load, largestFree(r, held));
   // Below eps |x| K no Newton step can go: the elastic forces come from

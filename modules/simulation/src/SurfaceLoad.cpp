@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "tetskin/core/Error.h"
+#include "tetskin/core/Geometry.h"
 
 namespace tetskin {
 namespace {
@@ -13,12 +14,11 @@ Eigen::Vector3d corner(const Eigen::VectorXd& coordinates, int node) {
   return coordinates.segment<3>(3 * static_cast<Index>(node));
 }
 
-// Twice the face's area along its outward normal.
-Eigen::Vector3d doubleAreaNormal(const SurfaceLoad& load, Index f,
-                                 const Eigen::VectorXd& coordinates) {
-  const Eigen::Vector3d a = corner(coordinates, load.faces(f, 0));
-  return (corner(coordinates, load.faces(f, 1)) - a)
-      .cross(corner(coordinates, load.faces(f, 2)) - a);
+// The face's area along its outward normal.
+Eigen::Vector3d areaVector(const SurfaceLoad& load, Index f, const Eigen::VectorXd& coordinates) {
+  return triangleAreaVector(corner(coordinates, load.faces(f, 0)),
+                            corner(coordinates, load.faces(f, 1)),
+                            corner(coordinates, load.faces(f, 2)));
 }
 
 }  // namespace
@@ -44,15 +44,15 @@ void addSurfaceLoadForces(const SurfaceLoad& load, const Eigen::VectorXd& rest,
                           const Eigen::VectorXd& positions, double factor,
                           Eigen::VectorXd& forces) {
   // A third of each face's force to each corner: the consistent load of a
-  // constant load on a linear triangle. Pressure: -p n A (n A is half the
-  // cross product); traction: t A at rest.
+  // constant load on a linear triangle. Pressure: -p n A; traction: t A
+  // at rest.
   const double pressure = factor * load.pressure;
   const Eigen::Vector3d traction = factor * load.traction;
   const bool pushes = pressure != 0, pulls = traction.squaredNorm() > 0;
   for (Index f = 0; f < load.faces.rows(); ++f) {
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
-    if (pushes) force -= pressure / 2 * doubleAreaNormal(load, f, positions);
-    if (pulls) force += doubleAreaNormal(load, f, rest).norm() / 2 * traction;
+    if (pushes) force -= pressure * areaVector(load, f, positions);
+    if (pulls) force += areaVector(load, f, rest).norm() * traction;
     for (int k = 0; k < 3; ++k) forces.segment<3>(3 * load.faces(f, k)) += force / 3;
   }
 }
@@ -70,8 +70,7 @@ double surfaceLoadEnergy(const SurfaceLoad& load, const Eigen::VectorXd& rest,
     if (load.pressure != 0)
       energy += factor * load.pressure * (coneVolume(f, positions) - coneVolume(f, rest));
     if (load.traction.squaredNorm() > 0) {
-      const Eigen::Vector3d force =
-          factor * doubleAreaNormal(load, f, rest).norm() / 2 * load.traction;
+      const Eigen::Vector3d force = factor * areaVector(load, f, rest).norm() * load.traction;
       for (int k = 0; k < 3; ++k) {
         const int node = load.faces(f, k);
         energy -= force.dot(corner(positions, node) - corner(rest, node)) / 3;
@@ -83,8 +82,7 @@ double surfaceLoadEnergy(const SurfaceLoad& load, const Eigen::VectorXd& rest,
 
 double loadedArea(const SurfaceLoad& load, const Eigen::VectorXd& positions) {
   double area = 0;
-  for (Index f = 0; f < load.faces.rows(); ++f)
-    area += doubleAreaNormal(load, f, positions).norm() / 2;
+  for (Index f = 0; f < load.faces.rows(); ++f) area += areaVector(load, f, positions).norm();
   return area;
 }
 

@@ -400,7 +400,7 @@ class Simulation {
   // on, times the factor below. Throws Error naming the load (from 0) and
   // its problem (surfaceLoadProblem).
   void setSurfaceLoads(const std::vector<SurfaceLoad>& loads);
-  const std::vector<SurfaceLoad>& surfaceLoads() const { return surfaceLoads_; }
+  bool hasSurfaceLoads() const { return surfaceLoadForce_ != nullptr; }
   // Scales the surface loads from the next step on (a load curve's factor;
   // 1 at the start, 0 once they let go).
   void setSurfaceLoadFactor(double factor);
@@ -475,7 +475,6 @@ class Simulation {
   ObstacleContact* obstacles_ = nullptr;          // one of models_ (null: no obstacles)
   BodyContact* bodyContact_ = nullptr;            // one of models_ (null: skins do not meet)
   SurfaceLoadForce* surfaceLoadForce_ = nullptr;  // one of models_ (null: no surface loads)
-  std::vector<SurfaceLoad> surfaceLoads_;         // as given (level numbering)
   std::unique_ptr<ImplicitEuler> integrator_;
   std::unique_ptr<SolverStack> solvers_;
   std::vector<int> fixedNodes_;  // level numbering
