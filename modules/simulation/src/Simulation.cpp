@@ -106,6 +106,16 @@ void validateOptions(const SimulationOptions& o) {
     throw Error("the floor height must be finite, got " + formatNumber(*o.floorHeight));
 }
 
+// Takes `model` (one of `models`, or null) out of the list and forgets it:
+// a model a setter replaces (the skins' contact, the surface loads).
+template <class Model>
+void removeModel(std::vector<std::unique_ptr<ForceModel>>& models, Model*& model) {
+  if (!model) return;
+  models.erase(
+      std::find_if(models.begin(), models.end(), [&](const auto& m) { return m.get() == model; }));
+  model = nullptr;
+}
+
 // The sum of the force models' forces at `state` (those of contacts only,
 // if `contactsOnly`), in the internal numbering.
 Eigen::VectorXd forcesAt(const std::vector<std::unique_ptr<ForceModel>>& models,
@@ -196,11 +206,7 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
       throw Error("the contact skin's triangle " + std::to_string(t) +
                   " joins vertices of different bodies");
   }
-  if (bodyContact_) {
-    models_.erase(std::find_if(models_.begin(), models_.end(),
-                               [&](const auto& model) { return model.get() == bodyContact_; }));
-    bodyContact_ = nullptr;
-  }
+  removeModel(models_, bodyContact_);
   const bool several =
       std::adjacent_find(bodies.begin(), bodies.end(), std::not_equal_to<>()) != bodies.end();
   const SkinCollisions& settings = options_.skinCollisions;
@@ -470,12 +476,7 @@ void Simulation::setSurfaceLoads(const std::vector<SurfaceLoad>& loads) {
         internal[k].faces(f, c) = numbering_->internal(loads[k].faces(f, c));
   }
   const double factor = surfaceLoadForce_ ? surfaceLoadForce_->factor() : 1.0;
-  if (surfaceLoadForce_) {
-    models_.erase(std::find_if(models_.begin(), models_.end(), [&](const auto& model) {
-      return model.get() == surfaceLoadForce_;
-    }));
-    surfaceLoadForce_ = nullptr;
-  }
+  removeModel(models_, surfaceLoadForce_);
   if (loads.empty()) return;
   auto model = std::make_unique<SurfaceLoadForce>(std::move(internal), fem_.restPositions());
   model->setFactor(factor);
