@@ -388,6 +388,10 @@ bool MainWindow::openRun(const QString& qpath) {
     std::string surfaceFrame;
     try {
       const RecordedRun run(qpath.toStdString());
+      if (run.bodyCount() > 1)
+        throw Error(qpath.toStdString(), 0,
+                    "records a scene of " + std::to_string(run.bodyCount()) +
+                        " bodies: open the scene first");
       if (!run.surfaceFile())
         throw Error(qpath.toStdString(), 0,
                     "has no surface frames naming its dataset: open the dataset first");

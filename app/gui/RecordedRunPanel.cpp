@@ -67,7 +67,7 @@ RecordedRunPanel::RecordedRunPanel(QWidget* parent) : QGroupBox("Recorded run", 
     scheduleNextFrame();
   });
   connect(continueButton, &QPushButton::clicked, this, [this] {
-    if (run_) Q_EMIT continueRequested(QString::fromStdString(frameFile()));
+    if (run_) Q_EMIT continueRequested();
   });
   connect(filmButton, &QPushButton::clicked, this, [this] {
     if (run_) Q_EMIT filmRequested();
@@ -146,6 +146,10 @@ const std::string& RecordedRunPanel::frameFile() const {
 
 FrameState RecordedRunPanel::state() const {
   return run_->read(static_cast<std::size_t>(frame()), rest_, restName_);
+}
+
+std::string RecordedRunPanel::frameName() const {
+  return "frame " + std::to_string(frame()) + " of " + run_->path().string();
 }
 
 void RecordedRunPanel::showFrameText() {

@@ -50,15 +50,21 @@ class RecordedRunPanel : public QGroupBox {
   RunConditions conditions() const {
     return run_ ? RunConditions{run_->floor(), run_->prescribedNodes()} : RunConditions{};
   }
-  // The file of the frame chosen, and its state (throws Error naming the
-  // file, as readSimulationFrame). Both only while open.
+  // The file of the frame chosen (body 0's for a run of several bodies),
+  // its state (the bodies' union; throws Error naming the file, as
+  // readSimulationFrame) and its name in messages ("frame 7 of RUN.pvd").
+  // All only while open.
   const std::string& frameFile() const;
   FrameState state() const;
+  std::string frameName() const;
+  // Whether the open run is of several bodies (a frame per body).
+  bool ofSeveralBodies() const { return run_ && run_->bodyCount() > 1; }
 
  Q_SIGNALS:
   // The slider chose another frame.
   void frameChosen(int frame);
-  void continueRequested(const QString& frameFile);
+  // Continue: the simulation to start from the frame chosen (state()).
+  void continueRequested();
   // Film...: the run into a movie, as the view shows it.
   void filmRequested();
   void closeRequested();

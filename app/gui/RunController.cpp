@@ -37,8 +37,17 @@ RunController::~RunController() {
 
 void RunController::connectDock() {
   connect(runPanel_, &RecordedRunPanel::frameChosen, this, [this] { showRunFrame(); });
-  connect(runPanel_, &RecordedRunPanel::continueRequested, this,
-          [this](const QString& frame) { startFromFrame(frame); });
+  connect(runPanel_, &RecordedRunPanel::continueRequested, this, [this] {
+    // (The frame's state, of one body or of several: the open run's.)
+    FrameState start;
+    try {
+      start = runPanel_->state();
+    } catch (const std::exception& e) {
+      window_.fail(QString::fromStdString(e.what()));
+      return;
+    }
+    startFrom(start, QString::fromStdString(runPanel_->frameName()));
+  });
   connect(runPanel_, &RecordedRunPanel::filmRequested, this, [this] {
     const QString file =
         window_.interactive()
@@ -172,14 +181,19 @@ bool RunController::startFromFrame(const QString& qpath) {
     window_.fail(QString::fromStdString(e.what()));
     return false;
   }
+  if (!startFrom(start, qpath)) return false;
+  window_.rememberRecent(QFileInfo(qpath).absoluteFilePath());
+  return true;
+}
+
+bool RunController::startFrom(const FrameState& start, const QString& source) {
   reset();
   if (!runner_) return false;  // the dock's settings were refused (reported)
   runner_->session().startFrom(start);
-  window_.rememberRecent(QFileInfo(qpath).absoluteFilePath());
   energyPlot_->clear();  // (its start was the scenario's, before the frame's state)
   plottedSteps_ = -1;
   showLatestState();
-  QString message = "started from " + qpath;
+  QString message = "started from " + source;
   if (const QString warnings = takeWarnings(); !warnings.isEmpty()) message += "; " + warnings;
   window_.succeed(message);
   return true;
@@ -379,6 +393,10 @@ void RunController::tick() {
 
 void RunController::writeControlFrame(const std::filesystem::path& path) {
   if (replaying_ && runPanel_->isOpen()) {
+    if (runPanel_->ofSeveralBodies())
+      throw Error(runPanel_->frameName() +
+                  ": a run of several bodies keeps a frame file per body "
+                  "(RUN_frames/control_NNNNN_K.vtu); Continue starts the scene from this frame");
     writeVtu(path, readVtu(runPanel_->frameFile()));
     return;
   }

@@ -20,6 +20,7 @@
 #include "Scene.h"
 #include "WindowServices.h"
 #include "tetskin/session/SimulationRunner.h"
+#include "tetskin/vtkio/SimulationFrame.h"
 
 namespace tetskin::gui {
 
@@ -51,6 +52,9 @@ class RunController : public QObject {
   // simulated level, as `simulate --initial` does; a frame of another level
   // or body is refused with its file and changes nothing.
   bool startFromFrame(const QString& vtu);
+  // Resets, then starts from `start` (the state of the simulated level, or
+  // of every body of a scene), named `source` in the status bar.
+  bool startFrom(const FrameState& start, const QString& source);
   // Opens a run recorded of the simulated level (a dataset is open) at its
   // first frame; one of another level or body is refused with its file.
   bool openRun(const QString& pvd);

@@ -120,6 +120,45 @@ TEST_F(GuiScene, PullsTheSecondBodyOfAScene) {
   EXPECT_EQ(pulled.topRows(second.firstNode).norm(), 0);
 }
 
+// A run of several bodies, recorded from their scene, replays on the
+// scene: each frame the bodies' frames side by side; Continue starts the
+// scene from the frame shown. Opened alone, it asks for its scene.
+TEST_F(GuiScene, ReplaysARunOfSeveralBodiesAndContinuesFromIt) {
+  const QString path = QString(TETSKIN_SOURCE_DIR) + "/tests/data/scenes/two_bunnies.json";
+  ASSERT_TRUE(window_->openFile(path)) << window_->lastError().toStdString();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  const std::filesystem::path pvd = scratch("two_bodies.pvd");
+  ASSERT_TRUE(window_->startRecording(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  std::vector<Points3> states{window_->runner()->state().positions};
+  for (int i = 0; i < 2; ++i) {
+    step(1);
+    states.push_back(window_->runner()->state().positions);
+  }
+  window_->stopRecording();
+  QTest::mouseClick(child<QPushButton>("reset"), Qt::LeftButton);
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(pvd.string())))
+      << window_->lastError().toStdString();
+  auto* slider = child<QSlider>("runFrame");
+  EXPECT_EQ(slider->maximum(), 2);
+  slider->setValue(2);
+  EXPECT_EQ(window_->scene().controlNodes(), states[2]);
+  // A frame of several bodies is no one frame file to export.
+  EXPECT_FALSE(window_->exportFrame(QString::fromStdString(scratch("two.vtu").string())));
+  EXPECT_NE(window_->lastError().indexOf("keeps a frame file per body"), -1)
+      << window_->lastError().toStdString();
+  QTest::mouseClick(child<QPushButton>("runContinue"), Qt::LeftButton);
+  EXPECT_EQ(window_->runner()->state().positions, states[2]);
+  EXPECT_EQ(window_->runner()->steps(), 0);
+  step(1);
+  EXPECT_NE(window_->runner()->state().positions, states[2]);
+
+  window_ = std::make_unique<MainWindow>(false);
+  EXPECT_FALSE(window_->openFile(QString::fromStdString(pvd.string())));
+  EXPECT_EQ(window_->lastError().toStdString(),
+            pvd.string() + ": records a scene of 2 bodies: open the scene first");
+}
+
 // A scene's pressure on the bunny's upper half: arrows at the loaded nodes
 // (none elsewhere), and none once a run without surface loads is open.
 TEST_F(GuiScene, DrawsTheSurfaceLoadsAsArrows) {

@@ -30,6 +30,7 @@
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/ObjFormat.h"
 #include "tetskin/io/TetGenFormat.h"
+#include "tetskin/session/RunProbe.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
 #include "tetskin/vtkio/PvdSeries.h"
@@ -377,9 +378,37 @@ TEST(SceneRun, SeveralBodiesBecomeOneRunWithTheirOwnMaterialsStartsAndParts) {
                                  end.positions.row(level0.nodeCount + v).transpose())
                                     .norm());
   EXPECT_LT(largest, 1e-6);
-  // The replays (GUI, render --run, deform) take runs of one level.
-  expectErrorAt([&] { RecordedRun recorded(dir / "run.pvd"); }, (dir / "run.pvd").string(), 0,
-                "records a scene of several bodies");
+  // Replayed as the union the scene stepped: the bodies' frames side by
+  // side, the rest mesh the scene's, the held nodes in the union's numbers.
+  const RecordedRun recorded(dir / "run.pvd");
+  ASSERT_EQ(recorded.bodyCount(), 2);
+  EXPECT_EQ(recorded.frameCount(), 3u);
+  EXPECT_EQ(recorded.bodies()[1].firstNode, level0.nodeCount);
+  EXPECT_EQ(recorded.bodies()[1].firstElement, level0.elementCount);
+  EXPECT_EQ(recorded.level(), 0);
+  EXPECT_FALSE(recorded.surfaceFile());
+  EXPECT_EQ(recorded.prescribedNodes(), held);
+  const TetMesh rest = recorded.rest();
+  const TetMesh united = extractLevel(run.dataset.mesh, 0);
+  EXPECT_EQ(rest.elements, united.elements);
+  EXPECT_LT((rest.nodes - united.nodes).cwiseAbs().maxCoeff(), 1e-9);
+  const FrameState last = recorded.read(2, united, "the scene");
+  EXPECT_LT((last.positions - end.positions).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((last.velocities - end.velocities).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_EQ(last.vonMisesStress.size(), united.elements.rows());
+  EXPECT_EQ(last.stress.rows(), united.elements.rows());
+  // A probe finds a point of the second body in the second body.
+  const Index node = level0.nodeCount + 5;
+  const Points3 point = united.nodes.row(node);
+  const RunProbe probe = probeRun(dir / "run.pvd", point, {"point"});
+  EXPECT_GE(probe.elements[0], level0.elementCount);
+  EXPECT_LT((probe.displacements[2].row(0) - (end.positions.row(node) - united.nodes.row(node)))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-6);
+  // Another mesh than the scene's is named.
+  expectErrorAt([&] { recorded.read(0, bodyPart(united, recorded.bodies()[0]), "body 0 alone"); },
+                (dir / "run.pvd").string(), 0, "records 2 bodies of");
 }
 
 // What a scene of several bodies refuses, named by the field.

@@ -16,7 +16,7 @@ RunProbe probeRun(const std::filesystem::path& pvd, const Points3& points,
     throw Error("the probe's points: " + std::to_string(points.rows()) + " points, " +
                 std::to_string(pointNames.size()) + " names");
   const RecordedRun run(pvd);
-  const TetMesh rest = readFrameRest(run.file(0));
+  const TetMesh rest = run.rest();
   const TetLocator locator(rest);
   const double reach = 1e-6 * boundingBox(rest.nodes).diagonal();
   RunProbe probe;

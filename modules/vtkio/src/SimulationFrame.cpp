@@ -179,6 +179,8 @@ TetMesh readFrameRest(const std::filesystem::path& path) {
 SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path) {
   vtkSmartPointer<vtkUnstructuredGrid> grid = readVtu(path);
   SimulationFrameFacts facts;
+  facts.nodeCount = grid->GetNumberOfPoints();
+  facts.elementCount = grid->GetNumberOfCells();
   vtkDataArray* levels = grid->GetCellData()->GetArray(arrays::kLevel);
   if (levels && levels->GetNumberOfTuples() > 0 && levels->GetNumberOfComponents() == 1)
     facts.level = static_cast<int>(levels->GetTuple1(0));

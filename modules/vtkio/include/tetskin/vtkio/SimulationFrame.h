@@ -60,10 +60,12 @@ TetMesh readFrameRest(const std::filesystem::path& path);
 // Level cell array), the run's floor (its FloorNormal and FloorHeight),
 // each nullopt where the frame does not say (a mesh written by another
 // tool, a run without a floor), and its prescribed nodes, sorted (its
-// Prescribed array; empty where it has none).
+// Prescribed array; empty where it has none), and its sizes: points and
+// cells.
 struct SimulationFrameFacts {
   std::optional<int> level;
   RunConditions conditions;
+  Index nodeCount = 0, elementCount = 0;
 };
 SimulationFrameFacts simulationFrameFacts(const std::filesystem::path& path);
 
