@@ -143,8 +143,9 @@ void RunController::reset() {
     const RunSpec spec = dock_.runSpec();
     options = spec.options;
     runner_ = std::make_unique<SimulationRunner>(scene_.dataset().mesh, spec);
-    // The skin meets the obstacles and the floor (the contact points the run names).
-    if (options.hasContact() && scene_.hasSurface())
+    // The skin meets the obstacles, the floor (the contact points the run
+    // names), other bodies and itself.
+    if (runner_->session().contactNeedsSkin() && scene_.hasSurface())
       runner_->session().bindSurface(scene_.surface(), scene_.binding(),
                                      scene_.datasetPath().generic_string());
   } catch (const std::exception& e) {

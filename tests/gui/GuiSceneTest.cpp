@@ -12,6 +12,8 @@
 #include <vtkProperty.h>
 #include <vtkTransform.h>
 
+#include <fstream>
+
 #include "GuiFixture.h"
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/session/RunSpecJson.h"
@@ -86,6 +88,24 @@ TEST_F(GuiScene, OpensASceneOfSeveralBodiesAndRunsThemAsOne) {
   EXPECT_GT(runner.simulation().skinThickness(), 0);
   for (int i = 0; i < 60 && runner.lastStats().contacts == 0; ++i) step(1);
   EXPECT_GT(runner.lastStats().contacts, 0) << "the second bunny lands on the first";
+}
+
+// Skins meet each other without a floor or obstacles too: the GUI binds
+// the skin into a run of several bodies whatever else it has.
+TEST_F(GuiScene, BindsTheSkinsOfSeveralBodiesWithoutAFloor) {
+  const std::string data = std::string(TETSKIN_SOURCE_DIR) + "/data/";
+  const std::filesystem::path path = scratch("two_bodies_no_floor.json");
+  {
+    std::ofstream out(path);
+    out << R"({"format": "tetskin-scene", "version": 1, "gravity": [0, 0, 0], "bodies": [)"
+        << R"({"dataset": ")" << data << R"(bunny.json", "level": 0}, )"
+        << R"({"dataset": ")" << data << R"(bunny.json", "level": 0, "translate": [30, 0, 0]}]})";
+  }
+  ASSERT_TRUE(window_->openFile(QString::fromStdString(path.string())))
+      << window_->lastError().toStdString();
+  ASSERT_NE(window_->runner(), nullptr) << window_->lastError().toStdString();
+  EXPECT_FALSE(window_->runner()->simulation().options().hasContact());
+  EXPECT_GT(window_->runner()->simulation().skinThickness(), 0);
 }
 
 // Any body of a scene can be pulled: shift-dragging the second bunny's

@@ -98,6 +98,14 @@ class SimulationSession {
   // setContactSkin). `dataset` is the path the binding names
   // (BoundSurface::dataset).
   void bindSurface(SurfaceMesh surface, SurfaceBinding binding, std::string dataset);
+  // Whether the run's contact needs a skin bound (bindSurface): it has a
+  // floor or obstacles, several bodies, or a skin that meets itself. A
+  // front end that draws a skin of its own binds it then.
+  bool contactNeedsSkin() const {
+    const SimulationOptions& o = options();
+    return o.hasContact() || bodies_.size() > 1 || o.skinCollisions.self ||
+           !o.skinCollisions.selfBodies.empty();
+  }
   bool hasSurface() const { return bound_ != nullptr; }
   // The bound surface deformed to `positions` of the level's nodes.
   const BoundSurface& deformedSurface(const Points3& positions);
