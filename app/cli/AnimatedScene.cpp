@@ -24,9 +24,15 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
                              const SceneOptions& o)
     : dataset_(dataset),
       level_(commandLevel(input, dataset.mesh, o.level, false)),
-      nodes_(dataset.mesh.nodes) {
-  surface_ = std::make_unique<DeformableSurface>(dataset.mesh, input.surface,
-                                                 bindingAt(input, dataset.mesh, level_), o.path,
+      nodes_(dataset.mesh.nodes),
+      skin_(input.surface),
+      skinBinding_(bindingAt(input, dataset.mesh, level_)) {
+  // An unknown scenario or bad parameters fail now, before any frames.
+  RunRequest run = o.run;
+  run.level = level_;
+  spec_ = resolveRun(run, dataset.mesh, dataset.config);
+  makeScenario(spec_.scenario, spec_.parameters);
+  surface_ = std::make_unique<DeformableSurface>(dataset.mesh, skin_, skinBinding_, o.path,
                                                  dataset.config.material, o.texture, o.fur);
   view_ = std::make_unique<OffscreenView>(o.width, o.height);
   surface_->addTo(view_->renderer());
@@ -35,16 +41,25 @@ AnimatedScene::AnimatedScene(const Dataset& dataset, const SurfaceInput& input,
     control_ = std::make_unique<ControlMeshActor>(rest, style);
     view_->renderer()->AddActor(control_->actor());
   }
-  // Framed on the control level at rest: the same view for every path.
+  // Framed on the control level at rest and the obstacles at the start:
+  // the same view for every path.
   restBox_ = boundingBox(rest.nodes);
+  for (const Obstacle& obstacle : spec_.options.obstacles) {
+    auto actor = std::make_unique<ObstacleActor>(obstacle.shape->surface());
+    view_->renderer()->AddActor(actor->actor());
+    obstacles_.push_back(std::move(actor));
+  }
+  poseObstacles(0);
+  for (const auto& actor : obstacles_) {
+    const BoundingBox box = actor->bounds();
+    restBox_.extend(box.min);
+    restBox_.extend(box.max);
+  }
   camera_ = o.camera;
   up_ = o.up;
   frame(restBox_);
-  // An unknown scenario or bad parameters fail now, before any frames.
-  RunRequest run = o.run;
-  run.level = level_;
-  spec_ = resolveRun(run, dataset.mesh, dataset.config);
-  makeScenario(spec_.scenario, spec_.parameters);
+  // The run's floor, a still's too (a scene's floor is part of the scene).
+  if (const auto floor = spec_.options.floor()) showFloor(*floor);
   {
     // A gpu path that cannot draw here also reports it as a VTK error: the
     // command says it once, as its own error line.
@@ -65,8 +80,14 @@ void AnimatedScene::frame(const BoundingBox& box) {
   view_->setCamera(camera_, bounds.data(), up_);
 }
 
+void AnimatedScene::poseObstacles(double time) {
+  for (std::size_t k = 0; k < obstacles_.size(); ++k)
+    obstacles_[k]->setPose(spec_.options.obstacles[k].poseAt(time).affine());
+}
+
 void AnimatedScene::startSimulation() {
   session_ = std::make_unique<SimulationSession>(dataset_.mesh, spec_);
+  if (session_->contactNeedsSkin()) session_->bindSurface(skin_, skinBinding_, spec_.datasetName);
   surface_->setFrameSeconds(session_->options().timeStep);
   if (const auto floor = session_->options().floor()) showFloor(*floor);
   // The scenario's start may leave the rest shape's box (drop lifts it).
@@ -97,8 +118,9 @@ FrameTimes AnimatedScene::follow(const Points3& positions) {
   return times;
 }
 
-void AnimatedScene::draw(const Points3& positions, double seconds) {
+void AnimatedScene::draw(const Points3& positions, double time, double seconds) {
   if (seconds > 0) surface_->setFrameSeconds(seconds);
+  poseObstacles(time);
   follow(positions);
   view_->render();
 }
@@ -113,6 +135,7 @@ FrameStats AnimatedScene::run(int frames, const std::function<void()>& afterDraw
     auto t = std::chrono::steady_clock::now();
     session_->step();
     s.simulation += since(t);
+    poseObstacles(session_->simulation().time());
     const FrameTimes times = follow(session_->state().positions);
     s.deformation += times.deformSeconds;
     s.upload += times.uploadSeconds;

@@ -2,8 +2,9 @@
 #pragma once
 // The animated scene of `tetskin render --frames`, `render --run` and
 // `tetskin bench`: a simulated or recorded control level, a bound surface
-// drawn by one render path, an offscreen view; run(N) times N simulated
-// frames stage by stage, draw() shows a recorded state.
+// drawn by one render path, the run's obstacles (posed at each frame's
+// time) and floor, an offscreen view; run(N) times N simulated frames
+// stage by stage, draw() shows a recorded state.
 
 #include <filesystem>
 #include <functional>
@@ -19,6 +20,7 @@
 #include "tetskin/rendering/ControlMeshActor.h"
 #include "tetskin/rendering/DeformableSurface.h"
 #include "tetskin/rendering/FloorActor.h"
+#include "tetskin/rendering/ObstacleActor.h"
 #include "tetskin/rendering/OffscreenView.h"
 #include "tetskin/session/RunRequest.h"
 #include "tetskin/session/SimulationSession.h"
@@ -52,7 +54,9 @@ struct FrameStats {
 class AnimatedScene {
  public:
   // The input's binding is drawn as it is, on its level; a plain surface is
-  // bound to options.level.
+  // bound to options.level. The run's obstacles are drawn (framed with the
+  // level at rest), and a simulated run binds the surface into its contact
+  // where the contact needs a skin (SimulationSession::contactNeedsSkin).
   AnimatedScene(const Dataset& dataset, const SurfaceInput& surface, const SceneOptions& options);
   ~AnimatedScene();
   // Simulates, deforms and draws `frames` frames (the first draw, which
@@ -66,12 +70,13 @@ class AnimatedScene {
   double frameSeconds() const { return spec_.options.timeStep; }
   // The simulated body's material.
   const ElasticMaterial& material() const { return spec_.options.material; }
-  // Draws the control level at `positions` (a recorded frame's state),
-  // `seconds` after the state drawn before it (for the fur's drag).
-  void draw(const Points3& positions, double seconds);
+  // Draws the control level at `positions` (a recorded frame's state, at
+  // `time`: the obstacles' poses), `seconds` after the state drawn before
+  // it (for the fur's drag).
+  void draw(const Points3& positions, double time, double seconds);
   // Draws `floor` under the control level (at rest): a run with a floor,
-  // such as a drop, is seen to land. A simulation run() starts shows its
-  // own floor, if it has one.
+  // such as a drop, is seen to land. The run's own floor, if it has one,
+  // is drawn from the start (a still too).
   void showFloor(const FloorPlane& floor);
   // Frames the camera (the same preset) on `box` together with the control
   // level at rest: for a motion that leaves the rest shape's box, such as
@@ -90,14 +95,19 @@ class AnimatedScene {
   std::unique_ptr<OffscreenView> view_;
   std::unique_ptr<ControlMeshActor> control_;
   std::unique_ptr<FloorActor> floor_;
-  RunSpec spec_;  // the simulated frames' run
+  std::vector<std::unique_ptr<ObstacleActor>> obstacles_;  // spec_'s, in its order
+  RunSpec spec_;                                           // the simulated frames' run
   UpAxis up_ = UpAxis::Y;
   CameraPreset camera_ = CameraPreset::Iso;
   BoundingBox restBox_;                         // of the control level at rest
   std::unique_ptr<SimulationSession> session_;  // from the first frames run on
   Points3 nodes_;
+  SurfaceMesh skin_;  // as bound to the level
+  SurfaceBinding skinBinding_;
 
   void startSimulation();
+  // The obstacles as posed at `time`.
+  void poseObstacles(double time);
   // The surface and control mesh follow the level's nodes at `positions`.
   FrameTimes follow(const Points3& positions);
 };

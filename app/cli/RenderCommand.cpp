@@ -16,12 +16,14 @@
 #include "RunFilms.h"
 #include "RunOptions.h"
 #include "ScenarioOptions.h"
+#include "SceneFlags.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/io/FileNames.h"
 #include "tetskin/rendering/MovieFile.h"
 #include "tetskin/session/RunSpecJson.h"
+#include "tetskin/session/SceneFile.h"
 #include "tetskin/vtkio/RecordedRun.h"
 #include "tetskin/vtkio/SurfaceFile.h"
 
@@ -110,35 +112,56 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   if (simulationOption && a.frames == 0 && !a.printRun)
     throw Error(*simulationOption + ": applies to simulated frames; give --frames N" +
                 (a.run.empty() ? "" : " (--run draws a recorded run as it was simulated)"));
-  const Dataset dataset = loadDataset(a.dataset);
+  const bool levelGiven = cmd.count(kLevelOption.flag) > 0;
+  // A scene brings its placed bodies (their union for several), their
+  // skins bound, its obstacles and its run; a dataset its own.
+  std::optional<SceneRun> sceneRun;
+  if (isSceneFile(a.dataset)) {
+    if (simulationOption)
+      throw Error(*simulationOption + ": " + a.dataset.string() +
+                  " is a scene, whose run is its own: set it in the scene");
+    sceneRun = loadSceneWithFlags(
+        a.dataset, levelGiven ? std::optional<int>(a.level) : std::nullopt, a.surface);
+    if (!sceneRun->surface)
+      throw Error(a.dataset.string() + ": its body has no surface to draw; give --surface");
+    o.run = sceneRun->request;
+    o.run.names = OptionNames::Flags;
+  }
+  const Dataset dataset = sceneRun ? sceneRun->dataset : loadDataset(a.dataset);
   // (An option out of range fails now, before any drawing.)
   o.run.material.over(dataset.config.elasticity, OptionNames::Flags);
   o.fur = furParameters(a, dataset.config);
-  o.up = upAxisOf(a.scenario, dataset.config);
+  o.up = sceneRun && sceneRun->request.up ? *sceneRun->request.up
+                                          : upAxisOf(a.scenario, dataset.config);
   if (hasFur(o.path) && o.texture.empty() && o.fur.colorTexture)
     o.texture = dataset.config.resolve(*o.fur.colorTexture);
   const std::optional<RecordedRun> recorded =
       a.run.empty() ? std::nullopt : std::optional<RecordedRun>(a.run);
-  // The surface: --surface; else a recorded run's own (its first surface
-  // frame, a binding taken at its rest shape), else the dataset's.
-  std::filesystem::path surfacePath = a.surface;
-  if (surfacePath.empty() && recorded && recorded->surfaceFile())
-    surfacePath = *recorded->surfaceFile();
-  if (surfacePath.empty()) {
-    if (!dataset.config.surface)
-      throw Error(a.dataset.string(), 0, "names no default surface; give --surface");
-    surfacePath = dataset.config.resolve(*dataset.config.surface);
+  SurfaceInput input;
+  if (sceneRun) {
+    requireNotAnInput(a.output, {o.texture, sceneRun->surface->path, a.dataset});
+    input = {sceneRun->surface->path, sceneRun->surface->surface, sceneRun->surface->binding};
+  } else {
+    // The surface: --surface; else a recorded run's own (its first surface
+    // frame, a binding taken at its rest shape), else the dataset's.
+    std::filesystem::path surfacePath = a.surface;
+    if (surfacePath.empty() && recorded && recorded->surfaceFile())
+      surfacePath = *recorded->surfaceFile();
+    if (surfacePath.empty()) {
+      if (!dataset.config.surface)
+        throw Error(a.dataset.string(), 0, "names no default surface; give --surface");
+      surfacePath = dataset.config.resolve(*dataset.config.surface);
+    }
+    requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
+    // A binding from `tetskin bind` is drawn as it is (method, offset, level).
+    input = readSurfaceInput(surfacePath, dataset.mesh);
   }
-  requireNotAnInput(a.output, {o.texture, surfacePath, a.dataset});
-  // A binding from `tetskin bind` is drawn as it is (method, offset, level).
-  const SurfaceInput input = readSurfaceInput(surfacePath, dataset.mesh);
-  const bool levelGiven = cmd.count(kLevelOption.flag) > 0;
   const int level = recorded ? runLevel(*recorded, input, dataset, a.level, levelGiven)
                              : commandLevel(input, dataset.mesh, a.level, levelGiven);
   o.level = level;
   const SurfaceMesh& surface = input.surface;
   const LevelRange& range = dataset.mesh.levels[static_cast<std::size_t>(level)];
-  fillScenario(cmd, a.scenario, range.nodeCount, o.run);
+  if (!sceneRun) fillScenario(cmd, a.scenario, range.nodeCount, o.run);
   if (a.printRun) {
     RunRequest request = o.run;
     request.level = level;
@@ -147,7 +170,9 @@ void run(const RenderArgs& a, const CLI::App& cmd) {
   }
   AnimatedScene scene(dataset, input, o);
   if (recorded) {
-    const std::string restName = "level " + std::to_string(level) + " of " + a.dataset.string();
+    const std::string restName =
+        sceneRun ? "the scene " + a.dataset.string()
+                 : "level " + std::to_string(level) + " of " + a.dataset.string();
     const TetMesh rest = extractLevel(dataset.mesh, level);
     if (film)
       filmRun(scene, *recorded, a.output, restName, rest);
@@ -202,9 +227,15 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render",
       "Headless rendering of a dataset's bound surface to PNG (needs X: use xvfb-run -a)");
-  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset,
+                  std::string(kDatasetHelp) +
+                      "; or a scene (.json, format tetskin-scene): its bodies, skins, obstacles, "
+                      "floor and run (a recorded run of the scene is drawn on it)")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("--surface", a->surface,
-                  "surface (default: a recorded run's own, else the dataset's surface)")
+                  "surface (default: a recorded run's own, else the dataset's surface; a scene's "
+                  "body's)")
       ->check(CLI::ExistingFile);
   // (Names checked in run(), whose error lists them: --path, --camera,
   // --control, --fur-lighting.)

@@ -38,7 +38,8 @@ void setUpForRun(AnimatedScene& scene, const RecordedRun& recorded, const TetMes
 void drawFrame(AnimatedScene& scene, const RecordedRun& recorded, std::size_t i,
                const TetMesh& rest, const std::string& restName) {
   const FrameState state = recorded.read(i, rest, restName);
-  scene.draw(state.positions, i > 0 ? recorded.time(i) - recorded.time(i - 1) : 0);
+  scene.draw(state.positions, recorded.time(i),
+             i > 0 ? recorded.time(i) - recorded.time(i - 1) : 0);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "OptionChecks.h"
 #include "Progress.h"
 #include "RunOptions.h"
+#include "SceneFlags.h"
 #include "SurfaceInput.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/io/AtomicFile.h"
@@ -231,15 +232,9 @@ RunInput datasetInput(const SimulateArgs& a, const CLI::App& cmd) {
 }
 
 RunInput sceneInput(SimulateArgs& a, const CLI::App& cmd) {
-  Scene scene = readScene(a.dataset);
-  SceneBody& body = scene.bodies.front();
-  if (scene.bodies.size() > 1 && (cmd.count(kLevelOption.flag) > 0 || !a.surface.empty()))
-    throw Error(a.dataset.string() + ": holds " + std::to_string(scene.bodies.size()) +
-                " bodies; each takes its level and surface from the scene, not from " +
-                kLevelOption.flag + " or --surface");
-  if (cmd.count(kLevelOption.flag) > 0) body.level = a.level;
-  if (!a.surface.empty()) body.surface = std::filesystem::absolute(a.surface);
-  SceneRun run = loadScene(scene);
+  SceneRun run = loadSceneWithFlags(
+      a.dataset, cmd.count(kLevelOption.flag) > 0 ? std::optional<int>(a.level) : std::nullopt,
+      a.surface);
   if (!givenName(cmd, recording_option::kSteps)) a.steps = run.steps;
   applyRunOptions(a.run, cmd,
                   run.dataset.mesh.levels[static_cast<std::size_t>(run.level)].nodeCount,

@@ -228,3 +228,74 @@ tetskin_cli_test(render_recorded_run_broken_frame FAIL STATUS 1 REQUIRES broken_
 tetskin_cli_test(render_print_run_of_a_recording FAIL STATUS 1
   STDERR "^error: --print-run: prints the run --frames simulates \\(--run draws a recorded one as it was\\)\n$"
   ARGS render ${data}/bunny.json --run ${tdata}/missing_frame_run.pvd --print-run)
+
+# Scenes: render draws a scene's bodies, skins and obstacles, simulated
+# (--frames) or recorded (--run). A scene of one body and nothing else is
+# drawn as its dataset is, byte for byte; a cube beside it (inside the
+# bunny's box, so the framing stays) changes the picture.
+tetskin_cli_test(render_scene_alone SETUP scene_alone
+  ARGS render ${tdata}/scenes/bunny_alone.json --size 160x120 -o ${cli_out}/scene_alone.png)
+tetskin_cli_test(render_scene_as_dataset SETUP scene_as_dataset
+  ARGS render ${data}/bunny.json --level 0 --surface ${data}/bunny_8k.obj --size 160x120
+       -o ${cli_out}/scene_as_dataset.png)
+tetskin_cli_test(render_scene_with_cube SETUP scene_with_cube
+  ARGS render ${tdata}/scenes/bunny_and_cube.json --size 160x120 -o ${cli_out}/scene_with_cube.png)
+add_test(NAME cli.render_scene_drawn_as_its_dataset COMMAND ${CMAKE_COMMAND} -E compare_files
+  ${cli_out}/scene_alone.png ${cli_out}/scene_as_dataset.png)
+set_tests_properties(cli.render_scene_drawn_as_its_dataset PROPERTIES
+  FIXTURES_REQUIRED "scene_alone;scene_as_dataset")
+add_test(NAME cli.render_scene_draws_its_obstacle COMMAND ${CMAKE_COMMAND} -E compare_files
+  ${cli_out}/scene_alone.png ${cli_out}/scene_with_cube.png)
+set_tests_properties(cli.render_scene_draws_its_obstacle PROPERTIES
+  FIXTURES_REQUIRED "scene_alone;scene_with_cube" WILL_FAIL TRUE)
+# A run of two bodies, recorded, drawn on its scene: each frame the bodies'
+# frames side by side; a run at rest (no steps) is drawn as the scene's
+# still, byte for byte; filmed, its first frame is the first image.
+tetskin_cli_test(simulate_two_bodies_to_draw SETUP two_bodies_run FRESH ${cli_out}/two_bodies
+  ARGS simulate ${tdata}/scenes/two_bunnies.json --steps 6 --every 3 -q -o ${cli_out}/two_bodies/run.pvd)
+tetskin_cli_test(render_recorded_two_bodies REQUIRES two_bodies_run SETUP drawn_two_bodies
+  FRESH ${cli_out}/drawn_two_bodies
+  STDOUT "^drew 3 frames of [^\n]*two_bodies/run.pvd \\(t 0 .. 0.1 s\\), path cpu, 15996 triangles, level 0, 160x120\n"
+  ARGS render ${tdata}/scenes/two_bunnies.json --run ${cli_out}/two_bodies/run.pvd --size 160x120
+       -o ${cli_out}/drawn_two_bodies/f.png)
+tetskin_cli_test(render_filmed_two_bodies REQUIRES two_bodies_run SETUP filmed_two_bodies
+  FRESH ${cli_out}/film_two_bodies
+  STDOUT "wrote [^\n]*two_bodies.ogv \\(3 frames at 20 frames/s\\)\n$"
+  ARGS render ${tdata}/scenes/two_bunnies.json --run ${cli_out}/two_bodies/run.pvd --size 160x120
+       -o ${cli_out}/film_two_bodies/two_bodies.ogv)
+tetskin_cli_test(render_filmed_two_bodies_decodes REQUIRES "filmed_two_bodies;drawn_two_bodies"
+  EXE tetskin_ogv_frames
+  STDOUT "^3 frames, 160x120, first and last frames differ\nfirst frame matches the image"
+  ARGS ${cli_out}/film_two_bodies/two_bodies.ogv ${cli_out}/drawn_two_bodies/f_00000.png)
+tetskin_cli_test(simulate_two_bodies_at_rest SETUP two_bodies_at_rest FRESH ${cli_out}/two_at_rest
+  ARGS simulate ${tdata}/scenes/two_bunnies.json --steps 0 -q -o ${cli_out}/two_at_rest/run.pvd)
+tetskin_cli_test(render_two_bodies_at_rest REQUIRES two_bodies_at_rest SETUP drawn_two_at_rest
+  FRESH ${cli_out}/drawn_two_at_rest
+  ARGS render ${tdata}/scenes/two_bunnies.json --run ${cli_out}/two_at_rest/run.pvd --size 160x120
+       -o ${cli_out}/drawn_two_at_rest/f.png)
+tetskin_cli_test(render_two_bodies_still SETUP two_bodies_still
+  ARGS render ${tdata}/scenes/two_bunnies.json --size 160x120 -o ${cli_out}/two_bodies_still.png)
+add_test(NAME cli.render_recorded_two_bodies_at_rest_as_still COMMAND ${CMAKE_COMMAND} -E compare_files
+  ${cli_out}/drawn_two_at_rest/f_00000.png ${cli_out}/two_bodies_still.png)
+set_tests_properties(cli.render_recorded_two_bodies_at_rest_as_still PROPERTIES
+  FIXTURES_REQUIRED "drawn_two_at_rest;two_bodies_still")
+# The scene's run is its own; its bodies' levels and skins too; a run of
+# several bodies is drawn on its scene, not on a dataset.
+tetskin_cli_test(render_scene_material_option FAIL STATUS 1
+  STDERR "^error: --youngs-modulus: [^\n]*two_bunnies.json is a scene, whose run is its own: set it in the scene\n$"
+  ARGS render ${tdata}/scenes/two_bunnies.json --frames 2 --youngs-modulus 1e5 -o ${cli_out}/refused.png)
+tetskin_cli_test(render_scene_two_bodies_level FAIL STATUS 1
+  STDERR "two_bunnies.json: holds 2 bodies. each takes its level and surface from the scene, not from --level or --surface"
+  ARGS render ${tdata}/scenes/two_bunnies.json --level 0 -o ${cli_out}/refused.png)
+tetskin_cli_test(render_two_bodies_on_a_dataset FAIL STATUS 1 REQUIRES two_bodies_run
+  STDERR "^error: [^\n]*two_bodies/run.pvd: records 2 bodies of [0-9]+ nodes and [0-9]+ tetrahedra in all. level 0 of [^\n]*bunny.json has [0-9]+ and [0-9]+: [^\n]*the scene it was recorded from\n$"
+  NOT_EXIST ${cli_out}/refused_f_00000.png
+  ARGS render ${data}/bunny.json --surface ${data}/bunny_8k.obj --run ${cli_out}/two_bodies/run.pvd --size 160x120
+       -o ${cli_out}/refused_f.png)
+set_tests_properties(cli.render_scene_alone cli.render_scene_as_dataset cli.render_scene_with_cube
+  cli.render_scene_drawn_as_its_dataset cli.render_scene_draws_its_obstacle
+  cli.simulate_two_bodies_to_draw cli.render_recorded_two_bodies cli.render_filmed_two_bodies
+  cli.render_filmed_two_bodies_decodes cli.simulate_two_bodies_at_rest cli.render_two_bodies_at_rest
+  cli.render_two_bodies_still cli.render_recorded_two_bodies_at_rest_as_still
+  cli.render_scene_material_option cli.render_scene_two_bodies_level cli.render_two_bodies_on_a_dataset
+  PROPERTIES LABELS "cli;rendering" RESOURCE_LOCK x_display)

@@ -121,7 +121,7 @@ FrameState RecordedRun::read(std::size_t frame, const TetMesh& rest,
         "records " + std::to_string(bodies_.size()) + " bodies of " + std::to_string(nodes) +
             " nodes and " + std::to_string(elements) + " tetrahedra in all; " + restName + " has " +
             std::to_string(rest.nodes.rows()) + " and " + std::to_string(rest.elements.rows()) +
-            ": open the scene the run was recorded from");
+            ": it is read on the scene it was recorded from");
   std::vector<FrameState> parts;
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     parts.push_back(readSimulationFrame(bodyFrames_[b].at(frame).file, bodyPart(rest, bodies_[b]),
