@@ -20,6 +20,8 @@
 #include "tetskin/io/AtomicFile.h"
 #include "tetskin/io/Dataset.h"
 #include "tetskin/session/LevelComparison.h"
+#include "tetskin/session/SceneFile.h"
+#include "tetskin/session/SceneRun.h"
 #include "tetskin/vtkio/RunRecorder.h"
 
 namespace tetskin::cli {
@@ -121,55 +123,137 @@ std::string degrees(double value) {
   return text;
 }
 
-void report(const CompareArgs& a, const LevelComparison& comparison,
-            const MultiLevelTetMesh& mesh) {
+// Every frame compared (recorded as it goes), then the table written.
+void compareAll(const CompareArgs& a, LevelComparison& comparison) {
+  comparison.record(a.output);
+  Progress progress(a.quiet);
+  comparison.compare();
+  if (comparison.simulated()) {
+    for (int i = 0; i < a.steps; ++i) {
+      comparison.advance();
+      if ((i + 1) % a.every == 0 || i + 1 == a.steps) comparison.compare();
+      progress.update("compare", static_cast<std::size_t>(i + 1),
+                      static_cast<std::size_t>(a.steps));
+    }
+  } else {
+    for (std::size_t f = 1; f < comparison.recordedFrames(); ++f) {
+      comparison.advance();
+      comparison.compare();
+      progress.update("compare", f + 1, comparison.recordedFrames());
+    }
+  }
+  comparison.writeFrameTable(tableOf(a));
+}
+
+// A row's errors: distance (% of `diagonal`) and normal angle, under the
+// table's two last headings.
+std::string errorColumns(const ErrorSpread& e, double diagonal) {
+  const std::string distance = percent(e.distance.max, diagonal) + " / " +
+                               percent(e.distance.p99, diagonal) + " / " +
+                               percent(e.distance.median, diagonal);
+  char columns[160];
+  std::snprintf(
+      columns, sizeof columns, "%-34s %s", distance.c_str(),
+      (degrees(e.angle.max) + " / " + degrees(e.angle.p99) + " / " + degrees(e.angle.median))
+          .c_str());
+  return columns;
+}
+
+void report(const CompareArgs& a, const LevelComparison& comparison, bool scene) {
   const double diagonal = comparison.diagonal();
   if (comparison.simulated()) {
     const SimulationSession& first = *comparison.session(0);
     std::printf(
-        "compared %zu levels of %s over %d steps of %g s, scenario %s, reference level %d\n",
+        "compared %zu levels of %s over %d steps of %g s, scenario %s, reference level %d%s\n",
         comparison.runCount(), a.dataset.c_str(), a.steps, first.options().timeStep,
-        first.scenario().name(), comparison.level(comparison.reference()));
+        first.scenario().name(), comparison.level(comparison.reference()),
+        scene ? " (every body on the level)" : "");
   } else {
     std::printf("compared %zu recorded runs of %s over %zu frames, reference %s (level %d)\n",
                 comparison.runCount(), a.dataset.c_str(), comparison.recordedFrames(),
                 a.runs.front().c_str(), comparison.level(0));
   }
-  std::printf("  surface %s: %lld vertices, diagonal %s; errors over every vertex of %zu frames\n",
-              a.surface.c_str(), static_cast<long long>(comparison.vertexCount()),
-              formatNumber(diagonal).c_str(), comparison.frames().size());
+  const std::size_t bodies = comparison.bodyCount();
+  if (scene)
+    std::printf(
+        "  skins of %zu bod%s: %lld vertices, diagonal %s; errors over every vertex of %zu "
+        "frames\n",
+        bodies, bodies == 1 ? "y" : "ies", static_cast<long long>(comparison.vertexCount()),
+        formatNumber(diagonal).c_str(), comparison.frames().size());
+  else
+    std::printf(
+        "  surface %s: %lld vertices, diagonal %s; errors over every vertex of %zu frames\n",
+        a.surface.c_str(), static_cast<long long>(comparison.vertexCount()),
+        formatNumber(diagonal).c_str(), comparison.frames().size());
   std::printf("  %-6s %9s %9s   %-34s %s\n", "level", "elements", "ms/step",
               "distance max / p99 / median", "normal angle max / p99 / median (deg)");
   for (std::size_t r = 0; r < comparison.runCount(); ++r) {
-    const int level = comparison.level(r);
-    const Index elements = mesh.levels[static_cast<std::size_t>(level)].elementCount;
+    const Index elements = comparison.elementCount(r);
     char cost[32] = "-";
     if (comparison.simulated())
       std::snprintf(cost, sizeof cost, "%.3g", 1e3 * comparison.meanStepSeconds(r));
-    const std::string name = std::to_string(level) + (r == comparison.reference() ? " ref" : "");
+    const std::string name =
+        std::to_string(comparison.level(r)) + (r == comparison.reference() ? " ref" : "");
     if (r == comparison.reference()) {
       std::printf("  %-6s %9lld %9s   %-34s %s\n", name.c_str(), static_cast<long long>(elements),
                   cost, "(reference)", "");
       continue;
     }
-    const ErrorSpread e = comparison.overall(r);
-    const std::string distance = percent(e.distance.max, diagonal) + " / " +
-                                 percent(e.distance.p99, diagonal) + " / " +
-                                 percent(e.distance.median, diagonal);
-    const std::string angle =
-        degrees(e.angle.max) + " / " + degrees(e.angle.p99) + " / " + degrees(e.angle.median);
-    std::printf("  %-6s %9lld %9s   %-34s %s\n", name.c_str(), static_cast<long long>(elements),
-                cost, distance.c_str(), angle.c_str());
+    std::printf("  %-6s %9lld %9s   %s\n", name.c_str(), static_cast<long long>(elements), cost,
+                errorColumns(comparison.overall(r), diagonal).c_str());
+    // Per body: its skin's vertices, against its own diagonal.
+    if (bodies > 1)
+      for (std::size_t b = 0; b < bodies; ++b)
+        std::printf("  %-26s   %s\n", ("  body " + std::to_string(b)).c_str(),
+                    errorColumns(comparison.overall(r, b), comparison.bodyDiagonal(b)).c_str());
   }
-  std::printf("  (distances as %% of the diagonal; absolute values in the table)\n");
+  std::printf("  (distances as %% of the diagonal%s; absolute values in the table)\n",
+              bodies > 1 ? ", a body's of its own" : "");
   const RunRecorder& recorder = *comparison.recorder();
   std::printf("wrote %s (%lld frames of %zu surfaces)\n", recorder.path().c_str(),
               static_cast<long long>(recorder.frames()), comparison.runCount());
   std::printf("wrote %s\n", tableOf(a).c_str());
 }
 
+// A scene on each level compared: every body on that level (the levels
+// numbered as the first body's dataset numbers them), the command line's
+// options over the scene's run, as simulate takes them.
+std::unique_ptr<LevelComparison> sceneComparison(CompareArgs& a, const CLI::App& cmd) {
+  if (!a.runs.empty())
+    throw Error(
+        "--runs: compares recorded runs of one dataset; a scene's levels are compared by "
+        "simulating them (--levels)");
+  if (!a.surface.empty())
+    throw Error(a.surface.string() + ": " + a.dataset.string() +
+                " is a scene, whose skins are its bodies' surfaces: give no SURFACE");
+  const Scene scene = readScene(a.dataset);
+  const Dataset first = loadDataset(scene.bodies.front().dataset);
+  const auto [levels, reference] = comparedLevels(a, first.mesh);
+  std::vector<SceneLevel> runs;
+  for (const int level : levels) {
+    Scene atLevel = scene;
+    for (SceneBody& body : atLevel.bodies) body.level = level;
+    SceneLevel& compared = runs.emplace_back(SceneLevel{level, loadScene(atLevel), {}});
+    SceneRun& run = compared.scene;
+    applyRunOptions(a.run, cmd,
+                    run.dataset.mesh.levels[static_cast<std::size_t>(run.level)].nodeCount,
+                    run.request);
+    compared.spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+  }
+  if (!givenName(cmd, recording_option::kSteps)) a.steps = runs.front().scene.steps;
+  return std::make_unique<LevelComparison>(std::move(runs), reference);
+}
+
 void run(CompareArgs& a, const CLI::App& cmd) {
   checkOptions(a, cmd);
+  if (isSceneFile(a.dataset)) {
+    std::unique_ptr<LevelComparison> comparison = sceneComparison(a, cmd);
+    compareAll(a, *comparison);
+    report(a, *comparison, true);
+    return;
+  }
+  if (a.surface.empty())
+    throw Error("SURFACE: the surface compared is required (a scene's skins are its own)");
   const Dataset dataset = loadDataset(a.dataset);
   // A binding's surface is bound anew to every level.
   const SurfaceInput input = readSurfaceInput(a.surface, dataset.mesh);
@@ -185,25 +269,8 @@ void run(CompareArgs& a, const CLI::App& cmd) {
     comparison = std::make_unique<LevelComparison>(dataset.mesh, input.surface, a.runs,
                                                    a.dataset.generic_string());
   }
-  comparison->record(a.output);
-  Progress progress(a.quiet);
-  comparison->compare();
-  if (comparison->simulated()) {
-    for (int i = 0; i < a.steps; ++i) {
-      comparison->advance();
-      if ((i + 1) % a.every == 0 || i + 1 == a.steps) comparison->compare();
-      progress.update("compare", static_cast<std::size_t>(i + 1),
-                      static_cast<std::size_t>(a.steps));
-    }
-  } else {
-    for (std::size_t f = 1; f < comparison->recordedFrames(); ++f) {
-      comparison->advance();
-      comparison->compare();
-      progress.update("compare", f + 1, comparison->recordedFrames());
-    }
-  }
-  comparison->writeFrameTable(tableOf(a));
-  report(a, *comparison, dataset.mesh);
+  compareAll(a, *comparison);
+  report(a, *comparison, false);
 }
 
 }  // namespace
@@ -215,11 +282,16 @@ void addCompareCommand(CLI::App& app) {
       "Which level is enough: the same scenario on several levels, the same surface bound to "
       "each; per vertex and frame the distance and normal angle against the reference level, "
       "with each level's cost per step");
-  cmd->add_option("DATASET", a->dataset, kDatasetHelp)->required()->check(CLI::ExistingFile);
+  cmd->add_option("DATASET", a->dataset,
+                  std::string(kDatasetHelp) +
+                      "; or a scene (.json, format tetskin-scene): every body on each level "
+                      "compared, its skins the surface, errors also per body")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("SURFACE", a->surface,
                   "the surface (OBJ, PLY, STL, VTP; a binding's surface), bound to every level "
-                  "by its closest boundary point with the normal offset")
-      ->required()
+                  "by its closest boundary point with the normal offset (required, but for a "
+                  "scene)")
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", a->output,
                   "time series OUT.pvd: per frame the surface as each level deforms it (a part "

@@ -45,3 +45,21 @@ tetskin_cli_test(compare_no_steps FAIL STATUS 1
 tetskin_cli_test(compare_not_a_pvd FAIL STATUS 1
   STDERR "^error: [^\n]*out.vtp[^\n]*\n$"
   ARGS compare ${data}/bunny.json ${data}/bunny.obj -o ${cli_out}/out.vtp)
+
+# A scene's levels: every body on each level, the errors also per body
+# (each against its own skin's diagonal), the table a row per body.
+tetskin_cli_test(compare_scene_two_bodies
+  STDOUT "^compared 2 levels of [^\n]*two_bunnies.json over 10 steps of 0.0166667 s, scenario free, reference level 1 .every body on the level.\n  skins of 2 bodies: 8002 vertices, diagonal [0-9.]+. errors over every vertex of 3 frames\n[^\n]*\n  0 +1196 +[0-9.e+-]+ +[0-9.e+-]+% / [^\n]*\n    body 0 +[0-9.e+-]+% / [^\n]*\n    body 1 +[0-9.e+-]+% / [^\n]*\n  1 ref +5852 [^\n]*.reference.[^\n]*\n  .distances as % of the diagonal, a body's of its own"
+  ARGS compare ${tdata}/scenes/two_bunnies.json --levels 0 --reference 1 --steps 10 --every 5
+       -o ${cli_out}/compare_scene.pvd -q)
+tetskin_cli_test(compare_scene_with_a_surface FAIL STATUS 1
+  STDERR "^error: [^\n]*bunny.obj: [^\n]*two_bunnies.json is a scene, whose skins are its bodies' surfaces: give no SURFACE\n$"
+  NOT_EXIST ${cli_out}/compare_refused.pvd
+  ARGS compare ${tdata}/scenes/two_bunnies.json ${data}/bunny.obj -o ${cli_out}/compare_refused.pvd)
+tetskin_cli_test(compare_scene_runs FAIL STATUS 1 REQUIRES compare_runs
+  STDERR "^error: --runs: compares recorded runs of one dataset. a scene's levels are compared by simulating them .--levels.\n$"
+  ARGS compare ${tdata}/scenes/two_bunnies.json --runs ${cli_out}/compare_a.pvd ${cli_out}/compare_b.pvd
+       -o ${cli_out}/compare_refused.pvd)
+tetskin_cli_test(compare_without_a_surface FAIL STATUS 1
+  STDERR "^error: SURFACE: the surface compared is required .a scene's skins are its own.\n$"
+  ARGS compare ${data}/bunny.json -o ${cli_out}/compare_refused.pvd)

@@ -9,15 +9,19 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "ExpectError.h"
 #include "Frames.h"
+#include "SampleData.h"
 #include "Shapes.h"
 #include "TestFiles.h"
 #include "tetskin/core/ArrayNames.h"
 #include "tetskin/core/Error.h"
 #include "tetskin/session/LevelComparison.h"
+#include "tetskin/session/SceneFile.h"
+#include "tetskin/session/SceneRun.h"
 #include "tetskin/vtkio/PvdSeries.h"
 #include "tetskin/vtkio/RunRecorder.h"
 #include "tetskin/vtkio/VtkFiles.h"
@@ -156,6 +160,83 @@ TEST(LevelComparison, RecordsAPartPerLevelAndATable) {
   EXPECT_EQ(table.rfind("frame,time,run,level,step_ms,distance_max,", 0), 0u);
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 5);  // header, 2 frames x 2 runs
   EXPECT_NE(table.find("\n1,0.08,0,0,"), std::string::npos) << table;
+}
+
+// A scene of two bunnies compared on levels 0 and 1, without gravity:
+// the first held at its base and set swinging (its motion differs by
+// level), the second sent off at 1 m/s, free (a rigid motion, which every
+// level deforms its skin alike). Per body, the second's errors are
+// rounding and the first's are not; the whole skin's are the first's; the
+// table has a row per frame, level and body.
+nlohmann::json swingAndGlide() {
+  const std::string bunny = test::kSampleData + "bunny.json",
+                    skin8k = test::kSampleData + "bunny_8k.obj";
+  nlohmann::json swinging = {{"dataset", bunny},
+                             {"surface", skin8k},
+                             {"velocity", {3, 0, 0}},
+                             {"held_box", {-10, -1, -10, 10, 1.5, 10}},
+                             {"material", {{"mass_damping", 0}}}};
+  nlohmann::json gliding = {{"dataset", bunny},
+                            {"surface", skin8k},
+                            {"translate", {40, 0, 0}},
+                            {"velocity", {0, 0, 1}},
+                            {"material", {{"mass_damping", 0}}}};
+  return {{"format", "tetskin-scene"},
+          {"version", 1},
+          {"gravity", {0, 0, 0}},
+          {"bodies", {swinging, gliding}}};
+}
+
+std::vector<SceneLevel> sceneLevels(const nlohmann::json& json, std::vector<int> levels) {
+  const Scene scene = parseScene(json, "scene.json", ".");
+  std::vector<SceneLevel> runs;
+  for (const int level : levels) {
+    Scene atLevel = scene;
+    for (SceneBody& body : atLevel.bodies) body.level = level;
+    SceneRun run = loadScene(atLevel);
+    RunSpec spec = resolveRun(run.request, run.dataset.mesh, run.dataset.config);
+    spec.options.solver = SolverKind::ConjugateGradient;  // (as wobble(): no timed choice)
+    runs.push_back({level, std::move(run), std::move(spec)});
+  }
+  return runs;
+}
+
+TEST(LevelComparison, ComparesASceneBodyByBody) {
+  const test::ScratchDir dir;
+  LevelComparison comparison(sceneLevels(swingAndGlide(), {0, 1}), 1);
+  ASSERT_EQ(comparison.bodyCount(), 2u);
+  EXPECT_EQ(comparison.body(1).firstVertex, comparison.body(0).vertexCount);
+  EXPECT_EQ(comparison.level(0), 0);
+  EXPECT_GT(comparison.elementCount(1), comparison.elementCount(0));
+  comparison.compare();
+  for (int i = 0; i < 10; ++i) comparison.advance();
+  comparison.compare();
+  comparison.writeFrameTable(dir / "compare.csv");
+
+  const ErrorSpread swinging = comparison.overall(0, 0), gliding = comparison.overall(0, 1);
+  EXPECT_GT(swinging.distance.max, 1e-3 * comparison.bodyDiagonal(0));
+  // (What is left of the glide is the solver's tolerance, 1e-6 of the residual.)
+  EXPECT_LT(gliding.distance.max, 1e-5 * comparison.bodyDiagonal(1));
+  EXPECT_EQ(comparison.overall(0).distance.max, swinging.distance.max);
+  // The glide moved the second body's skin 1 m/s for 10 steps.
+  const Points3& moved = comparison.surface(0).deformed->positions;
+  const BodyRange& second = comparison.body(1);
+  EXPECT_NEAR(
+      moved(second.firstVertex, 2) - comparison.surface(0).surface.positions(second.firstVertex, 2),
+      10 * comparison.session(0)->options().timeStep, 1e-6);
+
+  const std::string table = test::readText(dir / "compare.csv");
+  EXPECT_NE(table.find("angle_median,body\n"), std::string::npos) << table;
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 9);  // header, 2 frames x 2 runs x 2
+  EXPECT_NE(table.find(",1\n1,"), std::string::npos) << table;
+
+  // A body without a surface takes its level's boundary: skins that differ by level.
+  nlohmann::json bare = swingAndGlide();
+  bare["bodies"][1].erase("surface");
+  EXPECT_NE(test::errorText([&] {
+              LevelComparison(sceneLevels(bare, {0, 1}), 1);
+            }).find("its skins differ from those on level 1: give every body a surface"),
+            std::string::npos);
 }
 
 TEST(LevelComparison, RefusesTooFewRunsAndRunsThatDoNotMatch) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <utility>
 
 #include "tetskin/binding/BindSurface.h"
@@ -18,7 +19,10 @@
 namespace tetskin {
 
 struct LevelComparison::Run {
-  int level = 0;
+  int level = 0;                               // the level compared
+  std::unique_ptr<SceneRun> scene;             // a scene's level: what dataset points into
+  const MultiLevelTetMesh* dataset = nullptr;  // the run's
+  int datasetLevel = 0;                        // its level in dataset (a scene's union: 0)
   TetMesh rest;                                // the level at rest, its own numbering
   std::unique_ptr<SimulationSession> session;  // simulated runs
   FrameState recordedState;                    // recorded runs: the current frame
@@ -39,7 +43,7 @@ Spread spreadOfValues(const Eigen::VectorXd& values) {
   return spreadOf(copy);
 }
 
-Spread spreadOfFloats(const std::vector<float>& values) {
+Spread spreadOfFloats(std::span<const float> values) {
   std::vector<double> copy(values.begin(), values.end());
   return spreadOf(copy);
 }
@@ -49,28 +53,58 @@ Spread spreadOfFloats(const std::vector<float>& values) {
 LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const SurfaceMesh& surface,
                                  const std::vector<RunSpec>& runs, std::size_t reference,
                                  const std::string& datasetPath)
-    : dataset_(dataset), surface_(surface), datasetPath_(datasetPath), reference_(reference) {
+    : datasetPath_(datasetPath), reference_(reference) {
   if (runs.size() < 2)
     throw Error("a comparison needs at least two levels, " + std::to_string(runs.size()) +
                 " given");
   if (reference >= runs.size())
     throw Error("the reference is run " + std::to_string(reference) + " of " +
                 std::to_string(runs.size()));
-  diagonal_ = boundingBox(surface_.positions).diagonal();
+  setSurface(surface, {});
   for (const RunSpec& spec : runs) {
-    bind(spec.level);
+    bind(dataset, spec.level);
     runs_.back()->session = std::make_unique<SimulationSession>(dataset, spec);
+  }
+}
+
+LevelComparison::LevelComparison(std::vector<SceneLevel> levels, std::size_t reference)
+    : reference_(reference) {
+  if (levels.size() < 2)
+    throw Error("a comparison needs at least two levels, " + std::to_string(levels.size()) +
+                " given");
+  if (reference >= levels.size())
+    throw Error("the reference is run " + std::to_string(reference) + " of " +
+                std::to_string(levels.size()));
+  const SceneRun& first = levels[reference].scene;
+  if (!first.surface) throw Error(first.scene.file.string() + ": its body has no surface");
+  datasetPath_ = first.request.datasetName;
+  setSurface(first.surface->surface, first.request.bodies);
+  for (SceneLevel& level : levels) {
+    auto scene = std::make_unique<SceneRun>(std::move(level.scene));
+    if (!scene->surface || scene->surface->surface.positions != surface_.positions ||
+        scene->surface->surface.triangles != surface_.triangles)
+      throw Error(scene->scene.file.string() + ": on level " + std::to_string(level.level) +
+                  " its skins differ from those on level " +
+                  std::to_string(levels[reference].level) +
+                  ": give every body a surface, which every level binds");
+    addRun(scene->dataset.mesh, scene->level, scene->surface->binding);
+    Run& run = *runs_.back();
+    run.level = level.level;
+    run.session = std::make_unique<SimulationSession>(scene->dataset.mesh, level.spec);
+    if (run.session->contactNeedsSkin())
+      run.session->bindSurface(surface_, run.bound.binding, datasetPath_);
+    run.scene = std::move(scene);
   }
 }
 
 LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const SurfaceMesh& surface,
                                  const std::vector<std::filesystem::path>& recordedRuns,
                                  const std::string& datasetPath)
-    : dataset_(dataset), surface_(surface), datasetPath_(datasetPath) {
+    : datasetPath_(datasetPath) {
   if (recordedRuns.size() < 2)
     throw Error("a comparison needs at least two runs, " + std::to_string(recordedRuns.size()) +
                 " given");
-  diagonal_ = boundingBox(surface_.positions).diagonal();
+  setSurface(surface, {});
   for (const std::filesystem::path& path : recordedRuns) {
     const RecordedRun& run = recorded_.emplace_back(path);
     if (!run.level())
@@ -93,7 +127,7 @@ LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const Surface
                     "frame " + std::to_string(f) + " is at time " + formatNumber(run.time(f)) +
                         ", in " + first.path().string() + " at " + formatNumber(first.time(f)) +
                         ": compared runs are matched frame by frame");
-    bind(*run.level());
+    bind(dataset, *run.level());
   }
   // Each run at its first frame.
   recordedFrame_ = 0;
@@ -104,22 +138,49 @@ LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const Surface
 
 LevelComparison::~LevelComparison() = default;
 
-void LevelComparison::bind(int level) {
+void LevelComparison::setSurface(const SurfaceMesh& surface, const std::vector<RunBody>& bodies) {
+  surface_ = surface;
+  diagonal_ = boundingBox(surface_.positions).diagonal();
+  for (const RunBody& body : bodies) bodies_.push_back(body.range);
+  if (bodies_.empty()) {
+    BodyRange all;
+    all.vertexCount = surface_.vertexCount();
+    all.triangleCount = surface_.triangleCount();
+    bodies_.push_back(all);
+  }
+  for (const BodyRange& body : bodies_)
+    bodyDiagonals_.push_back(
+        boundingBox(Points3(surface_.positions.middleRows(body.firstVertex, body.vertexCount)))
+            .diagonal());
+}
+
+void LevelComparison::addRun(const MultiLevelTetMesh& dataset, int level, SurfaceBinding binding) {
   auto run = std::make_unique<Run>();
   run->level = level;
-  run->rest = extractLevel(dataset_, level);
+  run->dataset = &dataset;
+  run->datasetLevel = level;
+  run->rest = extractLevel(dataset, level);
   run->bound.surface = surface_;
-  run->bound.binding = bindSurface(surface_, dataset_, level);
+  run->bound.binding = std::move(binding);
   run->bound.dataset = datasetPath_;
   run->bound.deformed.emplace(DeformedState{surface_.positions, surface_.normals});
   run->deformer =
-      std::make_unique<SurfaceDeformer>(run->bound.surface, run->bound.binding, dataset_.nodes,
+      std::make_unique<SurfaceDeformer>(run->bound.surface, run->bound.binding, dataset.nodes,
                                         "the surface on level " + std::to_string(level));
   runs_.push_back(std::move(run));
 }
 
+void LevelComparison::bind(const MultiLevelTetMesh& dataset, int level) {
+  addRun(dataset, level, bindSurface(surface_, dataset, level));
+}
+
 int LevelComparison::level(std::size_t run) const {
   return runs_.at(run)->level;
+}
+
+Index LevelComparison::elementCount(std::size_t run) const {
+  const Run& r = *runs_.at(run);
+  return r.dataset->levels[static_cast<std::size_t>(r.datasetLevel)].elementCount;
 }
 
 std::size_t LevelComparison::recordedFrames() const {
@@ -158,7 +219,8 @@ void LevelComparison::advance() {
 Points3 LevelComparison::currentPositions(std::size_t r) const {
   const Run& run = *runs_[r];
   const Points3 level = run.session ? run.session->state().positions : run.recordedState.positions;
-  return datasetPositions(dataset_, run.level, level, "level " + std::to_string(run.level));
+  return datasetPositions(*run.dataset, run.datasetLevel, level,
+                          "level " + std::to_string(run.level));
 }
 
 const ComparedFrame& LevelComparison::compare() {
@@ -176,7 +238,7 @@ const ComparedFrame& LevelComparison::compare() {
                                                run.bound.binding);
     } else {
       deformed.scalars = skinFields(
-          run.rest, dataset_.levels[static_cast<std::size_t>(run.level)].firstNode,
+          run.rest, run.dataset->levels[static_cast<std::size_t>(run.datasetLevel)].firstNode,
           run.bound.binding, run.recordedState.vonMisesStress, run.recordedState.equivalentStrain);
     }
     frame.stepSeconds.push_back(
@@ -222,26 +284,65 @@ ErrorSpread LevelComparison::overall(std::size_t run) const {
   return {spreadOfFloats(r.distances), spreadOfFloats(r.angles)};
 }
 
+ErrorSpread LevelComparison::overall(std::size_t run, std::size_t body) const {
+  const Run& r = *runs_.at(run);
+  const BodyRange& range = bodies_.at(body);
+  const auto vertices = static_cast<std::size_t>(surface_.vertexCount());
+  std::vector<float> distances, angles;
+  for (std::size_t at = static_cast<std::size_t>(range.firstVertex); at < r.distances.size();
+       at += vertices) {
+    const auto count = static_cast<std::ptrdiff_t>(range.vertexCount);
+    const auto from = static_cast<std::ptrdiff_t>(at);
+    distances.insert(distances.end(), r.distances.begin() + from,
+                     r.distances.begin() + from + count);
+    angles.insert(angles.end(), r.angles.begin() + from, r.angles.begin() + from + count);
+  }
+  return {spreadOfFloats(distances), spreadOfFloats(angles)};
+}
+
+ErrorSpread LevelComparison::frameErrors(std::size_t frame, std::size_t run,
+                                         std::size_t body) const {
+  const Run& r = *runs_.at(run);
+  const BodyRange& range = bodies_.at(body);
+  const auto at = frame * static_cast<std::size_t>(surface_.vertexCount()) +
+                  static_cast<std::size_t>(range.firstVertex);
+  const auto count = static_cast<std::size_t>(range.vertexCount);
+  return {spreadOfFloats(std::span<const float>(r.distances).subspan(at, count)),
+          spreadOfFloats(std::span<const float>(r.angles).subspan(at, count))};
+}
+
 double LevelComparison::meanStepSeconds(std::size_t run) const {
   const Run& r = *runs_.at(run);
   return r.steps > 0 ? r.stepSeconds / static_cast<double>(r.steps) : 0.0;
 }
 
 void LevelComparison::writeFrameTable(const std::filesystem::path& csv) const {
-  const double diagonal = diagonal_ > 0 ? diagonal_ : 1.0;
+  const bool perBody = bodies_.size() > 1;
   writeTextAtomically(csv, [&](std::ostream& out) {
     out << "frame,time,run,level,step_ms,distance_max,distance_p99,distance_median,"
-           "relative_max,relative_p99,relative_median,angle_max,angle_p99,angle_median\n";
+           "relative_max,relative_p99,relative_median,angle_max,angle_p99,angle_median"
+        << (perBody ? ",body\n" : "\n");
     char row[512];
+    const auto write = [&](std::size_t f, std::size_t r, const ErrorSpread& e, double diagonal) {
+      if (diagonal <= 0) diagonal = 1;
+      std::snprintf(
+          row, sizeof row, "%zu,%.9g,%zu,%d,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g", f,
+          frames_[f].time, r, runs_[r]->level, 1e3 * frames_[f].stepSeconds[r], e.distance.max,
+          e.distance.p99, e.distance.median, e.distance.max / diagonal, e.distance.p99 / diagonal,
+          e.distance.median / diagonal, e.angle.max, e.angle.p99, e.angle.median);
+      out << row;
+    };
     for (std::size_t f = 0; f < frames_.size(); ++f)
       for (std::size_t r = 0; r < runs_.size(); ++r) {
-        const ErrorSpread& e = frames_[f].errors[r];
-        std::snprintf(
-            row, sizeof row, "%zu,%.9g,%zu,%d,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g\n",
-            f, frames_[f].time, r, runs_[r]->level, 1e3 * frames_[f].stepSeconds[r], e.distance.max,
-            e.distance.p99, e.distance.median, e.distance.max / diagonal, e.distance.p99 / diagonal,
-            e.distance.median / diagonal, e.angle.max, e.angle.p99, e.angle.median);
-        out << row;
+        if (!perBody) {
+          write(f, r, frames_[f].errors[r], diagonal_);
+          out << "\n";
+          continue;
+        }
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+          write(f, r, frameErrors(f, r, b), bodyDiagonals_[b]);
+          out << "," << b << "\n";
+        }
       }
   });
 }
