@@ -170,8 +170,9 @@ void report(const SimulateArgs& a, const SimulationSession& session, const RunSp
         bodies > 1 ? "the " + std::to_string(bodies) + " bodies' skins meet each other" +
                          (options.skinCollisions.selfBodies.empty() ? "" : " and themselves")
                    : std::string("the skin meets itself");
-    std::printf("  %s: a shell %s thick; at the end %d contacts in all\n", meets.c_str(),
-                formatNumber(thickness).c_str(), totals.contacts);
+    std::printf("  %s: a shell %s thick, springs of %s N/m; at the end %d contacts in all\n",
+                meets.c_str(), formatNumber(thickness).c_str(),
+                formatNumber(sim.skinStiffness()).c_str(), totals.contacts);
   }
   if (a.steps > 0)
     std::printf("  %.1f steps/s, %.1f solver iterations per step\n",

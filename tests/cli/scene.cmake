@@ -7,12 +7,12 @@ tetskin_cli_test(simulate_scene
   ARGS simulate ${data}/scenes/bunny-in-bowl.json --level 0 --steps 90 -q -o ${cli_out}/scene_run.pvd)
 # A body's skin meeting itself: the run says so, with its shell's thickness.
 tetskin_cli_test(simulate_scene_self_contact
-  STDOUT "\n  the floor met by the skin[^\n]*\n  the skin meets itself: a shell 0.05 thick. at the end [0-9]+ contacts in all\n"
+  STDOUT "\n  the floor met by the skin[^\n]*\n  the skin meets itself: a shell 0.05 thick, springs of [0-9.e+]+ N.m. at the end [0-9]+ contacts in all\n"
   ARGS simulate ${tdata}/scenes/self_contact.json --steps 20 -q -o ${cli_out}/self_contact.pvd)
 # Two bodies, the second dropped onto the first: each body's part and
 # material, and their skins meeting.
 tetskin_cli_test(simulate_scene_two_bodies
-  STDOUT "\n  body /bodies/0: 598 tetrahedra, [0-9]+ skin vertices, material E 200000 Pa[^\n]*\n  body /bodies/1: 598 tetrahedra, [0-9]+ skin vertices, material E 400000 Pa.*\n  the 2 bodies' skins meet each other: a shell [0-9.e-]+ thick. at the end [0-9]+ contacts in all\n"
+  STDOUT "\n  body /bodies/0: 598 tetrahedra, [0-9]+ skin vertices, material E 200000 Pa[^\n]*\n  body /bodies/1: 598 tetrahedra, [0-9]+ skin vertices, material E 400000 Pa.*\n  the 2 bodies. skins meet each other: a shell [0-9.e-]+ thick, springs of [0-9.e+]+ N.m. at the end [0-9]+ contacts in all\n"
   ARGS simulate ${tdata}/scenes/two_bunnies.json --steps 20 -q -o ${cli_out}/two_bunnies.pvd)
 # More than one body: the level and the surface are each body's own.
 tetskin_cli_test(simulate_scene_two_bodies_level FAIL STATUS 1

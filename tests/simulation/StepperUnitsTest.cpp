@@ -8,12 +8,16 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "BodyContact.h"
 #include "BodyModels.h"
 #include "ImplicitEuler.h"
 #include "NodeConstraints.h"
 #include "NodeNumbering.h"
 #include "ObstacleContact.h"
 #include "Shapes.h"
+#include "tetskin/binding/BindSurface.h"
+#include "tetskin/binding/BoundaryFaces.h"
+#include "tetskin/core/BodyUnion.h"
 #include "tetskin/core/Error.h"
 
 namespace tetskin {
@@ -273,6 +277,84 @@ TEST(ForceModels, TheForceAtRestIsTheWeightAndTheEnergiesAreTheirs) {
   for (const auto& model : body.models) model->addEnergy(lifted, e);
   EXPECT_NEAR(e.elastic, 0, 1e-9);
   EXPECT_NEAR(e.gravitational, fem.lumpedMass().sum() / 3 * -options.gravity.y(), 1e-9);
+}
+
+// Letting contacts go takes their share out of the step as assembled: the
+// system after releasePulling (b, A, the springs' diagonal, the coupling
+// springs) is the one a fresh assembly with the contacts left gives. Two
+// blocks, their skins 1 cm off their cages, 5 mm into each other's shell,
+// the second moving away from the first at the top and into it at the
+// bottom: some springs end the step pulling, some pushing.
+TEST(BodyContact, ReleasingTakesTheContactsShareOutOfTheAssembledStep) {
+  const auto block = [](double x) {
+    TetMesh cage = tetGrid(2, 2, 2, {0.2, 0.2, 0.2});
+    cage.nodes.col(0).array() += x;
+    TetMesh shell = tetGrid(4, 4, 4, {0.22, 0.22, 0.22});
+    shell.nodes.array() -= 0.01;
+    shell.nodes.col(0).array() += x;
+    return std::pair{cage, boundarySurface(shell)};
+  };
+  const auto oneLevel = [](const TetMesh& cage) {
+    MultiLevelTetMesh dataset;
+    appendLevel(dataset, cage);
+    return dataset;
+  };
+  const auto [cageA, skinA] = block(0);
+  const auto [cageB, skinB] = block(0.2 + 0.02 + 0.003);  // skins 3 mm apart
+  const SurfaceBinding bindingA = bindSurface(skinA, oneLevel(cageA), 0),
+                       bindingB = bindSurface(skinB, oneLevel(cageB), 0);
+  const std::vector<BodyParts> parts{{&cageA, &skinA, &bindingA}, {&cageB, &skinB, &bindingB}};
+  const BodyUnion bodies = uniteBodies(parts);
+  const TetMesh mesh = extractLevel(bodies.mesh, 0);
+  SimulationOptions options;
+  options.timeStep = 0.01;
+  options.gravity.setZero();
+  CorotatedFem fem(mesh, options.material);
+  BodyModels body = bodyModels(fem, options);
+  const double k = 1e4;
+  body.models.push_back(std::make_unique<BodyContact>(
+      std::make_unique<SurfaceDeformer>(bodies.skin, bodies.binding, mesh.nodes), bodies.skin,
+      bodies.binding, bodies.vertexBody, fem.lumpedMass(), *body.constraints, SkinCollisions{},
+      0.005, k));
+  auto& contact = static_cast<BodyContact&>(*body.models.back());
+  const Eigen::VectorXd x = fem.restPositions();
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(x.size());
+  for (Index node = cageA.nodeCount(); node < mesh.nodeCount(); ++node)  // B turns about z
+    v[3 * node] = 4 * (x[3 * node + 1] - 0.1);
+  ImplicitEuler integrator(options.timeStep, fem.lumpedMass());
+  SparseMatrix A = fem.pattern();
+  Eigen::VectorXd b;
+  const int found =
+      integrator.assemble(body.models, 0, x, v, Eigen::VectorXd::Zero(x.size()), A, b);
+  ASSERT_GT(found, 0);
+  // (The solve of the step without the coupling, enough to say who pulls.)
+  const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);
+  const int released = contact.releasePulling(v, dv, integrator.stepSystem());
+  ASSERT_GT(released, 0);
+  ASSERT_LT(released, found);
+  const Eigen::VectorXd releasedB = b;
+  const SparseMatrix releasedA = A;
+  const Eigen::VectorXd springs = integrator.stepSystem().springs;
+  Eigen::VectorXd probe(x.size()), coupled = Eigen::VectorXd::Zero(x.size());
+  for (Index i = 0; i < probe.size(); ++i) probe[i] = std::sin(0.7 * static_cast<double>(i));
+  integrator.coupling()->product(probe.data(), coupled.data());
+
+  // Against the step assembled from scratch with the contacts kept.
+  ImplicitEuler again(options.timeStep, fem.lumpedMass());
+  SparseMatrix againA = fem.pattern();
+  Eigen::VectorXd againB;
+  contact.keepNextStep();
+  EXPECT_EQ(again.assemble(body.models, 0, x, v, Eigen::VectorXd::Zero(x.size()), againA, againB),
+            found - released);
+  const Eigen::Map<const Eigen::VectorXd> values(releasedA.valuePtr(), releasedA.nonZeros()),
+      expected(againA.valuePtr(), againA.nonZeros());
+  EXPECT_LE((values - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  EXPECT_LE((releasedB - againB).cwiseAbs().maxCoeff(), 1e-12 * againB.cwiseAbs().maxCoeff());
+  EXPECT_LE((springs - again.stepSystem().springs).cwiseAbs().maxCoeff(),
+            1e-12 * springs.maxCoeff());
+  Eigen::VectorXd coupledAgain = Eigen::VectorXd::Zero(x.size());
+  again.coupling()->product(probe.data(), coupledAgain.data());
+  EXPECT_LE((coupled - coupledAgain).cwiseAbs().maxCoeff(), 1e-12 * coupled.cwiseAbs().maxCoeff());
 }
 
 TEST(NodeNumbering, RoundTripsAndKeepsTheElements) {

@@ -16,10 +16,12 @@ Aabb triangleBox(const Points3& positions, const Triangles& triangles, Index t) 
   return box;
 }
 
-std::vector<Aabb> triangleBoxes(const Points3& positions, const Triangles& triangles) {
-  std::vector<Aabb> boxes(static_cast<std::size_t>(triangles.rows()));
-  for (Index t = 0; t < triangles.rows(); ++t)
-    boxes[static_cast<std::size_t>(t)] = triangleBox(positions, triangles, t);
+// The boxes of `chosen` triangles, in that order.
+std::vector<Aabb> triangleBoxes(const Points3& positions, const Triangles& triangles,
+                                const std::vector<int>& chosen) {
+  std::vector<Aabb> boxes(chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i)
+    boxes[i] = triangleBox(positions, triangles, chosen[i]);
   return boxes;
 }
 
@@ -36,6 +38,21 @@ std::vector<char> selfContactOfBodies(const std::vector<int>& vertexBody,
 }
 
 }  // namespace
+
+double BodyContact::automaticStiffness(const Eigen::VectorXd& mass, const SurfaceBinding& binding,
+                                       double timeStep) {
+  std::vector<char> bound(static_cast<std::size_t>(mass.size() / 3), 0);
+  double boundMass = 0;
+  for (Index v = 0; v < binding.vertexCount(); ++v)
+    for (int j = 0; j < binding.controlsPerVertex(); ++j) {
+      const auto node = static_cast<std::size_t>(binding.controlIds(v, j));
+      if (bound[node]) continue;
+      bound[node] = 1;
+      boundMass += mass[3 * static_cast<Index>(node)];
+    }
+  return kInertiaFactor * boundMass /
+         (timeStep * timeStep * static_cast<double>(std::max<Index>(1, binding.vertexCount())));
+}
 
 double BodyContact::Contact::along(const Eigen::VectorXd& values) const {
   double sum = 0;
@@ -64,17 +81,24 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
       stiffness_(stiffness),
       staticFriction_(settings.staticFriction),
       kineticFriction_(settings.kineticFriction) {
-  const std::vector<Aabb> boxes = triangleBoxes(restSkin_, triangles_);
-  tree_ = AabbTree(boxes);
+  bodyTriangles_.resize(selfContact_.size());
+  for (Index t = 0; t < triangles_.rows(); ++t)
+    bodyTriangles_[static_cast<std::size_t>(body_[static_cast<std::size_t>(triangles_(t, 0))])]
+        .push_back(static_cast<int>(t));
+  for (const std::vector<int>& chosen : bodyTriangles_)
+    trees_.emplace_back(triangleBoxes(restSkin_, triangles_, chosen));
 }
 
 void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& out,
-                               AabbTree& tree) const {
+                               std::vector<AabbTree>& trees) const {
   out.clear();
   const Eigen::Map<const Points3> control(x.data(), x.size() / 3, 3);
   Points3 skin;
   skin_->deformPositions(control, skin);
-  tree.refit(triangleBoxes(skin, triangles_));
+  parallelFor<std::size_t>(0, trees.size(), 1, [&](const IndexRange<std::size_t>& range) {
+    for (std::size_t b = range.begin(); b != range.end(); ++b)
+      trees[b].refit(triangleBoxes(skin, triangles_, bodyTriangles_[b]));
+  });
   // Per vertex its closest triangle within the thickness, in parallel,
   // each in its own slot: the contacts come out in vertex order on any
   // number of threads.
@@ -93,36 +117,34 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
     bodyBoxes[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])].extend(
         skin.row(v).transpose().eval());
   for (Aabb& box : bodyBoxes) box = box.inflated(thickness_);
-  const auto nearAnother = [&](const Eigen::Vector3d& p, int body) {
-    for (std::size_t b = 0; b < bodyBoxes.size(); ++b)
-      if (static_cast<int>(b) != body && bodyBoxes[b].contains(p)) return true;
-    return false;
-  };
   parallelFor<Index>(0, skin.rows(), 256, [&](const IndexRange<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const Eigen::Vector3d p = skin.row(v).transpose();
       const int body = body_[static_cast<std::size_t>(v)];
-      if (!selfContact_[static_cast<std::size_t>(body)] && !nearAnother(p, body)) continue;
       const Aabb query{p.array() - thickness_, p.array() + thickness_};
       Hit& hit = hits[static_cast<std::size_t>(v)];
       double best = reach2;
-      tree.forEachOverlap(query, [&](int t) {
-        const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
-        if (a == v || b == v || c == v) return;
-        const bool sameBody = body == body_[static_cast<std::size_t>(a)];
-        if (sameBody && !selfContact_[static_cast<std::size_t>(body)]) return;
-        const ClosestPointOnTriangle closest = closestPointOnTriangle(
-            p, skin.row(a).transpose(), skin.row(b).transpose(), skin.row(c).transpose());
-        if (closest.squaredDistance >= best) return;
-        if (sameBody &&
-            closestPointOnTriangle(restSkin_.row(v).transpose(), restSkin_.row(a).transpose(),
-                                   restSkin_.row(b).transpose(), restSkin_.row(c).transpose())
-                    .squaredDistance < neighbourhood2)
-          return;  // its own neighbourhood
-        best = closest.squaredDistance;
-        hit.triangle = t;
-        hit.closest = closest;
-      });
+      for (std::size_t other = 0; other < trees.size(); ++other) {
+        const bool sameBody = static_cast<int>(other) == body;
+        if (sameBody ? !selfContact_[other] : !bodyBoxes[other].contains(p)) continue;
+        const std::vector<int>& chosen = bodyTriangles_[other];
+        trees[other].forEachOverlap(query, [&](int i) {
+          const int t = chosen[static_cast<std::size_t>(i)];
+          const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
+          if (a == v || b == v || c == v) return;
+          const ClosestPointOnTriangle closest = closestPointOnTriangle(
+              p, skin.row(a).transpose(), skin.row(b).transpose(), skin.row(c).transpose());
+          if (closest.squaredDistance >= best) return;
+          if (sameBody &&
+              closestPointOnTriangle(restSkin_.row(v).transpose(), restSkin_.row(a).transpose(),
+                                     restSkin_.row(b).transpose(), restSkin_.row(c).transpose())
+                      .squaredDistance < neighbourhood2)
+            return;  // its own neighbourhood
+          best = closest.squaredDistance;
+          hit.triangle = t;
+          hit.closest = closest;
+        });
+      }
     }
   });
   for (Index v = 0; v < skin.rows(); ++v) {
@@ -171,7 +193,7 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
 int BodyContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
   // (After releasePulling, the same step again with the contacts kept.)
-  if (!keepContacts_) findContacts(at.x, contacts_, tree_);
+  if (!keepContacts_) findContacts(at.x, contacts_, trees_);
   keepContacts_ = false;
   const double h = at.h, k = stiffness_;
   for (const Contact& c : contacts_) {
@@ -186,19 +208,59 @@ int BodyContact::addForce(const StepState& at, StepSystem& system) {
   return static_cast<int>(contacts_.size());
 }
 
-int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv) {
+int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv,
+                                StepSystem& system) {
   const Eigen::VectorXd end = v + dv;
-  const std::size_t before = contacts_.size();
-  std::erase_if(contacts_, [&](const Contact& c) { return c.gap - h_ * c.along(end) < 0; });
-  const auto released = static_cast<int>(before - contacts_.size());
-  keepContacts_ = released > 0;
-  return released;
+  std::vector<char> kept(contacts_.size(), 1);
+  int released = 0;
+  bool held = false;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const Contact& c = contacts_[k];
+    if (c.gap - h_ * c.along(end) >= 0) continue;
+    kept[k] = 0;
+    ++released;
+    for (int j = 0; j < c.count; ++j)
+      held = held || constraints_.isFixed(c.entries[static_cast<std::size_t>(j)].node);
+  }
+  if (released == 0) return 0;
+  if (!held) {
+    // Its force (b = h f) and its blocks out, as addForce and addMatrix
+    // put them in (the nodes free: their rows are as assembled).
+    const double h = h_, k = stiffness_, h2k = h * h * k;
+    Eigen::VectorXd& b = *system.b;
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+      if (kept[i]) continue;
+      const Contact& c = contacts_[i];
+      const double spring = k * (c.gap - h * c.along(v));
+      for (int j = 0; j < c.count; ++j) {
+        const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
+        const Eigen::Vector3d g = e.weight * c.normal;
+        b.segment<3>(3 * e.node) -= h * spring * g;
+        for (int a = 0; a < 3; ++a) {
+          const Index row = 3 * e.node + a;
+          system.diagonal[row] -= h2k * g[a] * g[a];
+          system.springs[row] -= h2k * g[a] * g[a];
+          for (int col = 0; col < 3; ++col)
+            system.A->coeffRef(row, 3 * e.node + col) -= h2k * g[a] * g[col];
+        }
+      }
+    }
+    std::vector<char> springs(system.coupling.size(), 1);
+    std::copy(kept.begin(), kept.end(),
+              springs.begin() + static_cast<std::ptrdiff_t>(firstSpring_));
+    system.coupling.keep(springs);
+  }
+  std::size_t at = 0;
+  std::erase_if(contacts_, [&](const Contact&) { return !kept[at++]; });
+  keepContacts_ = held;
+  return held ? -released : released;
 }
 
 void BodyContact::addMatrix(const StepState& at, StepSystem& system) {
   // Each node's own block (its diagonal went with the springs) to A, the
   // blocks between nodes to the coupling springs.
   const double h2k = at.h * at.h * stiffness_;
+  firstSpring_ = system.coupling.size();
   for (const Contact& c : contacts_) {
     for (int j = 0; j < c.count; ++j) {
       const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
@@ -251,8 +313,8 @@ void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
 void BodyContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd&,
                              Eigen::VectorXd& force) const {
   std::vector<Contact> contacts;
-  AabbTree tree = tree_;
-  findContacts(x, contacts, tree);
+  std::vector<AabbTree> trees = trees_;
+  findContacts(x, contacts, trees);
   for (const Contact& c : contacts)
     for (int j = 0; j < c.count; ++j) {
       const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];

@@ -47,6 +47,26 @@ void CouplingSprings::product(const double* x, double* y) const {
   }
 }
 
+void CouplingSprings::keep(const std::vector<char>& kept) {
+  std::size_t to = 0, entry = 0;
+  for (std::size_t k = 0; k < stiffness_.size(); ++k) {
+    if (!kept[k]) continue;
+    stiffness_[to] = stiffness_[k];
+    direction_[to] = direction_[k];
+    const std::size_t first = entry;
+    for (std::size_t i = starts_[k]; i != starts_[k + 1]; ++i) entries_[entry++] = entries_[i];
+    starts_[to] = first;
+    ++to;
+  }
+  stiffness_.resize(to);
+  direction_.resize(to);
+  starts_.resize(to + 1);
+  starts_[to] = entry;
+  entries_.resize(entry);
+  // (Nodes no spring touches any more stay in touched_: product() writes
+  // them zero, which C is there.)
+}
+
 void CouplingSprings::eliminate(const std::vector<char>& fixedDofs,
                                 const Eigen::VectorXd& prescribed, Eigen::VectorXd& b) {
   std::vector<Entry> kept;

@@ -40,6 +40,8 @@ class ImplicitEuler {
   const Eigen::VectorXd* springs() const { return system_.hasSprings ? &system_.springs : nullptr; }
   // The last assembled system's springs outside the pattern (null: none),
   // a part of the system the solve must include.
+  // The last assembled system (a force model takes its share out of it).
+  StepSystem& stepSystem() { return system_; }
   const CouplingSprings* coupling() const {
     return system_.coupling.empty() ? nullptr : &system_.coupling;
   }

@@ -213,17 +213,18 @@ void Simulation::setContactSkin(const SurfaceMesh& restSkin, const SurfaceBindin
   if (!several && !settings.self && settings.selfBodies.empty()) return;
   double thickness = settings.thickness;
   if (thickness == 0) thickness = meanEdgeLength(restSkin);
-  // (The obstacles' automatic stiffness, shared out over the skin's
-  // vertices as ObstacleContact shares it.)
   double stiffness = settings.stiffness;
   if (stiffness == 0)
-    stiffness = ObstacleContact::automaticStiffness(fem_) * static_cast<double>(fem_.nodeCount()) /
-                static_cast<double>(std::max<Index>(1, restSkin.vertexCount()));
+    stiffness = BodyContact::automaticStiffness(fem_.lumpedMass(), internal, options_.timeStep);
   auto model = std::make_unique<BodyContact>(
       std::make_unique<SurfaceDeformer>(restSkin, internal, rest), restSkin, internal,
       std::move(bodies), fem_.lumpedMass(), *constraints_, settings, thickness, stiffness);
   bodyContact_ = model.get();
   models_.push_back(std::move(model));
+}
+
+double Simulation::skinStiffness() const {
+  return bodyContact_ ? bodyContact_->stiffness() : 0.0;
 }
 
 double Simulation::skinThickness() const {
@@ -353,12 +354,16 @@ StepStats Simulation::step() {
                                      {&x_, integrator_->springs(), integrator_->coupling()}, stats);
   // The skins' springs push, never pull: those that would end the step
   // pulling leave it, and it is solved again without them (a few rounds
-  // at most: letting go can make another pull).
-  for (int round = 0;
-       round < kReleaseRounds && bodyContact_ && bodyContact_->releasePulling(v_, dv_) > 0;
-       ++round) {
+  // at most: letting go can make another pull). Their share leaves the
+  // assembled system; only one on a held node has the step assembled anew.
+  for (int round = 0; round < kReleaseRounds && bodyContact_; ++round) {
     const auto restart = std::chrono::steady_clock::now();
-    stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
+    const int released = bodyContact_->releasePulling(v_, dv_, integrator_->stepSystem());
+    if (released == 0) break;
+    if (released > 0)
+      stats.contacts -= released;
+    else
+      stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);
     stats.assemblySeconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - restart).count();
     // (From the first solve's answer: the system changed by a few springs.)

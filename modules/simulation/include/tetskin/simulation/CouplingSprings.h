@@ -39,6 +39,10 @@ class CouplingSprings {
   // The nodes the springs touch, each once.
   const std::vector<Index>& nodes() const { return touched_; }
 
+  // Keeps the springs `kept` says (one flag per spring, in the order they
+  // were added), as eliminated: a solve again without the others.
+  void keep(const std::vector<char>& kept);
+
   // Held nodes (one flag per dof; a node's three alike) leave the springs:
   // their rows and columns of C are dropped, and what their columns carried
   // at the prescribed dv (per dof) moves to the right-hand side b, as

@@ -361,6 +361,9 @@ class Simulation {
   // The skins' contact thickness (model units; 0: the skins meet neither
   // each other nor themselves).
   double skinThickness() const;
+  // The skins' spring per skin vertex in contact (N/m; the settings' or the
+  // automatic one); 0 as skinThickness.
+  double skinStiffness() const;
   // Per vertex of the contact skin at `state`: its penetration into the
   // obstacles and its contact spring's force (arrays::kPenetration,
   // kContactForce); empty without obstacles or a skin.
