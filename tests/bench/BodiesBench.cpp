@@ -8,7 +8,8 @@
 // stepping by turns (medians over the steps). Prints a table; asserts
 // nothing.
 //
-// usage: bodies_bench BOWL.obj [STEPS] [SETTLE]
+// usage: bodies_bench BOWL.obj [STEPS] [SETTLE] [SKIN_STIFFNESS]
+// (SKIN_STIFFNESS: N/m per skin vertex; default 0, automatic)
 #include <tbb/info.h>
 
 #include <algorithm>
@@ -40,13 +41,14 @@ void printRow(const char* what, const StepTimes& t) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bodies_bench BOWL.obj [STEPS] [SETTLE]\n");
+    std::fprintf(stderr, "usage: bodies_bench BOWL.obj [STEPS] [SETTLE] [SKIN_STIFFNESS]\n");
     return 2;
   }
   // (Line by line: a run stopped by a timeout keeps what it printed.)
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
   const int settle = argc > 3 ? std::atoi(argv[3]) : 40;
+  const double skinStiffness = argc > 4 ? std::atof(argv[4]) : 0.0;
   const std::string data = TETSKIN_SOURCE_DIR "/data/";
   // The bowl's inside reaches down to y = -22.5; each bunny about 10 wide
   // and 9.5 tall, the lowest 1 above the bowl, the others above it and a
@@ -66,7 +68,7 @@ int main(int argc, char** argv) {
       // (about 17 m/s after the top bunny's fall, 0.29 per step): vertices
       // went through it and the bodies into each other (36,354 contacts at
       // step 140). As thick as that travel.
-      {"skin_contact", {{"thickness", 0.3}}},
+      {"skin_contact", {{"thickness", 0.3}, {"stiffness", skinStiffness}}},
       {"obstacles", {{{"surface", argv[1]}, {"scale", 2.5}, {"friction", 0.4}}}}};
   const auto loadStart = Clock::now();
   SceneRun run = loadScene(parseScene(json, "bodies_bench", "."));
