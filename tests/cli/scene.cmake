@@ -35,3 +35,20 @@ tetskin_cli_test(simulate_scene_open_obstacle FAIL STATUS 1
   STDERR "^error: [^\n]*open_obstacle.json: /obstacles/0/surface: [^\n]*open_sheet.obj[^\n]*edge[^\n]*\n$"
   NOT_EXIST ${cli_out}/bad_scene.pvd
   ARGS simulate ${tdata}/scenes/open_obstacle.json -o ${cli_out}/bad_scene.pvd)
+# A scene of one body is the same run as that body without a scene: the
+# bunny on a floor, from the scene and from the command line, writes the
+# same frames byte for byte (cg alone: the automatic choice times its
+# solvers).
+tetskin_cli_test(simulate_scene_of_one_body SETUP one_body_scene FRESH ${cli_out}/one_body_scene
+  ARGS simulate ${tdata}/scenes/bunny_on_floor.json --solver cg --steps 10 --every 10 -q
+       -o ${cli_out}/one_body_scene/run.pvd)
+tetskin_cli_test(simulate_one_body_without_scene SETUP one_body_plain FRESH ${cli_out}/one_body_plain
+  ARGS simulate ${data}/bunny.json --level 0 --surface ${data}/bunny_8k.obj --scenario free
+       --floor-height 0.5 --friction 0.4 --solver cg --steps 10 --every 10 -q
+       -o ${cli_out}/one_body_plain/run.pvd)
+foreach(frame control_00001.vtu surface_00001.vtp)
+  add_test(NAME cli.scene_of_one_body_is_the_plain_run_${frame} COMMAND ${CMAKE_COMMAND} -E compare_files
+    ${cli_out}/one_body_scene/run_frames/${frame} ${cli_out}/one_body_plain/run_frames/${frame})
+  set_tests_properties(cli.scene_of_one_body_is_the_plain_run_${frame} PROPERTIES LABELS cli
+    FIXTURES_REQUIRED "one_body_scene;one_body_plain")
+endforeach()
