@@ -224,6 +224,63 @@ TEST(Solvers, ConjugateGradientIsReproducibleAndItsResidualIsTrue) {
 // dv on the right-hand side. CG then solves the whole system, checked
 // against a dense solve of A + sum s u u^T with the held rows and columns
 // eliminated by hand.
+// Stiff springs between far nodes (as between two bodies' nodes): the
+// preconditioner that sweeps them (SpringGaussSeidel) is symmetric and
+// positive (CG's need), CG with it solves the same system as with block
+// Jacobi, and in fewer iterations.
+TEST(Solvers, SpringGaussSeidelSeesTheCouplingSprings) {
+  const TetMesh mesh = extractLevel(sampleDataset().mesh, 0);
+  SparseMatrix A = restStepMatrix(mesh, SimulationOptions{});
+  const Index n = A.rows(), nodes = n / 3;
+  const double scale = A.diagonal().mean();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  CouplingSprings springs;
+  for (int k = 0; k < 60; ++k) {  // pairs of triples: a vertex's nodes against a triangle's
+    const Eigen::Vector3d direction =
+        Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+    std::vector<CouplingSprings::Entry> entries;
+    for (int j = 0; j < 3; ++j) entries.push_back({(k * 3 + j) % nodes, 1.0 / 3});
+    for (int j = 0; j < 3; ++j) entries.push_back({(k * 3 + j + nodes / 2) % nodes, -1.0 / 3});
+    const double stiffness = 300 * scale;
+    springs.add(stiffness, direction, entries);
+    for (const auto& e : entries)
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c)
+          A.coeffRef(3 * e.node + a, 3 * e.node + c) +=
+              stiffness * e.weight * e.weight * direction[a] * direction[c];
+  }
+  SpringGaussSeidel sweep;
+  sweep.setCoupling(&springs);
+  sweep.setup(A);
+  EXPECT_FALSE(sweep.actsPerNode());
+  Eigen::VectorXd r1 = Eigen::VectorXd::Random(n), r2 = Eigen::VectorXd::Random(n), z1, z2;
+  sweep.apply(r1, z1);
+  sweep.apply(r2, z2);
+  EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-12 * std::abs(r1.dot(z2)));
+  EXPECT_GT(r1.dot(z1), 0);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1, 2);
+  BlockJacobi jacobi;
+  jacobi.setup(A);
+  Eigen::VectorXd withJacobi = Eigen::VectorXd::Zero(n), withSweep = withJacobi;
+  const auto never = std::chrono::steady_clock::time_point::max();
+  const SolveStats j =
+      conjugateGradient(NodeBlockMatrix(A), b, withJacobi, jacobi, 1e-10, 5000, never, &springs);
+  const SolveStats g =
+      conjugateGradient(NodeBlockMatrix(A), b, withSweep, sweep, 1e-10, 5000, never, &springs);
+  std::printf("CG iterations: block Jacobi %d, with the springs swept %d\n", j.iterations,
+              g.iterations);
+  EXPECT_LE(j.relativeResidual, 1e-10);
+  EXPECT_LE(g.relativeResidual, 1e-10);
+  EXPECT_LT((withSweep - withJacobi).cwiseAbs().maxCoeff(),
+            1e-7 * withJacobi.cwiseAbs().maxCoeff());
+  EXPECT_LT(g.iterations, j.iterations);
+  // Without springs it is block Jacobi, node by node.
+  SpringGaussSeidel plain;
+  plain.setup(A);
+  EXPECT_TRUE(plain.actsPerNode());
+}
+
 TEST(Solvers, ConjugateGradientSolvesTheSystemWithItsCouplingSprings) {
   const TetMesh mesh = extractLevel(sampleDataset().mesh, 0);
   const SimulationOptions options;

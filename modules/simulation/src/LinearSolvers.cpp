@@ -507,6 +507,71 @@ void BlockJacobi::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   });
 }
 
+void SpringGaussSeidel::setup(const SparseMatrix& A) {
+  jacobi_.setup(A);
+  order_.clear();
+  starts_.assign(1, 0);
+  incidences_.clear();
+  if (!coupling_ || coupling_->empty()) return;
+  // Each touched node's springs (held nodes left the springs' entries).
+  std::vector<std::vector<Incidence>> byNode;
+  std::vector<Index> slot(static_cast<std::size_t>(A.rows() / 3), -1);
+  for (std::size_t k = 0; k < coupling_->size(); ++k)
+    for (const CouplingSprings::Entry& e : coupling_->entries(k)) {
+      Index& at = slot[static_cast<std::size_t>(e.node)];
+      if (at < 0) {
+        at = static_cast<Index>(order_.size());
+        order_.push_back(e.node);
+        byNode.emplace_back();
+      }
+      byNode[static_cast<std::size_t>(at)].push_back({k, e.weight});
+    }
+  for (const std::vector<Incidence>& list : byNode) {
+    incidences_.insert(incidences_.end(), list.begin(), list.end());
+    starts_.push_back(incidences_.size());
+  }
+  along_.assign(coupling_->size(), 0.0);
+  forward_.resize(order_.size());
+}
+
+void SpringGaussSeidel::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  jacobi_.apply(r, z);
+  if (order_.empty()) return;
+  const CouplingSprings& springs = *coupling_;
+  // Forward: (D + L) y = r on the touched nodes, L the springs' blocks to
+  // nodes swept before.
+  std::fill(along_.begin(), along_.end(), 0.0);
+  for (std::size_t i = 0; i < order_.size(); ++i) {
+    Eigen::Vector3d rhs = r.segment<3>(3 * order_[i]);
+    for (std::size_t at = starts_[i]; at != starts_[i + 1]; ++at) {
+      const Incidence& e = incidences_[at];
+      rhs -=
+          springs.stiffness(e.spring) * e.weight * along_[e.spring] * springs.direction(e.spring);
+    }
+    forward_[i] = jacobi_.inverse(order_[i]) * rhs;
+    for (std::size_t at = starts_[i]; at != starts_[i + 1]; ++at) {
+      const Incidence& e = incidences_[at];
+      along_[e.spring] += e.weight * springs.direction(e.spring).dot(forward_[i]);
+    }
+  }
+  // Backward: (D + U) z = D y, U = L^T: z = y - D^-1 U z, nodes after.
+  std::fill(along_.begin(), along_.end(), 0.0);
+  for (std::size_t i = order_.size(); i-- > 0;) {
+    Eigen::Vector3d later = Eigen::Vector3d::Zero();
+    for (std::size_t at = starts_[i]; at != starts_[i + 1]; ++at) {
+      const Incidence& e = incidences_[at];
+      later +=
+          springs.stiffness(e.spring) * e.weight * along_[e.spring] * springs.direction(e.spring);
+    }
+    const Eigen::Vector3d value = forward_[i] - jacobi_.inverse(order_[i]) * later;
+    z.segment<3>(3 * order_[i]) = value;
+    for (std::size_t at = starts_[i]; at != starts_[i + 1]; ++at) {
+      const Incidence& e = incidences_[at];
+      along_[e.spring] += e.weight * springs.direction(e.spring).dot(value);
+    }
+  }
+}
+
 struct MultigridPreconditioner::Impl {
   std::vector<GalerkinStream> streams;  // built on the first Galerkin setup() after a change
   std::vector<SweepOrder> sweeps;       // per level, once per pattern

@@ -52,7 +52,7 @@ SolverStack::SolverStack(const MultiLevelTetMesh& dataset, int level, const TetM
   if (options.solver != SolverKind::Multigrid)
     cgPreconditioner_ = options.preconditioner && options.solver == SolverKind::ConjugateGradient
                             ? options.preconditioner()
-                            : std::make_unique<BlockJacobi>();
+                            : std::make_unique<SpringGaussSeidel>();
   if (options.solver == SolverKind::Automatic) choice_.emplace(kSamplePeriod);
   if (options.solver == SolverKind::ConjugateGradient) return;
   if (options.coarseLevels == CoarseLevels::Grid) {
@@ -150,6 +150,7 @@ SolverStack::Outcome SolverStack::solveWith(SolverKind solver, const SparseMatri
   auto start = std::chrono::steady_clock::now();
   bool coarseBuilt = false;
   if (!multigrid) {
+    cgPreconditioner_->setCoupling(at.coupling);
     cgPreconditioner_->setup(A);
   } else {
     // Coarse operators left from before a spell of CG steps are stale:

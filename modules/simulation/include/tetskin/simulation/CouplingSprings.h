@@ -38,6 +38,12 @@ class CouplingSprings {
   void product(const double* x, double* y) const;
   // The nodes the springs touch, each once.
   const std::vector<Index>& nodes() const { return touched_; }
+  // Spring k: s, n and its entries (node, a_j).
+  double stiffness(std::size_t k) const { return stiffness_[k]; }
+  const Eigen::Vector3d& direction(std::size_t k) const { return direction_[k]; }
+  std::span<const Entry> entries(std::size_t k) const {
+    return {entries_.data() + starts_[k], starts_[k + 1] - starts_[k]};
+  }
 
   // Keeps the springs `kept` says (one flag per spring, in the order they
   // were added), as eliminated: a solve again without the others.

@@ -51,6 +51,9 @@ class Preconditioner {
   virtual bool actsPerNode() const { return false; }
   // z = M^-1 r on the dofs of nodes [first, last) (only where actsPerNode()).
   virtual void applyToNodes(Index first, Index last, const double* r, double* z) const;
+  // The system's springs outside A (null: none), before setup(A): a
+  // preconditioner may use them; the default leaves them to CG's products.
+  virtual void setCoupling(const CouplingSprings*) {}
 };
 
 // Inverse of each node's 3x3 diagonal block (A in the node-block layout).
@@ -60,9 +63,45 @@ class BlockJacobi : public Preconditioner {
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
   bool actsPerNode() const override { return true; }
   void applyToNodes(Index first, Index last, const double* r, double* z) const override;
+  const Eigen::Matrix3d& inverse(Index node) const {
+    return inverse_[static_cast<std::size_t>(node)];
+  }
 
  private:
   std::vector<Eigen::Matrix3d> inverse_;
+};
+
+// Block Jacobi, and over the nodes coupling springs touch one symmetric
+// block Gauss-Seidel sweep of A's diagonal blocks and the springs' blocks
+// between those nodes (forward, then backward: symmetric positive
+// definite, as CG needs). A spring between two bodies' nodes is as stiff
+// off the diagonal as on it, which block Jacobi does not see; the sweep
+// does, at the cost of one pass over the springs' entries each way. The
+// blocks between nodes are never formed: a spring's share of node j's row
+// is s a_j n (sum of a_i n.z_i over its nodes swept so far). Without
+// springs it is block Jacobi, node by node.
+class SpringGaussSeidel : public Preconditioner {
+ public:
+  void setCoupling(const CouplingSprings* coupling) override { coupling_ = coupling; }
+  void setup(const SparseMatrix& A) override;
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
+  bool actsPerNode() const override { return order_.empty(); }
+  void applyToNodes(Index first, Index last, const double* r, double* z) const override {
+    jacobi_.applyToNodes(first, last, r, z);
+  }
+
+ private:
+  struct Incidence {
+    std::size_t spring;
+    double weight;
+  };
+  BlockJacobi jacobi_;
+  const CouplingSprings* coupling_ = nullptr;
+  std::vector<Index> order_;         // the nodes springs touch, in sweep order
+  std::vector<std::size_t> starts_;  // order_[i]'s incidences: starts_[i] .. starts_[i+1]-1
+  std::vector<Incidence> incidences_;
+  mutable std::vector<double> along_;             // per spring, the sweep's sum of a_i n.z_i so far
+  mutable std::vector<Eigen::Vector3d> forward_;  // per swept node, the forward sweep's value
 };
 
 // How the V-cycle smooths each level but the coarsest (MultigridPreconditioner):
