@@ -282,12 +282,9 @@ void addCompareCommand(CLI::App& app) {
       "Which level is enough: the same scenario on several levels, the same surface bound to "
       "each; per vertex and frame the distance and normal angle against the reference level, "
       "with each level's cost per step");
-  cmd->add_option("DATASET", a->dataset,
-                  std::string(kDatasetHelp) +
-                      "; or a scene (.json, format tetskin-scene): every body on each level "
-                      "compared, its skins the surface, errors also per body")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addDatasetOrSceneArgument(
+      *cmd, a->dataset,
+      "every body on each level compared, its skins the surface, errors also per body");
   cmd->add_option("SURFACE", a->surface,
                   "the surface (OBJ, PLY, STL, VTP; a binding's surface), bound to every level "
                   "by its closest boundary point with the normal offset (required, but for a "

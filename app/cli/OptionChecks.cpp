@@ -237,4 +237,14 @@ void addCompressOption(CLI::App& cmd) {
   });
 }
 
+CLI::Option* addDatasetOrSceneArgument(CLI::App& cmd, std::filesystem::path& dataset,
+                                       const std::string& sceneUse) {
+  return cmd
+      .add_option(
+          "DATASET", dataset,
+          std::string(kDatasetHelp) + "; or a scene (.json, format tetskin-scene): " + sceneUse)
+      ->required()
+      ->check(CLI::ExistingFile);
+}
+
 }  // namespace tetskin::cli

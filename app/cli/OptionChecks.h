@@ -27,6 +27,11 @@ CLI::Validator wholeNumber(long long min, long long max = std::numeric_limits<in
 inline constexpr const char* kDatasetHelp =
     "dataset (.json, a .node/.ele pair, a Gmsh .msh or a MEDIT .mesh)";
 
+// The required DATASET argument of a command that also takes a scene
+// (simulate, render, compare); `sceneUse` says what it takes of one.
+CLI::Option* addDatasetOrSceneArgument(CLI::App& cmd, std::filesystem::path& dataset,
+                                       const std::string& sceneUse);
+
 // A whole number of any sign, e.g. --level (negative counts from the
 // finest) or an option whose range a module checks with its own message.
 CLI::Validator anyWholeNumber();

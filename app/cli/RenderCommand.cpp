@@ -227,12 +227,9 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render",
       "Headless rendering of a dataset's bound surface to PNG (needs X: use xvfb-run -a)");
-  cmd->add_option("DATASET", a->dataset,
-                  std::string(kDatasetHelp) +
-                      "; or a scene (.json, format tetskin-scene): its bodies, skins, obstacles, "
-                      "floor and run (a recorded run of the scene is drawn on it)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addDatasetOrSceneArgument(*cmd, a->dataset,
+                            "its bodies, skins, obstacles, floor and run (a recorded run of "
+                            "the scene is drawn on it)");
   cmd->add_option("--surface", a->surface,
                   "surface (default: a recorded run's own, else the dataset's surface; a scene's "
                   "body's)")

@@ -323,12 +323,9 @@ void addSimulateCommand(CLI::App& app) {
   auto a = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the corotated FEM on a dataset level; writes a ParaView time series (.pvd)");
-  cmd->add_option("DATASET", a->dataset,
-                  std::string(kDatasetHelp) +
-                      "; or a scene (.json, format tetskin-scene): the body, obstacles, floor "
-                      "and settings, which the options given here override")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addDatasetOrSceneArgument(*cmd, a->dataset,
+                            "the body, obstacles, floor and settings, which the options given "
+                            "here override");
   cmd->add_option("-o,--output", a->output,
                   "time series RUN.pvd (frames go to RUN_frames/); required unless --print-run");
   addNumberOption(*cmd, recording_option::kSteps, a->steps);

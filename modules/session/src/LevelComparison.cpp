@@ -38,6 +38,15 @@ struct LevelComparison::Run {
 
 namespace {
 
+// Two levels or more, the reference one of them.
+void checkLevels(std::size_t count, std::size_t reference) {
+  if (count < 2)
+    throw Error("a comparison needs at least two levels, " + std::to_string(count) + " given");
+  if (reference >= count)
+    throw Error("the reference is run " + std::to_string(reference) + " of " +
+                std::to_string(count));
+}
+
 Spread spreadOfValues(const Eigen::VectorXd& values) {
   std::vector<double> copy(values.data(), values.data() + values.size());
   return spreadOf(copy);
@@ -54,12 +63,7 @@ LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const Surface
                                  const std::vector<RunSpec>& runs, std::size_t reference,
                                  const std::string& datasetPath)
     : datasetPath_(datasetPath), reference_(reference) {
-  if (runs.size() < 2)
-    throw Error("a comparison needs at least two levels, " + std::to_string(runs.size()) +
-                " given");
-  if (reference >= runs.size())
-    throw Error("the reference is run " + std::to_string(reference) + " of " +
-                std::to_string(runs.size()));
+  checkLevels(runs.size(), reference);
   setSurface(surface, {});
   for (const RunSpec& spec : runs) {
     bind(dataset, spec.level);
@@ -69,12 +73,7 @@ LevelComparison::LevelComparison(const MultiLevelTetMesh& dataset, const Surface
 
 LevelComparison::LevelComparison(std::vector<SceneLevel> levels, std::size_t reference)
     : reference_(reference) {
-  if (levels.size() < 2)
-    throw Error("a comparison needs at least two levels, " + std::to_string(levels.size()) +
-                " given");
-  if (reference >= levels.size())
-    throw Error("the reference is run " + std::to_string(reference) + " of " +
-                std::to_string(levels.size()));
+  checkLevels(levels.size(), reference);
   const SceneRun& first = levels[reference].scene;
   if (!first.surface) throw Error(first.scene.file.string() + ": its body has no surface");
   datasetPath_ = first.request.datasetName;
