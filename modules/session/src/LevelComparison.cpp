@@ -80,8 +80,12 @@ LevelComparison::LevelComparison(std::vector<SceneLevel> levels, std::size_t ref
   setSurface(first.surface->surface, first.request.bodies);
   for (SceneLevel& level : levels) {
     auto scene = std::make_unique<SceneRun>(std::move(level.scene));
-    if (!scene->surface || scene->surface->surface.positions != surface_.positions ||
-        scene->surface->surface.triangles != surface_.triangles)
+    const auto sameSkins = [&](const SurfaceMesh& skin) {
+      return skin.positions.rows() == surface_.positions.rows() &&
+             skin.triangles.rows() == surface_.triangles.rows() &&
+             skin.positions == surface_.positions && skin.triangles == surface_.triangles;
+    };
+    if (!scene->surface || !sameSkins(scene->surface->surface))
       throw Error(scene->scene.file.string() + ": on level " + std::to_string(level.level) +
                   " its skins differ from those on level " +
                   std::to_string(levels[reference].level) +
