@@ -47,11 +47,10 @@ BodyUnion uniteBodies(std::span<const BodyParts> bodies) {
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const BodyParts& body = bodies[b];
     const BodyRange& range = u.bodies[b];
-    const Index node = range.firstNode, element = range.firstElement, vertex = range.firstVertex;
-    const int nodeOffset = static_cast<int>(node), vertexOffset = static_cast<int>(vertex);
-    u.mesh.nodes.middleRows(node, body.mesh->nodeCount()) = body.mesh->nodes;
-    u.mesh.elements.middleRows(element, body.mesh->elementCount()) =
-        body.mesh->elements.array() + nodeOffset;
+    const Index element = range.firstElement, vertex = range.firstVertex;
+    const int nodeOffset = static_cast<int>(range.firstNode),
+              vertexOffset = static_cast<int>(vertex);
+    placeBodyPart(*body.mesh, range, u.mesh.nodes, u.mesh.elements);
     const Index count = body.skin->vertexCount();
     u.skin.positions.middleRows(vertex, count) = body.skin->positions;
     u.skin.triangles.middleRows(range.firstTriangle, range.triangleCount) =
@@ -70,6 +69,13 @@ BodyUnion uniteBodies(std::span<const BodyParts> bodies) {
     }
   }
   return u;
+}
+
+void placeBodyPart(const TetMesh& part, const BodyRange& body, Points3& nodes,
+                   Tetrahedra& elements) {
+  nodes.middleRows(body.firstNode, body.nodeCount) = part.nodes;
+  elements.middleRows(body.firstElement, body.elementCount) =
+      part.elements.array() + static_cast<int>(body.firstNode);
 }
 
 TetMesh bodyPart(const TetMesh& united, const BodyRange& body) {

@@ -287,18 +287,23 @@ ErrorSpread LevelComparison::overall(std::size_t run) const {
   return {spreadOfFloats(r.distances), spreadOfFloats(r.angles)};
 }
 
+std::span<const float> LevelComparison::bodyValues(const std::vector<float>& values,
+                                                   std::size_t frame, std::size_t body) const {
+  const BodyRange& range = bodies_.at(body);
+  return std::span<const float>(values).subspan(
+      frame * static_cast<std::size_t>(surface_.vertexCount()) +
+          static_cast<std::size_t>(range.firstVertex),
+      static_cast<std::size_t>(range.vertexCount));
+}
+
 ErrorSpread LevelComparison::overall(std::size_t run, std::size_t body) const {
   const Run& r = *runs_.at(run);
-  const BodyRange& range = bodies_.at(body);
-  const auto vertices = static_cast<std::size_t>(surface_.vertexCount());
   std::vector<float> distances, angles;
-  for (std::size_t at = static_cast<std::size_t>(range.firstVertex); at < r.distances.size();
-       at += vertices) {
-    const auto count = static_cast<std::ptrdiff_t>(range.vertexCount);
-    const auto from = static_cast<std::ptrdiff_t>(at);
-    distances.insert(distances.end(), r.distances.begin() + from,
-                     r.distances.begin() + from + count);
-    angles.insert(angles.end(), r.angles.begin() + from, r.angles.begin() + from + count);
+  for (std::size_t f = 0; f < frames_.size(); ++f) {
+    const std::span<const float> d = bodyValues(r.distances, f, body),
+                                 a = bodyValues(r.angles, f, body);
+    distances.insert(distances.end(), d.begin(), d.end());
+    angles.insert(angles.end(), a.begin(), a.end());
   }
   return {spreadOfFloats(distances), spreadOfFloats(angles)};
 }
@@ -306,12 +311,8 @@ ErrorSpread LevelComparison::overall(std::size_t run, std::size_t body) const {
 ErrorSpread LevelComparison::frameErrors(std::size_t frame, std::size_t run,
                                          std::size_t body) const {
   const Run& r = *runs_.at(run);
-  const BodyRange& range = bodies_.at(body);
-  const auto at = frame * static_cast<std::size_t>(surface_.vertexCount()) +
-                  static_cast<std::size_t>(range.firstVertex);
-  const auto count = static_cast<std::size_t>(range.vertexCount);
-  return {spreadOfFloats(std::span<const float>(r.distances).subspan(at, count)),
-          spreadOfFloats(std::span<const float>(r.angles).subspan(at, count))};
+  return {spreadOfFloats(bodyValues(r.distances, frame, body)),
+          spreadOfFloats(bodyValues(r.angles, frame, body))};
 }
 
 double LevelComparison::meanStepSeconds(std::size_t run) const {

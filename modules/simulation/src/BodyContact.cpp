@@ -225,7 +225,8 @@ int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd&
   if (released == 0) return 0;
   if (!held) {
     // Its force (b = h f) and its blocks out, as addForce and addMatrix
-    // put them in (the nodes free: their rows are as assembled).
+    // put them in (the nodes free: their rows are as assembled). (The
+    // step's `diagonal` was spent on A when it was assembled.)
     const double h = h_, k = stiffness_, h2k = h * h * k;
     Eigen::VectorXd& b = *system.b;
     for (std::size_t i = 0; i < contacts_.size(); ++i) {
@@ -238,7 +239,6 @@ int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd&
         b.segment<3>(3 * e.node) -= h * spring * g;
         for (int a = 0; a < 3; ++a) {
           const Index row = 3 * e.node + a;
-          system.diagonal[row] -= h2k * g[a] * g[a];
           system.springs[row] -= h2k * g[a] * g[a];
           for (int col = 0; col < 3; ++col)
             system.A->coeffRef(row, 3 * e.node + col) -= h2k * g[a] * g[col];

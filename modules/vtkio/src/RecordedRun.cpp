@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tetskin/vtkio/RecordedRun.h"
 
-#include <cmath>
 #include <regex>
 #include <utility>
 
@@ -102,9 +101,7 @@ TetMesh RecordedRun::rest() const {
     const TetMesh part = readFrameRest(bodyFrames_[b].front().file);
     if (part.nodes.rows() != body.nodeCount || part.elements.rows() != body.elementCount)
       throw Error(bodyFrames_[b].front().file, 0, "changed while the run was read");
-    all.nodes.middleRows(body.firstNode, body.nodeCount) = part.nodes;
-    all.elements.middleRows(body.firstElement, body.elementCount) =
-        part.elements.array() + static_cast<int>(body.firstNode);
+    placeBodyPart(part, body, all.nodes, all.elements);
   }
   return all;
 }

@@ -48,6 +48,12 @@ struct BodyUnion {
 // from the first body's.
 BodyUnion uniteBodies(std::span<const BodyParts> bodies);
 
+// `part` (one body's control mesh, its own numbering) written into a
+// union's `nodes` and `elements` where `body` says, its elements' node ids
+// shifted by the body's first node: bodyPart's inverse.
+void placeBodyPart(const TetMesh& part, const BodyRange& body, Points3& nodes,
+                   Tetrahedra& elements);
+
 // One body's part of a union, numbered from its own first node and vertex:
 // its control mesh, its skin, its skin's binding (control ids and face ids
 // less the body's first node and element; unbound slots stay -1), a

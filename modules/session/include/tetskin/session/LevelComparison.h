@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -167,6 +168,10 @@ class LevelComparison {
   Points3 currentPositions(std::size_t run) const;
   // Per frame, per run and body: the errors of the body's vertices.
   ErrorSpread frameErrors(std::size_t frame, std::size_t run, std::size_t body) const;
+  // A compared frame's values (a run's distances or angles, kept frame
+  // after frame) of a body's vertices.
+  std::span<const float> bodyValues(const std::vector<float>& values, std::size_t frame,
+                                    std::size_t body) const;
 };
 
 }  // namespace tetskin
