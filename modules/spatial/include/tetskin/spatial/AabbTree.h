@@ -10,6 +10,11 @@
 //                                  within sqrt(radius2) of p, nearest boxes first;
 //                                  f may shrink radius2 (branch and bound), so an
 //                                  exact nearest search is forEachNear + a distance.
+//   anyOverlap(box)                whether some primitive's box overlaps `box`
+//   forEachLeafNear(other, m, f)   f(ids) for each leaf of this tree whose box, grown
+//                                  by m, overlaps a primitive box of `other`: what of
+//                                  one surface may lie within m of another, found
+//                                  without a query per primitive
 
 #include <array>
 #include <span>
@@ -48,6 +53,27 @@ class AabbTree {
         for (int i = node.first; i < node.first + node.count; ++i)
           if (boxes_[static_cast<std::size_t>(i)].overlaps(query))
             f(ids_[static_cast<std::size_t>(i)]);
+      } else {
+        stack[top++] = node.first;
+        stack[top++] = node.first + 1;
+      }
+    }
+  }
+
+  bool anyOverlap(const Aabb& query) const;
+
+  template <typename F>
+  void forEachLeafNear(const AabbTree& other, double margin, F&& f) const {
+    if (nodes_.empty() || other.empty()) return;
+    // A subtree is dropped as soon as nothing of `other` lies near its box.
+    std::array<int, kMaxDepth> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
+      if (!other.anyOverlap(node.box.inflated(margin))) continue;
+      if (node.count > 0) {
+        f(std::span<const int>(ids_.data() + node.first, static_cast<std::size_t>(node.count)));
       } else {
         stack[top++] = node.first;
         stack[top++] = node.first + 1;
