@@ -21,9 +21,11 @@
 #include <vector>
 
 #include "StepTimes.h"
+#include "tetskin/core/Parallel.h"
 #include "tetskin/session/RunRequest.h"
 #include "tetskin/session/SceneRun.h"
 #include "tetskin/session/SimulationSession.h"
+#include "tetskin/spatial/ClosedSurfaceDistance.h"
 
 using namespace tetskin;
 using bench::StepTimes;
@@ -35,6 +37,51 @@ using Clock = std::chrono::steady_clock;
 void printRow(const char* what, const StepTimes& t) {
   std::printf("  %-34s %7.2f  %7.1f  %8.2f  %6.2f  %8d  %13d\n", what, t.step, 1e3 / t.step,
               t.assembly, t.solve, t.contacts, t.iterations);
+}
+
+// How far the skins have gone into each other: the skin vertices that lie
+// inside another body's closed skin (its exact signed distance, as the
+// obstacles' kernel finds it), and the deepest of them.
+struct Interpenetration {
+  int vertices = 0;
+  double deepest = 0;
+};
+
+Interpenetration interpenetration(SimulationSession& session, const std::vector<RunBody>& bodies) {
+  const BoundSurface& bound = session.deformedSurface(session.state().positions);
+  const SurfaceMesh skin{bound.deformed->positions, bound.surface.triangles, {}, {}};
+  std::vector<ClosedSurfaceDistance> skins;
+  for (const RunBody& body : bodies) skins.emplace_back(bodyPart(skin, body.range), "a skin");
+  std::vector<double> depth(static_cast<std::size_t>(skin.vertexCount()), 0.0);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const BodyRange& range = bodies[b].range;
+    parallelFor<Index>(range.firstVertex, range.firstVertex + range.vertexCount, 64,
+                       [&](const IndexRange<Index>& r) {
+                         for (Index v = r.begin(); v != r.end(); ++v) {
+                           const Eigen::Vector3d p = skin.positions.row(v).transpose();
+                           double& deepest = depth[static_cast<std::size_t>(v)];
+                           for (std::size_t other = 0; other < skins.size(); ++other) {
+                             if (other == b || !skins[other].bounds().contains(p)) continue;
+                             const auto at = skins[other].closest(p);
+                             if (at && at->distance < 0) deepest = std::max(deepest, -at->distance);
+                           }
+                         }
+                       });
+  }
+  Interpenetration result;
+  for (double d : depth)
+    if (d > 0) {
+      ++result.vertices;
+      result.deepest = std::max(result.deepest, d);
+    }
+  return result;
+}
+
+void printInterpenetration(const char* when, SimulationSession& session,
+                           const std::vector<RunBody>& bodies) {
+  const Interpenetration in = interpenetration(session, bodies);
+  std::printf("  %s: %d skin vertices inside another body, the deepest %.3f in\n", when,
+              in.vertices, in.deepest);
 }
 
 }  // namespace
@@ -97,6 +144,7 @@ int main(int argc, char** argv) {
     if ((i + 1) % 10 == 0)
       std::printf("  drop step %3d: %8.2f ms, %5d contacts, %5d cg iterations\n", i + 1, t.step,
                   t.contacts, t.iterations);
+    if ((i + 1) % 50 == 0) printInterpenetration("  then", contact, spec.bodies);
   }
   const SimulationState reached = contact.state();
   RunSpec bowlSpec = spec;
@@ -125,5 +173,7 @@ int main(int argc, char** argv) {
       "%.2f ms\n",
       with.step - without.step, 100 * (with.step - without.step) / with.step,
       with.step - bowl.step);
+  printInterpenetration("at the end, with contact", contact, spec.bodies);
+  printInterpenetration("the bowl only", bowlOnly, spec.bodies);
   return 0;
 }

@@ -280,12 +280,13 @@ TEST(ForceModels, TheForceAtRestIsTheWeightAndTheEnergiesAreTheirs) {
 }
 
 // Letting contacts go takes their share out of the step as assembled: the
-// system after releasePulling (b, A, the springs' diagonal, the coupling
-// springs) is the one a fresh assembly with the contacts left gives. Two
+// system after updateActiveSet (b, A, the springs' diagonal, the coupling
+// springs) is the one a fresh assembly with the contacts left gives, and
+// taking them in again gives the first assembly back. Two
 // blocks, their skins 1 cm off their cages, 5 mm into each other's shell,
 // the second moving away from the first at the top and into it at the
 // bottom: some springs end the step pulling, some pushing.
-TEST(BodyContact, ReleasingTakesTheContactsShareOutOfTheAssembledStep) {
+TEST(BodyContact, TheActiveSetTakesContactsOutOfAndIntoTheAssembledStep) {
   const auto block = [](double x) {
     TetMesh cage = tetGrid(2, 2, 2, {0.2, 0.2, 0.2});
     cage.nodes.col(0).array() += x;
@@ -327,16 +328,24 @@ TEST(BodyContact, ReleasingTakesTheContactsShareOutOfTheAssembledStep) {
   const int found =
       integrator.assemble(body.models, 0, x, v, Eigen::VectorXd::Zero(x.size()), A, b);
   ASSERT_GT(found, 0);
+  Eigen::VectorXd probe(x.size()), coupledAtFirst = Eigen::VectorXd::Zero(x.size());
+  for (Index i = 0; i < probe.size(); ++i) probe[i] = std::sin(0.7 * static_cast<double>(i));
+  integrator.coupling()->product(probe.data(), coupledAtFirst.data());
+  const SparseMatrix firstA = A;
+  const Eigen::VectorXd firstB = b, firstSprings = integrator.stepSystem().springs;
   // (The solve of the step without the coupling, enough to say who pulls.)
   const Eigen::VectorXd dv = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(A).solve(b);
-  const int released = contact.releasePulling(v, dv, integrator.stepSystem());
+  const BodyContact::ActiveSetChange change =
+      contact.updateActiveSet(x, v, dv, integrator.stepSystem());
+  const int released = change.released;
+  ASSERT_EQ(change.taken, 0);
+  ASSERT_FALSE(change.reassemble);
   ASSERT_GT(released, 0);
   ASSERT_LT(released, found);
   const Eigen::VectorXd releasedB = b;
   const SparseMatrix releasedA = A;
   const Eigen::VectorXd springs = integrator.stepSystem().springs;
-  Eigen::VectorXd probe(x.size()), coupled = Eigen::VectorXd::Zero(x.size());
-  for (Index i = 0; i < probe.size(); ++i) probe[i] = std::sin(0.7 * static_cast<double>(i));
+  Eigen::VectorXd coupled = Eigen::VectorXd::Zero(x.size());
   integrator.coupling()->product(probe.data(), coupled.data());
 
   // Against the step assembled from scratch with the contacts kept.
@@ -355,6 +364,26 @@ TEST(BodyContact, ReleasingTakesTheContactsShareOutOfTheAssembledStep) {
   Eigen::VectorXd coupledAgain = Eigen::VectorXd::Zero(x.size());
   again.coupling()->product(probe.data(), coupledAgain.data());
   EXPECT_LE((coupled - coupledAgain).cwiseAbs().maxCoeff(), 1e-12 * coupled.cwiseAbs().maxCoeff());
+
+  // And back in: at the end velocity zero (dv = -v) every contact pushes,
+  // so those let go are taken in again (and no path crosses a skin), and
+  // the step is the first assembly's again.
+  const BodyContact::ActiveSetChange back =
+      contact.updateActiveSet(x, v, -v, integrator.stepSystem());
+  EXPECT_EQ(back.taken, released);
+  EXPECT_EQ(back.released, 0);
+  EXPECT_EQ(back.crossed, 0);
+  const Eigen::Map<const Eigen::VectorXd> backValues(A.valuePtr(), A.nonZeros()),
+      firstValues(firstA.valuePtr(), firstA.nonZeros());
+  EXPECT_LE((backValues - firstValues).cwiseAbs().maxCoeff(),
+            1e-12 * firstValues.cwiseAbs().maxCoeff());
+  EXPECT_LE((b - firstB).cwiseAbs().maxCoeff(), 1e-12 * firstB.cwiseAbs().maxCoeff());
+  EXPECT_LE((integrator.stepSystem().springs - firstSprings).cwiseAbs().maxCoeff(),
+            1e-12 * firstSprings.maxCoeff());
+  Eigen::VectorXd coupledBack = Eigen::VectorXd::Zero(x.size());
+  integrator.coupling()->product(probe.data(), coupledBack.data());
+  EXPECT_LE((coupledBack - coupledAtFirst).cwiseAbs().maxCoeff(),
+            1e-12 * coupledAtFirst.cwiseAbs().maxCoeff());
 }
 
 TEST(NodeNumbering, RoundTripsAndKeepsTheElements) {

@@ -25,6 +25,31 @@ std::vector<Aabb> triangleBoxes(const Points3& positions, const Triangles& trian
   return boxes;
 }
 
+// When a point moving from p0 to p1 over a step passes through the
+// triangle moving from corners `from` to `to` (each linearly) from the
+// side its counter-clockwise normal points to: the time (0 to 1) at which
+// its distance to the triangle's plane, signed and taken linearly between
+// the step's ends, is zero, where it lies within the triangle then
+// (edges included); 2 when it does not. (Exact continuous detection solves
+// a cubic for the coplanar times; over a step the skins turn little, and
+// this misses a crossing only where the turn is comparable to the motion.)
+double crossingTime(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                    const std::array<Eigen::Vector3d, 3>& from,
+                    const std::array<Eigen::Vector3d, 3>& to) {
+  const Eigen::Vector3d n0 = (from[1] - from[0]).cross(from[2] - from[0]).normalized();
+  const Eigen::Vector3d n1 = (to[1] - to[0]).cross(to[2] - to[0]).normalized();
+  const double s0 = n0.dot(p0 - from[0]), s1 = n1.dot(p1 - to[0]);
+  if (!(s0 > 0 && s1 < 0)) return 2;  // (NaN for a degenerate triangle: no crossing)
+  const double t = s0 / (s0 - s1);
+  const auto at = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return ((1 - t) * a + t * b).eval();
+  };
+  const Eigen::Vector3d w =
+      planeBarycentric(at(p0, p1), at(from[0], to[0]), at(from[1], to[1]), at(from[2], to[2]));
+  constexpr double kEdge = -1e-9;  // on an edge counts: the next triangle may round it out
+  return w.minCoeff() >= kEdge ? t : 2;
+}
+
 // Per body (numbers from 0 to the largest in `vertexBody`): whether its
 // skin meets itself, as `settings` say.
 std::vector<char> selfContactOfBodies(const std::vector<int>& vertexBody,
@@ -87,10 +112,84 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
         .push_back(static_cast<int>(t));
   for (const std::vector<int>& chosen : bodyTriangles_)
     trees_.emplace_back(triangleBoxes(restSkin_, triangles_, chosen));
+  // Each vertex to the first of its triangles (in its body's tree's
+  // numbering), which stands for it in forEachLeafNear.
+  std::vector<char> owned(static_cast<std::size_t>(restSkin_.rows()), 0);
+  for (const std::vector<int>& chosen : bodyTriangles_) {
+    std::vector<std::array<int, 3>>& owner = ownedVertices_.emplace_back(chosen.size());
+    for (std::size_t i = 0; i < chosen.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int vertex = triangles_(chosen[i], k);
+        owner[i][static_cast<std::size_t>(k)] =
+            owned[static_cast<std::size_t>(vertex)] ? -1 : vertex;
+        owned[static_cast<std::size_t>(vertex)] = 1;
+      }
+  }
+}
+
+bool BodyContact::mayMeet(Index v, int t, bool sameBody) const {
+  const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
+  if (a == v || b == v || c == v) return false;
+  if (!sameBody) return true;
+  const double neighbourhood = kNeighbourhood * thickness_;
+  return closestPointOnTriangle(restSkin_.row(v).transpose(), restSkin_.row(a).transpose(),
+                                restSkin_.row(b).transpose(), restSkin_.row(c).transpose())
+             .squaredDistance >= neighbourhood * neighbourhood;
+}
+
+std::vector<Aabb> BodyContact::bodyBoxes(const Points3& skin) const {
+  std::vector<Aabb> boxes(selfContact_.size());
+  for (Index v = 0; v < skin.rows(); ++v)
+    boxes[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])].extend(
+        skin.row(v).transpose().eval());
+  for (Aabb& box : boxes) box = box.inflated(thickness_);
+  return boxes;
+}
+
+std::optional<BodyContact::Contact> BodyContact::contactWith(
+    const Points3& skin, const Eigen::VectorXd& x, Index v, int triangle,
+    const ClosestPointOnTriangle& closest) const {
+  const double d = std::sqrt(closest.squaredDistance);
+  Contact c;
+  c.vertex = static_cast<int>(v);
+  c.triangle = triangle;
+  const Eigen::Vector3d a = skin.row(triangles_(triangle, 0)).transpose();
+  const Eigen::Vector3d b = skin.row(triangles_(triangle, 1)).transpose();
+  const Eigen::Vector3d e = skin.row(triangles_(triangle, 2)).transpose();
+  const Eigen::Vector3d face = (b - a).cross(e - a).normalized();  // outward
+  const Eigen::Vector3d away = skin.row(v).transpose() - closest.point;
+  // Outside the triangle's skin the vertex is pushed away from it, inside
+  // (it went through) back out: the distance is signed by the face's
+  // side, so that a vertex that has passed a triangle is not pushed on.
+  // Behind means clearly behind, within 60 degrees of the face's inward
+  // normal: beside an edge or a corner, p - q lies in the face's plane,
+  // and its sign there is rounding's. (A vertex on the triangle itself
+  // is pushed along the face's normal.)
+  const double side = away.dot(face) < -0.5 * d ? -1.0 : 1.0;
+  c.normal = d > 1e-12 * thickness_ ? Eigen::Vector3d(side * away / d) : face;
+  c.gap = thickness_ - side * d;
+  if (!c.normal.allFinite()) return std::nullopt;  // a degenerate triangle touched at a point
+  // The nodes of p - q with their weights, each node once.
+  const auto addNode = [&](Index node, double weight) {
+    for (int j = 0; j < c.count; ++j)
+      if (c.entries[static_cast<std::size_t>(j)].node == node) {
+        c.entries[static_cast<std::size_t>(j)].weight += weight;
+        return;
+      }
+    c.entries[static_cast<std::size_t>(c.count++)] = {node, weight};
+  };
+  for (int j = 0; j < controlsPerVertex_; ++j) addNode(controls_(v, j), weights_(v, j));
+  for (int k = 0; k < 3; ++k) {
+    const int corner = triangles_(triangle, k);
+    for (int j = 0; j < controlsPerVertex_; ++j)
+      addNode(controls_(corner, j), -closest.barycentric[k] * weights_(corner, j));
+  }
+  c.start = c.along(x);
+  return c;
 }
 
 void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& out,
-                               std::vector<AabbTree>& trees) const {
+                               std::vector<AabbTree>& trees, Points3* skinOut) const {
   out.clear();
   const Eigen::Map<const Points3> control(x.data(), x.size() / 3, 3);
   Points3 skin;
@@ -99,47 +198,55 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
     for (std::size_t b = range.begin(); b != range.end(); ++b)
       trees[b].refit(triangleBoxes(skin, triangles_, bodyTriangles_[b]));
   });
+  // Each body's skin's box, grown by the thickness: a vertex of a body that
+  // does not meet itself and lies in no other body's box has nothing to
+  // meet (bodies apart cost a box test per vertex, not a tree search).
+  const std::vector<Aabb> boxes = bodyBoxes(skin);
+  // The vertices that may lie within the thickness of another body's skin:
+  // those of the leaves of their body's tree near another body's tree (a
+  // body at a time, so that each writes only its own vertices). The rest
+  // are not searched: in a pile, most of a body's vertices lie in another
+  // body's box, but far from its skin.
+  std::vector<char> nearOther(static_cast<std::size_t>(skin.rows()), 0);
+  parallelFor<std::size_t>(0, trees.size(), 1, [&](const IndexRange<std::size_t>& range) {
+    for (std::size_t b = range.begin(); b != range.end(); ++b)
+      for (std::size_t other = 0; other < trees.size(); ++other) {
+        if (other == b || !boxes[other].overlaps(trees[b].bounds().inflated(thickness_))) continue;
+        trees[b].forEachLeafNear(trees[other], thickness_, [&](std::span<const int> ids) {
+          for (int i : ids)
+            for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
+              if (vertex >= 0) nearOther[static_cast<std::size_t>(vertex)] = 1;
+        });
+      }
+  });
   // Per vertex its closest triangle within the thickness, in parallel,
   // each in its own slot: the contacts come out in vertex order on any
-  // number of threads.
+  // number of threads. Nearest boxes first, the reach shrinking to the
+  // closest triangle found over every tree the vertex searches (branch and
+  // bound).
   struct Hit {
     int triangle = -1;
     ClosestPointOnTriangle closest;
   };
   std::vector<Hit> hits(static_cast<std::size_t>(skin.rows()));
-  const double reach2 = thickness_ * thickness_;
-  const double neighbourhood2 = kNeighbourhood * kNeighbourhood * reach2;
-  // Each body's skin's box, grown by the thickness: a vertex of a body that
-  // does not meet itself and lies in no other body's box has nothing to
-  // meet (bodies apart cost a box test per vertex, not a tree search).
-  std::vector<Aabb> bodyBoxes(selfContact_.size());
-  for (Index v = 0; v < skin.rows(); ++v)
-    bodyBoxes[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])].extend(
-        skin.row(v).transpose().eval());
-  for (Aabb& box : bodyBoxes) box = box.inflated(thickness_);
   parallelFor<Index>(0, skin.rows(), 256, [&](const IndexRange<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
-      const Eigen::Vector3d p = skin.row(v).transpose();
       const int body = body_[static_cast<std::size_t>(v)];
-      const Aabb query{p.array() - thickness_, p.array() + thickness_};
+      if (!nearOther[static_cast<std::size_t>(v)] && !selfContact_[static_cast<std::size_t>(body)])
+        continue;
+      const Eigen::Vector3d p = skin.row(v).transpose();
       Hit& hit = hits[static_cast<std::size_t>(v)];
-      double best = reach2;
+      double best = thickness_ * thickness_;
       for (std::size_t other = 0; other < trees.size(); ++other) {
         const bool sameBody = static_cast<int>(other) == body;
-        if (sameBody ? !selfContact_[other] : !bodyBoxes[other].contains(p)) continue;
+        if (sameBody ? !selfContact_[other] : !boxes[other].contains(p)) continue;
         const std::vector<int>& chosen = bodyTriangles_[other];
-        trees[other].forEachOverlap(query, [&](int i) {
+        trees[other].forEachNear(p, best, [&](int i, double&) {
           const int t = chosen[static_cast<std::size_t>(i)];
-          const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
-          if (a == v || b == v || c == v) return;
           const ClosestPointOnTriangle closest = closestPointOnTriangle(
-              p, skin.row(a).transpose(), skin.row(b).transpose(), skin.row(c).transpose());
-          if (closest.squaredDistance >= best) return;
-          if (sameBody &&
-              closestPointOnTriangle(restSkin_.row(v).transpose(), restSkin_.row(a).transpose(),
-                                     restSkin_.row(b).transpose(), restSkin_.row(c).transpose())
-                      .squaredDistance < neighbourhood2)
-            return;  // its own neighbourhood
+              p, skin.row(triangles_(t, 0)).transpose(), skin.row(triangles_(t, 1)).transpose(),
+              skin.row(triangles_(t, 2)).transpose());
+          if (closest.squaredDistance >= best || !mayMeet(v, t, sameBody)) return;
           best = closest.squaredDistance;
           hit.triangle = t;
           hit.closest = closest;
@@ -150,128 +257,223 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
   for (Index v = 0; v < skin.rows(); ++v) {
     const Hit& hit = hits[static_cast<std::size_t>(v)];
     if (hit.triangle < 0) continue;
-    const double d = std::sqrt(hit.closest.squaredDistance);
-    Contact c;
-    c.vertex = static_cast<int>(v);
-    c.triangle = hit.triangle;
-    const Eigen::Vector3d a = skin.row(triangles_(hit.triangle, 0)).transpose();
-    const Eigen::Vector3d b = skin.row(triangles_(hit.triangle, 1)).transpose();
-    const Eigen::Vector3d e = skin.row(triangles_(hit.triangle, 2)).transpose();
-    const Eigen::Vector3d face = (b - a).cross(e - a).normalized();  // outward
-    const Eigen::Vector3d away = skin.row(v).transpose() - hit.closest.point;
-    // Outside the triangle's skin the vertex is pushed away from it, inside
-    // (it went through) back out: the distance is signed by the face's
-    // side, so that a vertex that has passed a triangle is not pushed on.
-    // Behind means clearly behind, within 60 degrees of the face's inward
-    // normal: beside an edge or a corner, p - q lies in the face's plane,
-    // and its sign there is rounding's. (A vertex on the triangle itself
-    // is pushed along the face's normal.)
-    const double side = away.dot(face) < -0.5 * d ? -1.0 : 1.0;
-    c.normal = d > 1e-12 * thickness_ ? Eigen::Vector3d(side * away / d) : face;
-    c.gap = thickness_ - side * d;
-    if (!c.normal.allFinite()) continue;  // a degenerate triangle touched at a point
-    // The nodes of p - q with their weights, each node once.
-    const auto addNode = [&](Index node, double weight) {
-      for (int j = 0; j < c.count; ++j)
-        if (c.entries[static_cast<std::size_t>(j)].node == node) {
-          c.entries[static_cast<std::size_t>(j)].weight += weight;
-          return;
-        }
-      c.entries[static_cast<std::size_t>(c.count++)] = {node, weight};
-    };
-    for (int j = 0; j < controlsPerVertex_; ++j) addNode(controls_(v, j), weights_(v, j));
-    for (int k = 0; k < 3; ++k) {
-      const int corner = triangles_(hit.triangle, k);
-      for (int j = 0; j < controlsPerVertex_; ++j)
-        addNode(controls_(corner, j), -hit.closest.barycentric[k] * weights_(corner, j));
-    }
-    c.start = c.along(x);
-    out.push_back(c);
+    if (const std::optional<Contact> c = contactWith(skin, x, v, hit.triangle, hit.closest))
+      out.push_back(*c);
   }
+  if (skinOut) *skinOut = std::move(skin);
+}
+
+int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& end) {
+  const Eigen::Map<const Points3> control(end.data(), end.size() / 3, 3);
+  Points3 skinEnd;
+  skin_->deformPositions(control, skinEnd);
+  // The trees over each triangle's box at the start and at the end.
+  if (sweptTrees_.size() != trees_.size()) sweptTrees_ = trees_;
+  parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
+    for (std::size_t b = range.begin(); b != range.end(); ++b) {
+      std::vector<Aabb> boxes = triangleBoxes(stepSkin_, triangles_, bodyTriangles_[b]);
+      const std::vector<Aabb> atEnd = triangleBoxes(skinEnd, triangles_, bodyTriangles_[b]);
+      for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i].extend(atEnd[i]);
+      sweptTrees_[b].refit(boxes);
+    }
+  });
+  std::vector<Aabb> boxes = bodyBoxes(stepSkin_);
+  const std::vector<Aabb> boxesAtEnd = bodyBoxes(skinEnd);
+  for (std::size_t b = 0; b < boxes.size(); ++b) boxes[b].extend(boxesAtEnd[b]);
+  // The vertices whose paths may cross another body's skin: those of the
+  // leaves of their body's swept tree that overlap another's swept
+  // triangles (each triangle's box over the step holds it throughout, and
+  // a vertex's path lies in its triangles' boxes).
+  std::vector<char> mayCross(static_cast<std::size_t>(stepSkin_.rows()), 0);
+  parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
+    for (std::size_t b = range.begin(); b != range.end(); ++b)
+      for (std::size_t other = 0; other < trees_.size(); ++other) {
+        if (other == b || !boxes[other].overlaps(sweptTrees_[b].bounds())) continue;
+        sweptTrees_[b].forEachLeafNear(sweptTrees_[other], 0, [&](std::span<const int> ids) {
+          for (int i : ids)
+            for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
+              if (vertex >= 0) mayCross[static_cast<std::size_t>(vertex)] = 1;
+        });
+      }
+  });
+  std::vector<char> hasContact(static_cast<std::size_t>(stepSkin_.rows()), 0);
+  for (const Contact& c : contacts_) hasContact[static_cast<std::size_t>(c.vertex)] = 1;
+  // Per vertex without a contact, the triangle its path crosses first.
+  std::vector<int> crossed(static_cast<std::size_t>(stepSkin_.rows()), -1);
+  const auto corner = [&](const Points3& skin, int t, int k) {
+    return skin.row(triangles_(t, k)).transpose();
+  };
+  parallelFor<Index>(0, stepSkin_.rows(), 256, [&](const IndexRange<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const int body = body_[static_cast<std::size_t>(v)];
+      // (A vertex with a contact in the step is its contact's.)
+      if (hasContact[static_cast<std::size_t>(v)] ||
+          (!mayCross[static_cast<std::size_t>(v)] && !selfContact_[static_cast<std::size_t>(body)]))
+        continue;
+      const Eigen::Vector3d p0 = stepSkin_.row(v).transpose(), p1 = skinEnd.row(v).transpose();
+      const Aabb path{p0.cwiseMin(p1), p0.cwiseMax(p1)};
+      double first = 2;  // the crossing's time in the step, from 0 to 1
+      for (std::size_t other = 0; other < trees_.size(); ++other) {
+        const bool sameBody = static_cast<int>(other) == body;
+        if (sameBody ? !selfContact_[other] : !boxes[other].overlaps(path)) continue;
+        const std::vector<int>& chosen = bodyTriangles_[other];
+        sweptTrees_[other].forEachOverlap(path, [&](int i) {
+          const int t = chosen[static_cast<std::size_t>(i)];
+          const double when = crossingTime(
+              p0, p1, {corner(stepSkin_, t, 0), corner(stepSkin_, t, 1), corner(stepSkin_, t, 2)},
+              {corner(skinEnd, t, 0), corner(skinEnd, t, 1), corner(skinEnd, t, 2)});
+          if (when >= first || !mayMeet(v, t, sameBody)) return;
+          first = when;
+          crossed[static_cast<std::size_t>(v)] = t;
+        });
+      }
+    }
+  });
+  // Each a contact as of the step's start (outside its triangle, perhaps
+  // farther than the shell: a gap below zero), out of the step for
+  // updateActiveSet to take in.
+  int added = 0;
+  for (Index v = 0; v < stepSkin_.rows(); ++v) {
+    const int t = crossed[static_cast<std::size_t>(v)];
+    if (t < 0) continue;
+    const ClosestPointOnTriangle closest =
+        closestPointOnTriangle(stepSkin_.row(v).transpose(), corner(stepSkin_, t, 0),
+                               corner(stepSkin_, t, 1), corner(stepSkin_, t, 2));
+    std::optional<Contact> c = contactWith(stepSkin_, x, v, t, closest);
+    if (!c) continue;
+    c->active = false;
+    contacts_.push_back(*c);
+    ++added;
+  }
+  return added;
 }
 
 int BodyContact::addForce(const StepState& at, StepSystem& system) {
   h_ = at.h;
-  // (After releasePulling, the same step again with the contacts kept.)
-  if (!keepContacts_) findContacts(at.x, contacts_, trees_);
-  keepContacts_ = false;
-  const double h = at.h, k = stiffness_;
-  for (const Contact& c : contacts_) {
-    const double spring = k * (c.gap - h * c.along(at.v));
-    for (int j = 0; j < c.count; ++j) {
-      const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
-      const Eigen::Vector3d g = e.weight * c.normal;
-      system.force.segment<3>(3 * e.node) += spring * g;
-      for (int a = 0; a < 3; ++a) system.addSpring(3 * e.node + a, h * h * k * g[a] * g[a]);
-    }
+  // (After updateActiveSet, the same step again with the contacts kept.)
+  if (!keepContacts_) {
+    findContacts(at.x, contacts_, trees_, &stepSkin_);
+    // A vertex whose contact ended the last step pulling starts this one
+    // out of it: a pair parting over several steps is not taken in and
+    // let go again on every step (updateActiveSet checks both ways).
+    if (!letGo_.empty())
+      for (Contact& c : contacts_) c.active = !letGo_[static_cast<std::size_t>(c.vertex)];
   }
-  return static_cast<int>(contacts_.size());
+  keepContacts_ = false;
+  int active = 0;
+  for (const Contact& c : contacts_)
+    if (c.active) {
+      ++active;
+      addShare(c, at.v, 1.0, system, false);
+    }
+  return active;
 }
 
-int BodyContact::releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv,
-                                StepSystem& system) {
+void BodyContact::addShare(const Contact& c, const Eigen::VectorXd& v, double sign,
+                           StepSystem& system, bool intoSystem) const {
+  // addForce puts in the force and the springs' diagonal, which the
+  // assembly adds to A and (times h) to b; an assembled step (intoSystem)
+  // takes b and A's blocks directly.
+  const double h = h_, k = stiffness_, h2k = h * h * k;
+  const double spring = sign * k * (c.gap - h * c.along(v));
+  for (int j = 0; j < c.count; ++j) {
+    const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
+    const Eigen::Vector3d g = e.weight * c.normal;
+    if (!intoSystem) {
+      system.force.segment<3>(3 * e.node) += spring * g;
+      for (int a = 0; a < 3; ++a) system.addSpring(3 * e.node + a, sign * h2k * g[a] * g[a]);
+      continue;
+    }
+    system.b->segment<3>(3 * e.node) += h * spring * g;
+    for (int a = 0; a < 3; ++a) {
+      const Index row = 3 * e.node + a;
+      system.springsSized()[row] += sign * h2k * g[a] * g[a];
+      for (int col = 0; col < 3; ++col)
+        system.A->coeffRef(row, 3 * e.node + col) += sign * h2k * g[a] * g[col];
+    }
+  }
+}
+
+BodyContact::ActiveSetChange BodyContact::updateActiveSet(const Eigen::VectorXd& x,
+                                                          const Eigen::VectorXd& v,
+                                                          const Eigen::VectorXd& dv,
+                                                          StepSystem& system) {
+  // Vertices whose path over the solved step crosses a skin become
+  // contacts, out of the step: those that would end it pushing come in.
+  ActiveSetChange result;
+  result.crossed = addCrossings(x, x + h_ * (v + dv));
   const Eigen::VectorXd end = v + dv;
-  std::vector<char> kept(contacts_.size(), 1);
-  int released = 0;
-  bool held = false;
+  // Per contact: 1 let go (in, pulling at the solved end), 2 taken in
+  // (out, pushing there), 0 as it is.
+  std::vector<char> change(contacts_.size(), 0);
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const Contact& c = contacts_[k];
-    if (c.gap - h_ * c.along(end) >= 0) continue;
-    kept[k] = 0;
-    ++released;
+    const double spring = c.gap - h_ * c.along(end);
+    if (c.active ? spring >= 0 : spring <= 0) continue;
+    change[k] = c.active ? 1 : 2;
+    ++(c.active ? result.released : result.taken);
     for (int j = 0; j < c.count; ++j)
-      held = held || constraints_.isFixed(c.entries[static_cast<std::size_t>(j)].node);
+      result.reassemble =
+          result.reassemble || constraints_.isFixed(c.entries[static_cast<std::size_t>(j)].node);
   }
-  if (released == 0) return 0;
-  if (!held) {
-    // Its force (b = h f) and its blocks out, as addForce and addMatrix
-    // put them in (the nodes free: their rows are as assembled). (The
-    // step's `diagonal` was spent on A when it was assembled.)
-    const double h = h_, k = stiffness_, h2k = h * h * k;
-    Eigen::VectorXd& b = *system.b;
-    for (std::size_t i = 0; i < contacts_.size(); ++i) {
-      if (kept[i]) continue;
-      const Contact& c = contacts_[i];
-      const double spring = k * (c.gap - h * c.along(v));
-      for (int j = 0; j < c.count; ++j) {
-        const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
-        const Eigen::Vector3d g = e.weight * c.normal;
-        b.segment<3>(3 * e.node) -= h * spring * g;
-        for (int a = 0; a < 3; ++a) {
-          const Index row = 3 * e.node + a;
-          system.springs[row] -= h2k * g[a] * g[a];
-          for (int col = 0; col < 3; ++col)
-            system.A->coeffRef(row, 3 * e.node + col) -= h2k * g[a] * g[col];
-        }
-      }
+  if (result.released + result.taken == 0) return result;
+  for (std::size_t k = 0; k < contacts_.size(); ++k)
+    if (change[k]) contacts_[k].active = change[k] == 2;
+  if (result.reassemble) {
+    // A held node's rows were rewritten by the constraints: the step is
+    // assembled again, its next addForce taking the contacts as they are.
+    keepContacts_ = true;
+    return result;
+  }
+  // Out: their share taken from b, A's blocks and the springs' diagonal
+  // (the nodes free: their rows are as assembled), and their coupling
+  // springs dropped; in: the same added, and a coupling spring each.
+  std::vector<char> kept(system.coupling.size(), 1);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    Contact& c = contacts_[k];
+    if (change[k] == 1) {
+      addShare(c, v, -1.0, system, true);
+      kept[static_cast<std::size_t>(c.spring)] = 0;
+      c.spring = -1;
+    } else if (change[k] == 2) {
+      addShare(c, v, 1.0, system, true);
     }
-    std::vector<char> springs(system.coupling.size(), 1);
-    std::copy(kept.begin(), kept.end(),
-              springs.begin() + static_cast<std::ptrdiff_t>(firstSpring_));
-    system.coupling.keep(springs);
   }
-  std::size_t at = 0;
-  std::erase_if(contacts_, [&](const Contact&) { return !kept[at++]; });
-  keepContacts_ = held;
-  return held ? -released : released;
+  if (result.released > 0) {
+    // (keep() numbers the springs kept anew, in their order.)
+    std::vector<int> renumbered(kept.size(), -1);
+    int next = 0;
+    for (std::size_t s = 0; s < kept.size(); ++s)
+      if (kept[s]) renumbered[s] = next++;
+    system.coupling.keep(kept);
+    for (Contact& c : contacts_)
+      if (c.spring >= 0) c.spring = renumbered[static_cast<std::size_t>(c.spring)];
+  }
+  const double h2k = h_ * h_ * stiffness_;
+  for (std::size_t k = 0; k < contacts_.size(); ++k)
+    if (change[k] == 2) addSpring(contacts_[k], h2k, system, false);  // (A's blocks: above)
+  return result;
+}
+
+void BodyContact::addSpring(Contact& c, double h2k, StepSystem& system, bool ownBlocks) {
+  // Each node's own block (its diagonal went with the springs) to A, the
+  // blocks between nodes to the coupling springs.
+  for (int j = 0; ownBlocks && j < c.count; ++j) {
+    const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
+    const Eigen::Vector3d g = e.weight * c.normal;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (a != b) system.A->coeffRef(3 * e.node + a, 3 * e.node + b) += h2k * g[a] * g[b];
+  }
+  c.spring = static_cast<int>(system.coupling.size());
+  system.coupling.add(h2k, c.normal,
+                      std::span(c.entries.data(), static_cast<std::size_t>(c.count)));
 }
 
 void BodyContact::addMatrix(const StepState& at, StepSystem& system) {
-  // Each node's own block (its diagonal went with the springs) to A, the
-  // blocks between nodes to the coupling springs.
   const double h2k = at.h * at.h * stiffness_;
-  firstSpring_ = system.coupling.size();
-  for (const Contact& c : contacts_) {
-    for (int j = 0; j < c.count; ++j) {
-      const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];
-      const Eigen::Vector3d g = e.weight * c.normal;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          if (a != b) system.A->coeffRef(3 * e.node + a, 3 * e.node + b) += h2k * g[a] * g[b];
-    }
-    system.coupling.add(h2k, c.normal,
-                        std::span(c.entries.data(), static_cast<std::size_t>(c.count)));
-  }
+  for (Contact& c : contacts_)
+    if (c.active) addSpring(c, h2k, system, true);
 }
 
 void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
@@ -280,9 +482,13 @@ void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
   // stiff springs between the bodies took that up as energy, and a bunny
   // dropped onto another went into it and through the floor.)
   frictionForces_.clear();
+  letGo_.assign(static_cast<std::size_t>(controls_.rows()), 0);
   for (const Contact& c : contacts_) {
     // The spring at the step's end, as the step linearized it.
-    const double normalForce = stiffness_ * std::max(0.0, c.gap - (c.along(x) - c.start));
+    const double end = c.gap - (c.along(x) - c.start);
+    if (end < 0) letGo_[static_cast<std::size_t>(c.vertex)] = 1;
+    if (!c.active) continue;
+    const double normalForce = stiffness_ * std::max(0.0, end);
     if (normalForce == 0) continue;
     Eigen::Vector3d relative = Eigen::Vector3d::Zero();
     double inverseMass = 0;
@@ -314,7 +520,7 @@ void BodyContact::addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd&,
                              Eigen::VectorXd& force) const {
   std::vector<Contact> contacts;
   std::vector<AabbTree> trees = trees_;
-  findContacts(x, contacts, trees);
+  findContacts(x, contacts, trees, nullptr);
   for (const Contact& c : contacts)
     for (int j = 0; j < c.count; ++j) {
       const CouplingSprings::Entry& e = c.entries[static_cast<std::size_t>(j)];

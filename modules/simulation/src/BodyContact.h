@@ -20,10 +20,20 @@
 // rest as coupling springs (CouplingSprings.h: the nodes of two bodies
 // share no element, so the pattern has no place for them), and
 // u k (thickness - d - h u.v) to the force. A penalty spring pushes, it
-// never pulls: a contact whose spring ends the solved step pulling (the
-// pair parting faster than the shell lets go) leaves the step, which is
-// solved again without it (releasePulling; an active set, as for
-// one-sided constraints).
+// never pulls: the contacts are an active set (as for one-sided
+// constraints). After the solve, one whose spring would end the step
+// pulling (the pair parting faster than the shell lets go) leaves the
+// step, one out of it whose spring would end it pushing comes in, and the
+// step is solved again (updateActiveSet). A contact that ended a step
+// pulling starts the next one out of it.
+//
+// Continuous detection: a vertex that closes on a skin faster than the
+// shell per step can pass from outside the shell to behind it in one
+// step, where no search within the shell finds it. So after the solve,
+// each vertex without a contact whose path over the step (start to solved
+// end, the skins moving linearly) crosses a triangle from outside becomes
+// a contact, as of the step's start (its gap below zero when it started
+// farther than the shell), and joins the active set.
 //
 // Coulomb friction after the solve, per contact in turn: the tangential
 // part of the relative velocity sum_j a_j v_j changes by at most
@@ -37,14 +47,17 @@
 // when self-contact is on and the two lie farther apart in the rest shape
 // than kNeighbourhood thicknesses (the vertex's own neighbourhood never
 // touches it). Candidates come from a bounding-box tree per body over its
-// skin's triangles, built at rest and refitted each step: a vertex
-// searches the trees of the bodies whose boxes it lies in, its own only
-// with self-contact (one tree of every skin had each vertex visit the
-// hundred-odd triangles of its own skin around it, to skip them: 64% of
-// a step of three piled bunnies); it takes its closest triangle only.
+// skin's triangles, built at rest and refitted each step. A body's tree
+// against another's first (AabbTree::forEachLeafNear) picks the vertices
+// that may lie within the shell of that body: in a pile most of a body's
+// vertices lie in another body's box, but far from its skin (7,700 of
+// 96,000 on three piled bunnies). Each of those searches the trees of the
+// bodies whose boxes it lies in, its own only with self-contact, nearest
+// boxes first (branch and bound), and takes its closest triangle only.
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ForceModel.h"
@@ -53,6 +66,7 @@
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
 #include "tetskin/spatial/AabbTree.h"
+#include "tetskin/spatial/TriangleDistance.h"
 
 namespace tetskin {
 
@@ -79,15 +93,27 @@ class BodyContact : public ForceModel {
   void addForceAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                   Eigen::VectorXd& force) const override;
   bool isContact() const override { return true; }
-  // After the step's solve (its velocity change dv from v): drops the
-  // contacts whose spring would end the step pulling and takes their share
-  // out of the step's `system` as assembled and constrained (b, A's
-  // blocks, the springs' diagonal, the coupling springs), for the same
-  // step solved again without them; returns how many. Where one of them
-  // touches a held node (whose rows the constraints rewrote) it leaves the
-  // system as it is and returns minus the count: the step is assembled
-  // again, its next addForce taking the contacts left as they are.
-  int releasePulling(const Eigen::VectorXd& v, const Eigen::VectorXd& dv, StepSystem& system);
+  // After the step's solve (its velocity change dv from v, the step
+  // starting at control positions x), the contacts as an active set: the
+  // vertices whose path crosses a skin become contacts out of the step
+  // (addCrossings), those in the step whose spring would end it pulling
+  // leave it, and those out of it (let go in an earlier round, or at the
+  // end of the last step, or just found crossing) whose spring would end
+  // it pushing come in. Their
+  // share goes out of or into the step's `system` as assembled and
+  // constrained (b, A's blocks, the springs' diagonal, the coupling
+  // springs), for the same step solved again. Where one of them touches a
+  // held node (whose rows the constraints rewrote) it leaves the system as
+  // it is and says `reassemble`: the step is assembled again, its next
+  // addForce taking the contacts as they are.
+  struct ActiveSetChange {
+    int crossed = 0;  // contacts added where a vertex's path crossed a skin
+    int released = 0, taken = 0;
+    bool reassemble = false;
+    bool any() const { return released + taken > 0; }
+  };
+  ActiveSetChange updateActiveSet(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                  const Eigen::VectorXd& dv, StepSystem& system);
   // The next addForce takes the contacts as they are (the same step
   // assembled again) instead of searching.
   void keepNextStep() { keepContacts_ = true; }
@@ -96,6 +122,7 @@ class BodyContact : public ForceModel {
     keepContacts_ = false;
     contacts_.clear();
     frictionForces_.clear();
+    letGo_.clear();
   }
 
   // The springs' stiffness by default (N/m per skin vertex): the bound
@@ -117,21 +144,47 @@ class BodyContact : public ForceModel {
 
  private:
   static constexpr double kInertiaFactor = 1000;  // automaticStiffness'
-  static constexpr int kMaxNodes = 16;           // a vertex's four and three corners' four
+  static constexpr int kMaxNodes = 16;            // a vertex's four and three corners' four
   struct Contact {
     int vertex, triangle;
     double gap;              // thickness - d at the step's start (> 0)
     Eigen::Vector3d normal;  // n
     std::array<CouplingSprings::Entry, kMaxNodes> entries;  // (node, a_j), nodes distinct
     int count = 0;
-    double start = 0;  // u.x at the step's start
+    double start = 0;    // u.x at the step's start
+    bool active = true;  // in the step (updateActiveSet)
+    int spring = -1;     // its coupling spring while in the step
 
     double along(const Eigen::VectorXd& values) const;
   };
   // The contacts at x; `refit` the step's trees (a query at another state
   // refits copies of its own).
+  // (And the skin at x, for the step's crossings.)
   void findContacts(const Eigen::VectorXd& x, std::vector<Contact>& out,
-                    std::vector<AabbTree>& trees) const;
+                    std::vector<AabbTree>& trees, Points3* skin) const;
+  // The contact of vertex v with `triangle` (its closest point `closest`)
+  // on the skin at `skin` (placed by control positions x); none for a
+  // degenerate triangle touched at a point.
+  std::optional<Contact> contactWith(const Points3& skin, const Eigen::VectorXd& x, Index v,
+                                     int triangle, const ClosestPointOnTriangle& closest) const;
+  // Whether vertex v may meet triangle t (of its own body: sameBody): not
+  // one of its own triangles, nor, on its own body, its neighbourhood.
+  bool mayMeet(Index v, int t, bool sameBody) const;
+  // Each body's box on the skin at `skin`, grown by the thickness.
+  std::vector<Aabb> bodyBoxes(const Points3& skin) const;
+  // Contacts, out of the step, for the vertices without one whose path
+  // from the step's start to control positions `end` crosses a skin
+  // (continuous detection, as of the start's skin); returns how many.
+  int addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& end);
+
+  // Its share of the step: force and springs' diagonal as addForce puts
+  // them, or (intoSystem) b and A's blocks of the assembled step; sign -1
+  // takes it out.
+  void addShare(const Contact& c, const Eigen::VectorXd& v, double sign, StepSystem& system,
+                bool intoSystem) const;
+  // Its coupling spring (numbered in c.spring), and with ownBlocks each
+  // node's off-diagonal own block to A.
+  void addSpring(Contact& c, double h2k, StepSystem& system, bool ownBlocks);
 
   std::unique_ptr<SurfaceDeformer> skin_;
   Triangles triangles_;
@@ -147,9 +200,15 @@ class BodyContact : public ForceModel {
   double thickness_, stiffness_, staticFriction_, kineticFriction_;
   std::vector<std::vector<int>> bodyTriangles_;  // per body: its triangles
   std::vector<AabbTree> trees_;  // per body: over bodyTriangles_, refitted each step
+  // Per body, per triangle of its tree: the vertices it stands for (-1:
+  // none), each vertex once.
+  std::vector<std::vector<std::array<int, 3>>> ownedVertices_;
   double h_ = 0;
-  std::vector<Contact> contacts_;  // of the step being taken
-  std::size_t firstSpring_ = 0;    // contacts_[k]'s coupling spring: firstSpring_ + k
+  std::vector<Contact> contacts_;     // of the step being taken, in it or not
+  Points3 stepSkin_;                  // the skin at the step's start
+  std::vector<AabbTree> sweptTrees_;  // per body: each triangle's box over the step
+  // Per skin vertex: its contact ended the last step pulling (project).
+  mutable std::vector<char> letGo_;
   // The last step's friction, m_j dv_j / h, on the nodes it acted on.
   mutable std::vector<std::pair<Index, Eigen::Vector3d>> frictionForces_;
 };

@@ -56,12 +56,16 @@ struct StepSystem {
 
   // Adds a spring's h^2 k at `dof` to the diagonal and to `springs`.
   void addSpring(Index dof, double value) {
+    diagonal[dof] += value;
+    springsSized()[dof] += value;
+  }
+  // `springs`, sized (zero) on first use.
+  Eigen::VectorXd& springsSized() {
     if (!hasSprings) {
       springs.setZero(diagonal.size());
       hasSprings = true;
     }
-    diagonal[dof] += value;
-    springs[dof] += value;
+    return springs;
   }
 };
 
