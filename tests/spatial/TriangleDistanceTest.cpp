@@ -59,5 +59,24 @@ TEST(TriangleDistance, PlaneBarycentricIsUnclamped) {
   EXPECT_TRUE(bc.isApprox(Eigen::Vector3d(-1, 2, 0)));
 }
 
+// The feature a closest point lies on, from the exact zeros of its
+// barycentric coordinates: above the face, beside the edge opposite a
+// corner, and out past a corner.
+TEST(TriangleDistance, TheClosestFeatureIsTheFaceAnEdgeOrACorner) {
+  const Eigen::Vector3d centre = (A + B + C) / 3;
+  const TriangleFeature face = closestFeature(
+      closestPointOnTriangle(centre + Eigen::Vector3d(0, 0, 1), A, B, C).barycentric);
+  EXPECT_EQ(face.kind, TriangleFeature::Face);
+  const Eigen::Vector3d beyondBC = 0.5 * (B + C) + 2 * (0.5 * (B + C) - A);  // past edge B-C
+  const TriangleFeature edge =
+      closestFeature(closestPointOnTriangle(beyondBC, A, B, C).barycentric);
+  EXPECT_EQ(edge.kind, TriangleFeature::Edge);
+  EXPECT_EQ(edge.corner, 0);  // the edge opposite A
+  const Eigen::Vector3d pastB = B + 3 * (B - centre);
+  const TriangleFeature corner = closestFeature(closestPointOnTriangle(pastB, A, B, C).barycentric);
+  EXPECT_EQ(corner.kind, TriangleFeature::Corner);
+  EXPECT_EQ(corner.corner, 1);
+}
+
 }  // namespace
 }  // namespace tetskin

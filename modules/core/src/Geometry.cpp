@@ -65,6 +65,12 @@ Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& 
   return n / length;
 }
 
+double triangleAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  // atan2 of |u x v| and u . v: accurate near 0 and 180 degrees.
+  const Eigen::Vector3d u = b - a, v = c - a;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
 Index nearestPoint(const Points3& points, const Eigen::Vector3d& query) {
   Index best = -1;
   double bestDistance = std::numeric_limits<double>::infinity();

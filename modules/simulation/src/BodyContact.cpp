@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "tetskin/core/Geometry.h"
 #include "tetskin/core/Parallel.h"
 #include "tetskin/spatial/TriangleDistance.h"
 
@@ -112,6 +114,28 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
         .push_back(static_cast<int>(t));
   for (const std::vector<int>& chosen : bodyTriangles_)
     trees_.emplace_back(triangleBoxes(restSkin_, triangles_, chosen));
+  // Across each triangle's edges and around each vertex: the neighbours a
+  // pseudo-normal takes.
+  neighbours_ = Triangles::Constant(triangles_.rows(), 3, -1);
+  std::map<std::pair<int, int>, int> edges;  // (a, b) as a triangle runs it: that triangle
+  vertexTriangleStarts_.assign(static_cast<std::size_t>(restSkin_.rows()) + 1, 0);
+  for (Index t = 0; t < triangles_.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      edges[{triangles_(t, (k + 1) % 3), triangles_(t, (k + 2) % 3)}] = static_cast<int>(t);
+      ++vertexTriangleStarts_[static_cast<std::size_t>(triangles_(t, k)) + 1];
+    }
+  for (Index t = 0; t < triangles_.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto across = edges.find({triangles_(t, (k + 2) % 3), triangles_(t, (k + 1) % 3)});
+      if (across != edges.end()) neighbours_(t, k) = across->second;
+    }
+  for (std::size_t v = 1; v < vertexTriangleStarts_.size(); ++v)
+    vertexTriangleStarts_[v] += vertexTriangleStarts_[v - 1];
+  vertexTriangles_.resize(vertexTriangleStarts_.back());
+  std::vector<std::size_t> filled(vertexTriangleStarts_.begin(), vertexTriangleStarts_.end() - 1);
+  for (Index t = 0; t < triangles_.rows(); ++t)
+    for (int k = 0; k < 3; ++k)
+      vertexTriangles_[filled[static_cast<std::size_t>(triangles_(t, k))]++] = static_cast<int>(t);
   // Each vertex to the first of its triangles (in its body's tree's
   // numbering), which stands for it in forEachLeafNear.
   std::vector<char> owned(static_cast<std::size_t>(restSkin_.rows()), 0);
@@ -125,6 +149,30 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
         owned[static_cast<std::size_t>(vertex)] = 1;
       }
   }
+}
+
+Eigen::Vector3d BodyContact::pseudoNormal(const Points3& skin, int triangle,
+                                          const Eigen::Vector3d& barycentric) const {
+  const auto corner = [&](int t, int k) { return skin.row(triangles_(t, k)).transpose(); };
+  const auto faceNormal = [&](int t) {
+    return triangleNormal(corner(t, 0), corner(t, 1), corner(t, 2));
+  };
+  const TriangleFeature feature = closestFeature(barycentric);
+  if (feature.kind == TriangleFeature::Face) return faceNormal(triangle);
+  if (feature.kind == TriangleFeature::Edge) {
+    const int across = neighbours_(triangle, feature.corner);
+    return faceNormal(triangle) + (across >= 0 ? faceNormal(across) : Eigen::Vector3d::Zero());
+  }
+  const int vertex = triangles_(triangle, feature.corner);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t at = vertexTriangleStarts_[static_cast<std::size_t>(vertex)];
+       at != vertexTriangleStarts_[static_cast<std::size_t>(vertex) + 1]; ++at) {
+    const int t = vertexTriangles_[at];
+    const int k = triangles_(t, 0) == vertex ? 0 : triangles_(t, 1) == vertex ? 1 : 2;
+    sum +=
+        triangleAngle(corner(t, k), corner(t, (k + 1) % 3), corner(t, (k + 2) % 3)) * faceNormal(t);
+  }
+  return sum;
 }
 
 bool BodyContact::mayMeet(Index v, int t, bool sameBody) const {
@@ -159,13 +207,18 @@ std::optional<BodyContact::Contact> BodyContact::contactWith(
   const Eigen::Vector3d face = (b - a).cross(e - a).normalized();  // outward
   const Eigen::Vector3d away = skin.row(v).transpose() - closest.point;
   // Outside the triangle's skin the vertex is pushed away from it, inside
-  // (it went through) back out: the distance is signed by the face's
-  // side, so that a vertex that has passed a triangle is not pushed on.
-  // Behind means clearly behind, within 60 degrees of the face's inward
-  // normal: beside an edge or a corner, p - q lies in the face's plane,
-  // and its sign there is rounding's. (A vertex on the triangle itself
-  // is pushed along the face's normal.)
-  const double side = away.dot(face) < -0.5 * d ? -1.0 : 1.0;
+  // (it went through) back out: the distance is signed by the side, so
+  // that a vertex that has passed a triangle is not pushed on. The side is
+  // the pseudo-normal's of the feature q lies on (exact for a closed skin
+  // that does not cross itself). The face's normal alone is rounding's
+  // beside an edge or a corner, where p - q lies in the face's plane; with
+  // it taken as outside unless p - q lay within 60 degrees of the inward
+  // normal (the first rule), a vertex behind a fold's edge was pushed on,
+  // deeper in: three piled bunnies sank into each other (2,400 active
+  // contacts growing to 22,800 in ten steps, few vertices ever beyond the
+  // shell). (A vertex on the triangle itself is pushed along the face's
+  // normal.)
+  const double side = away.dot(pseudoNormal(skin, triangle, closest.barycentric)) < 0 ? -1.0 : 1.0;
   c.normal = d > 1e-12 * thickness_ ? Eigen::Vector3d(side * away / d) : face;
   c.gap = thickness_ - side * d;
   if (!c.normal.allFinite()) return std::nullopt;  // a degenerate triangle touched at a point
@@ -267,10 +320,31 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
   const Eigen::Map<const Points3> control(end.data(), end.size() / 3, 3);
   Points3 skinEnd;
   skin_->deformPositions(control, skinEnd);
+  // A vertex without a contact lay at least the shell's thickness from
+  // every triangle it may meet at the step's start (else the search would
+  // have found it). Its distance to a triangle shrinks by no more than its
+  // own motion and the farthest the triangle's corners move: two bodies
+  // whose skins' vertices move less than the shell between them cannot
+  // cross (a pile at rest costs no continuous detection).
+  const std::size_t bodies = trees_.size();
+  std::vector<double> moved(bodies, 0.0);
+  for (Index v = 0; v < skinEnd.rows(); ++v) {
+    double& most = moved[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])];
+    most = std::max(most, (skinEnd.row(v) - stepSkin_.row(v)).norm());
+  }
+  const auto mayCrossBetween = [&](std::size_t b, std::size_t other) {
+    return (other == b ? selfContact_[b] != 0 : true) && moved[b] + moved[other] >= thickness_;
+  };
+  std::vector<char> sweeps(bodies, 0);  // the bodies in a pair that may cross
+  for (std::size_t b = 0; b < bodies; ++b)
+    for (std::size_t other = 0; other < bodies; ++other)
+      if (mayCrossBetween(b, other)) sweeps[b] = sweeps[other] = 1;
+  if (std::find(sweeps.begin(), sweeps.end(), 1) == sweeps.end()) return 0;
   // The trees over each triangle's box at the start and at the end.
   if (sweptTrees_.size() != trees_.size()) sweptTrees_ = trees_;
   parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
+      if (!sweeps[b]) continue;
       std::vector<Aabb> boxes = triangleBoxes(stepSkin_, triangles_, bodyTriangles_[b]);
       const std::vector<Aabb> atEnd = triangleBoxes(skinEnd, triangles_, bodyTriangles_[b]);
       for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i].extend(atEnd[i]);
@@ -288,7 +362,9 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
   parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
     for (std::size_t b = range.begin(); b != range.end(); ++b)
       for (std::size_t other = 0; other < trees_.size(); ++other) {
-        if (other == b || !boxes[other].overlaps(sweptTrees_[b].bounds())) continue;
+        if (other == b || !mayCrossBetween(b, other) ||
+            !boxes[other].overlaps(sweptTrees_[b].bounds()))
+          continue;
         sweptTrees_[b].forEachLeafNear(sweptTrees_[other], 0, [&](std::span<const int> ids) {
           for (int i : ids)
             for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
@@ -315,7 +391,9 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
       double first = 2;  // the crossing's time in the step, from 0 to 1
       for (std::size_t other = 0; other < trees_.size(); ++other) {
         const bool sameBody = static_cast<int>(other) == body;
-        if (sameBody ? !selfContact_[other] : !boxes[other].overlaps(path)) continue;
+        if (!mayCrossBetween(static_cast<std::size_t>(body), other) ||
+            (!sameBody && !boxes[other].overlaps(path)))
+          continue;
         const std::vector<int>& chosen = bodyTriangles_[other];
         sweptTrees_[other].forEachOverlap(path, [&](int i) {
           const int t = chosen[static_cast<std::size_t>(i)];
@@ -397,11 +475,11 @@ void BodyContact::addShare(const Contact& c, const Eigen::VectorXd& v, double si
 BodyContact::ActiveSetChange BodyContact::updateActiveSet(const Eigen::VectorXd& x,
                                                           const Eigen::VectorXd& v,
                                                           const Eigen::VectorXd& dv,
-                                                          StepSystem& system) {
+                                                          StepSystem& system, bool crossings) {
   // Vertices whose path over the solved step crosses a skin become
   // contacts, out of the step: those that would end it pushing come in.
   ActiveSetChange result;
-  result.crossed = addCrossings(x, x + h_ * (v + dv));
+  if (crossings) result.crossed = addCrossings(x, x + h_ * (v + dv));
   const Eigen::VectorXd end = v + dv;
   // Per contact: 1 let go (in, pulling at the solved end), 2 taken in
   // (out, pushing there), 0 as it is.
@@ -483,6 +561,7 @@ void BodyContact::project(Eigen::VectorXd& x, Eigen::VectorXd& v) const {
   // dropped onto another went into it and through the floor.)
   frictionForces_.clear();
   letGo_.assign(static_cast<std::size_t>(controls_.rows()), 0);
+
   for (const Contact& c : contacts_) {
     // The spring at the step's end, as the step linearized it.
     const double end = c.gap - (c.along(x) - c.start);

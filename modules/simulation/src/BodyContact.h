@@ -94,9 +94,9 @@ class BodyContact : public ForceModel {
                   Eigen::VectorXd& force) const override;
   bool isContact() const override { return true; }
   // After the step's solve (its velocity change dv from v, the step
-  // starting at control positions x), the contacts as an active set: the
-  // vertices whose path crosses a skin become contacts out of the step
-  // (addCrossings), those in the step whose spring would end it pulling
+  // starting at control positions x), the contacts as an active set: with
+  // `crossings`, the vertices whose path crosses a skin become contacts out
+  // of the step (addCrossings), those in the step whose spring would end it pulling
   // leave it, and those out of it (let go in an earlier round, or at the
   // end of the last step, or just found crossing) whose spring would end
   // it pushing come in. Their
@@ -113,7 +113,8 @@ class BodyContact : public ForceModel {
     bool any() const { return released + taken > 0; }
   };
   ActiveSetChange updateActiveSet(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
-                                  const Eigen::VectorXd& dv, StepSystem& system);
+                                  const Eigen::VectorXd& dv, StepSystem& system,
+                                  bool crossings = true);
   // The next addForce takes the contacts as they are (the same step
   // assembled again) instead of searching.
   void keepNextStep() { keepContacts_ = true; }
@@ -167,6 +168,10 @@ class BodyContact : public ForceModel {
   // degenerate triangle touched at a point.
   std::optional<Contact> contactWith(const Points3& skin, const Eigen::VectorXd& x, Index v,
                                      int triangle, const ClosestPointOnTriangle& closest) const;
+  // The pseudo-normal (not unit) of the feature of `triangle` at
+  // `barycentric` on the skin at `skin`.
+  Eigen::Vector3d pseudoNormal(const Points3& skin, int triangle,
+                               const Eigen::Vector3d& barycentric) const;
   // Whether vertex v may meet triangle t (of its own body: sameBody): not
   // one of its own triangles, nor, on its own body, its neighbourhood.
   bool mayMeet(Index v, int t, bool sameBody) const;
@@ -200,6 +205,9 @@ class BodyContact : public ForceModel {
   double thickness_, stiffness_, staticFriction_, kineticFriction_;
   std::vector<std::vector<int>> bodyTriangles_;  // per body: its triangles
   std::vector<AabbTree> trees_;  // per body: over bodyTriangles_, refitted each step
+  Triangles neighbours_;         // per triangle, across the edge opposite corner k (-1: none)
+  std::vector<std::size_t> vertexTriangleStarts_;  // per vertex, where its triangles start...
+  std::vector<int> vertexTriangles_;               // ...in this list
   // Per body, per triangle of its tree: the vertices it stands for (-1:
   // none), each vertex once.
   std::vector<std::vector<std::array<int, 3>>> ownedVertices_;

@@ -33,15 +33,15 @@ SimulationOptions uprightAlong(UpAxis up, SimulationOptions options) {
 namespace {
 
 // How often a step is solved again with the skin contacts as its solve
-// left them (BodyContact::updateActiveSet), at most. Once: the contacts
-// still to change after it are left as they are for this step, and those
-// that end it pulling start the next one out of it. On three finest-level
-// bunnies piled in a bowl each round let go about half as many as the one
-// before (754, 360, 153) and took CG 50 to 60 more iterations: three
-// rounds doubled the step's solve, and one left the tests' answers within
-// their bounds (the head-on blocks part at 1.501 and 2.499 kg m/s, against
-// 1.494 and 2.506 with three).
-constexpr int kActiveSetRounds = 1;
+// left them (BodyContact::updateActiveSet), at most. The contacts still to
+// change after the last round are left as they are for this step (those
+// that end it pulling start the next one out of it). On three
+// finest-level bunnies piled in a bowl each round let go about half as
+// many as the one before (754, 360, 153) at 50 to 60 CG iterations each.
+// One round left so many pulling springs in the step (holding vertices
+// behind a skin in it) that such a pile sank into itself with springs
+// 1.25 times the default, where three rounds held it.
+constexpr int kActiveSetRounds = 3;
 
 // What is wrong with the first node (in `x`'s order) whose new position or
 // velocity is not finite or lies beyond kMaxCoordinate, named by its
@@ -361,13 +361,13 @@ StepStats Simulation::step() {
                                      {&x_, integrator_->springs(), integrator_->coupling()}, stats);
   // The skins' springs push, never pull: those that would end the step
   // pulling leave it, those out of it that would end it pushing come in
-  // (and so do vertices whose path over the solved step crosses a skin),
-  // and it is solved again. Their share leaves or joins the assembled
-  // system; only one on a held node has the step assembled anew.
+  // (and so do vertices whose path over the first solve's step crosses a
+  // skin: later rounds mostly let contacts go), and it is solved again. Their share leaves or joins
+  // the assembled system; only one on a held node has the step assembled anew.
   for (int round = 0; round < kActiveSetRounds && bodyContact_; ++round) {
     const auto restart = std::chrono::steady_clock::now();
     const BodyContact::ActiveSetChange change =
-        bodyContact_->updateActiveSet(x_, v_, dv_, integrator_->stepSystem());
+        bodyContact_->updateActiveSet(x_, v_, dv_, integrator_->stepSystem(), round == 0);
     if (!change.any()) break;
     if (change.reassemble)
       stats.contacts = integrator_->assemble(models_, time_, x_, v_, stepExternal_, system_, rhs_);

@@ -37,25 +37,6 @@ void AabbTree::refit(std::span<const Aabb> boxes) {
   }
 }
 
-bool AabbTree::anyOverlap(const Aabb& query) const {
-  if (nodes_.empty()) return false;
-  std::array<int, kMaxDepth> stack;
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
-    if (!node.box.overlaps(query)) continue;
-    if (node.count == 0) {
-      stack[top++] = node.first;
-      stack[top++] = node.first + 1;
-      continue;
-    }
-    for (int i = node.first; i < node.first + node.count; ++i)
-      if (boxes_[static_cast<std::size_t>(i)].overlaps(query)) return true;
-  }
-  return false;
-}
-
 void AabbTree::build(int node, int first, int count, std::vector<Eigen::Vector3d>& centers) {
   Aabb box;
   for (int i = first; i < first + count; ++i) box.extend(boxes_[static_cast<std::size_t>(i)]);

@@ -10,15 +10,6 @@
 #include "tetskin/spatial/TriangleDistance.h"
 
 namespace tetskin {
-namespace {
-
-// The angle of triangle (a, b, c) at a.
-double angleAt(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d u = b - a, v = c - a;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
-}  // namespace
 
 ClosedSurfaceDistance::ClosedSurfaceDistance(SurfaceMesh surface, const std::string& name)
     : surface_(std::move(surface)) {
@@ -53,7 +44,7 @@ ClosedSurfaceDistance::ClosedSurfaceDistance(SurfaceMesh surface, const std::str
     for (int k = 0; k < 3; ++k) {
       boxes[static_cast<std::size_t>(t)].extend(corner(t, k));
       vertexNormals_[static_cast<std::size_t>(surface_.triangles(t, k))] +=
-          angleAt(corner(t, k), corner(t, (k + 1) % 3), corner(t, (k + 2) % 3)) * n;
+          triangleAngle(corner(t, k), corner(t, (k + 1) % 3), corner(t, (k + 2) % 3)) * n;
       const auto [key, direction] = edgeKey(t, k);
       EdgeUse& use = edges[key];
       ++use.count;
@@ -97,23 +88,15 @@ std::optional<SurfacePoint> ClosedSurfaceDistance::closest(const Eigen::Vector3d
     }
   });
   if (bestTriangle < 0) return std::nullopt;
-  // The feature the point lies on: a corner (two barycentric zeros), an
-  // edge (one: the edge opposite that corner) or the face.
   const auto t = static_cast<std::size_t>(bestTriangle);
-  Eigen::Vector3d pseudoNormal = faceNormals_[t];
-  int zeros = 0, zero = -1, nonzero = -1;
-  for (int k = 0; k < 3; ++k)
-    if (best.barycentric[k] == 0) {
-      ++zeros;
-      zero = k;
-    } else {
-      nonzero = k;
-    }
-  if (zeros == 2)
-    pseudoNormal =
-        vertexNormals_[static_cast<std::size_t>(surface_.triangles(bestTriangle, nonzero))];
-  else if (zeros == 1)
-    pseudoNormal = edgeNormals_[3 * t + static_cast<std::size_t>(zero)];
+  const TriangleFeature feature = closestFeature(best.barycentric);
+  const Eigen::Vector3d& pseudoNormal =
+      feature.kind == TriangleFeature::Corner
+          ? vertexNormals_[static_cast<std::size_t>(
+                surface_.triangles(bestTriangle, feature.corner))]
+      : feature.kind == TriangleFeature::Edge
+          ? edgeNormals_[3 * t + static_cast<std::size_t>(feature.corner)]
+          : faceNormals_[t];
   SurfacePoint out;
   out.point = best.point;
   out.triangle = bestTriangle;

@@ -77,4 +77,18 @@ Eigen::Vector3d planeBarycentric(const Eigen::Vector3d& p, const Eigen::Vector3d
   return {u, v, 1.0 - u - v};
 }
 
+TriangleFeature closestFeature(const Eigen::Vector3d& barycentric) {
+  int zeros = 0, zero = -1, nonzero = -1;
+  for (int k = 0; k < 3; ++k)
+    if (barycentric[k] == 0) {
+      ++zeros;
+      zero = k;
+    } else {
+      nonzero = k;
+    }
+  if (zeros == 2) return {TriangleFeature::Corner, nonzero};
+  if (zeros == 1) return {TriangleFeature::Edge, zero};
+  return {};
+}
+
 }  // namespace tetskin

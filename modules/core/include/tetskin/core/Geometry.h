@@ -54,6 +54,8 @@ double triangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
 // Unit normal (counter-clockwise winding); the zero vector for a degenerate triangle.
 Eigen::Vector3d triangleNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& c);
+// The angle of triangle (a, b, c) at a, in radians (a pseudo-normal's weight).
+double triangleAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 // The largest coordinate magnitude a mesh may have. Areas, volumes and
 // TetGen's predicates multiply up to five coordinate differences, which

@@ -42,25 +42,15 @@ class AabbTree {
 
   template <typename F>
   void forEachOverlap(const Aabb& query, F&& f) const {
-    if (nodes_.empty()) return;
-    std::array<int, kMaxDepth> stack;
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
-      if (!node.box.overlaps(query)) continue;
-      if (node.count > 0) {
-        for (int i = node.first; i < node.first + node.count; ++i)
-          if (boxes_[static_cast<std::size_t>(i)].overlaps(query))
-            f(ids_[static_cast<std::size_t>(i)]);
-      } else {
-        stack[top++] = node.first;
-        stack[top++] = node.first + 1;
-      }
-    }
+    overlapsUntil(query, [&](int id) {
+      f(id);
+      return false;
+    });
   }
 
-  bool anyOverlap(const Aabb& query) const;
+  bool anyOverlap(const Aabb& query) const {
+    return overlapsUntil(query, [](int) { return true; });
+  }
 
   template <typename F>
   void forEachLeafNear(const AabbTree& other, double margin, F&& f) const {
@@ -115,6 +105,30 @@ class AabbTree {
   }
 
  private:
+  // Visits the primitives whose boxes overlap `query` until stop(id) says
+  // true; returns whether it did.
+  template <typename F>
+  bool overlapsUntil(const Aabb& query, F&& stop) const {
+    if (nodes_.empty()) return false;
+    std::array<int, kMaxDepth> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
+      if (!node.box.overlaps(query)) continue;
+      if (node.count > 0) {
+        for (int i = node.first; i < node.first + node.count; ++i)
+          if (boxes_[static_cast<std::size_t>(i)].overlaps(query) &&
+              stop(ids_[static_cast<std::size_t>(i)]))
+            return true;
+      } else {
+        stack[top++] = node.first;
+        stack[top++] = node.first + 1;
+      }
+    }
+    return false;
+  }
+
   // Leaves hold up to kLeafSize primitives; the split is a median, so the
   // depth stays near log2(n / kLeafSize) and a fixed stack suffices.
   static constexpr int kLeafSize = 4;

@@ -19,6 +19,19 @@ struct ClosestPointOnTriangle {
 ClosestPointOnTriangle closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                               const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+// The feature of the triangle a closest point lies on, from its
+// barycentric coordinates (closestPointOnTriangle's, exact zeros off the
+// face): the face, an edge (the one opposite `corner`), or a corner. The
+// pseudo-normal of that feature (the face's normal, the sum of the edge's
+// two faces', the corner's faces' weighted by their angles there) tells
+// the side of a closed surface a point lies on (Baerentzen and Aanaes
+// 2005).
+struct TriangleFeature {
+  enum Kind { Face, Edge, Corner } kind = Face;
+  int corner = -1;  // Edge: the corner opposite it; Corner: the corner
+};
+TriangleFeature closestFeature(const Eigen::Vector3d& barycentric);
+
 // Barycentric coordinates of the projection of p onto the plane of (a, b, c):
 // unclamped (negative outside the triangle); NaN-free only for non-degenerate
 // triangles, so callers check the area first.
