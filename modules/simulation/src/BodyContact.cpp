@@ -332,8 +332,14 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
     double& most = moved[static_cast<std::size_t>(body_[static_cast<std::size_t>(v)])];
     most = std::max(most, (skinEnd.row(v) - stepSkin_.row(v)).norm());
   }
+  // (And two bodies whose boxes over the step, grown by the shell, do not
+  // overlap cannot either: bodies falling apart cost no swept trees.)
+  std::vector<Aabb> boxes = bodyBoxes(stepSkin_);
+  const std::vector<Aabb> boxesAtEnd = bodyBoxes(skinEnd);
+  for (std::size_t b = 0; b < boxes.size(); ++b) boxes[b].extend(boxesAtEnd[b]);
   const auto mayCrossBetween = [&](std::size_t b, std::size_t other) {
-    return (other == b ? selfContact_[b] != 0 : true) && moved[b] + moved[other] >= thickness_;
+    return (other == b ? selfContact_[b] != 0 : boxes[b].overlaps(boxes[other])) &&
+           moved[b] + moved[other] >= thickness_;
   };
   std::vector<char> sweeps(bodies, 0);  // the bodies in a pair that may cross
   for (std::size_t b = 0; b < bodies; ++b)
@@ -345,15 +351,12 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
   parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
       if (!sweeps[b]) continue;
-      std::vector<Aabb> boxes = triangleBoxes(stepSkin_, triangles_, bodyTriangles_[b]);
+      std::vector<Aabb> swept = triangleBoxes(stepSkin_, triangles_, bodyTriangles_[b]);
       const std::vector<Aabb> atEnd = triangleBoxes(skinEnd, triangles_, bodyTriangles_[b]);
-      for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i].extend(atEnd[i]);
-      sweptTrees_[b].refit(boxes);
+      for (std::size_t i = 0; i < swept.size(); ++i) swept[i].extend(atEnd[i]);
+      sweptTrees_[b].refit(swept);
     }
   });
-  std::vector<Aabb> boxes = bodyBoxes(stepSkin_);
-  const std::vector<Aabb> boxesAtEnd = bodyBoxes(skinEnd);
-  for (std::size_t b = 0; b < boxes.size(); ++b) boxes[b].extend(boxesAtEnd[b]);
   // The vertices whose paths may cross another body's skin: those of the
   // leaves of their body's swept tree that overlap another's swept
   // triangles (each triangle's box over the step holds it throughout, and
