@@ -7,10 +7,9 @@
 // distance d) is pushed out by a penalty spring k (thickness - d) along
 // n = (p - q) / d, and the triangle's corners by its opposite, shared by
 // q's barycentric weights. A vertex that has gone through the triangle
-// (p - q within 60 degrees of the face's inward normal: skins are closed
-// and wound outward) is pushed back: d counts negative and
-// n = (q - p) / |d|. Every
-// point acts on its control nodes
+// (behind it by the pseudo-normal of the feature q lies on: skins are
+// closed and wound outward) is pushed back: d counts negative and
+// n = (q - p) / |d|. Every point acts on its control nodes
 // through the binding's weights (the normal's turn with an offset vertex
 // left out, as ObstacleContact does). With a_j the weight of node j in
 // p - q (the vertex's weights, less the corners' times q's barycentric
@@ -95,14 +94,14 @@ class BodyContact : public ForceModel {
   bool isContact() const override { return true; }
   // After the step's solve (its velocity change dv from v, the step
   // starting at control positions x), the contacts as an active set: with
-  // `crossings`, the vertices whose path crosses a skin become contacts out
-  // of the step (addCrossings), those in the step whose spring would end it pulling
-  // leave it, and those out of it (let go in an earlier round, or at the
-  // end of the last step, or just found crossing) whose spring would end
-  // it pushing come in. Their
-  // share goes out of or into the step's `system` as assembled and
-  // constrained (b, A's blocks, the springs' diagonal, the coupling
-  // springs), for the same step solved again. Where one of them touches a
+  // `crossings`, the vertices whose path crosses a skin become contacts
+  // out of the step (addCrossings); those in the step whose spring would
+  // end it pulling leave it, and those out of it (let go in an earlier
+  // round or at the end of the last step, or just found crossing) whose
+  // spring would end it pushing come in. Their share goes out of or into
+  // the step's `system` as assembled and constrained (b, A's blocks, the
+  // springs' diagonal, the coupling springs), for the same step solved
+  // again. Where one of them touches a
   // held node (whose rows the constraints rewrote) it leaves the system as
   // it is and says `reassemble`: the step is assembled again, its next
   // addForce taking the contacts as they are.
@@ -148,7 +147,7 @@ class BodyContact : public ForceModel {
   static constexpr int kMaxNodes = 16;            // a vertex's four and three corners' four
   struct Contact {
     int vertex, triangle;
-    double gap;              // thickness - d at the step's start (> 0)
+    double gap;              // thickness - d at the step's start (< 0: a crossing's, from afar)
     Eigen::Vector3d normal;  // n
     std::array<CouplingSprings::Entry, kMaxNodes> entries;  // (node, a_j), nodes distinct
     int count = 0;
@@ -158,9 +157,9 @@ class BodyContact : public ForceModel {
 
     double along(const Eigen::VectorXd& values) const;
   };
-  // The contacts at x; `refit` the step's trees (a query at another state
-  // refits copies of its own).
-  // (And the skin at x, for the step's crossings.)
+  // The contacts at x; refits `trees` (the step's; a query at another
+  // state refits copies of its own); and the skin at x into `skin` (for
+  // the step's crossings), unless null.
   void findContacts(const Eigen::VectorXd& x, std::vector<Contact>& out,
                     std::vector<AabbTree>& trees, Points3* skin) const;
   // The contact of vertex v with `triangle` (its closest point `closest`)
