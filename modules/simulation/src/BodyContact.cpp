@@ -83,7 +83,8 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
       thickness_(thickness),
       stiffness_(stiffness),
       staticFriction_(settings.staticFriction),
-      kineticFriction_(settings.kineticFriction) {
+      kineticFriction_(settings.kineticFriction),
+      vertexTriangles_(vertexTriangleAdjacency(triangles_, restSkin_.rows())) {
   bodyTriangles_.resize(selfContact_.size());
   for (Index t = 0; t < triangles_.rows(); ++t)
     bodyTriangles_[static_cast<std::size_t>(body_[static_cast<std::size_t>(triangles_(t, 0))])]
@@ -94,24 +95,14 @@ BodyContact::BodyContact(std::unique_ptr<SurfaceDeformer> deformer, const Surfac
   // pseudo-normal takes.
   neighbours_ = Triangles::Constant(triangles_.rows(), 3, -1);
   std::map<std::pair<int, int>, int> edges;  // (a, b) as a triangle runs it: that triangle
-  vertexTriangleStarts_.assign(static_cast<std::size_t>(restSkin_.rows()) + 1, 0);
   for (Index t = 0; t < triangles_.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3; ++k)
       edges[{triangles_(t, (k + 1) % 3), triangles_(t, (k + 2) % 3)}] = static_cast<int>(t);
-      ++vertexTriangleStarts_[static_cast<std::size_t>(triangles_(t, k)) + 1];
-    }
   for (Index t = 0; t < triangles_.rows(); ++t)
     for (int k = 0; k < 3; ++k) {
       const auto across = edges.find({triangles_(t, (k + 2) % 3), triangles_(t, (k + 1) % 3)});
       if (across != edges.end()) neighbours_(t, k) = across->second;
     }
-  for (std::size_t v = 1; v < vertexTriangleStarts_.size(); ++v)
-    vertexTriangleStarts_[v] += vertexTriangleStarts_[v - 1];
-  vertexTriangles_.resize(vertexTriangleStarts_.back());
-  std::vector<std::size_t> filled(vertexTriangleStarts_.begin(), vertexTriangleStarts_.end() - 1);
-  for (Index t = 0; t < triangles_.rows(); ++t)
-    for (int k = 0; k < 3; ++k)
-      vertexTriangles_[filled[static_cast<std::size_t>(triangles_(t, k))]++] = static_cast<int>(t);
   // Each vertex to the first of its triangles (in its body's tree's
   // numbering), which stands for it in forEachLeafNear.
   std::vector<char> owned(static_cast<std::size_t>(restSkin_.rows()), 0);
@@ -141,9 +132,9 @@ Eigen::Vector3d BodyContact::pseudoNormal(const Points3& skin, int triangle,
   }
   const int vertex = triangles_(triangle, feature.corner);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (std::size_t at = vertexTriangleStarts_[static_cast<std::size_t>(vertex)];
-       at != vertexTriangleStarts_[static_cast<std::size_t>(vertex) + 1]; ++at) {
-    const int t = vertexTriangles_[at];
+  for (int at = vertexTriangles_.offsets[static_cast<std::size_t>(vertex)];
+       at != vertexTriangles_.offsets[static_cast<std::size_t>(vertex) + 1]; ++at) {
+    const int t = vertexTriangles_.triangles[static_cast<std::size_t>(at)];
     const int k = triangles_(t, 0) == vertex ? 0 : triangles_(t, 1) == vertex ? 1 : 2;
     sum +=
         triangleAngle(corner(t, k), corner(t, (k + 1) % 3), corner(t, (k + 2) % 3)) * faceNormal(t);
@@ -159,6 +150,25 @@ bool BodyContact::mayMeet(Index v, int t, bool sameBody) const {
   return closestPointOnTriangle(restSkin_.row(v).transpose(), restSkin_.row(a).transpose(),
                                 restSkin_.row(b).transpose(), restSkin_.row(c).transpose())
              .squaredDistance >= neighbourhood * neighbourhood;
+}
+
+std::vector<char> BodyContact::verticesNearOtherBodies(
+    const std::vector<AabbTree>& trees, double margin,
+    const std::function<bool(std::size_t, std::size_t)>& pair) const {
+  // A body at a time, so that each writes only its own vertices.
+  std::vector<char> near(static_cast<std::size_t>(restSkin_.rows()), 0);
+  parallelFor<std::size_t>(0, trees.size(), 1, [&](const IndexRange<std::size_t>& range) {
+    for (std::size_t b = range.begin(); b != range.end(); ++b)
+      for (std::size_t other = 0; other < trees.size(); ++other) {
+        if (other == b || !pair(b, other)) continue;
+        trees[b].forEachLeafNear(trees[other], margin, [&](std::span<const int> ids) {
+          for (int i : ids)
+            for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
+              if (vertex >= 0) near[static_cast<std::size_t>(vertex)] = 1;
+        });
+      }
+  });
+  return near;
 }
 
 std::vector<Aabb> BodyContact::bodyBoxes(const Points3& skin) const {
@@ -231,23 +241,13 @@ void BodyContact::findContacts(const Eigen::VectorXd& x, std::vector<Contact>& o
   // does not meet itself and lies in no other body's box has nothing to
   // meet (bodies apart cost a box test per vertex, not a tree search).
   const std::vector<Aabb> boxes = bodyBoxes(skin);
-  // The vertices that may lie within the thickness of another body's skin:
-  // those of the leaves of their body's tree near another body's tree (a
-  // body at a time, so that each writes only its own vertices). The rest
-  // are not searched: in a pile, most of a body's vertices lie in another
-  // body's box, but far from its skin.
-  std::vector<char> nearOther(static_cast<std::size_t>(skin.rows()), 0);
-  parallelFor<std::size_t>(0, trees.size(), 1, [&](const IndexRange<std::size_t>& range) {
-    for (std::size_t b = range.begin(); b != range.end(); ++b)
-      for (std::size_t other = 0; other < trees.size(); ++other) {
-        if (other == b || !boxes[other].overlaps(trees[b].bounds().inflated(thickness_))) continue;
-        trees[b].forEachLeafNear(trees[other], thickness_, [&](std::span<const int> ids) {
-          for (int i : ids)
-            for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
-              if (vertex >= 0) nearOther[static_cast<std::size_t>(vertex)] = 1;
-        });
-      }
-  });
+  // The vertices that may lie within the thickness of another body's skin
+  // (of bodies whose boxes come that near). The rest are not searched: in a pile, most of a body's
+  // vertices lie in another body's box, but far from its skin.
+  const std::vector<char> nearOther =
+      verticesNearOtherBodies(trees, thickness_, [&](std::size_t b, std::size_t other) {
+        return boxes[other].overlaps(trees[b].bounds().inflated(thickness_));
+      });
   // Per vertex its closest triangle within the thickness, in parallel,
   // each in its own slot: the contacts come out in vertex order on any
   // number of threads. Nearest boxes first, the reach shrinking to the
@@ -337,20 +337,10 @@ int BodyContact::addCrossings(const Eigen::VectorXd& x, const Eigen::VectorXd& e
   // leaves of their body's swept tree that overlap another's swept
   // triangles (each triangle's box over the step holds it throughout, and
   // a vertex's path lies in its triangles' boxes).
-  std::vector<char> mayCross(static_cast<std::size_t>(stepSkin_.rows()), 0);
-  parallelFor<std::size_t>(0, trees_.size(), 1, [&](const IndexRange<std::size_t>& range) {
-    for (std::size_t b = range.begin(); b != range.end(); ++b)
-      for (std::size_t other = 0; other < trees_.size(); ++other) {
-        if (other == b || !mayCrossBetween(b, other) ||
-            !boxes[other].overlaps(sweptTrees_[b].bounds()))
-          continue;
-        sweptTrees_[b].forEachLeafNear(sweptTrees_[other], 0, [&](std::span<const int> ids) {
-          for (int i : ids)
-            for (int vertex : ownedVertices_[b][static_cast<std::size_t>(i)])
-              if (vertex >= 0) mayCross[static_cast<std::size_t>(vertex)] = 1;
-        });
-      }
-  });
+  const std::vector<char> mayCross =
+      verticesNearOtherBodies(sweptTrees_, 0, [&](std::size_t b, std::size_t other) {
+        return mayCrossBetween(b, other) && boxes[other].overlaps(sweptTrees_[b].bounds());
+      });
   std::vector<char> hasContact(static_cast<std::size_t>(stepSkin_.rows()), 0);
   for (const Contact& c : contacts_) hasContact[static_cast<std::size_t>(c.vertex)] = 1;
   // Per vertex without a contact, the triangle its path crosses first.

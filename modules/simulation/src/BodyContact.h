@@ -55,6 +55,7 @@
 // boxes first (branch and bound), and takes its closest triangle only.
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -64,6 +65,7 @@
 #include "tetskin/core/SurfaceBinding.h"
 #include "tetskin/core/SurfaceMesh.h"
 #include "tetskin/deformation/SurfaceDeformer.h"
+#include "tetskin/deformation/VertexNormals.h"
 #include "tetskin/spatial/AabbTree.h"
 #include "tetskin/spatial/TriangleDistance.h"
 
@@ -174,6 +176,13 @@ class BodyContact : public ForceModel {
   // Whether vertex v may meet triangle t (of its own body: sameBody): not
   // one of its own triangles, nor, on its own body, its neighbourhood.
   bool mayMeet(Index v, int t, bool sameBody) const;
+  // Per vertex, whether it stands in a leaf of its body's tree in `trees`
+  // that lies within `margin` of another body's tree there
+  // (AabbTree::forEachLeafNear), for the pairs of bodies (body, other)
+  // that `pair` lets through.
+  std::vector<char> verticesNearOtherBodies(
+      const std::vector<AabbTree>& trees, double margin,
+      const std::function<bool(std::size_t, std::size_t)>& pair) const;
   // Each body's box on the skin at `skin`, grown by the thickness.
   std::vector<Aabb> bodyBoxes(const Points3& skin) const;
   // Contacts, out of the step, for the vertices without one whose path
@@ -205,8 +214,7 @@ class BodyContact : public ForceModel {
   std::vector<std::vector<int>> bodyTriangles_;  // per body: its triangles
   std::vector<AabbTree> trees_;  // per body: over bodyTriangles_, refitted each step
   Triangles neighbours_;         // per triangle, across the edge opposite corner k (-1: none)
-  std::vector<std::size_t> vertexTriangleStarts_;  // per vertex, where its triangles start...
-  std::vector<int> vertexTriangles_;               // ...in this list
+  VertexTriangleAdjacency vertexTriangles_;  // per vertex, the triangles around it
   // Per body, per triangle of its tree: the vertices it stands for (-1:
   // none), each vertex once.
   std::vector<std::vector<std::array<int, 3>>> ownedVertices_;
