@@ -77,6 +77,14 @@ Eigen::Vector3d momentum(const Simulation& sim, const SimulationState& state, In
       .transpose();
 }
 
+// The first `n` nodes at `first` m/s along x, the rest at `second`.
+void setAlongX(Simulation& sim, Index n, double first, double second) {
+  Points3 velocities = Points3::Zero(sim.state().positions.rows(), 3);
+  velocities.topRows(n).col(0).setConstant(first);
+  velocities.bottomRows(n).col(0).setConstant(second);
+  sim.setVelocities(velocities);
+}
+
 // Two equal blocks, 8 cm apart (skin to skin) along x, meet head-on at
 // 1.5 and -0.5 m/s: the total momentum stays what it was (within 1% of
 // it: only the solver's tolerance moves it), the skins' contact forces
@@ -88,10 +96,7 @@ TEST(BodyContact, TwoBodiesMeetingHeadOnKeepTheirMomentumAndSeparate) {
   sim.setContactSkin(bodies.skin, bodies.binding, bodies.vertexBody);
   EXPECT_GT(sim.skinThickness(), 0);
   const Index n = bodies.bodies[1].firstNode;
-  Points3 velocities = Points3::Zero(bodies.mesh.nodes.rows(), 3);
-  velocities.topRows(n).col(0).setConstant(1.5);
-  velocities.bottomRows(n).col(0).setConstant(-0.5);
-  sim.setVelocities(velocities);
+  setAlongX(sim, n, 1.5, -0.5);
   const Eigen::Vector3d start = momentum(sim, sim.state(), 0, 2 * n);
   int touching = 0, firstContact = -1;
   double largestDrift = 0;
@@ -131,10 +136,7 @@ TEST(BodyContact, BodiesFasterThanTheShellPerStepStillMeet) {
   Simulation sim(bodies.mesh, 0, options);
   sim.setContactSkin(bodies.skin, bodies.binding, bodies.vertexBody);
   const Index n = bodies.bodies[1].firstNode;
-  Points3 velocities = Points3::Zero(bodies.mesh.nodes.rows(), 3);
-  velocities.topRows(n).col(0).setConstant(3);
-  velocities.bottomRows(n).col(0).setConstant(-3);
-  sim.setVelocities(velocities);
+  setAlongX(sim, n, 3, -3);
   const Eigen::Vector3d start = momentum(sim, sim.state(), 0, 2 * n);
   double closest = 1;  // the least gap between the cages along x
   for (int i = 0; i < 40; ++i) {
